@@ -1,0 +1,13 @@
+// Each rtsim subcommand lives in its own app/cmd_*.cpp and registers itself on the CLI here.
+// A command's callback returns the process exit code: 0 ok, 1 a check failed, 2 bad input.
+// Errors from bad input are thrown as rtsim::InputError; main() prints them as one line.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace rtsim::app {
+
+void add_scene_info_command(CLI::App& app, int& exit_code);
+void add_trace_info_command(CLI::App& app, int& exit_code);
+
+}  // namespace rtsim::app

@@ -1,0 +1,38 @@
+// rtsim: the command line. Thin: it parses, calls the parts, prints.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
+#include "app/commands.h"
+#include "traces/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"rtsim " RTSIM_VERSION ": cycle-approximate simulator of ray-tracing hardware"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "rtsim " RTSIM_VERSION);
+  int exit_code = 0;
+  rtsim::app::add_scene_info_command(app, exit_code);
+  rtsim::app::add_trace_info_command(app, exit_code);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;
+  } catch (const rtsim::InputError& e) {
+    fmt::print(stderr, "rtsim: error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "rtsim: internal error: {}\n", e.what());
+    return 3;
+  }
+  return exit_code;
+}

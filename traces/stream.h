@@ -1,0 +1,96 @@
+// The ray-stream file (.rays): header, chunked rays with checksums. Spec: traces/FORMAT.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "traces/ray.h"
+
+namespace rtsim {
+
+constexpr uint32_t kStreamVersion = 1;
+constexpr uint32_t kDefaultChunkRays = 16384;
+constexpr uint32_t kMaxChunkRays = 1u << 20;
+constexpr size_t kRayRecordBytes = 44;
+
+struct StreamHeader {
+  std::string scene_source;  // scene file path, or "builtin:NAME[:PARAMS]"
+  uint64_t scene_fingerprint = 0;
+  std::string workload;
+  std::string generator;  // program and version that wrote the stream
+  uint64_t seed = 0;
+  uint32_t frame_count = 1;
+  uint32_t width = 0, height = 0;  // pixel grid that Ray::pixel indexes
+  uint32_t chunk_rays = kDefaultChunkRays;
+  std::array<uint64_t, kRayTypeCount> counts{};  // rays per RayType
+
+  uint64_t total_rays() const;
+};
+
+// Writes to PATH.tmp-PID and renames to PATH in finish(); a writer destroyed before finish()
+// removes its temporary file, so an interrupted run never leaves a half-written stream.
+class RayStreamWriter {
+public:
+  RayStreamWriter(const std::string& path, StreamHeader header);
+  ~RayStreamWriter();
+  RayStreamWriter(const RayStreamWriter&) = delete;
+  RayStreamWriter& operator=(const RayStreamWriter&) = delete;
+
+  // Throws std::invalid_argument for a ray that ray_problem() rejects.
+  void write(const Ray& ray);
+  void finish();
+  const StreamHeader& header() const { return header_; }
+
+private:
+  void flush_chunk();
+  void write_bytes(const void* data, size_t size);
+
+  std::string path_, tmp_path_;
+  StreamHeader header_;
+  FILE* file_ = nullptr;
+  std::vector<uint8_t> chunk_;
+  uint32_t chunk_count_ = 0;
+};
+
+// Reads a stream chunk by chunk in constant memory. Every problem (bad magic, unsupported
+// version, checksum mismatch, truncation, invalid ray, counts that disagree with the header)
+// throws InputError naming the file and byte offset.
+class RayStreamReader {
+public:
+  explicit RayStreamReader(const std::string& path);
+  ~RayStreamReader();
+  RayStreamReader(const RayStreamReader&) = delete;
+  RayStreamReader& operator=(const RayStreamReader&) = delete;
+
+  const StreamHeader& header() const { return header_; }
+  const std::string& path() const { return path_; }
+  // Next ray; false at the end of the stream (after checking the end marker and counts).
+  bool next(Ray& ray);
+  // Up to max rays appended to out (cleared first); returns how many.
+  size_t next_batch(std::vector<Ray>& out, size_t max);
+  uint64_t rays_read() const { return rays_read_; }
+
+private:
+  bool load_chunk();
+  void read_exact(void* data, size_t size, const char* what);
+  [[noreturn]] void fail(uint64_t offset, const std::string& what) const;
+
+  std::string path_;
+  FILE* file_ = nullptr;
+  StreamHeader header_;
+  uint64_t offset_ = 0;
+  std::vector<uint8_t> chunk_;
+  uint64_t chunk_offset_ = 0;
+  uint32_t chunk_size_ = 0, chunk_pos_ = 0;
+  bool done_ = false;
+  uint64_t rays_read_ = 0;
+  std::array<uint64_t, kRayTypeCount> seen_{};
+};
+
+// Reads the whole stream; for tests and small streams.
+std::vector<Ray> read_all_rays(const std::string& path, StreamHeader* header = nullptr);
+
+}  // namespace rtsim
