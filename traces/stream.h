@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,8 @@ private:
 class RayStreamReader {
 public:
   explicit RayStreamReader(const std::string& path);
-  ~RayStreamReader();
+  // Reads from an open file (for example fmemopen), taking ownership; name is used in errors.
+  RayStreamReader(FILE* file, const std::string& name);
   RayStreamReader(const RayStreamReader&) = delete;
   RayStreamReader& operator=(const RayStreamReader&) = delete;
 
@@ -74,12 +76,16 @@ public:
   uint64_t rays_read() const { return rays_read_; }
 
 private:
+  void read_header();
   bool load_chunk();
-  void read_exact(void* data, size_t size, const char* what);
+  void read_exact(void* data, size_t size, uint64_t start, const char* what);
   [[noreturn]] void fail(uint64_t offset, const std::string& what) const;
 
+  struct FileCloser {
+    void operator()(FILE* f) const { std::fclose(f); }
+  };
   std::string path_;
-  FILE* file_ = nullptr;
+  std::unique_ptr<FILE, FileCloser> file_;
   StreamHeader header_;
   uint64_t offset_ = 0;
   std::vector<uint8_t> chunk_;

@@ -11,11 +11,18 @@
 namespace rtsim {
 
 RayStreamReader::RayStreamReader(const std::string& path) : path_(path) {
-  file_ = std::fopen(path.c_str(), "rb");
+  file_.reset(std::fopen(path.c_str(), "rb"));
   if (!file_) throw_input_error(path, "", std::string("cannot open: ") + std::strerror(errno));
+  read_header();
+}
 
+RayStreamReader::RayStreamReader(FILE* file, const std::string& name) : path_(name), file_(file) {
+  read_header();
+}
+
+void RayStreamReader::read_header() {
   std::vector<uint8_t> head(kHeaderFixedBytes);
-  read_exact(head.data(), 16, "header");
+  read_exact(head.data(), 16, 0, "header");
   if (std::memcmp(head.data(), kStreamMagic, 8) != 0)
     fail(0, "not an rtsim ray stream (bad magic)");
   uint32_t version, header_bytes;
@@ -27,11 +34,11 @@ RayStreamReader::RayStreamReader(const std::string& path) : path_(path) {
   if (header_bytes < kHeaderFixedBytes + 16 || header_bytes > kMaxHeaderBytes)
     fail(12, "header size " + std::to_string(header_bytes) + " is out of range");
   head.resize(header_bytes);
-  read_exact(head.data() + 16, header_bytes - 16, "header");
+  read_exact(head.data() + 16, header_bytes - 16, 12, "header of the size at this offset");
   uint32_t stored_crc;
   std::memcpy(&stored_crc, head.data() + header_bytes - 4, 4);
   if (crc32(head.data(), header_bytes - 4) != stored_crc)
-    fail(header_bytes - 4, "header checksum mismatch");
+    fail(0, "header checksum mismatch (header bytes 0 to " + std::to_string(header_bytes) + ")");
 
   ByteReader in(head.data() + 16, header_bytes - 20);
   header_.scene_fingerprint = in.get<uint64_t>();
@@ -50,30 +57,28 @@ RayStreamReader::RayStreamReader(const std::string& path) : path_(path) {
   chunk_.resize(4 + size_t(header_.chunk_rays) * kRayRecordBytes + 4);
 }
 
-RayStreamReader::~RayStreamReader() {
-  if (file_) std::fclose(file_);
-}
-
 void RayStreamReader::fail(uint64_t offset, const std::string& what) const {
   throw_input_error(path_, "offset " + std::to_string(offset), what);
 }
 
-void RayStreamReader::read_exact(void* data, size_t size, const char* what) {
-  size_t got = std::fread(data, 1, size, file_);
-  if (got != size) fail(offset_ + got, std::string("file is truncated inside the ") + what);
+void RayStreamReader::read_exact(void* data, size_t size, uint64_t start, const char* what) {
+  size_t got = std::fread(data, 1, size, file_.get());
+  if (got != size)
+    fail(start, std::string("file is truncated inside the ") + what + " (it ends at offset " +
+                    std::to_string(offset_ + got) + ")");
   offset_ += size;
 }
 
 bool RayStreamReader::load_chunk() {
   chunk_offset_ = offset_;
   uint32_t count;
-  read_exact(&count, 4, "chunk header");
+  read_exact(&count, 4, chunk_offset_, "chunk header");
   if (count > header_.chunk_rays)
     fail(chunk_offset_, "chunk of " + std::to_string(count) + " rays exceeds the chunk size " +
                             std::to_string(header_.chunk_rays));
   std::memcpy(chunk_.data(), &count, 4);
   size_t body = size_t(count) * kRayRecordBytes;
-  read_exact(chunk_.data() + 4, body + 4, count ? "chunk" : "end marker");
+  read_exact(chunk_.data() + 4, body + 4, chunk_offset_, count ? "chunk" : "end marker");
   uint32_t stored_crc;
   std::memcpy(&stored_crc, chunk_.data() + 4 + body, 4);
   if (crc32(chunk_.data(), 4 + body) != stored_crc)
@@ -82,7 +87,7 @@ bool RayStreamReader::load_chunk() {
   chunk_pos_ = 0;
   if (count > 0) return true;
 
-  if (std::fgetc(file_) != EOF) fail(offset_, "unexpected bytes after the end marker");
+  if (std::fgetc(file_.get()) != EOF) fail(offset_, "unexpected bytes after the end marker");
   for (int t = 0; t < kRayTypeCount; ++t)
     if (seen_[t] != header_.counts[t])
       fail(48 + 8 * t, std::string("header counts ") + std::to_string(header_.counts[t]) + " " +
