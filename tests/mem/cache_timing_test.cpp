@@ -1,0 +1,87 @@
+// The cache alone with a mock memory below it: exact hit and miss latencies, miss merging,
+// MSHR back-pressure.
+#include <gtest/gtest.h>
+
+#include "mock_memory.h"
+#include "model/mem/cache.h"
+
+namespace rtsim {
+namespace {
+
+CacheConfig small_cache() {
+  CacheConfig c;
+  c.size_bytes = 1024;
+  c.line_bytes = 64;
+  c.ways = 2;
+  c.hit_latency = 4;
+  c.mshrs = 2;
+  return c;
+}
+
+TEST(CacheTiming, HitIsReadyExactlyAtHitLatency) {
+  test::MockMemory mem(100);
+  Cache cache(small_cache(), &mem);
+  cache.read(0x1000, 64, 0);
+  Cycle ready = cache.read(0x1000, 64, 500);
+  EXPECT_GT(ready, 500u + 4 - 1) << "a hit must not be ready at hit_latency - 1";
+  EXPECT_LE(ready, 500u + 4) << "a hit must be ready at hit_latency";
+  EXPECT_EQ(cache.stats().hits, 1u);
+}
+
+TEST(CacheTiming, MissIsReadyAtTagCheckPlusBelowLatency) {
+  test::MockMemory mem(100);
+  Cache cache(small_cache(), &mem);
+  EXPECT_EQ(cache.read(0x1000, 64, 10), 10u + 4 + 100);
+  ASSERT_EQ(mem.requests.size(), 1u);
+  EXPECT_EQ(mem.requests[0].at, 14u) << "the miss goes below after the tag check";
+  EXPECT_EQ(mem.requests[0].bytes, 64u);
+  EXPECT_EQ(mem.requests[0].addr, 0x1000u);
+}
+
+TEST(CacheTiming, MissToALineInFlightMergesIntoItsMshr) {
+  test::MockMemory mem(100);
+  Cache cache(small_cache(), &mem);
+  Cycle first = cache.read(0x1000, 64, 0);
+  Cycle second = cache.read(0x1020, 16, 50);  // same line, still in flight
+  EXPECT_EQ(second, first);
+  EXPECT_EQ(mem.requests.size(), 1u);
+  EXPECT_EQ(cache.stats().mshr_merges, 1u);
+  EXPECT_EQ(cache.read(0x1020, 16, first), first + 4) << "after the fill it is a plain hit";
+}
+
+TEST(CacheTiming, FullMshrsDelayTheNextMiss) {
+  test::MockMemory mem(100);
+  Cache cache(small_cache(), &mem);  // 2 MSHRs
+  EXPECT_EQ(cache.read(0x0000, 64, 0), 104u);
+  EXPECT_EQ(cache.read(0x0040, 64, 1), 105u);
+  EXPECT_EQ(cache.read(0x0080, 64, 2), 104u + 4 + 100) << "waits for the first MSHR to free";
+  EXPECT_EQ(cache.stats().mshr_stall_cycles, 102u);
+  EXPECT_EQ(cache.read(0x00c0, 64, 300), 404u) << "MSHRs free again later";
+}
+
+TEST(CacheTiming, RequestSpanningTwoLinesIsReadyWithTheLaterLine) {
+  test::MockMemory mem(100);
+  Cache cache(small_cache(), &mem);
+  cache.read(0x1000, 64, 0);
+  EXPECT_EQ(cache.read(0x1020, 64, 200), 200u + 4 + 100);  // 0x1000 hits, 0x1040 misses
+  EXPECT_EQ(cache.stats().accesses, 3u);
+  EXPECT_EQ(cache.stats().misses, 2u);
+  EXPECT_EQ(cache.stats().bytes_below, 128u);
+}
+
+TEST(CacheConfigCheck, RejectsImpossibleConfigs) {
+  CacheConfig c = small_cache();
+  c.line_bytes = 48;
+  EXPECT_EQ(cache_config_problem(c), "line_bytes must be a power of two");
+  c = small_cache();
+  c.size_bytes = 1000;
+  EXPECT_NE(cache_config_problem(c), "");
+  c = small_cache();
+  c.replacement = "plru";
+  EXPECT_EQ(cache_config_problem(c), "replacement 'plru' is unknown (lru, fifo, random)");
+  test::MockMemory mem(1);
+  EXPECT_THROW(Cache(c, &mem), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace rtsim
