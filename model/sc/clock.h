@@ -1,0 +1,19 @@
+// Simulated time in cycles of one clock, and the conversions to and from SystemC time.
+#pragma once
+
+#include <cmath>
+
+#include <systemc>
+
+#include "model/mem/memory_level.h"
+
+namespace rtsim {
+
+struct Clock {
+  sc_core::sc_time period{1.0, sc_core::SC_NS};  // 1 GHz
+
+  Cycle cycles(const sc_core::sc_time& t) const { return Cycle(std::llround(t / period)); }
+  sc_core::sc_time time(Cycle c) const { return double(c) * period; }
+};
+
+}  // namespace rtsim

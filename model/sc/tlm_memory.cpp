@@ -1,0 +1,64 @@
+#include "model/sc/tlm_memory.h"
+
+namespace rtsim {
+namespace {
+
+// Serves a read with `level` and advances delay to the cycle its data is ready.
+void serve(MemoryLevel& level, const Clock& clock, tlm::tlm_generic_payload& trans,
+           sc_core::sc_time& delay) {
+  if (trans.get_command() != tlm::TLM_READ_COMMAND) {
+    trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+    return;
+  }
+  sc_core::sc_time start = sc_core::sc_time_stamp() + delay;
+  Cycle ready = level.read(trans.get_address(), trans.get_data_length(), clock.cycles(start));
+  delay = clock.time(ready) - sc_core::sc_time_stamp();
+  trans.set_response_status(tlm::TLM_OK_RESPONSE);
+}
+
+}  // namespace
+
+Cycle TlmReadPort::read(uint64_t addr, uint32_t bytes, Cycle now) {
+  scratch_.resize(bytes);
+  tlm::tlm_generic_payload trans;
+  trans.set_command(tlm::TLM_READ_COMMAND);
+  trans.set_address(addr);
+  trans.set_data_ptr(scratch_.data());
+  trans.set_data_length(bytes);
+  trans.set_streaming_width(bytes);
+  trans.set_byte_enable_ptr(nullptr);
+  trans.set_dmi_allowed(false);
+  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  sc_core::sc_time delay = clock_.time(now) - sc_core::sc_time_stamp();
+  transport_(trans, delay);
+  if (trans.is_response_error())
+    throw std::runtime_error("memory read at " + std::to_string(addr) + " failed: " +
+                             trans.get_response_string());
+  return clock_.cycles(sc_core::sc_time_stamp() + delay);
+}
+
+CacheModule::CacheModule(sc_core::sc_module_name name, const CacheConfig& config,
+                         const Clock& clock)
+    : sc_module(name),
+      in("in"),
+      out("out"),
+      clock_(clock),
+      below_([this](auto& trans, auto& delay) { out->b_transport(trans, delay); }, clock),
+      cache_(config, &below_) {
+  in.register_b_transport(this, &CacheModule::b_transport);
+}
+
+void CacheModule::b_transport(int, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  serve(cache_, clock_, trans, delay);
+}
+
+DramModule::DramModule(sc_core::sc_module_name name, const DramConfig& config, const Clock& clock)
+    : sc_module(name), in("in"), clock_(clock), dram_(config) {
+  in.register_b_transport(this, &DramModule::b_transport);
+}
+
+void DramModule::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay) {
+  serve(dram_, clock_, trans, delay);
+}
+
+}  // namespace rtsim

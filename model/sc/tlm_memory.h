@@ -1,0 +1,73 @@
+// TLM-2.0 wrappers of the memory hierarchy (model/mem): caches and DRAM as sc_modules joined
+// by sockets, so that another loosely-timed TLM memory model can be bound where the DRAM is.
+// Protocol: the base protocol's blocking transport, loosely timed. A read transaction starts at
+// sc_time_stamp() + delay; the target adds to delay the time until its data is ready. Only the
+// address and length matter: the functional model reads BVH data itself, so targets do not
+// fill the data buffer. No module has a thread: a transaction is one function call chain,
+// and callers sleep until the returned time.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/multi_passthrough_target_socket.h>
+#include <tlm_utils/simple_initiator_socket.h>
+#include <tlm_utils/simple_target_socket.h>
+
+#include "model/mem/cache.h"
+#include "model/mem/dram.h"
+#include "model/sc/clock.h"
+
+namespace rtsim {
+
+// A MemoryLevel that sends its reads as TLM transactions through `transport` (a socket's
+// b_transport, looked up at call time because sockets bind after construction).
+class TlmReadPort : public MemoryLevel {
+public:
+  using Transport = std::function<void(tlm::tlm_generic_payload&, sc_core::sc_time&)>;
+  TlmReadPort(Transport transport, const Clock& clock)
+      : transport_(std::move(transport)), clock_(clock) {}
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
+
+private:
+  Transport transport_;
+  Clock clock_;
+  std::vector<unsigned char> scratch_;
+};
+
+// A cache level: any number of initiators bind to `in`; misses go out through `out`.
+class CacheModule : public sc_core::sc_module {
+public:
+  tlm_utils::multi_passthrough_target_socket<CacheModule> in;
+  tlm_utils::simple_initiator_socket<CacheModule> out;
+
+  CacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock);
+  const Cache& cache() const { return cache_; }
+
+private:
+  void b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+
+  Clock clock_;
+  TlmReadPort below_;
+  Cache cache_;
+};
+
+class DramModule : public sc_core::sc_module {
+public:
+  tlm_utils::simple_target_socket<DramModule> in;
+
+  DramModule(sc_core::sc_module_name name, const DramConfig& config, const Clock& clock);
+  const Dram& dram() const { return dram_; }
+
+private:
+  void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+
+  Clock clock_;
+  Dram dram_;
+};
+
+}  // namespace rtsim
