@@ -1,0 +1,69 @@
+#include "model/bvh/bvh_config.h"
+
+#include <fmt/core.h>
+
+namespace rtsim {
+
+std::string validate(const BvhConfig& c) {
+  if (c.sah_bins != 16 && c.sah_bins != 32)
+    return fmt::format("sah_bins is {}: it must be 16 or 32", c.sah_bins);
+  if (c.max_leaf_size < 1 || c.max_leaf_size > 254)
+    return fmt::format("max_leaf_size is {}: it must be in 1..254", c.max_leaf_size);
+  if (c.node_format == NodeFormat::Cwbvh8 && c.max_leaf_size > 3)
+    return fmt::format("max_leaf_size is {}: cwbvh8 leaves hold at most 3 triangles",
+                       c.max_leaf_size);
+  if (!(c.sah_node_cost >= 0.0f && c.sah_node_cost < 1e6f))
+    return "sah_node_cost must be a finite value >= 0";
+  if (c.width < 2 || c.width > 8) return fmt::format("width is {}: it must be in 2..8", c.width);
+  if (c.treelet_bytes < 512 || c.treelet_bytes > 65536)
+    return fmt::format("treelet_bytes is {}: it must be in 512..65536", c.treelet_bytes);
+  if (c.region_align == 0 || (c.region_align & (c.region_align - 1)) != 0)
+    return fmt::format("region_align is {}: it must be a power of two", c.region_align);
+  if (c.node_base % 64 != 0) return "node_base must be 64-byte aligned";
+  return {};
+}
+
+const char* node_format_name(NodeFormat format) {
+  return format == NodeFormat::Cwbvh8 ? "cwbvh8" : "aabb32";
+}
+
+const char* triangle_format_name(TriangleFormat format) {
+  return format == TriangleFormat::Woop ? "woop" : "raw";
+}
+
+const char* node_layout_name(NodeLayout layout) {
+  switch (layout) {
+    case NodeLayout::DepthFirst: return "depth-first";
+    case NodeLayout::BreadthFirst: return "breadth-first";
+    default: return "treelet";
+  }
+}
+
+std::optional<NodeFormat> node_format_from_name(const std::string& name) {
+  if (name == "aabb32") return NodeFormat::Aabb32;
+  if (name == "cwbvh8") return NodeFormat::Cwbvh8;
+  return std::nullopt;
+}
+
+std::optional<TriangleFormat> triangle_format_from_name(const std::string& name) {
+  if (name == "raw") return TriangleFormat::Raw;
+  if (name == "woop") return TriangleFormat::Woop;
+  return std::nullopt;
+}
+
+std::optional<NodeLayout> node_layout_from_name(const std::string& name) {
+  if (name == "depth-first" || name == "dfs") return NodeLayout::DepthFirst;
+  if (name == "breadth-first" || name == "bfs") return NodeLayout::BreadthFirst;
+  if (name == "treelet") return NodeLayout::Treelet;
+  return std::nullopt;
+}
+
+std::string describe(const BvhConfig& c) {
+  std::string text = fmt::format("bvh{} {} {} {}", c.width, node_format_name(c.node_format),
+                                 triangle_format_name(c.triangle_format),
+                                 node_layout_name(c.node_layout));
+  return text + fmt::format(" (treelets {} B, leaves <= {}, {} bins)", c.treelet_bytes,
+                            c.max_leaf_size, c.sah_bins);
+}
+
+}  // namespace rtsim

@@ -1,0 +1,54 @@
+// Configuration of the BVH that the hardware traverses: how it is built (binned SAH), collapsed
+// to a wide tree, encoded (node and triangle formats), ordered in memory and cut into treelets.
+// Every field has a default, a unit and a one-line description; validate() names a bad field.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace rtsim {
+
+enum class NodeFormat : uint8_t {
+  Aabb32,  // uncompressed fp32 child boxes, 64-byte aligned node of 2..8 children
+  Cwbvh8,  // Ylitie et al. 2017 compressed 8-wide node: 80 bytes, 8-bit quantized child boxes
+};
+
+enum class TriangleFormat : uint8_t {
+  Raw,   // three fp32 vertices + primitive id: 40 bytes; watertight test (Woop et al. 2013)
+  Woop,  // precomputed affine unit-triangle transform + primitive id: 52 bytes (Woop 2004)
+};
+
+enum class NodeLayout : uint8_t {
+  DepthFirst,    // pre-order (aabb32); sibling groups in depth-first order (cwbvh8)
+  BreadthFirst,  // level by level
+  Treelet,       // treelet by treelet, each treelet contiguous (Aila & Karras 2010)
+};
+
+struct BvhConfig {
+  int sah_bins = 16;                   // bins per axis of the binned SAH build: 16 or 32
+  int max_leaf_size = 3;               // triangles: most triangles in one leaf (cwbvh8: <= 3)
+  float sah_node_cost = 1.0f;          // SAH cost of a node visit, in triangle tests
+  int width = 8;                       // children: most children of one node, 2..8
+  NodeFormat node_format = NodeFormat::Aabb32;
+  TriangleFormat triangle_format = TriangleFormat::Raw;
+  NodeLayout node_layout = NodeLayout::Treelet;
+  uint32_t treelet_bytes = 4096;       // bytes: budget of one treelet, 512..65536
+  uint64_t node_base = 0x10000000;     // address: first byte of the node region
+  uint64_t region_align = 4096;        // bytes: the triangle region starts on this alignment
+};
+
+// Empty if the config is usable, else one line naming the field and the allowed values.
+std::string validate(const BvhConfig& config);
+
+const char* node_format_name(NodeFormat format);
+const char* triangle_format_name(TriangleFormat format);
+const char* node_layout_name(NodeLayout layout);
+std::optional<NodeFormat> node_format_from_name(const std::string& name);
+std::optional<TriangleFormat> triangle_format_from_name(const std::string& name);
+std::optional<NodeLayout> node_layout_from_name(const std::string& name);
+
+// "bvh8 aabb32 raw treelet(4096 B)": how a config is named in reports.
+std::string describe(const BvhConfig& config);
+
+}  // namespace rtsim

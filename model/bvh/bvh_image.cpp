@@ -1,0 +1,105 @@
+#include "model/bvh/bvh_image.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "model/bvh/binned_sah.h"
+#include "model/bvh/node_format.h"
+#include "model/bvh/node_layout.h"
+#include "model/bvh/triangle_format.h"
+#include "model/bvh/wide_bvh.h"
+#include "traces/error.h"
+
+namespace rtsim {
+namespace {
+
+float largest_coordinate(const TriangleMesh& mesh) {
+  float m = 0.0f;
+  for (const auto& p : mesh.positions)
+    m = std::max({m, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  return m;
+}
+
+uint32_t deepest_level(const WideBvh& bvh) {
+  std::vector<uint32_t> depth(bvh.nodes.size(), 0);
+  uint32_t deepest = 0;
+  for (size_t n = 0; n < bvh.nodes.size(); ++n) {
+    deepest = std::max(deepest, depth[n]);
+    for (int c = 0; c < bvh.nodes[n].child_count; ++c)
+      if (!bvh.nodes[n].child[c].leaf()) depth[bvh.nodes[n].child[c].node] = depth[n] + 1;
+  }
+  return deepest;
+}
+
+}  // namespace
+
+BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
+  std::string problem = validate(config);
+  if (!problem.empty()) throw_input_error("bvh config", "", problem);
+  if (mesh.triangle_count() == 0) throw std::invalid_argument("build_bvh_image: no triangles");
+  bool groups = config.node_format == NodeFormat::Cwbvh8;
+
+  BvhImage image;
+  image.config = config;
+  image.node_stride = node_stride(config.node_format, config.width);
+  image.triangle_stride = triangle_stride(config.triangle_format);
+  image.scene_extent = largest_coordinate(mesh);
+
+  // Build, collapse, cut into treelets, order.
+  Bvh2 bvh2 = build_binned_sah(mesh, config);
+  WideBvh wide = collapse_bvh(bvh2, config.width);
+  Treelets treelets = form_treelets(wide, image.node_stride, groups, config.treelet_bytes);
+  std::vector<uint32_t> order = order_nodes(wide, treelets, config.node_layout, groups);
+  std::vector<uint32_t> position(wide.nodes.size());
+  for (uint32_t i = 0; i < order.size(); ++i) position[order[i]] = i;
+
+  // Triangles follow the node order: a node's leaf children, in slot order.
+  std::vector<uint32_t> tri_order;
+  tri_order.reserve(mesh.triangle_count());
+  std::vector<ChildPlacement> placement(wide.nodes.size());
+  for (uint32_t n : order) {
+    const WideNode& node = wide.nodes[n];
+    for (int c = 0; c < node.child_count; ++c) {
+      const WideChild& child = node.child[c];
+      if (child.leaf()) {
+        placement[n].position[c] = static_cast<uint32_t>(tri_order.size());
+        for (uint32_t i = 0; i < child.count; ++i)
+          tri_order.push_back(wide.prim_order[child.first + i]);
+      } else {
+        placement[n].position[c] = position[child.node];
+      }
+    }
+  }
+
+  // Encode both regions and place them in the address space.
+  image.node_count = static_cast<uint32_t>(order.size());
+  image.triangle_count = static_cast<uint32_t>(tri_order.size());
+  image.nodes.assign(size_t(image.node_count) * image.node_stride, 0);
+  image.node_treelet.resize(image.node_count);
+  for (uint32_t i = 0; i < image.node_count; ++i) {
+    const WideNode& node = wide.nodes[order[i]];
+    encode_node(config.node_format, config.width, node, placement[order[i]],
+                image.nodes.data() + size_t(i) * image.node_stride);
+    image.node_treelet[i] = node.treelet;
+  }
+  image.triangles.assign(size_t(image.triangle_count) * image.triangle_stride, 0);
+  for (uint32_t i = 0; i < image.triangle_count; ++i)
+    encode_triangle(config.triangle_format, mesh, tri_order[i],
+                    image.triangles.data() + size_t(i) * image.triangle_stride);
+  image.node_base = config.node_base;
+  uint64_t nodes_end = image.node_base + image.nodes.size();
+  image.triangle_base = (nodes_end + config.region_align - 1) & ~(config.region_align - 1);
+
+  image.treelets = treelets.stats;
+  image.stats.bvh2_nodes = static_cast<uint32_t>(bvh2.nodes.size());
+  image.stats.bvh2_depth = bvh2.depth;
+  image.stats.max_depth = deepest_level(wide);
+  for (const WideNode& node : wide.nodes) {
+    image.stats.child_slots_used += node.child_count;
+    for (int c = 0; c < node.child_count; ++c) image.stats.leaves += node.child[c].leaf();
+  }
+  return image;
+}
+
+}  // namespace rtsim

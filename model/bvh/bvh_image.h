@@ -1,0 +1,55 @@
+// The BVH as the hardware sees it: encoded nodes and triangles at addresses of a simulated
+// address space, plus the facts about it that the model reports (sizes, treelets, depth).
+// Address space: nodes from config.node_base, node i at node_base + i * node_stride; the
+// triangle region starts at the next multiple of config.region_align after the last node.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "model/bvh/bvh_config.h"
+#include "model/bvh/treelets.h"
+#include "traces/ray.h"
+
+namespace rtsim {
+
+struct BvhBuildStats {
+  uint32_t bvh2_nodes = 0;   // nodes of the binary BVH before collapsing
+  uint32_t bvh2_depth = 0;   // levels below the root of its deepest leaf
+  uint32_t leaves = 0;       // leaf children in the wide BVH
+  uint32_t max_depth = 0;    // levels below the root of the deepest wide node
+  uint32_t child_slots_used = 0;  // children over all wide nodes (fill = used / nodes / width)
+};
+
+struct BvhImage {
+  BvhConfig config;
+  uint32_t node_stride = 0, triangle_stride = 0;  // bytes per record
+  uint32_t node_count = 0, triangle_count = 0;
+  uint64_t node_base = 0, triangle_base = 0;      // addresses of the two regions
+  std::vector<uint8_t> nodes, triangles;          // the bytes of the two regions
+  std::vector<uint32_t> node_treelet;  // treelet id of the node at each position
+  TreeletStats treelets;
+  BvhBuildStats stats;
+  float scene_extent = 0.0f;  // largest |coordinate| of any vertex
+
+  uint64_t node_address(uint32_t position) const {
+    return node_base + uint64_t(position) * node_stride;
+  }
+  uint64_t triangle_address(uint32_t position) const {
+    return triangle_base + uint64_t(position) * triangle_stride;
+  }
+  const uint8_t* node_bytes(uint32_t position) const {
+    return nodes.data() + size_t(position) * node_stride;
+  }
+  const uint8_t* triangle_bytes(uint32_t position) const {
+    return triangles.data() + size_t(position) * triangle_stride;
+  }
+  uint64_t total_bytes() const { return nodes.size() + triangles.size(); }
+};
+
+// Builds, collapses, forms treelets, orders and encodes. Throws InputError (via
+// throw_input_error with place "bvh config") for an invalid config, std::invalid_argument for
+// a mesh without triangles.
+BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config);
+
+}  // namespace rtsim

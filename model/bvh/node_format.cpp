@@ -1,0 +1,164 @@
+#include "model/bvh/node_format.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rtsim {
+namespace {
+
+// cwbvh8 byte offsets.
+constexpr size_t kOrigin = 0, kExponents = 12, kInnerMask = 15, kChildBase = 16, kTriBase = 20,
+                 kMeta = 24, kQuantLo = 32, kQuantHi = 56;
+
+void put32(uint8_t* out, uint32_t v) { std::memcpy(out, &v, 4); }
+uint32_t get32(const uint8_t* in) {
+  uint32_t v;
+  std::memcpy(&v, in, 4);
+  return v;
+}
+
+// Smallest exponent byte whose 255 steps from lo reach hi once rounded to fp32.
+uint8_t grid_exponent(float lo, float hi) {
+  int e = 1;
+  double steps = (double(hi) - double(lo)) / 255.0;
+  if (steps > 0.0) e = std::clamp(std::ilogb(steps) + 127, 1, 254);
+  while (e < 254 && cwbvh_plane(lo, cwbvh_scale(uint8_t(e)), 255) < hi) ++e;
+  return uint8_t(e);
+}
+
+// Largest q whose decoded plane is <= value: the box grows outward, never inward.
+uint8_t quantize_down(float origin, float scale, float value) {
+  double q = std::floor((double(value) - double(origin)) / double(scale));
+  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
+  while (qi > 0 && cwbvh_plane(origin, scale, uint8_t(qi)) > value) --qi;
+  return uint8_t(qi);
+}
+
+// Smallest q whose decoded plane is >= value.
+uint8_t quantize_up(float origin, float scale, float value) {
+  double q = std::ceil((double(value) - double(origin)) / double(scale));
+  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
+  while (qi < 255 && cwbvh_plane(origin, scale, uint8_t(qi)) < value) ++qi;
+  return uint8_t(qi);
+}
+
+void encode_aabb32(int width, const WideNode& node, const ChildPlacement& placement,
+                   uint8_t* out) {
+  std::memset(out, 0, node_stride(NodeFormat::Aabb32, width));
+  for (int c = 0; c < node.child_count; ++c) {
+    const WideChild& child = node.child[c];
+    for (int axis = 0; axis < 3; ++axis) {
+      std::memcpy(out + 4 * ((2 * axis) * width + c), &child.box.lo[axis], 4);
+      std::memcpy(out + 4 * ((2 * axis + 1) * width + c), &child.box.hi[axis], 4);
+    }
+    put32(out + 24 * width + 4 * c, placement.position[c]);
+    out[28 * width + c] = child.leaf() ? uint8_t(child.count) : kAabbInnerCount;
+  }
+}
+
+void encode_cwbvh8(const WideNode& node, const ChildPlacement& placement, uint8_t* out) {
+  std::memset(out, 0, kCwbvhNodeBytes);
+  std::memcpy(out + kOrigin, &node.box.lo, 12);
+  float scale[3];
+  for (int axis = 0; axis < 3; ++axis) {
+    out[kExponents + axis] = grid_exponent(node.box.lo[axis], node.box.hi[axis]);
+    scale[axis] = cwbvh_scale(out[kExponents + axis]);
+  }
+  // Children: inner ones must sit side by side from the first, triangles likewise.
+  uint32_t child_base = 0, tri_base = 0, inner_seen = 0, tri_seen = 0;
+  bool any_inner = false, any_leaf = false;
+  uint8_t imask = 0;
+  for (int c = 0; c < node.child_count; ++c) {
+    const WideChild& child = node.child[c];
+    uint32_t pos = placement.position[c];
+    if (child.leaf()) {
+      if (!any_leaf) tri_base = pos;
+      any_leaf = true;
+      uint32_t offset = pos - tri_base;
+      if (pos < tri_base || offset != tri_seen || offset > 23 || child.count > 3)
+        throw std::logic_error("cwbvh8: leaf triangles are not contiguous");
+      tri_seen += child.count;
+      out[kMeta + c] = uint8_t((((1u << child.count) - 1) << 5) | offset);
+    } else {
+      if (!any_inner) child_base = pos;
+      any_inner = true;
+      if (pos != child_base + inner_seen)
+        throw std::logic_error("cwbvh8: sibling nodes are not contiguous");
+      inner_seen++;
+      imask |= uint8_t(1u << c);
+      out[kMeta + c] = uint8_t((1u << 5) | (24 + c));
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      out[kQuantLo + 8 * axis + c] =
+          quantize_down(node.box.lo[axis], scale[axis], child.box.lo[axis]);
+      out[kQuantHi + 8 * axis + c] =
+          quantize_up(node.box.lo[axis], scale[axis], child.box.hi[axis]);
+    }
+  }
+  out[kInnerMask] = imask;
+  put32(out + kChildBase, child_base);
+  put32(out + kTriBase, tri_base);
+}
+
+}  // namespace
+
+uint32_t node_stride(NodeFormat format, int width) {
+  if (format == NodeFormat::Cwbvh8) return kCwbvhNodeBytes;
+  return (29u * width + 63u) / 64u * 64u;
+}
+
+void encode_node(NodeFormat format, int width, const WideNode& node,
+                 const ChildPlacement& placement, uint8_t* out) {
+  if (format == NodeFormat::Cwbvh8)
+    encode_cwbvh8(node, placement, out);
+  else
+    encode_aabb32(width, node, placement, out);
+}
+
+void decode_aabb32(const uint8_t* bytes, int width, NodeView& view) {
+  view.slots = width;
+  view.valid = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::memcpy(view.lo[axis], bytes + 4 * (2 * axis) * width, 4 * width);
+    std::memcpy(view.hi[axis], bytes + 4 * (2 * axis + 1) * width, 4 * width);
+  }
+  std::memcpy(view.index, bytes + 24 * width, 4 * width);
+  const uint8_t* counts = bytes + 28 * width;
+  for (int s = 0; s < width; ++s) {
+    view.valid |= uint32_t(counts[s] != 0) << s;
+    view.count[s] = counts[s] == kAabbInnerCount ? 0 : counts[s];
+  }
+}
+
+void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
+  view.slots = 8;
+  view.valid = 0;
+  float origin[3];
+  std::memcpy(origin, bytes + kOrigin, 12);
+  uint8_t imask = bytes[kInnerMask];
+  uint32_t child_base = get32(bytes + kChildBase), tri_base = get32(bytes + kTriBase);
+  // Planes: origin + q * 2^e per axis, exactly as the encoder rounded them.
+  for (int axis = 0; axis < 3; ++axis) {
+    float scale = cwbvh_scale(bytes[kExponents + axis]);
+    for (int s = 0; s < 8; ++s) {
+      view.lo[axis][s] = cwbvh_plane(origin[axis], scale, bytes[kQuantLo + 8 * axis + s]);
+      view.hi[axis][s] = cwbvh_plane(origin[axis], scale, bytes[kQuantHi + 8 * axis + s]);
+    }
+  }
+  // References: inner children by rank among inner slots, leaves by their triangle offset.
+  for (int s = 0; s < 8; ++s) {
+    uint8_t meta = bytes[kMeta + s];
+    if (meta == 0) continue;
+    view.valid |= 1u << s;
+    if (imask & (1u << s)) {
+      view.index[s] = child_base + __builtin_popcount(imask & ((1u << s) - 1));
+      view.count[s] = 0;
+    } else {
+      view.index[s] = tri_base + (meta & 31u);
+      view.count[s] = __builtin_popcount(meta >> 5);
+    }
+  }
+}
+
+}  // namespace rtsim

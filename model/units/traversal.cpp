@@ -1,0 +1,139 @@
+#include "model/units/traversal.h"
+
+#include <cmath>
+
+#include "model/bvh/node_format.h"
+#include "model/units/ray_box.h"
+#include "model/units/ray_triangle.h"
+
+namespace rtsim {
+
+TraversalCounters& TraversalCounters::operator+=(const TraversalCounters& o) {
+  trav_nodes += o.trav_nodes;
+  trav_leaves += o.trav_leaves;
+  trav_prims += o.trav_prims;
+  trav_prim_hits += o.trav_prim_hits;
+  return *this;
+}
+
+TraversalUnit::TraversalUnit(const BvhImage& image, TraversalConfig config)
+    : image_(image), config_(config) {}
+
+void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
+  s.ray = prepare_ray(ray, image_.scene_extent, config_.box_padding);
+  s.query = ray.query;
+  s.t_hit = s.ray.tmax;
+  s.prim = kNoHit;
+  s.u = s.v = 0.0f;
+  s.stack.clear();
+  s.stack.push_back({0, 0, s.ray.tmin});
+  s.max_stack = 1;
+  s.counters = {};
+  s.accesses.clear();
+  s.done = false;
+}
+
+StepResult TraversalUnit::step(TraversalState& s) const {
+  // Pop until an entry that may still hold a closer hit; none left means the ray is done.
+  while (!s.stack.empty()) {
+    StackEntry entry = s.stack.back();
+    s.stack.pop_back();
+    if (entry.tnear > s.t_hit * kSlabFarGrowth) continue;
+    return entry.count == 0 ? visit_node(s, entry) : visit_leaf(s, entry);
+  }
+  s.done = true;
+  return {};
+}
+
+StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry) const {
+  StepResult out{StepKind::Node, static_cast<uint32_t>(s.accesses.size()), 0, 0, 0};
+  // Fetch the node.
+  s.counters.trav_nodes++;
+  if (config_.record_accesses) {
+    s.accesses.push_back({image_.node_address(entry.index), image_.node_stride, AccessKind::Node});
+    out.access_count = 1;
+  }
+  NodeView node;
+  decode_node(image_.config.node_format, image_.config.width, image_.node_bytes(entry.index),
+              node);
+  // Test every child box.
+  float tnear[kMaxWidth];
+  uint32_t hits = intersect_children(s.ray, node, s.t_hit, tnear);
+  out.tests = static_cast<uint32_t>(__builtin_popcount(node.valid));
+  out.hits = static_cast<uint32_t>(__builtin_popcount(hits));
+  // Sort the hit children near to far.
+  StackEntry sorted[kMaxWidth];
+  int n = 0;
+  for (int slot = 0; slot < node.slots; ++slot) {
+    if (!(hits & (1u << slot))) continue;
+    StackEntry child{node.index[slot], node.count[slot], tnear[slot]};
+    int i = n++;
+    while (i > 0 && sorted[i - 1].tnear > child.tnear) {
+      sorted[i] = sorted[i - 1];
+      --i;
+    }
+    sorted[i] = child;
+  }
+  // Push far to near, so the nearest child is visited next.
+  for (int i = n - 1; i >= 0; --i) s.stack.push_back(sorted[i]);
+  if (s.stack.size() > s.max_stack) s.max_stack = static_cast<uint32_t>(s.stack.size());
+  return out;
+}
+
+StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry) const {
+  StepResult out{StepKind::Leaf, static_cast<uint32_t>(s.accesses.size()), 0, 0, 0};
+  s.counters.trav_leaves++;
+  for (uint32_t i = 0; i < entry.count; ++i) {
+    uint32_t position = entry.index + i;
+    // Fetch the triangle and test it against the range still open.
+    s.counters.trav_prims++;
+    out.tests++;
+    if (config_.record_accesses) {
+      s.accesses.push_back(
+          {image_.triangle_address(position), image_.triangle_stride, AccessKind::Triangle});
+      out.access_count++;
+    }
+    TriangleHit hit;
+    uint32_t prim;
+    if (!intersect_triangle(image_.config.triangle_format, s.ray, image_.triangle_bytes(position),
+                            s.ray.tmin, s.t_hit, hit, prim))
+      continue;
+    // Keep the hit; the range now ends there.
+    s.counters.trav_prim_hits++;
+    out.hits++;
+    s.t_hit = hit.t;
+    s.prim = prim;
+    s.u = hit.u;
+    s.v = hit.v;
+    // An any-hit query is answered by its first hit.
+    if (s.query == Query::AnyHit) {
+      s.stack.clear();
+      break;
+    }
+  }
+  return out;
+}
+
+Hit TraversalUnit::result(const TraversalState& s, const Ray& ray) const {
+  Hit hit;
+  if (s.prim == kNoHit) return hit;
+  if (s.query == Query::AnyHit) {
+    hit.t = ray.tmax;
+    hit.prim = kAnyPrim;
+    return hit;
+  }
+  hit.t = std::ldexp(s.t_hit, s.ray.t_exponent);
+  hit.u = s.u;
+  hit.v = s.v;
+  hit.prim = s.prim;
+  return hit;
+}
+
+Hit TraversalUnit::trace(TraversalState& s, const Ray& ray) const {
+  begin(s, ray);
+  while (step(s).kind != StepKind::Done) {
+  }
+  return result(s, ray);
+}
+
+}  // namespace rtsim

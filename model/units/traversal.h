@@ -1,0 +1,99 @@
+// Traversal unit: walks one ray through the BVH image, one node visit or one leaf per step(),
+// so the timing model can drive exactly this code and charge each step's fetches and unit
+// passes. Ordered stack traversal as in pbrt's BVH accelerator and Ylitie et al. (HPG 2017):
+// at a node the ray-box unit tests every child, the hit children are sorted by entry distance
+// and pushed far-to-near, so the nearest is visited next; a popped entry farther than the
+// closest hit so far is dropped without a fetch. Any-hit queries stop at the first hit.
+// Timing assumptions (for the timing model): one node step = one node fetch + one ray-box unit
+// pass + a sort of at most `width` distances; one leaf step = one fetch and one ray-triangle
+// unit pass per triangle. This file itself has no notion of time.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "model/bvh/bvh_image.h"
+#include "model/units/prepared_ray.h"
+#include "traces/ray.h"
+
+namespace rtsim {
+
+struct TraversalConfig {
+  float box_padding = 0x1p-20f;  // relative: box growth per |origin| + scene extent (ray_box.h)
+  bool record_accesses = true;   // keep each ray's fetch list for the timing model
+};
+
+// Per-ray counters under Embree's names.
+struct TraversalCounters {
+  uint64_t trav_nodes = 0;      // node visits (node fetches)
+  uint64_t trav_leaves = 0;     // leaf visits
+  uint64_t trav_prims = 0;      // ray-triangle tests
+  uint64_t trav_prim_hits = 0;  // tests that hit (in range, before later ones shortened it)
+
+  TraversalCounters& operator+=(const TraversalCounters& o);
+};
+
+enum class AccessKind : uint8_t { Node, Triangle };
+
+struct MemoryAccess {
+  uint64_t address = 0;
+  uint32_t bytes = 0;
+  AccessKind kind = AccessKind::Node;
+};
+
+struct StackEntry {
+  uint32_t index = 0;  // node position, or first triangle position of a leaf
+  uint32_t count = 0;  // triangles of a leaf; 0 for a node
+  float tnear = 0.0f;  // where the ray enters the box (prepared-ray units)
+};
+
+// Everything one ray in flight holds. Reuse one state for many rays: begin() resets it and keeps
+// the vectors' capacity.
+struct TraversalState {
+  PreparedRay ray;
+  Query query = Query::ClosestHit;
+  float t_hit = 0.0f;      // closest hit so far, or tmax (prepared-ray units)
+  uint32_t prim = kNoHit;  // triangle hit (also for any-hit queries)
+  float u = 0.0f, v = 0.0f;
+  std::vector<StackEntry> stack;
+  uint32_t max_stack = 0;  // deepest the stack got, in entries
+  TraversalCounters counters;
+  std::vector<MemoryAccess> accesses;  // this ray's fetches, in order
+  bool done = true;
+};
+
+enum class StepKind : uint8_t { Node, Leaf, Done };
+
+struct StepResult {
+  StepKind kind = StepKind::Done;
+  uint32_t first_access = 0;  // this step's fetches: state.accesses[first, first + count)
+  uint32_t access_count = 0;
+  uint32_t tests = 0;         // boxes (node) or triangles (leaf) tested
+  uint32_t hits = 0;          // boxes entered, or triangles hit
+};
+
+class TraversalUnit {
+public:
+  explicit TraversalUnit(const BvhImage& image, TraversalConfig config = {});
+
+  // Starts a ray: the root node is the first thing on the stack.
+  void begin(TraversalState& state, const Ray& ray) const;
+  // Visits the next node or leaf; Done (with no fetch) when the ray is finished.
+  StepResult step(TraversalState& state) const;
+  // The ray's answer as EmbreeScene::trace gives it: any-hit reports prim kAnyPrim, t = tmax.
+  Hit result(const TraversalState& state, const Ray& ray) const;
+  // begin, step until Done, result.
+  Hit trace(TraversalState& state, const Ray& ray) const;
+
+  const BvhImage& image() const { return image_; }
+  const TraversalConfig& config() const { return config_; }
+
+private:
+  StepResult visit_node(TraversalState& state, const StackEntry& entry) const;
+  StepResult visit_leaf(TraversalState& state, const StackEntry& entry) const;
+
+  const BvhImage& image_;
+  TraversalConfig config_;
+};
+
+}  // namespace rtsim

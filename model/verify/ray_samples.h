@@ -1,0 +1,37 @@
+// Seeded ray sets for verification and benchmarks while no pipeline stream is at hand:
+// diffuse-GI-like rays (cosine-distributed from random surface points), pinhole camera rays
+// and uniformly random rays. Deterministic: same mesh, count and seed, same rays everywhere.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "traces/ray.h"
+
+namespace rtsim {
+
+// Small portable generator (SplitMix64): identical sequences on every platform.
+class SeededRandom {
+public:
+  explicit SeededRandom(uint64_t seed) : state_(seed) {}
+  uint64_t next();
+  float uniform();  // in [0, 1), 24 random bits
+private:
+  uint64_t state_;
+};
+
+// Rays leaving random surface points (area-weighted) on a random side, cosine-distributed
+// about the normal, origin nudged off the surface; closest-hit, tmax = +inf, type DiffuseGI.
+std::vector<Ray> sample_diffuse_rays(const TriangleMesh& mesh, size_t count, uint64_t seed);
+
+// A width x height pinhole camera outside the mesh bounds looking at their center.
+std::vector<Ray> sample_camera_rays(const TriangleMesh& mesh, uint32_t width, uint32_t height);
+
+// Origins uniform in the mesh bounds (grown by `margin` of the diagonal), directions uniform.
+std::vector<Ray> sample_random_rays(const TriangleMesh& mesh, size_t count, uint64_t seed,
+                                    float margin = 0.1f);
+
+// Uniformly distributed unit vector.
+glm::vec3 random_direction(SeededRandom& random);
+
+}  // namespace rtsim

@@ -1,0 +1,58 @@
+// Checks the model against Embree ray by ray: the traversal unit and EmbreeScene (robust mode)
+// trace the same ray; hit or miss, triangle and t (within tolerance) must agree, and every
+// disagreement goes to the double-precision arbiter. This is what `rtsim verify` runs and what
+// the timing model will run beside every timed ray.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "model/units/traversal.h"
+#include "model/verify/arbiter.h"
+#include "traces/embree_scene.h"
+
+namespace rtsim {
+
+struct Mismatch {
+  uint64_t index = 0;  // ray number in the stream
+  Ray ray;
+  Hit embree, model;
+  uint32_t model_prim = kNoHit;  // the triangle the model hit, also for any-hit queries
+  Verdict verdict;
+};
+
+struct VerifyReport {
+  uint64_t rays = 0;
+  uint64_t agree = 0;
+  uint64_t model_hits = 0, embree_hits = 0;
+  std::array<uint64_t, kMismatchClassCount> by_class{};
+  std::array<std::array<uint64_t, kRightSideCount>, kMismatchClassCount> right{};
+  std::array<uint64_t, kRayTypeCount> rays_by_type{}, mismatches_by_type{};
+  TraversalCounters counters;  // summed over all rays
+  uint64_t accesses = 0, access_bytes = 0;
+  std::vector<Mismatch> examples;  // the first max_examples mismatches
+
+  uint64_t mismatches() const { return rays - agree; }
+  uint64_t unexplained() const { return by_class[int(MismatchClass::Unexplained)]; }
+};
+
+class Verifier {
+public:
+  Verifier(const TriangleMesh& mesh, const TraversalUnit& model, const EmbreeScene& embree,
+           ArbiterConfig config = {}, size_t max_examples = 10);
+
+  // Traces one ray both ways and records the outcome; returns true if they agree.
+  bool check(const Ray& ray);
+  const VerifyReport& report() const { return report_; }
+
+private:
+  const TraversalUnit& model_;
+  const EmbreeScene& embree_;
+  Arbiter arbiter_;
+  size_t max_examples_;
+  TraversalState state_;
+  VerifyReport report_;
+};
+
+}  // namespace rtsim
