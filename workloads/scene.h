@@ -49,6 +49,9 @@ bool is_builtin_scene(const std::string& spec);
 // Names and parameter syntax of the built-in scenes, for help texts.
 std::vector<std::string> builtin_scene_names();
 
+// File extensions load_scene imports (lowercase, with the dot: ".obj", ".gltf", ...).
+std::vector<std::string> scene_file_extensions();
+
 // Fills fingerprint and bounds, and checks the invariants (ids in range, finite vertices,
 // at least one triangle); throws InputError naming source.
 void finalize_scene(Scene& scene);

@@ -1,0 +1,172 @@
+// The built-in scenes: exact triangle counts, named objects and materials, bounds, and
+// fingerprints that are stable across runs and machines.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include <glm/geometric.hpp>
+
+#include "workloads/scene.h"
+
+namespace rtsim {
+namespace {
+
+uint32_t object_id(const Scene& s, const std::string& name) {
+  auto it = std::find(s.object_names.begin(), s.object_names.end(), name);
+  EXPECT_NE(it, s.object_names.end()) << "no object named " << name;
+  return uint32_t(it - s.object_names.begin());
+}
+
+size_t triangles_of(const Scene& s, uint32_t object) {
+  return size_t(std::count(s.object_ids.begin(), s.object_ids.end(), object));
+}
+
+void expect_vec3_eq(const glm::vec3& a, const glm::vec3& b, const char* what) {
+  EXPECT_FLOAT_EQ(a.x, b.x) << what;
+  EXPECT_FLOAT_EQ(a.y, b.y) << what;
+  EXPECT_FLOAT_EQ(a.z, b.z) << what;
+}
+
+TEST(BuiltinScenes, NamesAreRecognizedWithOrWithoutPrefix) {
+  for (const char* spec : {"cornell", "builtin:cornell", "pica", "grid:10", "builtin:foliage:3"})
+    EXPECT_TRUE(is_builtin_scene(spec)) << spec;
+  for (const char* spec : {"cornell.obj", "scenes/pica.gltf", "/tmp/grid.ply"})
+    EXPECT_FALSE(is_builtin_scene(spec)) << spec;
+  EXPECT_EQ(builtin_scene_names(),
+            (std::vector<std::string>{"cornell", "pica", "grid:N", "foliage:N"}));
+  EXPECT_EQ(load_scene("cornell").fingerprint, load_scene("builtin:cornell").fingerprint);
+}
+
+TEST(BuiltinScenes, CornellBoxIsTheMeasuredBox) {
+  Scene s = load_scene("cornell");
+  EXPECT_EQ(s.source, "builtin:cornell");
+  EXPECT_EQ(s.triangle_count(), 32u);
+  EXPECT_EQ(s.object_names,
+            (std::vector<std::string>{"floor", "ceiling", "back_wall", "right_wall", "left_wall",
+                                      "short_block", "tall_block", "light"}));
+  EXPECT_EQ(triangles_of(s, object_id(s, "tall_block")), 10u);
+  EXPECT_EQ(triangles_of(s, object_id(s, "light")), 2u);
+  expect_vec3_eq(s.bounds.lo, glm::vec3(0.0f), "bounds.lo");
+  expect_vec3_eq(s.bounds.hi, glm::vec3(556.0f, 548.8f, 559.2f), "bounds.hi");
+  // Every light triangle is emissive, nothing else is; the red wall is at +x, green at x = 0.
+  for (size_t t = 0; t < s.triangle_count(); ++t) {
+    const Material& m = s.materials[s.material_ids[t]];
+    bool is_light = s.object_names[s.object_ids[t]] == "light";
+    EXPECT_EQ(m.emission.x > 0.0f, is_light) << "triangle " << t;
+    if (is_light) expect_vec3_eq(m.emission, glm::vec3(17.0f, 12.0f, 4.0f), "light emission");
+    if (s.object_names[s.object_ids[t]] == "left_wall") {
+      EXPECT_EQ(m.name, "red");
+    }
+    if (s.object_names[s.object_ids[t]] == "right_wall") {
+      EXPECT_EQ(m.name, "green");
+    }
+  }
+}
+
+TEST(BuiltinScenes, PicaHasEveryMaterialFamilyAndOneLight) {
+  Scene s = load_scene("pica");
+  EXPECT_EQ(s.source, "builtin:pica");
+  EXPECT_EQ(s.triangle_count(), 4144u);
+  expect_vec3_eq(s.bounds.lo, glm::vec3(-6.0f, 0.0f, -6.0f), "bounds.lo");
+  expect_vec3_eq(s.bounds.hi, glm::vec3(6.0f, 4.0f, 6.0f), "bounds.hi");
+  EXPECT_EQ(triangles_of(s, object_id(s, "light")), 128u);
+  EXPECT_EQ(triangles_of(s, object_id(s, "floor")), 512u);
+  for (uint32_t o = 0; o < s.object_names.size(); ++o)
+    EXPECT_GT(triangles_of(s, o), 0u) << s.object_names[o];
+
+  std::set<std::string> families;
+  for (const Material& m : s.materials) {
+    if (m.emission.x > 0.0f) families.insert("emissive");
+    if (m.metalness == 1.0f && m.roughness == 0.0f) families.insert("mirror");
+    if (m.transmission == 1.0f && m.ior == 1.5f) families.insert("glass");
+    if (m.translucency > 0.0f) families.insert("translucent");
+    if (m.layers == 2) families.insert("layered");
+    if (m.metalness == 0.0f && m.roughness > 0.0f && m.roughness <= 0.3f) families.insert("glossy");
+    if (m.roughness >= 0.8f) families.insert("rough");
+  }
+  EXPECT_EQ(families, (std::set<std::string>{"emissive", "mirror", "glass", "translucent",
+                                             "layered", "glossy", "rough"}));
+  size_t emissive_triangles = 0;
+  for (size_t t = 0; t < s.triangle_count(); ++t)
+    emissive_triangles += s.materials[s.material_ids[t]].emission.x > 0.0f;
+  EXPECT_EQ(emissive_triangles, 128u) << "only the light emits";
+}
+
+TEST(BuiltinScenes, GridHasExactlyNTriangles) {
+  for (uint64_t n : {1u, 127u, 128u, 129u, 1000u, 100000u}) {
+    Scene s = load_scene("grid:" + std::to_string(n));
+    EXPECT_EQ(s.triangle_count(), n);
+    EXPECT_EQ(s.source, "builtin:grid:" + std::to_string(n));
+    EXPECT_EQ(s.object_names.size(), (n + 127) / 128) << "one sphere per 128 triangles";
+  }
+  Scene s = load_scene("grid:1000");  // 8 spheres of radius 1, 2 x 2 x 2, 3 apart
+  expect_vec3_eq(s.bounds.lo, glm::vec3(-1.0f), "bounds.lo");
+  expect_vec3_eq(s.bounds.hi, glm::vec3(4.0f), "bounds.hi");
+  EXPECT_EQ(load_scene("builtin:grid:007").source, "builtin:grid:7");
+}
+
+TEST(BuiltinScenes, FoliageHasExactlyNTrianglesInsideTheBox) {
+  for (uint64_t n : {1u, 2u, 999u, 100000u}) {
+    Scene s = load_scene("foliage:" + std::to_string(n));
+    EXPECT_EQ(s.triangle_count(), n);
+    EXPECT_EQ(s.mesh.positions.size(), 3 * n);
+    EXPECT_EQ(s.source, "builtin:foliage:" + std::to_string(n));
+    // Leaf centres fill [-5, 5]^3; a leaf reaches at most 1.5 leaf sizes past its centre.
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_GE(s.bounds.lo[axis], -6.5f);
+      EXPECT_LE(s.bounds.hi[axis], 6.5f);
+      if (n >= 1000) {
+        EXPECT_LT(s.bounds.lo[axis], -4.9f) << "leaves should fill the box";
+      }
+    }
+  }
+}
+
+// Each leaf is the same triangle, scaled and rotated: edge ratios survive, orientations vary.
+TEST(BuiltinScenes, FoliageLeavesAreRigidlyRotatedCopies) {
+  Scene s = load_scene("foliage:1000");
+  float min_nz = 1.0f, max_nz = -1.0f;
+  for (size_t t = 0; t < s.triangle_count(); ++t) {
+    glm::vec3 a = s.mesh.vertex(t, 0), b = s.mesh.vertex(t, 1), c = s.mesh.vertex(t, 2);
+    // Template: apex (0, 1) over a base from (-0.5, -0.4) to (0.5, -0.4).
+    EXPECT_NEAR(glm::length(a - b) / glm::length(b - c), std::sqrt(0.25f + 1.96f), 1e-4f);
+    EXPECT_NEAR(glm::length(a - b), glm::length(a - c), 1e-4f * glm::length(a - b));
+    glm::vec3 n = glm::normalize(glm::cross(b - a, c - a));
+    min_nz = std::min(min_nz, n.z), max_nz = std::max(max_nz, n.z);
+  }
+  EXPECT_LT(min_nz, -0.99f);
+  EXPECT_GT(max_nz, 0.99f);
+}
+
+TEST(BuiltinScenes, FingerprintsAreStableAndTellScenesApart) {
+  for (const char* spec : {"cornell", "pica", "grid:5000", "foliage:5000"})
+    EXPECT_EQ(load_scene(spec).fingerprint, load_scene(spec).fingerprint) << spec;
+  std::set<uint64_t> distinct;
+  for (const char* spec : {"cornell", "pica", "grid:1000", "grid:1001", "grid:2000", "foliage:1000",
+                           "foliage:1001", "foliage:2000"})
+    distinct.insert(load_scene(spec).fingerprint);
+  EXPECT_EQ(distinct.size(), 8u);
+}
+
+// Built-ins use no trigonometry and their own RNG, so these values hold on every machine. If a
+// scene is changed on purpose, update its value here and say so in the commit.
+TEST(BuiltinScenes, FingerprintsMatchTheRecordedValues) {
+  EXPECT_EQ(load_scene("cornell").fingerprint, 0xdeccccc0edbf3e9aull);
+  EXPECT_EQ(load_scene("pica").fingerprint, 0xd97480b2c3196082ull);
+  EXPECT_EQ(load_scene("grid:1000").fingerprint, 0x45a8d68f7e3599a7ull);
+  EXPECT_EQ(load_scene("foliage:1000").fingerprint, 0x05253d99433d5864ull);
+}
+
+TEST(BuiltinScenes, TenMillionTriangles) {
+  for (const char* spec : {"grid:10000000", "foliage:10000000"}) {
+    Scene s = load_scene(spec);
+    EXPECT_EQ(s.triangle_count(), 10000000u) << spec;
+    EXPECT_EQ(s.material_ids.size(), 10000000u) << spec;
+    EXPECT_LE(s.mesh.positions.capacity(), 30000000u) << spec << ": no over-allocation";
+  }
+}
+
+}  // namespace
+}  // namespace rtsim

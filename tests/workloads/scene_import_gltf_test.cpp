@@ -1,0 +1,137 @@
+// glTF 2.0 (.gltf with an embedded buffer, and .glb): node transforms and instancing are applied,
+// nodes name the objects, and metallic-roughness materials with their extensions map directly.
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "scene_test_util.h"
+
+namespace rtsim {
+namespace {
+
+using test::TempDir;
+
+std::string base64(const std::string& in) {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < in.size(); i += 3) {
+    size_t left = in.size() - i;
+    uint32_t n = uint32_t(uint8_t(in[i])) << 16;
+    if (left > 1) n |= uint32_t(uint8_t(in[i + 1])) << 8;
+    if (left > 2) n |= uint32_t(uint8_t(in[i + 2]));
+    out += table[(n >> 18) & 63];
+    out += table[(n >> 12) & 63];
+    out += left > 1 ? table[(n >> 6) & 63] : '=';
+    out += left > 2 ? table[n & 63] : '=';
+  }
+  return out;
+}
+
+// One triangle (0,0,0) (1,0,0) (0,1,0) as float positions and uint16 indices: 42 bytes.
+std::string triangle_buffer() {
+  const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const uint16_t indices[3] = {0, 1, 2};
+  std::string data(42, '\0');
+  std::memcpy(data.data(), positions, 36);
+  std::memcpy(data.data() + 36, indices, 6);
+  return data;
+}
+
+// Nodes: "left" at x = -2 and its instance "left_copy" at z = -3 share mesh 0; "child" (mesh 1)
+// sits at z = 1 under "parent", which is at x = 10 and scaled by 2.
+std::string gltf_json(const std::string& buffer) {
+  return R"({
+  "asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_materials_transmission", "KHR_materials_ior",
+                     "KHR_materials_clearcoat"],
+  "scene": 0,
+  "scenes": [{"nodes": [0, 1, 3]}],
+  "nodes": [
+    {"name": "left", "mesh": 0, "translation": [-2, 0, 0]},
+    {"name": "parent", "translation": [10, 0, 0], "scale": [2, 2, 2], "children": [2]},
+    {"name": "child", "mesh": 1, "translation": [0, 0, 1]},
+    {"name": "left_copy", "mesh": 0, "translation": [-2, 0, -3]}
+  ],
+  "meshes": [
+    {"name": "tri", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]},
+    {"name": "tri2", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 1}]}
+  ],
+  "materials": [
+    {"name": "red_metal", "emissiveFactor": [1, 0.5, 0.25],
+     "pbrMetallicRoughness": {"baseColorFactor": [0.9, 0.1, 0.1, 1], "metallicFactor": 1,
+                              "roughnessFactor": 0.2}},
+    {"name": "coated_glass",
+     "pbrMetallicRoughness": {"baseColorFactor": [1, 1, 1, 1], "metallicFactor": 0,
+                              "roughnessFactor": 0},
+     "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
+                    "KHR_materials_ior": {"ior": 1.45},
+                    "KHR_materials_clearcoat": {"clearcoatFactor": 1}}}
+  ],
+  "buffers": [{"byteLength": 42)" +
+         buffer + R"(}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+     "min": [0, 0, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}
+  ]
+})";
+}
+
+void expect_scene(const Scene& s) {
+  ASSERT_EQ(s.triangle_count(), 3u);
+  EXPECT_EQ(s.object_names, (std::vector<std::string>{"left", "child", "left_copy"}));
+  EXPECT_EQ(s.bounds.lo, glm::vec3(-2.0f, 0.0f, -3.0f));
+  EXPECT_EQ(s.bounds.hi, glm::vec3(12.0f, 2.0f, 2.0f));
+  // child: parent (translate 10, scale 2) applied to (translate z 1) applied to the triangle.
+  EXPECT_EQ(s.mesh.vertex(1, 0), glm::vec3(10.0f, 0.0f, 2.0f));
+  EXPECT_EQ(s.mesh.vertex(1, 1), glm::vec3(12.0f, 0.0f, 2.0f));
+  EXPECT_EQ(s.mesh.vertex(2, 2), glm::vec3(-2.0f, 1.0f, -3.0f));
+
+  const Material& metal = s.materials[s.material_ids[0]];
+  EXPECT_EQ(metal.name, "red_metal");
+  EXPECT_FLOAT_EQ(metal.base_color.x, 0.9f);
+  EXPECT_FLOAT_EQ(metal.metalness, 1.0f);
+  EXPECT_FLOAT_EQ(metal.roughness, 0.2f);
+  EXPECT_FLOAT_EQ(metal.emission.y, 0.5f);
+  EXPECT_EQ(metal.transmission, 0.0f);
+  EXPECT_EQ(metal.layers, 1);
+  EXPECT_EQ(s.material_ids[2], s.material_ids[0]);
+  const Material& glass = s.materials[s.material_ids[1]];
+  EXPECT_EQ(glass.name, "coated_glass");
+  EXPECT_FLOAT_EQ(glass.transmission, 1.0f);
+  EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+  EXPECT_EQ(glass.roughness, 0.0f);
+  EXPECT_EQ(glass.layers, 2) << "clear coat";
+}
+
+TEST(SceneImportGltf, EmbeddedGltfAppliesNodeTransforms) {
+  TempDir dir;
+  std::string json = gltf_json(R"(, "uri": "data:application/octet-stream;base64,)" +
+                               base64(triangle_buffer()) + "\"");
+  expect_scene(load_scene(dir.write("nodes.gltf", json)));
+}
+
+TEST(SceneImportGltf, BinaryGlbMatchesTheTextForm) {
+  TempDir dir;
+  std::string json = gltf_json("");
+  json.append((4 - json.size() % 4) % 4, ' ');
+  std::string bin = triangle_buffer();
+  bin.append((4 - bin.size() % 4) % 4, '\0');
+  auto u32 = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  std::string glb = "glTF" + u32(2) + u32(uint32_t(12 + 8 + json.size() + 8 + bin.size())) +
+                    u32(uint32_t(json.size())) + "JSON" + json + u32(uint32_t(bin.size())) +
+                    std::string("BIN\0", 4) + bin;
+  expect_scene(load_scene(dir.write("nodes.glb", glb)));
+}
+
+TEST(SceneImportGltf, Base64EncoderMatchesKnownValues) {
+  EXPECT_EQ(base64("M"), "TQ==");
+  EXPECT_EQ(base64("Ma"), "TWE=");
+  EXPECT_EQ(base64("Man"), "TWFu");
+  EXPECT_EQ(base64("Many"), "TWFueQ==");
+}
+
+}  // namespace
+}  // namespace rtsim

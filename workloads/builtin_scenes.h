@@ -1,0 +1,74 @@
+// Private to workloads/: the built-in scene generators and the small geometry kit they share.
+// Everything is built from +, *, / and sqrt only (no sin/cos, no std:: distributions), so a
+// built-in scene is bit-identical on every machine and its fingerprint never drifts.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "workloads/scene.h"
+
+namespace rtsim::builtin {
+
+// Indexed triangles in a local frame, instanced into a scene by SceneBuilder::add.
+struct MeshTemplate {
+  std::vector<glm::vec3> positions;
+  std::vector<std::array<uint32_t, 3>> triangles;
+};
+
+// Unit sphere from an octahedron whose faces are split into level^2 triangles each (8 level^2 in
+// all, 4 level^2 + 2 shared vertices), outward winding, watertight.
+MeshTemplate octa_sphere(int level);
+// Cube [-1,1]^3: 8 vertices, 12 triangles, outward winding.
+MeshTemplate unit_cube();
+// Quad [-1,1]^2 in the xz plane at y = 0 split into cells x cells squares, facing +y.
+MeshTemplate grid_quad(int cells);
+
+// Rotation about +y by the angle whose cosine and sine are c and s (c^2 + s^2 = 1); pass exact
+// rationals such as (4/5, 3/5) to stay free of trigonometry.
+glm::mat3 rotation_y(float c, float s);
+
+// A dielectric with the given colour and roughness; callers set the other fields.
+Material make_material(const std::string& name, const glm::vec3& color, float roughness);
+
+// Appends geometry, materials and object names to a Scene.
+class SceneBuilder {
+public:
+  explicit SceneBuilder(std::string source);
+
+  uint32_t material(const Material& m);
+  uint32_t object(const std::string& name);
+  // Appends the template transformed as p -> offset + rotation * (scale * p).
+  void add(const MeshTemplate& t, const glm::vec3& offset, const glm::vec3& scale,
+           uint32_t material_id, uint32_t object_id, const glm::mat3& rotation = glm::mat3(1.0f));
+  // Appends the quad a b c d as triangles (a, b, c) and (a, c, d).
+  void quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d,
+            uint32_t material_id, uint32_t object_id);
+  void reserve(size_t vertices, size_t triangles);
+
+  Scene& scene() { return scene_; }
+
+private:
+  Scene scene_;
+};
+
+// Parses the N of "grid:N" / "foliage:N": 1 <= N <= kMaxBuiltinTriangles, else InputError
+// naming source.
+uint64_t parse_triangle_count(const std::string& source, const std::string& text);
+constexpr uint64_t kMaxBuiltinTriangles = 1000000000;
+
+Scene make_cornell();
+Scene make_pica();
+Scene make_grid(const std::string& source, uint64_t triangles);
+Scene make_foliage(const std::string& source, uint64_t triangles);
+
+// Dispatches "cornell", "pica", "grid:N", "foliage:N" ("builtin:" already removed); the Scene is
+// not yet finalized.
+Scene make_builtin_scene(const std::string& name_and_params);
+
+}  // namespace rtsim::builtin

@@ -1,0 +1,86 @@
+// A small room in the spirit of SEED's Pica Pica world (Barré-Brisebois et al., "Hybrid
+// Rendering for Real-Time Ray Tracing", 2018): a light-blue floor, three pastel walls open to
+// the front and the sky, shipping-container boxes, and one sphere per material family of the
+// talk (glossy, rough, mirror, glass, translucent, two-layer clear coat) lit by an emissive
+// sphere named "light". Metres, y up, 4144 triangles; a camera at (0, 2, 9) sees it all.
+#include "workloads/builtin_scenes.h"
+
+namespace rtsim::builtin {
+namespace {
+
+using V = glm::vec3;
+
+constexpr int kSphereLevel = 8;  // 512 triangles per sphere
+constexpr float kRoomHalf = 6.0f, kWallHalfHeight = 2.0f;
+
+void add_room(SceneBuilder& b) {
+  uint32_t floor = b.material(make_material("floor", V(0.55f, 0.75f, 0.9f), 0.8f));
+  uint32_t wall = b.material(make_material("wall", V(0.93f, 0.87f, 0.76f), 0.9f));
+  uint32_t accent = b.material(make_material("wall_accent", V(0.98f, 0.72f, 0.6f), 0.9f));
+  b.add(grid_quad(16), V(0.0f), V(kRoomHalf, 1.0f, kRoomHalf), floor, b.object("floor"));
+  // Grid quads face +y; the matrices (columns: images of x, y, z) turn them into walls facing
+  // into the room without mirroring, so the winding stays outward.
+  const V wall_scale(kRoomHalf, 1.0f, kWallHalfHeight);
+  b.add(grid_quad(8), V(0.0f, kWallHalfHeight, -kRoomHalf), wall_scale, wall, b.object("wall_back"),
+        glm::mat3(V(1, 0, 0), V(0, 0, 1), V(0, -1, 0)));
+  b.add(grid_quad(8), V(-kRoomHalf, kWallHalfHeight, 0.0f), wall_scale, accent,
+        b.object("wall_left"), glm::mat3(V(0, 0, -1), V(1, 0, 0), V(0, -1, 0)));
+  b.add(grid_quad(8), V(kRoomHalf, kWallHalfHeight, 0.0f), wall_scale, accent,
+        b.object("wall_right"), glm::mat3(V(0, 0, 1), V(-1, 0, 0), V(0, -1, 0)));
+}
+
+void add_spheres(SceneBuilder& b) {
+  const MeshTemplate sphere = octa_sphere(kSphereLevel);
+  auto put = [&](const Material& m, const char* object, V center, float radius) {
+    b.add(sphere, center, V(radius), b.material(m), b.object(object));
+  };
+  put(make_material("glossy_yellow", V(0.95f, 0.8f, 0.2f), 0.3f), "glossy_sphere",
+      V(-3.5f, 0.8f, -1.5f), 0.8f);
+  put(make_material("rough_pink", V(0.95f, 0.55f, 0.7f), 0.9f), "rough_sphere",
+      V(-1.5f, 0.7f, 1.0f), 0.7f);
+  Material mirror = make_material("mirror", V(0.95f), 0.0f);
+  mirror.metalness = 1.0f;
+  put(mirror, "mirror_sphere", V(0.5f, 1.0f, -2.5f), 1.0f);
+  Material glass = make_material("glass", V(1.0f), 0.0f);
+  glass.transmission = 1.0f;
+  glass.ior = 1.5f;
+  put(glass, "glass_sphere", V(1.5f, 0.7f, 1.2f), 0.7f);
+  Material translucent = make_material("translucent_mint", V(0.5f, 0.9f, 0.7f), 0.6f);
+  translucent.translucency = 0.8f;
+  put(translucent, "translucent_sphere", V(3.5f, 0.6f, -0.5f), 0.6f);
+  Material layered = make_material("clear_coat_red", V(0.9f, 0.25f, 0.2f), 0.5f);
+  layered.layers = 2;
+  put(layered, "layered_sphere", V(-0.5f, 0.5f, 3.0f), 0.5f);
+}
+
+void add_boxes(SceneBuilder& b) {
+  const MeshTemplate cube = unit_cube();
+  auto put = [&](const Material& m, const char* object, V center, V half, glm::mat3 rotation) {
+    b.add(cube, center, half, b.material(m), b.object(object), rotation);
+  };
+  // Rotations by Pythagorean angles (3-4-5, 7-24-25) need no trigonometry. The blue container
+  // sits 1 cm above the red one so no faces are coplanar.
+  put(make_material("container_red", V(0.75f, 0.2f, 0.15f), 0.7f), "container_red",
+      V(-4.0f, 0.75f, -4.2f), V(1.5f, 0.75f, 0.7f), glm::mat3(1.0f));
+  put(make_material("container_blue", V(0.2f, 0.35f, 0.7f), 0.7f), "container_blue",
+      V(-4.0f, 2.26f, -4.2f), V(1.5f, 0.75f, 0.7f), rotation_y(0.96f, 0.28f));
+  put(make_material("container_brown", V(0.5f, 0.33f, 0.2f), 0.8f), "container_brown",
+      V(4.2f, 0.75f, -4.0f), V(0.7f, 0.75f, 1.5f), rotation_y(0.8f, 0.6f));
+  put(make_material("glossy_white", V(0.9f), 0.2f), "glossy_box", V(2.5f, 0.4f, -2.0f), V(0.4f),
+      rotation_y(0.6f, 0.8f));
+}
+
+}  // namespace
+
+Scene make_pica() {
+  SceneBuilder b("builtin:pica");
+  add_room(b);
+  add_spheres(b);
+  add_boxes(b);
+  Material light = make_material("light", V(1.0f), 1.0f);
+  light.emission = V(12.0f, 11.0f, 9.5f);
+  b.add(octa_sphere(4), V(0.0f, 3.6f, 0.5f), V(0.4f), b.material(light), b.object("light"));
+  return std::move(b.scene());
+}
+
+}  // namespace rtsim::builtin

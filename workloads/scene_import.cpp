@@ -1,0 +1,194 @@
+// Scene files through assimp: checks the file, imports without post-processing to check the raw
+// vertices, then triangulates and welds, and flattens the node hierarchy into one triangle array
+// (each mesh reference transformed by its node's accumulated matrix, so glTF instances and node
+// transforms come out in world space).
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <unordered_map>
+
+#include <assimp/Importer.hpp>
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <fmt/format.h>
+
+#include "traces/error.h"
+#include "workloads/scene_import.h"
+#include "workloads/scene_import_log.h"
+
+namespace rtsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Formats whose files carry no materials: they get one default material.
+bool has_materials(const std::string& ext) {
+  return ext == ".obj" || ext == ".gltf" || ext == ".glb";
+}
+
+std::string supported_list() {
+  std::string list;
+  for (const auto& e : scene_file_extensions()) list += (list.empty() ? "" : ", ") + e;
+  return list;
+}
+
+std::string checked_extension(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw_input_error(path, "", "no such file");
+  if (fs::is_directory(path, ec)) throw_input_error(path, "", "is a directory, not a scene file");
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  auto known = scene_file_extensions();
+  if (std::find(known.begin(), known.end(), ext) == known.end())
+    throw_input_error(
+        path, "", "unsupported scene file extension '" + ext + "'; supported: " + supported_list());
+  return ext;
+}
+
+std::string format_vertex(const aiVector3D& p) {
+  auto text = [](float x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
+  return "(" + text(p.x) + ", " + text(p.y) + ", " + text(p.z) + ")";
+}
+
+// Checks the meshes as the reader produced them, before any post-processing can hide a problem.
+// A vertex index is the reader's: the file's for PLY and OFF, the face corner's for OBJ and STL.
+void check_raw_meshes(const std::string& path, const aiScene& scene) {
+  size_t polygons = 0;
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene.mMeshes[m];
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) polygons += mesh.mFaces[f].mNumIndices >= 3;
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D& p = mesh.mVertices[v];
+      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+      std::string where;
+      if (scene.mNumMeshes > 1 || mesh.mName.length > 0) {
+        where = mesh.mName.length > 0 ? "mesh '" + std::string(mesh.mName.C_Str()) + "' "
+                                      : "mesh " + std::to_string(m) + " ";
+      }
+      throw_input_error(path, where + "vertex " + std::to_string(v),
+                        "position " + format_vertex(p) + " is NaN or Inf");
+    }
+  }
+  if (polygons == 0) throw_input_error(path, "", "the file has no triangles");
+}
+
+// The PLY, OFF and STL readers log an error when they repair broken geometry (an index clamped,
+// a short vertex list padded with zeros) and carry on; the OBJ reader logs errors for harmless
+// layout quirks (the Cornell box's usemtl before its first g), and the OBJ and glTF readers throw
+// on real damage. So a logged error fails the import only for the geometry-only formats.
+void check_log(const std::string& path, const std::string& ext, const AssimpErrorLog& log) {
+  if (has_materials(ext) || log.errors().empty()) return;
+  throw_input_error(path, "", "cannot import: " + log.errors().front());
+}
+
+// Appends the triangles of every mesh under node, transformed to world space.
+class Flattener {
+public:
+  Flattener(const aiScene& scene, Scene& out, bool use_materials, std::string fallback_name)
+      : scene_(scene),
+        out_(out),
+        use_materials_(use_materials),
+        fallback_name_(std::move(fallback_name)) {}
+
+  void walk(const aiNode& node, const aiMatrix4x4& parent) {
+    aiMatrix4x4 transform = parent * node.mTransformation;
+    for (unsigned i = 0; i < node.mNumMeshes; ++i)
+      append(*scene_.mMeshes[node.mMeshes[i]], transform, object_name(node, i));
+    for (unsigned c = 0; c < node.mNumChildren; ++c) walk(*node.mChildren[c], transform);
+  }
+
+private:
+  // An object is the named node (OBJ o/g groups, glTF nodes), else the mesh, else the file.
+  std::string object_name(const aiNode& node, unsigned i) const {
+    if (&node != scene_.mRootNode && node.mName.length > 0) return node.mName.C_Str();
+    const aiMesh& mesh = *scene_.mMeshes[node.mMeshes[i]];
+    return mesh.mName.length > 0 ? mesh.mName.C_Str() : fallback_name_;
+  }
+
+  uint32_t object_id(const std::string& name) {
+    auto [it, inserted] = object_ids_.try_emplace(name, uint32_t(out_.object_names.size()));
+    if (inserted) out_.object_names.push_back(name);
+    return it->second;
+  }
+
+  // Appends the mesh's triangles and the vertices they use, in order of first use.
+  void append(const aiMesh& mesh, const aiMatrix4x4& transform, const std::string& name) {
+    constexpr uint32_t kUnused = ~0u;
+    std::vector<uint32_t> remap(mesh.mNumVertices, kUnused);
+    size_t added = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines
+      std::array<uint32_t, 3> tri;
+      for (int k = 0; k < 3; ++k) {
+        uint32_t& index = remap[face.mIndices[k]];
+        if (index == kUnused) {
+          index = uint32_t(out_.mesh.positions.size());
+          aiVector3D p = transform * mesh.mVertices[face.mIndices[k]];
+          out_.mesh.positions.emplace_back(p.x, p.y, p.z);
+        }
+        tri[k] = index;
+      }
+      out_.mesh.triangles.push_back(tri);
+      ++added;
+    }
+    if (added == 0) return;
+    uint32_t material = use_materials_ ? mesh.mMaterialIndex : 0;
+    out_.material_ids.insert(out_.material_ids.end(), added, material);
+    out_.object_ids.insert(out_.object_ids.end(), added, object_id(name));
+  }
+
+  const aiScene& scene_;
+  Scene& out_;
+  bool use_materials_;
+  std::string fallback_name_;
+  std::unordered_map<std::string, uint32_t> object_ids_;
+};
+
+}  // namespace
+
+std::vector<std::string> scene_file_extensions() {
+  return {".obj", ".gltf", ".glb", ".ply", ".off", ".stl"};
+}
+
+Scene import_scene_file(const std::string& path) {
+  const std::string ext = checked_extension(path);
+  Assimp::Importer importer;
+  // Only positions matter; dropping the rest lets the weld merge vertices by position alone.
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
+                              aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
+                                  aiComponent_COLORS | aiComponent_TEXCOORDS |
+                                  aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
+                                  aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_TEXTURES);
+  AssimpErrorLog log;
+  const aiScene* raw = importer.ReadFile(path, 0);
+  if (!raw) throw_input_error(path, "", std::string("cannot import: ") + importer.GetErrorString());
+  check_log(path, ext, log);
+  check_raw_meshes(path, *raw);
+  const aiScene* scene =
+      importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                   aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices);
+  if (!scene)
+    throw_input_error(path, "", std::string("invalid data: ") + importer.GetErrorString());
+  check_log(path, ext, log);
+
+  Scene out;
+  out.source = path;
+  const bool use_materials = has_materials(ext) && scene->mNumMaterials > 0;
+  if (use_materials) {
+    for (unsigned m = 0; m < scene->mNumMaterials; ++m)
+      out.materials.push_back(material_from_assimp(*scene->mMaterials[m]));
+  } else {
+    out.materials.push_back(Material{"default"});
+  }
+  Flattener(*scene, out, use_materials, fs::path(path).stem().string())
+      .walk(*scene->mRootNode, aiMatrix4x4());
+  if (out.mesh.triangles.empty()) throw_input_error(path, "", "the file has no triangles");
+  return out;
+}
+
+}  // namespace rtsim
