@@ -7,16 +7,7 @@
 namespace rtsim {
 namespace {
 
-// cwbvh8 byte offsets.
-constexpr size_t kOrigin = 0, kExponents = 12, kInnerMask = 15, kChildBase = 16, kTriBase = 20,
-                 kMeta = 24, kQuantLo = 32, kQuantHi = 56;
-
 void put32(uint8_t* out, uint32_t v) { std::memcpy(out, &v, 4); }
-uint32_t get32(const uint8_t* in) {
-  uint32_t v;
-  std::memcpy(&v, in, 4);
-  return v;
-}
 
 // Smallest exponent byte whose 255 steps from lo reach hi once rounded to fp32.
 uint8_t grid_exponent(float lo, float hi) {
@@ -59,11 +50,11 @@ void encode_aabb32(int width, const WideNode& node, const ChildPlacement& placem
 
 void encode_cwbvh8(const WideNode& node, const ChildPlacement& placement, uint8_t* out) {
   std::memset(out, 0, kCwbvhNodeBytes);
-  std::memcpy(out + kOrigin, &node.box.lo, 12);
+  std::memcpy(out + kCwbvhOrigin, &node.box.lo, 12);
   float scale[3];
   for (int axis = 0; axis < 3; ++axis) {
-    out[kExponents + axis] = grid_exponent(node.box.lo[axis], node.box.hi[axis]);
-    scale[axis] = cwbvh_scale(out[kExponents + axis]);
+    out[kCwbvhExponents + axis] = grid_exponent(node.box.lo[axis], node.box.hi[axis]);
+    scale[axis] = cwbvh_scale(out[kCwbvhExponents + axis]);
   }
   // Children: inner ones must sit side by side from the first, triangles likewise.
   uint32_t child_base = 0, tri_base = 0, inner_seen = 0, tri_seen = 0;
@@ -79,7 +70,7 @@ void encode_cwbvh8(const WideNode& node, const ChildPlacement& placement, uint8_
       if (pos < tri_base || offset != tri_seen || offset > 23 || child.count > 3)
         throw std::logic_error("cwbvh8: leaf triangles are not contiguous");
       tri_seen += child.count;
-      out[kMeta + c] = uint8_t((((1u << child.count) - 1) << 5) | offset);
+      out[kCwbvhMeta + c] = uint8_t((((1u << child.count) - 1) << 5) | offset);
     } else {
       if (!any_inner) child_base = pos;
       any_inner = true;
@@ -87,18 +78,18 @@ void encode_cwbvh8(const WideNode& node, const ChildPlacement& placement, uint8_
         throw std::logic_error("cwbvh8: sibling nodes are not contiguous");
       inner_seen++;
       imask |= uint8_t(1u << c);
-      out[kMeta + c] = uint8_t((1u << 5) | (24 + c));
+      out[kCwbvhMeta + c] = uint8_t((1u << 5) | (24 + c));
     }
     for (int axis = 0; axis < 3; ++axis) {
-      out[kQuantLo + 8 * axis + c] =
+      out[kCwbvhQuantLo + 8 * axis + c] =
           quantize_down(node.box.lo[axis], scale[axis], child.box.lo[axis]);
-      out[kQuantHi + 8 * axis + c] =
+      out[kCwbvhQuantHi + 8 * axis + c] =
           quantize_up(node.box.lo[axis], scale[axis], child.box.hi[axis]);
     }
   }
-  out[kInnerMask] = imask;
-  put32(out + kChildBase, child_base);
-  put32(out + kTriBase, tri_base);
+  out[kCwbvhInnerMask] = imask;
+  put32(out + kCwbvhChildBase, child_base);
+  put32(out + kCwbvhTriBase, tri_base);
 }
 
 }  // namespace
@@ -114,51 +105,6 @@ void encode_node(NodeFormat format, int width, const WideNode& node,
     encode_cwbvh8(node, placement, out);
   else
     encode_aabb32(width, node, placement, out);
-}
-
-void decode_aabb32(const uint8_t* bytes, int width, NodeView& view) {
-  view.slots = width;
-  view.valid = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    std::memcpy(view.lo[axis], bytes + 4 * (2 * axis) * width, 4 * width);
-    std::memcpy(view.hi[axis], bytes + 4 * (2 * axis + 1) * width, 4 * width);
-  }
-  std::memcpy(view.index, bytes + 24 * width, 4 * width);
-  const uint8_t* counts = bytes + 28 * width;
-  for (int s = 0; s < width; ++s) {
-    view.valid |= uint32_t(counts[s] != 0) << s;
-    view.count[s] = counts[s] == kAabbInnerCount ? 0 : counts[s];
-  }
-}
-
-void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
-  view.slots = 8;
-  view.valid = 0;
-  float origin[3];
-  std::memcpy(origin, bytes + kOrigin, 12);
-  uint8_t imask = bytes[kInnerMask];
-  uint32_t child_base = get32(bytes + kChildBase), tri_base = get32(bytes + kTriBase);
-  // Planes: origin + q * 2^e per axis, exactly as the encoder rounded them.
-  for (int axis = 0; axis < 3; ++axis) {
-    float scale = cwbvh_scale(bytes[kExponents + axis]);
-    for (int s = 0; s < 8; ++s) {
-      view.lo[axis][s] = cwbvh_plane(origin[axis], scale, bytes[kQuantLo + 8 * axis + s]);
-      view.hi[axis][s] = cwbvh_plane(origin[axis], scale, bytes[kQuantHi + 8 * axis + s]);
-    }
-  }
-  // References: inner children by rank among inner slots, leaves by their triangle offset.
-  for (int s = 0; s < 8; ++s) {
-    uint8_t meta = bytes[kMeta + s];
-    if (meta == 0) continue;
-    view.valid |= 1u << s;
-    if (imask & (1u << s)) {
-      view.index[s] = child_base + __builtin_popcount(imask & ((1u << s) - 1));
-      view.count[s] = 0;
-    } else {
-      view.index[s] = tri_base + (meta & 31u);
-      view.count[s] = __builtin_popcount(meta >> 5);
-    }
-  }
 }
 
 }  // namespace rtsim

@@ -33,15 +33,27 @@ struct ChildPlacement {
 void encode_node(NodeFormat format, int width, const WideNode& node,
                  const ChildPlacement& placement, uint8_t* out);
 
-// One decoded node: child boxes (fp32, conservative), references and counts.
+// A float that may alias the node bytes it is read from.
+using AliasedFloat = float __attribute__((__may_alias__));
+
+// One decoded node: child boxes (fp32, conservative), references and counts. lo and hi point at
+// kMaxWidth planes per axis, in the node's own bytes (aabb32, width 8) or in `planes`.
 struct NodeView {
-  int slots = 0;           // child slots of the format
-  uint32_t valid = 0;      // bit s: slot s holds a child
-  float lo[3][kMaxWidth];  // per axis, per slot
-  float hi[3][kMaxWidth];
-  uint32_t index[kMaxWidth];  // inner: node position; leaf: first triangle position
-  uint32_t count[kMaxWidth];  // leaf: triangles; 0 for an inner child
+  int slots = 0;                 // child slots of the format
+  uint32_t valid = 0;            // bit s: slot s holds a child
+  const AliasedFloat* lo[3] = {};  // per axis: kMaxWidth lower planes
+  const AliasedFloat* hi[3] = {};  // per axis: kMaxWidth upper planes
+  uint32_t index[kMaxWidth];     // inner: node position; leaf: first triangle position
+  uint32_t count[kMaxWidth];     // leaf: triangles; 0 for an inner child
+  float planes[6][kMaxWidth];    // decoded planes: lo x, hi x, lo y, hi y, lo z, hi z
 };
+
+// Set bits of an 8-bit mask (portable: no popcount instruction assumed).
+inline uint32_t count_bits(uint32_t mask) {
+  mask = mask - ((mask >> 1) & 0x55u);
+  mask = (mask & 0x33u) + ((mask >> 2) & 0x33u);
+  return (mask + (mask >> 4)) & 0x0fu;
+}
 
 // Quantized-box arithmetic of cwbvh8, shared by the encoder and the decoder so the outward
 // rounding holds for the decoded value exactly as the hardware computes it.
@@ -55,8 +67,66 @@ inline float cwbvh_plane(float origin, float scale, uint8_t q) {
   return origin + static_cast<float>(q) * scale;
 }
 
-void decode_aabb32(const uint8_t* bytes, int width, NodeView& view);
-void decode_cwbvh8(const uint8_t* bytes, NodeView& view);
+// cwbvh8 byte offsets (table in model/README.md).
+constexpr size_t kCwbvhOrigin = 0, kCwbvhExponents = 12, kCwbvhInnerMask = 15,
+                 kCwbvhChildBase = 16, kCwbvhTriBase = 20, kCwbvhMeta = 24, kCwbvhQuantLo = 32,
+                 kCwbvhQuantHi = 56;
+
+inline void decode_aabb32(const uint8_t* bytes, int width, NodeView& view) {
+  view.slots = width;
+  view.valid = 0;
+  for (int plane = 0; plane < 6; ++plane) {
+    const uint8_t* source = bytes + 4 * plane * width;
+    // Width 8 planes are read in place; narrower nodes are copied to whole rows.
+    if (width != kMaxWidth) std::memcpy(view.planes[plane], source, 4 * width);
+    const AliasedFloat* row = width == kMaxWidth ? reinterpret_cast<const AliasedFloat*>(source)
+                                          : view.planes[plane];
+    (plane % 2 ? view.hi : view.lo)[plane / 2] = row;
+  }
+  std::memcpy(view.index, bytes + 24 * width, 4 * width);
+  const uint8_t* counts = bytes + 28 * width;
+  for (int s = 0; s < width; ++s) {
+    view.valid |= uint32_t(counts[s] != 0) << s;
+    view.count[s] = counts[s] == kAabbInnerCount ? 0 : counts[s];
+  }
+}
+
+inline void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
+  view.slots = 8;
+  view.valid = 0;
+  float origin[3];
+  std::memcpy(origin, bytes + kCwbvhOrigin, 12);
+  uint8_t imask = bytes[kCwbvhInnerMask];
+  uint32_t child_base, tri_base;
+  std::memcpy(&child_base, bytes + kCwbvhChildBase, 4);
+  std::memcpy(&tri_base, bytes + kCwbvhTriBase, 4);
+  // Planes: origin + q * 2^e per axis, exactly as the encoder rounded them.
+  for (int axis = 0; axis < 3; ++axis) {
+    float scale = cwbvh_scale(bytes[kCwbvhExponents + axis]);
+    float* lo = view.planes[2 * axis];
+    float* hi = view.planes[2 * axis + 1];
+    for (int s = 0; s < 8; ++s) {
+      lo[s] = cwbvh_plane(origin[axis], scale, bytes[kCwbvhQuantLo + 8 * axis + s]);
+      hi[s] = cwbvh_plane(origin[axis], scale, bytes[kCwbvhQuantHi + 8 * axis + s]);
+    }
+    view.lo[axis] = lo;
+    view.hi[axis] = hi;
+  }
+  // References: inner children by rank among inner slots, leaves by their triangle offset.
+  for (int s = 0; s < 8; ++s) {
+    uint8_t meta = bytes[kCwbvhMeta + s];
+    if (meta == 0) continue;
+    view.valid |= 1u << s;
+    if (imask & (1u << s)) {
+      view.index[s] = child_base + count_bits(imask & ((1u << s) - 1));
+      view.count[s] = 0;
+    } else {
+      view.index[s] = tri_base + (meta & 31u);
+      view.count[s] = count_bits(meta >> 5);
+    }
+  }
+}
+
 
 inline void decode_node(NodeFormat format, int width, const uint8_t* bytes, NodeView& view) {
   if (format == NodeFormat::Cwbvh8)

@@ -20,11 +20,16 @@ PreparedRay prepare_ray(const Ray& ray, float scene_extent, float box_padding) {
   PreparedRay r;
   int e = direction_exponent(ray.dir);
   r.org = ray.org;
-  r.dir = glm::vec3(std::ldexp(ray.dir.x, -e), std::ldexp(ray.dir.y, -e),
-                    std::ldexp(ray.dir.z, -e));
-  r.t_exponent = -e;
-  r.tmin = std::ldexp(ray.tmin, e);
-  r.tmax = std::ldexp(ray.tmax, e);
+  r.dir = ray.dir;
+  r.tmin = ray.tmin;
+  r.tmax = ray.tmax;
+  if (e != 0) {
+    r.dir = glm::vec3(std::ldexp(ray.dir.x, -e), std::ldexp(ray.dir.y, -e),
+                      std::ldexp(ray.dir.z, -e));
+    r.t_exponent = -e;
+    r.tmin = std::ldexp(ray.tmin, e);
+    r.tmax = std::ldexp(ray.tmax, e);
+  }
 
   // Box setup: reciprocal (+-inf for a +-0 component), near plane by the sign bit, and the
   // origin moved by the padding so that each box is tested grown on every side.

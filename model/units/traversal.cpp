@@ -16,6 +16,18 @@ TraversalCounters& TraversalCounters::operator+=(const TraversalCounters& o) {
   return *this;
 }
 
+namespace {
+
+// Appends one fetch to the ray's access list, field by field (no 16-byte temporary).
+void record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind) {
+  MemoryAccess& access = s.accesses.emplace_back();
+  access.address = address;
+  access.bytes = bytes;
+  access.kind = kind;
+}
+
+}  // namespace
+
 TraversalUnit::TraversalUnit(const BvhImage& image, TraversalConfig config)
     : image_(image), config_(config) {}
 
@@ -50,7 +62,7 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
   // Fetch the node.
   s.counters.trav_nodes++;
   if (config_.record_accesses) {
-    s.accesses.push_back({image_.node_address(entry.index), image_.node_stride, AccessKind::Node});
+    record(s, image_.node_address(entry.index), image_.node_stride, AccessKind::Node);
     out.access_count = 1;
   }
   NodeView node;
@@ -59,23 +71,28 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
   // Test every child box.
   float tnear[kMaxWidth];
   uint32_t hits = intersect_children(s.ray, node, s.t_hit, tnear);
-  out.tests = static_cast<uint32_t>(__builtin_popcount(node.valid));
-  out.hits = static_cast<uint32_t>(__builtin_popcount(hits));
+  out.tests = count_bits(node.valid);
+  out.hits = count_bits(hits);
   // Sort the hit children near to far.
-  StackEntry sorted[kMaxWidth];
+  float dist[kMaxWidth];
+  int slot_of[kMaxWidth];
   int n = 0;
   for (int slot = 0; slot < node.slots; ++slot) {
     if (!(hits & (1u << slot))) continue;
-    StackEntry child{node.index[slot], node.count[slot], tnear[slot]};
     int i = n++;
-    while (i > 0 && sorted[i - 1].tnear > child.tnear) {
-      sorted[i] = sorted[i - 1];
+    while (i > 0 && dist[i - 1] > tnear[slot]) {
+      dist[i] = dist[i - 1];
+      slot_of[i] = slot_of[i - 1];
       --i;
     }
-    sorted[i] = child;
+    dist[i] = tnear[slot];
+    slot_of[i] = slot;
   }
   // Push far to near, so the nearest child is visited next.
-  for (int i = n - 1; i >= 0; --i) s.stack.push_back(sorted[i]);
+  for (int i = n - 1; i >= 0; --i) {
+    int slot = slot_of[i];
+    s.stack.push_back({node.index[slot], node.count[slot], dist[i]});
+  }
   if (s.stack.size() > s.max_stack) s.max_stack = static_cast<uint32_t>(s.stack.size());
   return out;
 }
@@ -89,8 +106,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     s.counters.trav_prims++;
     out.tests++;
     if (config_.record_accesses) {
-      s.accesses.push_back(
-          {image_.triangle_address(position), image_.triangle_stride, AccessKind::Triangle});
+      record(s, image_.triangle_address(position), image_.triangle_stride, AccessKind::Triangle);
       out.access_count++;
     }
     TriangleHit hit;
@@ -122,7 +138,7 @@ Hit TraversalUnit::result(const TraversalState& s, const Ray& ray) const {
     hit.prim = kAnyPrim;
     return hit;
   }
-  hit.t = std::ldexp(s.t_hit, s.ray.t_exponent);
+  hit.t = s.ray.t_exponent == 0 ? s.t_hit : std::ldexp(s.t_hit, s.ray.t_exponent);
   hit.u = s.u;
   hit.v = s.v;
   hit.prim = s.prim;
