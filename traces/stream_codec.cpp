@@ -7,6 +7,12 @@
 
 namespace rtsim {
 
+uint64_t StreamHeader::total_rays() const {
+  uint64_t total = 0;
+  for (auto c : counts) total += c;
+  return total;
+}
+
 std::vector<uint8_t> encode_header(const StreamHeader& h) {
   std::vector<uint8_t> out(kStreamMagic, kStreamMagic + 8);
   ByteWriter w(out);

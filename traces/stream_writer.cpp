@@ -13,12 +13,6 @@
 
 namespace rtsim {
 
-uint64_t StreamHeader::total_rays() const {
-  uint64_t total = 0;
-  for (auto c : counts) total += c;
-  return total;
-}
-
 RayStreamWriter::RayStreamWriter(const std::string& path, StreamHeader header)
     : path_(path), tmp_path_(path + ".tmp-" + std::to_string(getpid())), header_(std::move(header)) {
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
