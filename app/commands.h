@@ -5,9 +5,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include "model/bvh/bvh_config.h"
+
 namespace rtsim::app {
 
 void add_scene_info_command(CLI::App& app, int& exit_code);
 void add_trace_info_command(CLI::App& app, int& exit_code);
+
+void add_verify_command(CLI::App& app, int& exit_code);
+void add_bench_command(CLI::App& app, int& exit_code);
+// BVH build options shared by verify and bench (defined in cmd_verify.cpp).
+void add_bvh_options(CLI::App& cmd, BvhConfig& config);
 
 }  // namespace rtsim::app

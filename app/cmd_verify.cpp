@@ -1,0 +1,172 @@
+// rtsim verify STREAM: traces every ray of a stream with the model and with Embree, classifies
+// each disagreement with the double-precision arbiter, prints a summary, and exits 1 when a
+// disagreement is unexplained. Also defines the BVH options shared with `rtsim bench`.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "app/commands.h"
+#include "model/bvh/bvh_image.h"
+#include "model/units/traversal.h"
+#include "model/verify/verifier.h"
+#include "traces/embree_scene.h"
+#include "traces/error.h"
+#include "traces/stream.h"
+#include "workloads/scene.h"
+
+namespace rtsim::app {
+namespace {
+
+struct VerifyOptions {
+  std::string stream, scene;
+  size_t max_print = 10;
+  double t_tolerance = 1e-5;
+  BvhConfig bvh;
+};
+
+std::string hex(float x) { return fmt::format("{:a}", x); }
+
+std::string hex3(const glm::vec3& v) {
+  return fmt::format("({}, {}, {})", hex(v.x), hex(v.y), hex(v.z));
+}
+
+std::string answer(const Hit& hit, uint32_t prim) {
+  if (!hit.hit()) return "miss";
+  if (hit.prim == kAnyPrim)
+    return prim == kNoHit ? "hit" : fmt::format("hit (triangle {})", prim);
+  return fmt::format("triangle {} t={} ({:.9g})", hit.prim, hex(hit.t), hit.t);
+}
+
+void print_bvh(const BvhImage& image) {
+  fmt::print("model      {}\n", describe(image.config));
+  fmt::print("bvh        {} nodes x {} B + {} triangles x {} B = {:.2f} MiB; depth {}; "
+             "{} treelets ({} oversized)\n",
+             image.node_count, image.node_stride, image.triangle_count, image.triangle_stride,
+             image.total_bytes() / 1048576.0, image.stats.max_depth, image.treelets.count,
+             image.treelets.oversized);
+}
+
+void print_report(const VerifyReport& r) {
+  fmt::print("\n{:<18} {:>10} {:>10} {:>10}\n", "ray type", "rays", "agree", "mismatch");
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    if (r.rays_by_type[t] == 0) continue;
+    fmt::print("{:<18} {:>10} {:>10} {:>10}\n", ray_type_name(RayType(t)), r.rays_by_type[t],
+               r.rays_by_type[t] - r.mismatches_by_type[t], r.mismatches_by_type[t]);
+  }
+  fmt::print("{:<18} {:>10} {:>10} {:>10}\n", "total", r.rays, r.agree, r.mismatches());
+  fmt::print("\n{:<18} {:>10} {:>12} {:>12} {:>10}\n", "mismatch class", "count", "model right",
+             "embree right", "both");
+  for (int c = 0; c < kMismatchClassCount; ++c) {
+    const auto& right = r.right[c];
+    fmt::print("{:<18} {:>10} {:>12} {:>12} {:>10}\n", mismatch_class_name(MismatchClass(c)),
+               r.by_class[c], right[int(RightSide::Model)], right[int(RightSide::Embree)],
+               right[int(RightSide::Both)]);
+  }
+  double n = r.rays ? double(r.rays) : 1.0;
+  fmt::print("\nper ray    trav_nodes {:.2f}  trav_leaves {:.2f}  trav_prims {:.2f}  "
+             "trav_prim_hits {:.2f}  fetches {:.2f}  bytes {:.1f}\n",
+             r.counters.trav_nodes / n, r.counters.trav_leaves / n, r.counters.trav_prims / n,
+             r.counters.trav_prim_hits / n, r.accesses / n, r.access_bytes / n);
+  fmt::print("hits       model {}  embree {}\n", r.model_hits, r.embree_hits);
+}
+
+void print_examples(const VerifyReport& r) {
+  if (r.examples.empty()) return;
+  fmt::print("\nfirst {} mismatching rays (hex floats):\n", r.examples.size());
+  for (const Mismatch& m : r.examples) {
+    const Ray& ray = m.ray;
+    fmt::print("ray {} {} {}: {} / {}\n", m.index, ray_type_name(ray.type), query_name(ray.query),
+               mismatch_class_name(m.verdict.cls), right_side_name(m.verdict.right));
+    fmt::print("  org {} dir {} tmin {} tmax {}\n", hex3(ray.org), hex3(ray.dir), hex(ray.tmin),
+               hex(ray.tmax));
+    fmt::print("  embree {}\n  model  {}\n", answer(m.embree, kNoHit),
+               answer(m.model, m.model_prim));
+  }
+}
+
+int run_verify(const VerifyOptions& o) {
+  auto start = std::chrono::steady_clock::now();
+  std::string problem = validate(o.bvh);
+  if (!problem.empty()) throw_input_error("bvh config", "", problem);
+  RayStreamReader reader(o.stream);
+  const StreamHeader& header = reader.header();
+  std::string spec = o.scene.empty() ? header.scene_source : o.scene;
+  if (spec.empty()) throw_input_error(o.stream, "header", "no scene named; pass --scene");
+  Scene scene = load_scene(spec);
+  if (scene.fingerprint != header.scene_fingerprint)
+    throw_input_error(o.stream, "header",
+                      fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
+                                  header.scene_fingerprint, spec, scene.fingerprint));
+  fmt::print("stream     {} ({} rays, workload '{}')\n", o.stream, header.total_rays(),
+             header.workload);
+  fmt::print("scene      {} ({} triangles, fingerprint {:016x})\n", scene.source,
+             scene.triangle_count(), scene.fingerprint);
+  BvhImage image = build_bvh_image(scene.mesh, o.bvh);
+  print_bvh(image);
+  EmbreeScene embree(scene.mesh);
+  TraversalUnit model(image);
+  ArbiterConfig arbiter;
+  arbiter.t_tolerance = o.t_tolerance;
+  Verifier verifier(scene.mesh, model, embree, arbiter, o.max_print);
+  // Stream the rays in batches: constant memory for any stream length.
+  std::vector<Ray> batch;
+  while (reader.next_batch(batch, 65536) > 0)
+    for (const Ray& ray : batch) verifier.check(ray);
+  const VerifyReport& report = verifier.report();
+  print_report(report);
+  print_examples(report);
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (report.unexplained() > 0) {
+    fmt::print("\nFAIL: {} unexplained mismatches ({:.1f} s)\n", report.unexplained(), seconds);
+    return 1;
+  }
+  fmt::print("\nOK: {} rays, {} mismatches, all explained ({:.1f} s)\n", report.rays,
+             report.mismatches(), seconds);
+  return 0;
+}
+
+}  // namespace
+
+void add_bvh_options(CLI::App& cmd, BvhConfig& bvh) {
+  cmd.add_option("--width", bvh.width, "BVH width: children per node, 2..8")
+      ->capture_default_str();
+  cmd.add_option_function<std::string>(
+         "--format", [&bvh](const std::string& v) { bvh.node_format = *node_format_from_name(v); },
+         "Node format")
+      ->check(CLI::IsMember({"aabb32", "cwbvh8"}))
+      ->default_str(node_format_name(bvh.node_format));
+  cmd.add_option_function<std::string>(
+         "--triangles",
+         [&bvh](const std::string& v) { bvh.triangle_format = *triangle_format_from_name(v); },
+         "Triangle layout")
+      ->check(CLI::IsMember({"raw", "woop"}))
+      ->default_str(triangle_format_name(bvh.triangle_format));
+  cmd.add_option_function<std::string>(
+         "--layout", [&bvh](const std::string& v) { bvh.node_layout = *node_layout_from_name(v); },
+         "Node order in memory")
+      ->check(CLI::IsMember({"depth-first", "breadth-first", "treelet"}))
+      ->default_str(node_layout_name(bvh.node_layout));
+  cmd.add_option("--treelet-bytes", bvh.treelet_bytes, "Treelet budget in bytes, 512..65536")
+      ->capture_default_str();
+  cmd.add_option("--leaf-size", bvh.max_leaf_size, "Most triangles per leaf (cwbvh8: <= 3)")
+      ->capture_default_str();
+  cmd.add_option("--bins", bvh.sah_bins, "SAH bins per axis: 16 or 32")->capture_default_str();
+}
+
+void add_verify_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("verify", "Check every ray of a stream: model against Embree");
+  auto options = std::make_shared<VerifyOptions>();
+  cmd->add_option("stream", options->stream, "Ray stream (.rays)")->required();
+  cmd->add_option("--scene", options->scene, "Scene file or built-in (default: stream header)");
+  cmd->add_option("--max-print", options->max_print, "Mismatching rays to print in full")
+      ->capture_default_str();
+  cmd->add_option("--t-tolerance", options->t_tolerance, "Relative t difference that agrees")
+      ->capture_default_str();
+  add_bvh_options(*cmd, options->bvh);
+  cmd->callback([options, &exit_code] { exit_code = run_verify(*options); });
+}
+
+}  // namespace rtsim::app
