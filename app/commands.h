@@ -11,6 +11,8 @@ namespace rtsim::app {
 
 void add_scene_info_command(CLI::App& app, int& exit_code);
 void add_trace_info_command(CLI::App& app, int& exit_code);
+void add_trace_command(CLI::App& app, int& exit_code);
+void add_bench_trace_command(CLI::App& app, int& exit_code);
 
 void add_verify_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);

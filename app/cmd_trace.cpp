@@ -1,0 +1,99 @@
+// rtsim trace WORKLOAD -o OUT.rays: run the hybrid pipeline of a workload spec (or a built-in
+// scene with the default spec) and write its rays; --preview writes pictures of what it shot.
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include "app/commands.h"
+#include "traces/error.h"
+#include "workloads/pipeline/summary.h"
+#include "workloads/pipeline/trace.h"
+
+namespace rtsim::app {
+namespace {
+
+struct TraceArgs {
+  std::string workload, output, preview, resolution, scene;
+  uint32_t frames = 0;
+  uint64_t seed = 0;
+  bool seed_set = false, quiet = false, list_keys = false;
+};
+
+void print_keys() {
+  for (const auto& k : pipeline::spec_key_docs())
+    fmt::print("{:<34} {:<22} default {}{}\n    {}\n", k.key, k.type,
+               k.default_value.empty() ? "-" : k.default_value,
+               k.unit.empty() ? "" : " (" + k.unit + ")", k.description);
+}
+
+// A bar on a terminal, one line per frame and pass otherwise.
+std::function<void(uint32_t, uint32_t, pipeline::PassId)> progress_printer() {
+  bool tty = isatty(fileno(stderr)) != 0;
+  return [tty](uint32_t frame, uint32_t frames, pipeline::PassId pass) {
+    const char* name = pipeline::pass_name(pass);
+    if (!tty) {
+      fmt::print(stderr, "trace: frame {}/{}: {}\n", frame + 1, frames, name);
+      return;
+    }
+    double done = (double(frame) * pipeline::kPassCount + double(pass)) /
+                  (double(frames) * pipeline::kPassCount);
+    int filled = int(done * 30.0);
+    fmt::print(stderr, "\r[{:<30}] {:3.0f}%  frame {}/{}  {:<16}", std::string(filled, '#'),
+               100.0 * done, frame + 1, frames, name);
+    if (frame + 1 == frames && pass == pipeline::PassId::Translucency)
+      fmt::print(stderr, "\r{:<80}\r", "");
+  };
+}
+
+}  // namespace
+
+void add_trace_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "trace", "Generate the ray stream of a workload (spec file or built-in scene)");
+  auto a = std::make_shared<TraceArgs>();
+  cmd->add_option("workload", a->workload,
+                  "Workload spec (.toml), or a built-in scene name for the default spec");
+  cmd->add_option("-o,--output", a->output, "Ray stream to write (.rays)");
+  cmd->add_option("--frames", a->frames, "Frames to trace (overrides the spec)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--resolution", a->resolution, "Image size WxH (overrides the spec)");
+  cmd->add_option("--seed", a->seed, "Random seed (overrides the spec)")
+      ->each([a](const std::string&) { a->seed_set = true; });
+  cmd->add_option("--scene", a->scene, "Scene file or built-in (replaces the spec's scene)");
+  cmd->add_option("--preview", a->preview,
+                  "Write a shaded PNG of the last frame, and PATH.density-PASS.png per pass");
+  cmd->add_flag("-q,--quiet", a->quiet, "No progress and no summary");
+  cmd->add_flag("--list-keys", a->list_keys, "List every workload spec key and exit");
+  cmd->callback([a, &exit_code] {
+    if (a->list_keys) {
+      print_keys();
+      exit_code = 0;
+      return;
+    }
+    if (a->workload.empty()) throw InputError("trace: a workload (spec file or scene) is needed");
+    if (a->output.empty() && a->preview.empty())
+      throw InputError("trace: nothing to write: give -o OUT.rays and/or --preview OUT.png");
+    pipeline::WorkloadSpec spec = pipeline::load_workload(a->workload);
+    pipeline::apply_overrides(
+        spec, pipeline::make_overrides(
+                  a->resolution, a->frames,
+                  a->seed_set ? std::optional<uint64_t>(a->seed) : std::nullopt, a->scene));
+    pipeline::TraceOptions options;
+    options.output = a->output;
+    options.preview = a->preview;
+    options.generator = "rtsim " RTSIM_VERSION;
+    if (!a->quiet) options.progress = progress_printer();
+    pipeline::TraceResult result = pipeline::trace_workload(spec, options);
+    if (!a->quiet) {
+      fmt::print("{}", pipeline::format_summary(result.summary));
+      if (!a->output.empty()) fmt::print("wrote {}\n", a->output);
+      for (const auto& image : result.images) fmt::print("wrote {}\n", image);
+    }
+    exit_code = 0;
+  });
+}
+
+}  // namespace rtsim::app

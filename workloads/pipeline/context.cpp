@@ -1,0 +1,21 @@
+#include "workloads/pipeline/context.h"
+
+#include <glm/geometric.hpp>
+
+#include "workloads/pipeline/offset.h"
+
+namespace rtsim::pipeline {
+
+Surface surface_at(const TriangleMesh& mesh, const Ray& ray, const Hit& hit) {
+  Surface s;
+  if (!hit.hit() || hit.prim == kAnyPrim) return s;
+  s.prim = hit.prim;
+  s.position = hit_point(mesh, hit.prim, hit.u, hit.v);
+  glm::vec3 n = face_normal(mesh, hit.prim);
+  if (n == glm::vec3(0.0f)) n = -glm::normalize(ray.dir);  // degenerate: face the ray
+  s.front = glm::dot(n, ray.dir) <= 0.0f;
+  s.normal = s.front ? n : -n;
+  return s;
+}
+
+}  // namespace rtsim::pipeline

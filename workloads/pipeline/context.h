@@ -1,0 +1,64 @@
+// What every pass sees: the scene with its materials and lights (fixed for a run), the frame
+// (camera, index, seed), and the surface found by a closest hit.
+#pragma once
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "traces/embree_scene.h"
+#include "traces/ray.h"
+#include "workloads/pipeline/camera.h"
+#include "workloads/pipeline/lights.h"
+#include "workloads/pipeline/materials.h"
+#include "workloads/pipeline/spec.h"
+#include "workloads/scene.h"
+
+namespace rtsim::pipeline {
+
+struct SceneContext {
+  const Scene& scene;
+  const MaterialTable& materials;
+  const EmbreeScene& embree;
+  std::vector<Light> lights;
+  glm::vec3 sky{0.0f};
+  float diagonal = 1.0f;           // length of the scene bounds' diagonal
+  bool emission_is_light = false;  // emissive objects were turned into lights
+
+  const ShadingMaterial& material_of(uint32_t prim) const { return materials.of(prim); }
+};
+
+struct FrameContext {
+  const SceneContext& scene;
+  const PassSpecs& passes;
+  Camera camera;
+  uint32_t frame = 0;
+  uint64_t seed = 0;
+  uint32_t width = 1, height = 1;
+};
+
+// A surface point found by a ray: the hit point from the triangle's barycentrics and the unit
+// geometric normal turned toward the ray's origin (front: the ray hit the side the winding
+// order faces).
+struct Surface {
+  glm::vec3 position{0.0f}, normal{0.0f, 1.0f, 0.0f};
+  uint32_t prim = kNoHit;
+  bool front = true;
+  bool hit() const { return prim != kNoHit; }
+};
+
+Surface surface_at(const TriangleMesh& mesh, const Ray& ray, const Hit& hit);
+
+// What a pass did: if it shot nothing, why (for the run summary).
+struct PassOutcome {
+  std::string skipped;
+};
+
+// The `sample` field of the j-th ray a pass shoots for camera sample `index` when it shoots
+// `per_sample` rays per camera sample.
+inline uint16_t ray_sample_id(uint16_t index, uint32_t per_sample, uint32_t j) {
+  return uint16_t(uint32_t(index) * per_sample + j);
+}
+
+}  // namespace rtsim::pipeline

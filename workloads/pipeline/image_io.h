@@ -1,0 +1,15 @@
+// PNG output through OpenImageIO, written to a temporary name and renamed, so a failed run
+// never leaves a half-written picture.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rtsim::pipeline {
+
+// rgb: width * height * 3 bytes, rows top to bottom. Throws InputError naming path on failure.
+void write_png(const std::string& path, uint32_t width, uint32_t height,
+               const std::vector<uint8_t>& rgb);
+
+}  // namespace rtsim::pipeline

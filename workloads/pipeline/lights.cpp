@@ -1,0 +1,127 @@
+#include "workloads/pipeline/lights.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "workloads/pipeline/offset.h"
+#include "workloads/pipeline/sampling.h"
+
+namespace rtsim::pipeline {
+namespace {
+
+// One spherical light per emissive object: a sphere of the emitter's equal-area disk radius,
+// set just in front of it (toward the scene centre) so shadow rays end before the emitter.
+void add_emissive_lights(const Scene& scene, const MaterialTable& materials, float diagonal,
+                         std::vector<Light>& out) {
+  struct Acc {
+    double area = 0.0;
+    glm::dvec3 centroid{0.0}, normal{0.0}, power{0.0};
+  };
+  std::vector<Acc> acc(std::max<size_t>(scene.object_names.size(), 1));
+  for (uint32_t tri = 0; tri < scene.triangle_count(); ++tri) {
+    const ShadingMaterial& m = materials.of(tri);
+    if (!m.emissive()) continue;
+    glm::dvec3 v0 = scene.mesh.vertex(tri, 0), v1 = scene.mesh.vertex(tri, 1),
+               v2 = scene.mesh.vertex(tri, 2);
+    glm::dvec3 cross = glm::cross(v1 - v0, v2 - v0);
+    double area = 0.5 * glm::length(cross);
+    if (!(area > 0.0)) continue;
+    uint32_t obj = tri < scene.object_ids.size() ? scene.object_ids[tri] : 0;
+    Acc& a = acc[std::min<size_t>(obj, acc.size() - 1)];
+    glm::dvec3 centre = (v0 + v1 + v2) / 3.0;
+    glm::dvec3 n = cross / (2.0 * area);
+    if (glm::dot(n, glm::dvec3(scene.bounds.center()) - centre) < 0.0) n = -n;
+    a.area += area;
+    a.centroid += centre * area;
+    a.normal += n * area;
+    a.power += glm::dvec3(m.emission) * area;
+  }
+  for (const Acc& a : acc) {
+    if (a.area <= 0.0) continue;
+    Light l;
+    l.type = LightType::Sphere;
+    l.radius = float(std::sqrt(a.area / 3.14159265358979));
+    glm::dvec3 n = glm::length(a.normal) > 0.0 ? glm::normalize(a.normal) : glm::dvec3(0, -1, 0);
+    double gap = l.radius + 1e-3 * diagonal;
+    l.position = glm::vec3(a.centroid / a.area + n * gap);
+    // A Lambertian emitter of radiance L and area A has intensity L A along its normal.
+    l.intensity = glm::vec3(a.power);
+    out.push_back(l);
+  }
+}
+
+}  // namespace
+
+std::vector<Light> resolve_lights(const WorkloadSpec& spec, const Scene& scene,
+                                  const MaterialTable& materials) {
+  std::vector<Light> lights;
+  float diagonal = glm::length(scene.bounds.extent());
+  glm::vec3 auto_position = scene.bounds.center();
+  auto_position.y = scene.bounds.lo.y + 0.9f * scene.bounds.extent().y;
+  for (const LightSpec& s : spec.lights) {
+    Light l;
+    l.type = s.type;
+    l.position = s.position.value_or(auto_position);
+    l.direction = glm::normalize(s.direction);
+    l.intensity = s.color * s.intensity;
+    l.radius = s.type == LightType::Sphere ? s.radius.value_or(0.005f * diagonal) : 0.0f;
+    l.cos_cone = std::cos(s.cone_angle * kPi / 180.0f);
+    l.cos_sun = std::cos(0.5f * s.angular_diameter * kPi / 180.0f);
+    lights.push_back(l);
+  }
+  if (spec.lights_from_emission) add_emissive_lights(scene, materials, diagonal, lights);
+  return lights;
+}
+
+bool make_shadow_ray(const Light& light, const glm::vec3& p, const glm::vec3& n, glm::vec2 u,
+                     Ray& ray) {
+  if (light.intensity == glm::vec3(0.0f)) return false;
+  glm::vec3 dir;
+  float tmax = std::numeric_limits<float>::infinity();
+  if (light.type == LightType::Directional) {
+    dir = -light.direction;
+    if (light.cos_sun < 1.0f) dir = Basis(dir).to_world(sample_uniform_cone(u, light.cos_sun));
+  } else {
+    glm::vec3 to_light = light.position - p;
+    float dist = glm::length(to_light);
+    if (!(dist > 0.0f)) return false;
+    glm::vec3 axis = to_light / dist;
+    if (light.type == LightType::Spot && glm::dot(-axis, light.direction) < light.cos_cone)
+      return false;
+    if (light.type != LightType::Sphere || light.radius <= 0.0f) {
+      dir = axis;
+      tmax = dist;
+    } else {
+      if (dist <= light.radius) return false;
+      float sin2 = (light.radius * light.radius) / (dist * dist);
+      float cos_max = std::sqrt(std::max(0.0f, 1.0f - sin2));
+      dir = Basis(axis).to_world(sample_uniform_cone(u, cos_max));
+      // The shadow ray ends where dir first meets the sphere.
+      float b = glm::dot(dir, to_light);
+      float disc = b * b - (dist * dist - light.radius * light.radius);
+      tmax = b - std::sqrt(std::max(0.0f, disc));
+    }
+  }
+  if (glm::dot(dir, n) <= 0.0f) return false;
+  ray.org = offset_ray_origin(p, n);
+  ray.dir = dir;
+  ray.tmin = 0.0f;
+  ray.tmax = tmax;
+  ray.query = Query::AnyHit;
+  return true;
+}
+
+glm::vec3 light_irradiance(const Light& light, const glm::vec3& p, const glm::vec3& n) {
+  if (light.type == LightType::Directional)
+    return light.intensity * std::max(0.0f, glm::dot(n, -light.direction));
+  glm::vec3 to_light = light.position - p;
+  float d2 = std::max(glm::dot(to_light, to_light), 1e-8f);
+  glm::vec3 l = to_light / std::sqrt(d2);
+  if (light.type == LightType::Spot && glm::dot(-l, light.direction) < light.cos_cone)
+    return glm::vec3(0.0f);
+  return light.intensity * (std::max(0.0f, glm::dot(n, l)) / d2);
+}
+
+}  // namespace rtsim::pipeline

@@ -1,0 +1,215 @@
+#include "workloads/pipeline/preview.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "workloads/pipeline/image_io.h"
+#include "workloads/pipeline/sampling.h"
+#include "workloads/pipeline/shading.h"
+
+namespace rtsim::pipeline {
+namespace {
+
+// For a pass on a grid of `scale`, the record index of each cell (-1: none).
+template <typename SampleOf>
+std::vector<int64_t> records_by_cell(const GBuffer& g, float scale, size_t count,
+                                     SampleOf sample_of) {
+  std::vector<int64_t> cells(GBuffer::cell_count(g.width, g.height, scale), -1);
+  for (size_t r = 0; r < count; ++r) {
+    uint32_t cell = GBuffer::cell_of(g.samples[sample_of(r)].pixel, g.width, g.height, scale);
+    if (cells[cell] < 0) cells[cell] = int64_t(r);
+  }
+  return cells;
+}
+
+class FrameShader {
+public:
+  FrameShader(const Pipeline& p, const FrameResults& f) : p_(p), f_(f), s_(p.scene()) {
+    const PassSpecs& passes = p.spec().passes;
+    const GBuffer& g = f.gbuffer;
+    reflection_ = records_by_cell(g, passes.reflection.resolution_scale, f.reflection.rays.size(),
+                                  [&](size_t r) { return f.reflection.rays[r].sample; });
+    ao_ = records_by_cell(g, passes.ao.resolution_scale, f.ao.samples.size(),
+                          [&](size_t r) { return f.ao.samples[r]; });
+    refraction_ = records_by_cell(g, passes.refraction.resolution_scale, f.refraction.rays.size(),
+                                  [&](size_t r) { return f.refraction.rays[r].sample; });
+    translucency_ =
+        records_by_cell(g, passes.translucency.resolution_scale, f.translucency.samples.size(),
+                        [&](size_t r) { return f.translucency.samples[r]; });
+  }
+
+  glm::vec3 sample(size_t i) const {
+    const GSample& gs = f_.gbuffer.samples[i];
+    if (!gs.surface.hit()) return s_.sky;
+    const PassSpecs& passes = p_.spec().passes;
+    const ShadingMaterial& m = s_.materials.materials[gs.material];
+    const float* vis = passes.shadow.enabled && !s_.lights.empty()
+                           ? &f_.shadow.visibility[i * s_.lights.size()]
+                           : nullptr;
+    float ao = 1.0f;
+    if (int64_t r = lookup(ao_, gs.pixel, passes.ao.resolution_scale); r >= 0)
+      ao = 0.25f + 0.75f * f_.ao.visibility[size_t(r)];
+    glm::vec3 color = shade_surface(s_, gs.surface, vis) + indirect(gs.surface) * ao;
+    glm::vec3 v = -gs.view;
+    if (int64_t r = lookup(reflection_, gs.pixel, passes.reflection.resolution_scale);
+        r >= 0 && m.glossy(passes.reflection.max_roughness)) {
+      const ReflectionRecord& rec = f_.reflection.rays[size_t(r)];
+      glm::vec3 incoming = s_.sky;
+      if (rec.hit.hit()) {
+        const float* rvis = p_.spec().passes.reflected_shadow && !s_.lights.empty()
+                                ? &f_.reflected_shadow.visibility[size_t(r) * s_.lights.size()]
+                                : nullptr;
+        incoming = shade_surface(s_, rec.hit, rvis) + indirect(rec.hit);
+      }
+      float cos_v = std::max(0.0f, glm::dot(v, gs.surface.normal));
+      glm::vec3 f0 = glm::mix(glm::vec3(0.04f), m.base_color, m.metalness);
+      glm::vec3 fresnel = f0 + (glm::vec3(1.0f) - f0) * std::pow(1.0f - cos_v, 5.0f);
+      if (m.layers > 1)
+        fresnel = glm::max(fresnel, glm::vec3(schlick(dielectric_f0(m.ior), cos_v)));
+      color = color * (glm::vec3(1.0f) - fresnel) + fresnel * incoming;
+    }
+    if (int64_t r = lookup(refraction_, gs.pixel, passes.refraction.resolution_scale);
+        r >= 0 && m.transmission > 0.0f) {
+      const Surface& hit = f_.refraction.rays[size_t(r)].last_hit;
+      glm::vec3 through = hit.hit() ? shade_surface(s_, hit, nullptr) + indirect(hit) : s_.sky;
+      color = glm::mix(color, m.base_color * through, m.transmission);
+    }
+    if (int64_t r = lookup(translucency_, gs.pixel, passes.translucency.resolution_scale);
+        r >= 0 && m.translucency > 0.0f)
+      color += m.base_color * m.translucency * f_.translucency.radiance[size_t(r)];
+    return color;
+  }
+
+private:
+  int64_t lookup(const std::vector<int64_t>& cells, uint32_t pixel, float scale) const {
+    return cells[GBuffer::cell_of(pixel, f_.gbuffer.width, f_.gbuffer.height, scale)];
+  }
+
+  glm::vec3 indirect(const Surface& s) const {
+    glm::vec3 irradiance;
+    if (!p_.surfels().irradiance(s.position, s.normal, irradiance)) return glm::vec3(0.0f);
+    return diffuse_albedo(s_.material_of(s.prim)) / kPi * irradiance;
+  }
+
+  const Pipeline& p_;
+  const FrameResults& f_;
+  const SceneContext& s_;
+  std::vector<int64_t> reflection_, ao_, refraction_, translucency_;
+};
+
+// Fills pixels that got no sample (irregular placement) from the nearest pixel that did.
+void fill_holes(std::vector<glm::vec3>& image, std::vector<uint32_t>& weight, uint32_t width,
+                uint32_t height) {
+  std::vector<uint32_t> had = weight;
+  for (uint32_t y = 0; y < height; ++y)
+    for (uint32_t x = 0; x < width; ++x) {
+      size_t p = size_t(y) * width + x;
+      if (had[p]) continue;
+      for (int radius = 1; radius <= 16 && !weight[p]; ++radius)
+        for (int dy = -radius; dy <= radius && !weight[p]; ++dy)
+          for (int dx = -radius; dx <= radius; ++dx) {
+            int64_t nx = int64_t(x) + dx, ny = int64_t(y) + dy;
+            if (nx < 0 || ny < 0 || nx >= int64_t(width) || ny >= int64_t(height)) continue;
+            size_t q = size_t(ny) * width + size_t(nx);
+            if (!had[q]) continue;
+            image[p] = image[q];
+            weight[p] = 1;
+            break;
+          }
+    }
+}
+
+glm::vec3 heat(float t) {
+  static const glm::vec3 kStops[5] = {{0.0f, 0.0f, 0.0f},
+                                      {0.25f, 0.05f, 0.45f},
+                                      {0.8f, 0.2f, 0.25f},
+                                      {1.0f, 0.65f, 0.1f},
+                                      {1.0f, 1.0f, 0.85f}};
+  float x = std::clamp(t, 0.0f, 1.0f) * 4.0f;
+  int i = std::min(3, int(x));
+  return glm::mix(kStops[i], kStops[i + 1], x - float(i));
+}
+
+uint8_t to_byte(float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+
+}  // namespace
+
+std::vector<glm::vec3> shade_frame(const Pipeline& pipeline, const FrameResults& frame) {
+  const GBuffer& g = frame.gbuffer;
+  std::vector<glm::vec3> image(size_t(g.width) * g.height, glm::vec3(0.0f));
+  std::vector<uint32_t> weight(image.size(), 0);
+  FrameShader shader(pipeline, frame);
+  for (size_t i = 0; i < g.samples.size(); ++i) {
+    image[g.samples[i].pixel] += shader.sample(i);
+    weight[g.samples[i].pixel]++;
+  }
+  for (size_t p = 0; p < image.size(); ++p)
+    if (weight[p] > 1) image[p] /= float(weight[p]);
+  fill_holes(image, weight, g.width, g.height);
+  return image;
+}
+
+std::vector<uint8_t> tone_map(const std::vector<glm::vec3>& radiance) {
+  double log_sum = 0.0;
+  size_t n = 0;
+  for (const glm::vec3& c : radiance) {
+    float lum = 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+    if (lum <= 0.0f) continue;
+    log_sum += std::log(1e-4 + lum);
+    ++n;
+  }
+  float exposure = n ? float(0.18 / std::exp(log_sum / double(n))) : 1.0f;
+  std::vector<uint8_t> out(radiance.size() * 3);
+  for (size_t p = 0; p < radiance.size(); ++p)
+    for (int k = 0; k < 3; ++k) {
+      float v = radiance[p][k] * exposure;
+      v = v * (1.0f + v / 4.0f) / (1.0f + v);  // Reinhard with white point 2
+      v = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+      out[p * 3 + size_t(k)] = to_byte(v);
+    }
+  return out;
+}
+
+void write_preview(const std::string& path, const Pipeline& pipeline, const FrameResults& frame) {
+  write_png(path, frame.gbuffer.width, frame.gbuffer.height,
+            tone_map(shade_frame(pipeline, frame)));
+}
+
+std::string density_image_path(const std::string& preview_path, const std::string& pass) {
+  std::string stem = preview_path;
+  auto dot = stem.find_last_of('.');
+  auto slash = stem.find_last_of('/');
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
+    stem = stem.substr(0, dot);
+  return stem + ".density-" + pass + ".png";
+}
+
+std::vector<std::string> write_density_images(const std::string& preview_path, const RaySink& sink,
+                                              uint32_t width, uint32_t height) {
+  std::vector<std::string> written;
+  std::vector<uint32_t> all(size_t(width) * height, 0);
+  auto write = [&](const std::vector<uint32_t>& counts, const std::string& name) {
+    uint32_t most = *std::max_element(counts.begin(), counts.end());
+    std::vector<uint8_t> rgb(counts.size() * 3);
+    for (size_t p = 0; p < counts.size(); ++p) {
+      float t = most ? float(std::log1p(double(counts[p])) / std::log1p(double(most))) : 0.0f;
+      glm::vec3 c = heat(t);
+      for (int k = 0; k < 3; ++k) rgb[p * 3 + size_t(k)] = to_byte(c[k]);
+    }
+    std::string path = density_image_path(preview_path, name);
+    write_png(path, width, height, rgb);
+    written.push_back(path);
+  };
+  for (int p = 0; p < kPassCount; ++p) {
+    const auto& counts = sink.density(PassId(p));
+    if (sink.count(PassId(p)) == 0 || counts.size() != all.size()) continue;
+    for (size_t i = 0; i < all.size(); ++i) all[i] += counts[i];
+    write(counts, pass_name(PassId(p)));
+  }
+  if (sink.total() > 0) write(all, "all");
+  return written;
+}
+
+}  // namespace rtsim::pipeline

@@ -1,0 +1,50 @@
+#include "workloads/pipeline/ray_sink.h"
+
+namespace rtsim::pipeline {
+
+const char* pass_name(PassId pass) {
+  static constexpr const char* kNames[kPassCount] = {
+      "camera",   "shadow", "reflection", "reflected_shadow", "diffuse_gi",
+      "gi_light", "ao",     "refraction", "translucency"};
+  return kNames[size_t(pass)];
+}
+
+RayType pass_ray_type(PassId pass) {
+  switch (pass) {
+    case PassId::Camera: return RayType::Camera;
+    case PassId::Shadow: return RayType::Shadow;
+    case PassId::Reflection: return RayType::Reflection;
+    case PassId::ReflectedShadow: return RayType::ReflectedShadow;
+    case PassId::DiffuseGI: return RayType::DiffuseGI;
+    case PassId::GiLight: return RayType::Shadow;
+    case PassId::AO: return RayType::AO;
+    case PassId::Refraction: return RayType::Refraction;
+    case PassId::Translucency: return RayType::Translucency;
+  }
+  return RayType::Camera;
+}
+
+RaySink::RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density)
+    : writer_(writer), frame_cost_(size_t(width) * height, 0) {
+  if (keep_density)
+    for (auto& d : density_) d.assign(size_t(width) * height, 0);
+}
+
+void RaySink::emit(const Ray& ray, uint32_t origin_prim) {
+  if (writer_) writer_->write(ray);
+  counts_[size_t(pass_)]++;
+  auto& density = density_[size_t(pass_)];
+  if (ray.pixel < frame_cost_.size()) {
+    frame_cost_[ray.pixel]++;
+    if (!density.empty()) density[ray.pixel]++;
+  }
+  if (observer) observer(ray, pass_, origin_prim);
+}
+
+uint64_t RaySink::total() const {
+  uint64_t sum = 0;
+  for (auto c : counts_) sum += c;
+  return sum;
+}
+
+}  // namespace rtsim::pipeline

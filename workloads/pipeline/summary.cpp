@@ -1,0 +1,34 @@
+#include "workloads/pipeline/summary.h"
+
+#include <fmt/format.h>
+
+namespace rtsim::pipeline {
+
+std::string format_summary(const RunSummary& s) {
+  double pixels = double(s.width) * s.height * std::max(1u, s.frames);
+  std::string out = fmt::format(
+      "workload {}: scene {} ({} triangles), {}x{}, {} frame{}, {} light{}, {} surfels\n",
+      s.workload, s.scene_source, s.triangles, s.width, s.height, s.frames,
+      s.frames == 1 ? "" : "s", s.lights, s.lights == 1 ? "" : "s", s.surfels);
+  const glm::vec3 &p = s.camera_position, &l = s.camera_look_at;
+  out += fmt::format("camera at [{:g}, {:g}, {:g}] looking at [{:g}, {:g}, {:g}] (frame 0)\n", p.x,
+                     p.y, p.z, l.x, l.y, l.z);
+  out += fmt::format("  {:<17}{:>12}{:>12}{:>14}  {}\n", "pass", "rays", "rays/pixel",
+                     "budget/pixel", "note");
+  for (int p = 0; p < kPassCount; ++p) {
+    const PassSummary& ps = s.passes[size_t(p)];
+    std::string note;
+    if (ps.rays == 0)
+      note = "skipped: " + (ps.reason.empty() ? std::string("nothing to do") : ps.reason);
+    else if (ps.frames_skipped > 0)
+      note = fmt::format("skipped in {} of {} frames: {}", ps.frames_skipped, s.frames, ps.reason);
+    double budget = double(ps.budget) * std::max(1u, s.frames) / pixels;
+    out += fmt::format("  {:<17}{:>12}{:>12.4f}{:>14.4f}  {}\n", pass_name(PassId(p)), ps.rays,
+                       double(ps.rays) / pixels, budget, note);
+  }
+  out += fmt::format("  {:<17}{:>12}{:>12.4f}\n", "total", s.total_rays(),
+                     double(s.total_rays()) / pixels);
+  return out;
+}
+
+}  // namespace rtsim::pipeline
