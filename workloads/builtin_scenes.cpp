@@ -3,6 +3,7 @@
 
 #include "traces/error.h"
 #include "workloads/builtin_scenes.h"
+#include "workloads/hardcases.h"
 
 namespace rtsim::builtin {
 
@@ -21,6 +22,7 @@ Scene make_builtin_scene(const std::string& name_and_params) {
   const std::string source = "builtin:" + name_and_params;
   if (name_and_params == "cornell") return make_cornell();
   if (name_and_params == "pica") return make_pica();
+  if (name_and_params == "hardcases") return hardcases::make_hardcases_scene();
   auto colon = name_and_params.find(':');
   std::string name = name_and_params.substr(0, colon);
   if (name == "grid" || name == "foliage") {

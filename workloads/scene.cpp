@@ -41,11 +41,12 @@ void check_ids(const Scene& s, const std::vector<uint32_t>& ids, size_t limit, c
 bool is_builtin_scene(const std::string& spec) {
   if (starts_with(spec, kBuiltinPrefix)) return true;
   std::string name = spec.substr(0, spec.find(':'));
-  return name == "cornell" || name == "pica" || name == "grid" || name == "foliage";
+  return name == "cornell" || name == "pica" || name == "grid" || name == "foliage" ||
+         name == "hardcases";
 }
 
 std::vector<std::string> builtin_scene_names() {
-  return {"cornell", "pica", "grid:N", "foliage:N"};
+  return {"cornell", "pica", "grid:N", "foliage:N", "hardcases"};
 }
 
 Scene load_scene(const std::string& spec) {
