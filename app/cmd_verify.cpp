@@ -73,10 +73,10 @@ void print_report(const VerifyReport& r) {
   fmt::print("hits       model {}  embree {}\n", r.model_hits, r.embree_hits);
 }
 
-void print_examples(const VerifyReport& r) {
-  if (r.examples.empty()) return;
-  fmt::print("\nfirst {} mismatching rays (hex floats):\n", r.examples.size());
-  for (const Mismatch& m : r.examples) {
+void print_examples(const std::vector<Mismatch>& examples, const char* what) {
+  if (examples.empty()) return;
+  fmt::print("\nfirst {} {} rays (hex floats):\n", examples.size(), what);
+  for (const Mismatch& m : examples) {
     const Ray& ray = m.ray;
     fmt::print("ray {} {} {}: {} / {}\n", m.index, ray_type_name(ray.type), query_name(ray.query),
                mismatch_class_name(m.verdict.cls), right_side_name(m.verdict.right));
@@ -117,7 +117,8 @@ int run_verify(const VerifyOptions& o) {
     for (const Ray& ray : batch) verifier.check(ray);
   const VerifyReport& report = verifier.report();
   print_report(report);
-  print_examples(report);
+  print_examples(report.examples, "mismatching");
+  print_examples(report.unexplained_examples, "unexplained");
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (report.unexplained() > 0) {
     fmt::print("\nFAIL: {} unexplained mismatches ({:.1f} s)\n", report.unexplained(), seconds);

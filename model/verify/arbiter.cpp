@@ -145,20 +145,27 @@ Verdict Arbiter::judge(const Ray& ray, const Hit& embree, uint32_t model_prim,
     bool same_distance = same_t(model_t, embree.t, ray, config_.t_tolerance);
     if (same_distance && model_prim == embree.prim) return {};
     if (same_distance) {
-      // Two triangles at one distance: through their shared edge, or a tie.
+      // Two triangles at one distance: through their shared edge, a tie, or one is not hit.
       ExactHit a = exact_intersect(mesh_, model_prim, ray);
       ExactHit b = exact_intersect(mesh_, embree.prim, ray);
-      bool edge = std::fabs(a.min_barycentric) < config_.edge_epsilon &&
-                  std::fabs(b.min_barycentric) < config_.edge_epsilon;
-      return {false, edge ? MismatchClass::EdgeOrVertex : MismatchClass::EqualTTie,
-              RightSide::Both, model_prim};
+      double eps = config_.edge_epsilon;
+      bool a_edge = std::fabs(a.min_barycentric) < eps, b_edge = std::fabs(b.min_barycentric) < eps;
+      if (a_edge && b_edge)
+        return {false, MismatchClass::EdgeOrVertex, RightSide::Both, model_prim};
+      if ((a.inside || a_edge) && (b.inside || b_edge))
+        return {false, MismatchClass::EqualTTie, RightSide::Both, model_prim};
+      if (!(a.inside || a_edge)) return classify(ray, model_prim, true, kNone);
+      return classify(ray, embree.prim, false, kNone);
     }
     if (model_prim == embree.prim) {
-      // One triangle, two distances: only an ill-conditioned triangle excuses that.
+      // One triangle, two distances: only ill-conditioning excuses that. fp32 t errs by about
+      // the coordinates' ulps over the cosine of the angle to the plane.
       Verdict v = classify(ray, model_prim, true, kNone);
-      if (v.cls != MismatchClass::Degenerate && v.cls != MismatchClass::Grazing)
-        v.cls = MismatchClass::Unexplained;
       ExactHit ex = exact_intersect(mesh_, model_prim, ray);
+      double conditioned = t_slack(ray, ex.t) / std::max(ex.cosine, 1e-12);
+      bool ill_conditioned = std::fabs(double(model_t) - embree.t) <= conditioned;
+      if (v.cls != MismatchClass::Degenerate && v.cls != MismatchClass::Grazing)
+        v.cls = ill_conditioned ? MismatchClass::Grazing : MismatchClass::Unexplained;
       v.right = std::fabs(model_t - ex.t) <= std::fabs(embree.t - ex.t) ? RightSide::Model
                                                                          : RightSide::Embree;
       return v;

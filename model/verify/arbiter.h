@@ -15,7 +15,8 @@ namespace rtsim {
 
 enum class MismatchClass : uint8_t {
   EdgeOrVertex,   // ray within edge_epsilon of an edge or vertex of the disputed triangle
-  Grazing,        // ray (nearly) parallel to the disputed triangle's plane
+  Grazing,        // ray (nearly) parallel to the disputed triangle's plane, or t differs
+                  // within the fp32 error bound amplified by 1 / cos(angle to the plane)
   Degenerate,     // disputed triangle of (nearly) zero area
   EqualTTie,      // both hit, different triangles, same t within tolerance
   RangeBoundary,  // the disputed hit lies at tmin or tmax within range_epsilon

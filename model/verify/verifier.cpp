@@ -32,8 +32,11 @@ bool Verifier::check(const Ray& ray) {
   report_.by_class[cls]++;
   report_.right[cls][static_cast<int>(verdict.right)]++;
   report_.mismatches_by_type[type]++;
-  if (report_.examples.size() < max_examples_)
-    report_.examples.push_back({report_.rays - 1, ray, embree, model, model_prim, verdict});
+  Mismatch example{report_.rays - 1, ray, embree, model, model_prim, verdict};
+  if (report_.examples.size() < max_examples_) report_.examples.push_back(example);
+  if (verdict.cls == MismatchClass::Unexplained &&
+      report_.unexplained_examples.size() < max_examples_)
+    report_.unexplained_examples.push_back(example);
   return false;
 }
 

@@ -32,6 +32,7 @@ struct VerifyReport {
   TraversalCounters counters;  // summed over all rays
   uint64_t accesses = 0, access_bytes = 0;
   std::vector<Mismatch> examples;  // the first max_examples mismatches
+  std::vector<Mismatch> unexplained_examples;  // the first max_examples unexplained ones
 
   uint64_t mismatches() const { return rays - agree; }
   uint64_t unexplained() const { return by_class[int(MismatchClass::Unexplained)]; }

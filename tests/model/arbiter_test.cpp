@@ -1,0 +1,128 @@
+// The double-precision arbiter: exact recomputation and the classification of disagreements.
+#include <gtest/gtest.h>
+
+#include "model/verify/arbiter.h"
+#include "model_test_util.h"
+
+namespace rtsim {
+namespace {
+
+// Quad split along its diagonal (triangles 0, 1), a duplicate of triangle 0 (2), a degenerate
+// triangle (3) and a triangle seen edge-on from the test rays (4).
+TriangleMesh scene() {
+  TriangleMesh mesh;
+  test::add_triangle(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0});
+  test::add_triangle(mesh, {0, 0, 0}, {1, 1, 0}, {0, 1, 0});
+  test::add_triangle(mesh, {0, 0, 0}, {1, 0, 0}, {1, 1, 0});
+  test::add_triangle(mesh, {5, 0, 0}, {6, 0, 0}, {7, 0, 0});
+  test::add_triangle(mesh, {10, 0, -1}, {10, 1, -1}, {10, 0, 1});
+  return mesh;
+}
+
+Hit hit_of(uint32_t prim, float t) {
+  Hit h;
+  h.prim = prim;
+  h.t = t;
+  return h;
+}
+
+TEST(Arbiter, ExactIntersectionInDouble) {
+  TriangleMesh mesh = scene();
+  Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
+  ExactHit ex = exact_intersect(mesh, 0, ray);
+  EXPECT_TRUE(ex.hit());
+  EXPECT_DOUBLE_EQ(ex.t, 1.0);
+  EXPECT_NEAR(ex.min_barycentric, 0.25, 1e-12);
+  EXPECT_NEAR(ex.cosine, 1.0, 1e-12);
+  EXPECT_FALSE(exact_intersect(mesh, 1, ray).hit());
+}
+
+TEST(Arbiter, AgreementIsNotAMismatch) {
+  TriangleMesh mesh = scene();
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
+  EXPECT_TRUE(arbiter.judge(ray, hit_of(0, 2.0f), 0, 2.0f).agree);
+  EXPECT_TRUE(arbiter.judge(ray, Hit{}, kNoHit, 0.0f).agree);
+  EXPECT_TRUE(arbiter.judge(ray, hit_of(0, 2.0f), 0, 2.0f + 1e-6f).agree) << "within tolerance";
+}
+
+TEST(Arbiter, SharedEdgeHitsAreExplained) {
+  TriangleMesh mesh = scene();
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  Ray ray = test::ray_to({0.5f, 0.5f, 3.0f}, {0.5f, 0.5f, 0.0f});
+  Verdict v = arbiter.judge(ray, hit_of(0, 3.0f), 1, 3.0f);
+  EXPECT_FALSE(v.agree);
+  EXPECT_EQ(v.cls, MismatchClass::EdgeOrVertex);
+  EXPECT_EQ(v.right, RightSide::Both);
+  // One side missing the edge entirely: the side that hit is right.
+  Verdict slipped = arbiter.judge(ray, Hit{}, 1, 3.0f);
+  EXPECT_EQ(slipped.cls, MismatchClass::EdgeOrVertex);
+  EXPECT_EQ(slipped.right, RightSide::Both) << "exactly on the edge: either answer stands";
+}
+
+TEST(Arbiter, DuplicateTrianglesAreATie) {
+  TriangleMesh mesh = scene();
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
+  Verdict v = arbiter.judge(ray, hit_of(0, 2.0f), 2, 2.0f);
+  EXPECT_EQ(v.cls, MismatchClass::EqualTTie);
+  EXPECT_EQ(v.right, RightSide::Both);
+}
+
+TEST(Arbiter, DegenerateAndGrazingAreExplained) {
+  TriangleMesh mesh = scene();
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  Ray at_line = test::ray_to({5.5f, 0.0f, 1.0f}, {5.5f, 0.0f, 0.0f});
+  EXPECT_EQ(arbiter.judge(at_line, Hit{}, 3, 1.0f).cls, MismatchClass::Degenerate);
+  Ray edge_on = test::ray_to({10.0f, 0.5f, -5.0f}, {10.0f, 0.5f, 5.0f});
+  EXPECT_EQ(arbiter.judge(edge_on, Hit{}, 4, 5.0f).cls, MismatchClass::Grazing);
+}
+
+TEST(Arbiter, ClearDisagreementIsUnexplainedAndNamesTheRightSide) {
+  TriangleMesh mesh = scene();
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
+  // The model misses a triangle hit squarely in its middle: Embree is right.
+  Verdict missed = arbiter.judge(ray, hit_of(0, 2.0f), kNoHit, 0.0f);
+  EXPECT_EQ(missed.cls, MismatchClass::Unexplained);
+  EXPECT_EQ(missed.right, RightSide::Embree);
+  // The model reports a triangle the ray does not cross, at the right t: Embree is right.
+  Verdict wrong = arbiter.judge(ray, hit_of(0, 2.0f), 1, 2.0f);
+  EXPECT_EQ(wrong.cls, MismatchClass::Unexplained);
+  EXPECT_EQ(wrong.right, RightSide::Embree);
+  Verdict far = arbiter.judge(ray, Hit{}, 1, 2.0f);
+  EXPECT_EQ(far.cls, MismatchClass::Unexplained);
+  EXPECT_EQ(far.right, RightSide::Embree);
+  // Same triangle, clearly different t.
+  EXPECT_EQ(arbiter.judge(ray, hit_of(0, 2.0f), 0, 2.5f).cls, MismatchClass::Unexplained);
+}
+
+TEST(Arbiter, AnyHitDisagreementFindsACandidate) {
+  TriangleMesh mesh = scene();
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
+  ray.query = Query::AnyHit;
+  Hit occluded = hit_of(kAnyPrim, ray.tmax);
+  Verdict v = arbiter.judge(ray, occluded, kNoHit, 0.0f);
+  EXPECT_EQ(v.cls, MismatchClass::Unexplained);
+  EXPECT_EQ(v.right, RightSide::Embree);
+  EXPECT_TRUE(v.disputed == 0u || v.disputed == 2u);
+}
+
+TEST(Arbiter, RangeBoundaryIsExplained) {
+  TriangleMesh mesh = scene();
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
+  ray.tmax = 1.0f;
+  EXPECT_EQ(arbiter.judge(ray, Hit{}, 0, 2.0f).cls, MismatchClass::RangeBoundary);
+}
+
+}  // namespace
+}  // namespace rtsim

@@ -1,0 +1,96 @@
+// rtsim verify and rtsim bench as a user runs them: streams written with RayStreamWriter.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include "model/verify/ray_samples.h"
+#include "run_rtsim.h"
+#include "traces/stream.h"
+#include "workloads/hardcases.h"
+#include "workloads/scene.h"
+
+namespace rtsim {
+namespace {
+
+std::string temp_path(const std::string& name) {
+  return "/tmp/rtsim-model-" + std::to_string(getpid()) + "-" + name;
+}
+
+// A stream over a built-in scene: the hard cases' rays plus camera rays.
+std::string write_stream(const std::string& name, const std::string& scene_name) {
+  Scene scene = load_scene(scene_name);
+  StreamHeader header;
+  header.scene_source = scene.source;
+  header.scene_fingerprint = scene.fingerprint;
+  header.workload = "model-test";
+  header.generator = "rtsim model tests";
+  std::string path = temp_path(name);
+  RayStreamWriter writer(path, header);
+  for (const auto& c : hardcases::make_hard_cases(40, 5))
+    for (const Ray& ray : c.rays) writer.write(ray);
+  for (const Ray& ray : sample_camera_rays(scene.mesh, 48, 32)) writer.write(ray);
+  writer.finish();
+  return path;
+}
+
+class VerifyCli : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() { stream_ = write_stream("hard.rays", "hardcases"); }
+  static void TearDownTestSuite() { std::remove(stream_.c_str()); }
+  static std::string stream_;
+};
+std::string VerifyCli::stream_;
+
+TEST_F(VerifyCli, PassesForEveryFormatAndWidth) {
+  for (std::string format : {"aabb32", "cwbvh8"})
+    for (int width : {2, 4, 6, 8}) {
+      auto r = test::run_rtsim("verify " + stream_ + " --format " + format + " --width " +
+                               std::to_string(width));
+      EXPECT_EQ(r.exit_code, 0) << format << width << "\n" << r.out << r.err;
+      EXPECT_NE(r.out.find("unexplained                 0"), std::string::npos) << r.out;
+      EXPECT_NE(r.out.find("OK: "), std::string::npos) << r.out;
+    }
+}
+
+TEST_F(VerifyCli, PrintsSummaryCountersAndHexMismatches) {
+  auto r = test::run_rtsim("verify " + stream_ + " --layout breadth-first --max-print 3");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* part : {"mismatch class", "edge_or_vertex", "grazing", "degenerate",
+                           "equal_t_tie", "range_boundary", "trav_nodes", "trav_prim_hits",
+                           "camera", "bvh8 aabb32 raw breadth-first"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
+  // Mismatching rays, if any, are printed as hex floats.
+  if (r.out.find("first ") != std::string::npos) EXPECT_NE(r.out.find("0x"), std::string::npos);
+}
+
+TEST_F(VerifyCli, SceneFingerprintMismatchIsBadInput) {
+  auto r = test::run_rtsim("verify " + stream_ + " --scene cornell");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("fingerprint"), std::string::npos) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+}
+
+TEST_F(VerifyCli, BadInputExitsTwo) {
+  EXPECT_EQ(test::run_rtsim("verify /nonexistent/x.rays").exit_code, 2);
+  EXPECT_EQ(test::run_rtsim("verify " + stream_ + " --width 9").exit_code, 2);
+  EXPECT_EQ(test::run_rtsim("verify " + stream_ + " --format bvh99").exit_code, 2);
+  auto r = test::run_rtsim("verify " + stream_ + " --format cwbvh8 --leaf-size 4");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("max_leaf_size"), std::string::npos) << r.err;
+}
+
+TEST(BenchCli, RunsOnABuiltinScene) {
+  auto r = test::run_rtsim("bench --scene grid:20000 --rays 20000 --repeat 1");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const char* part : {"model ", "embree ", "ratio ", "Mrays/s"})
+    EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
+}
+
+TEST(BenchCli, MissingSceneFileIsAClearMessage) {
+  auto r = test::run_rtsim("bench --scene /nonexistent/conference.obj");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("/nonexistent/conference.obj not found"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace rtsim
