@@ -20,6 +20,9 @@ int main(int argc, char** argv) {
   rtsim::app::add_verify_command(app, exit_code);
   rtsim::app::add_bench_command(app, exit_code);
 
+  rtsim::app::add_sim_command(app, exit_code);
+  rtsim::app::add_bench_sim_command(app, exit_code);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -5,6 +5,8 @@
 // address and length matter: the functional model reads BVH data itself, so targets do not
 // fill the data buffer. No module has a thread: a transaction is one function call chain,
 // and callers sleep until the returned time.
+// Writes (stack spills) are posted: caches pass them below without allocating (write-around),
+// and the DRAM charges their bytes to its bus like reads.
 #pragma once
 
 #include <functional>
@@ -47,6 +49,7 @@ public:
 
   CacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock);
   const Cache& cache() const { return cache_; }
+  uint64_t write_bytes() const { return write_bytes_; }  // bytes written around this level
 
 private:
   void b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
@@ -54,6 +57,7 @@ private:
   Clock clock_;
   TlmReadPort below_;
   Cache cache_;
+  uint64_t write_bytes_ = 0;
 };
 
 class DramModule : public sc_core::sc_module {
@@ -62,12 +66,14 @@ public:
 
   DramModule(sc_core::sc_module_name name, const DramConfig& config, const Clock& clock);
   const Dram& dram() const { return dram_; }
+  uint64_t write_bytes() const { return write_bytes_; }  // of dram().stats().bytes
 
 private:
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
 
   Clock clock_;
   Dram dram_;
+  uint64_t write_bytes_ = 0;
 };
 
 }  // namespace rtsim

@@ -1,0 +1,183 @@
+// rtsim bench-sim: how fast the cycle-approximate model simulates, against Embree's
+// single-threaded time on the same rays (default: 1M diffuse-GI-like rays on Conference; or
+// --stream FILE, read in constant memory). Embree runs in this process; each simulation runs
+// in a forked child (SystemC allows one elaboration per process), which reports its time and
+// peak memory. --compare-exact also runs the config with sim.quantum_cycles = 1 (events in
+// exact global order) and prints how far the faster run's cycles are from it.
+// --write-stream FILE writes the generated rays as a stream (e.g. 5M rays for the memory check).
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "model/config/hw_config.h"
+#include "model/sc/fork_run.h"
+#include "model/sc/rt_simulator.h"
+#include "model/verify/ray_samples.h"
+#include "traces/embree_scene.h"
+#include "traces/error.h"
+#include "workloads/scene.h"
+
+namespace rtsim::app {
+namespace {
+
+struct BenchSimOptions {
+  std::string scene = RTSIM_SHARED_SCENES_DIR "/conference/conference.obj";
+  std::string stream, write_stream, config;
+  std::vector<std::string> sets;
+  size_t rays = 1000000;
+  uint64_t seed = 1;
+  int repeat = 3;
+  bool compare_exact = false, no_embree = false;
+};
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double peak_rss_mib() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+// Feeds rays from memory or from the stream file (reopened per pass).
+std::unique_ptr<RaySource> open_source(const BenchSimOptions& o, const std::vector<Ray>& rays,
+                                       std::unique_ptr<RayStreamReader>& reader) {
+  if (o.stream.empty()) return std::make_unique<VectorRaySource>(rays);
+  reader = std::make_unique<RayStreamReader>(o.stream);
+  return std::make_unique<StreamRaySource>(*reader);
+}
+
+double time_embree(const BenchSimOptions& o, const Scene& scene, const std::vector<Ray>& rays,
+                   uint64_t& count) {
+  EmbreeScene embree(scene.mesh, 1);
+  double best = 1e30;
+  for (int run = 0; run < o.repeat; ++run) {
+    std::unique_ptr<RayStreamReader> reader;
+    auto source = open_source(o, rays, reader);
+    Ray ray;
+    count = 0;
+    auto start = Clock::now();
+    for (; source->next(ray); ++count) embree.trace(ray);
+    best = std::min(best, seconds_since(start));
+  }
+  return best;
+}
+
+// One simulation in a child process; returns its figures as JSON.
+nlohmann::json simulate(const BenchSimOptions& o, const HwConfig& config, const BvhImage& image,
+                        const std::vector<Ray>& rays) {
+  std::string text = run_in_child([&] {
+    setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+    std::unique_ptr<RayStreamReader> reader;
+    auto source = open_source(o, rays, reader);
+    RtSimulator sim(config, image, *source);
+    auto start = Clock::now();
+    sim.run();
+    double seconds = seconds_since(start);
+    StatsRegistry stats;
+    sim.report(stats);
+    nlohmann::json out = {{"seconds", seconds},           {"rays", sim.rays()},
+                          {"cycles", sim.cycles()},         {"dram_bytes", stats.value("dram.bytes")},
+                          {"peak_rss_mib", peak_rss_mib()}};
+    return out.dump();
+  });
+  return nlohmann::json::parse(text);
+}
+
+void write_stream(const BenchSimOptions& o, const Scene& scene, const std::vector<Ray>& rays) {
+  StreamHeader header;
+  header.scene_source = scene.source;
+  header.scene_fingerprint = scene.fingerprint;
+  header.workload = "bench-sim diffuse";
+  header.generator = "rtsim bench-sim";
+  header.seed = o.seed;
+  RayStreamWriter writer(o.write_stream, header);
+  for (const Ray& ray : rays) writer.write(ray);
+  writer.finish();
+  fmt::print("wrote      {} rays to {}\n", rays.size(), o.write_stream);
+}
+
+int run_bench_sim(const BenchSimOptions& o) {
+  if (!is_builtin_scene(o.scene) && !std::filesystem::exists(o.scene) && o.stream.empty()) {
+    fmt::print(stderr, "rtsim bench-sim: scene {} not found (no shared scenes here?); pass "
+                       "--scene FILE or a built-in, e.g. --scene grid:300000\n", o.scene);
+    return 2;
+  }
+  HwConfig config = load_hw_config(o.config, o.sets);
+  std::string spec = o.scene;
+  if (!o.stream.empty()) spec = RayStreamReader(o.stream).header().scene_source;
+  Scene scene = load_scene(spec);
+  BvhImage image = build_bvh_image(scene.mesh, config.bvh);
+  std::vector<Ray> rays;
+  if (o.stream.empty()) rays = sample_diffuse_rays(scene.mesh, o.rays, o.seed);
+  if (!o.write_stream.empty()) {
+    write_stream(o, scene, rays);
+    return 0;
+  }
+  fmt::print("scene      {} ({} triangles), {}\n", scene.source, scene.triangle_count(),
+             describe(config.bvh));
+  fmt::print("config     {} ({}, {} RT units, quantum {} cycles)\n", config.name,
+             traversal_mode_name(config.rt.mode), config.rt_units, config.sim.quantum_cycles);
+  fmt::print("rays       {}\n", o.stream.empty() ? fmt::format("{} diffuse-GI-like, seed {}",
+                                                               rays.size(), o.seed)
+                                                   : o.stream);
+  uint64_t count = 0;
+  double embree_time = o.no_embree ? 0 : time_embree(o, scene, rays, count);
+  if (!o.no_embree)
+    fmt::print("embree     {:.3f} s, 1 thread, best of {} ({:.2f} MRays/s)\n", embree_time,
+               o.repeat, count / embree_time / 1e6);
+  nlohmann::json sim = simulate(o, config, image, rays);
+  double seconds = sim["seconds"].get<double>();
+  double n = sim["rays"].get<double>();
+  fmt::print("sim        {:.3f} s ({:.0f} rays per host second), {} cycles, {:.0f} DRAM B/ray, "
+             "child peak memory {:.0f} MiB\n",
+             seconds, n / seconds, sim["cycles"].get<uint64_t>(),
+             sim["dram_bytes"].get<double>() / n, sim["peak_rss_mib"].get<double>());
+  if (!o.no_embree)
+    fmt::print("ratio      simulation / Embree = {:.1f}x (goal: within 20x)\n",
+               seconds / embree_time);
+  if (o.compare_exact) {
+    HwConfig exact = config;
+    exact.sim.quantum_cycles = 1;
+    nlohmann::json ref = simulate(o, exact, image, rays);
+    double ref_cycles = ref["cycles"].get<double>();
+    fmt::print("exact      quantum 1: {:.3f} s, {} cycles; quantum {} is {:+.2f}% in cycles, "
+               "{:+.2f}% in DRAM bytes, {:.2f}x faster\n",
+               ref["seconds"].get<double>(), ref["cycles"].get<uint64_t>(),
+               config.sim.quantum_cycles, 100 * (sim["cycles"].get<double>() / ref_cycles - 1),
+               100 * (sim["dram_bytes"].get<double>() / ref["dram_bytes"].get<double>() - 1),
+               ref["seconds"].get<double>() / seconds);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_bench_sim_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("bench-sim", "Time the cycle-approximate model against Embree");
+  auto o = std::make_shared<BenchSimOptions>();
+  cmd->add_option("--scene", o->scene, "Scene file or built-in scene")->capture_default_str();
+  cmd->add_option("--rays", o->rays, "Diffuse-GI-like rays to generate")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Seed of the ray sampler")->capture_default_str();
+  cmd->add_option("--stream", o->stream, "Simulate this stream instead (constant memory)");
+  cmd->add_option("--config", o->config, "Hardware config (.toml)");
+  cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
+  cmd->add_option("--repeat", o->repeat, "Embree runs; the fastest counts")
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
+  cmd->add_flag("--compare-exact", o->compare_exact, "Also run with quantum 1 and compare");
+  cmd->add_flag("--no-embree", o->no_embree, "Skip the Embree timing");
+  cmd->add_option("--write-stream", o->write_stream, "Write the generated rays here and exit");
+  cmd->callback([o, &exit_code] { exit_code = run_bench_sim(*o); });
+}
+
+}  // namespace rtsim::app

@@ -1,0 +1,145 @@
+// rtsim sim STREAM --config HW.toml [--set key=value]... -o DIR [--no-verify]: runs the
+// cycle-approximate model of the RT hardware over a ray stream and writes DIR/stats.json,
+// DIR/config.toml (the resolved config) and per-pixel buffers. Every ray's answer is checked
+// against Embree unless --no-verify; exit 1 if a mismatch is unexplained or the model stalls.
+#include <chrono>
+#include <cstdlib>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "app/commands.h"
+#include "model/config/hw_config.h"
+#include "model/sc/sim_report.h"
+#include "model/sched/sim_verifier.h"
+#include "traces/embree_scene.h"
+#include "traces/error.h"
+#include "workloads/scene.h"
+
+int sc_main(int, char**) { return 0; }  // SystemC's library needs the symbol; main() is ours
+
+namespace rtsim::app {
+namespace {
+
+struct SimOptions {
+  std::string stream, config, output, scene;
+  std::vector<std::string> sets;
+  bool no_verify = false, quiet = false, list_keys = false;
+};
+
+void print_keys() {
+  fmt::print("{:<34} {:<12} {:<14} {}\n", "key", "default", "unit", "description");
+  for (const HwConfigKey& k : hw_config_keys())
+    fmt::print("{:<34} {:<12} {:<14} {}\n", k.key, k.default_value, k.unit, k.description);
+}
+
+void print_summary(const nlohmann::ordered_json& doc) {
+  const auto& s = doc["summary"];
+  fmt::print("cycles     {}  ({:.3f} rays/cycle, {:.1f} MRays/s at {} GHz)\n",
+             s["cycles"].get<uint64_t>(), s["rays_per_cycle"].get<double>(),
+             s["mrays_per_second"].get<double>(), s["clock_ghz"].get<double>());
+  for (const auto& [type, t] : doc["ray_types"].items())
+    fmt::print("{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  nodes {:.1f}  tris {:.1f}  "
+               "L1 {:.1f}%  L2 {:.1f}%  DRAM {:.0f} B/ray\n",
+               type, t["rays"].get<uint64_t>(), t["latency_cycles"]["p50"].get<uint64_t>(),
+               t["latency_cycles"]["p95"].get<uint64_t>(),
+               t["latency_cycles"]["p99"].get<uint64_t>(), t["nodes_per_ray"].get<double>(),
+               t["triangles_per_ray"].get<double>(), 100 * t["l1_hit_rate"].get<double>(),
+               100 * t["l2_hit_rate"].get<double>(), t["dram_bytes_per_ray"].get<double>());
+  const auto& u = doc["utilisation"]["mean"];
+  fmt::print("busy       box {:.1f}%  triangle {:.1f}%  control {:.1f}%  ray slots {:.1f}%  "
+             "DRAM {:.1f}%\n",
+             100 * u["box"].get<double>(), 100 * u["triangle"].get<double>(),
+             100 * u["control"].get<double>(), 100 * u["ray_slots"].get<double>(),
+             100 * doc["utilisation"]["dram"].get<double>());
+  const auto& c = doc["coherence"];
+  std::string coherence;
+  if (!c["simd_efficiency"].is_null())
+    coherence = fmt::format("SIMD efficiency {:.1f}%  distinct nodes per warp step {:.2f}  ",
+                            100 * c["simd_efficiency"].get<double>(),
+                            c["distinct_nodes_per_warp_step"].get<double>());
+  if (!c["rays_per_treelet_visit"].is_null())
+    coherence = fmt::format("rays per treelet visit {:.1f}  queued rays mean {:.0f} max {:.0f}  ",
+                            c["rays_per_treelet_visit"].get<double>(),
+                            c["treelet_queue_mean_rays"].get<double>(),
+                            c["treelet_queue_max_rays"].get<double>());
+  fmt::print("coherence  {}stack spills per ray {:.2f}\n", coherence,
+             doc["stack"]["spills_per_ray"].get<double>());
+}
+
+int run_sim(const SimOptions& o) {
+  if (o.list_keys) {
+    print_keys();
+    return 0;
+  }
+  if (o.stream.empty() || o.output.empty())
+    throw CLI::RequiredError("STREAM and -o DIR are required (or --list-keys)");
+  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  HwConfig config = load_hw_config(o.config, o.sets);
+  RayStreamReader reader(o.stream);
+  StreamHeader header = reader.header();
+  std::string spec = o.scene.empty() ? header.scene_source : o.scene;
+  if (spec.empty()) throw_input_error(o.stream, "header", "no scene named; pass --scene");
+  Scene scene = load_scene(spec);
+  if (scene.fingerprint != header.scene_fingerprint)
+    throw_input_error(o.stream, "header",
+                      fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
+                                  header.scene_fingerprint, spec, scene.fingerprint));
+  BvhImage image = build_bvh_image(scene.mesh, config.bvh);
+  if (!o.quiet)
+    fmt::print("sim        {} rays of {} on '{}' ({}, {} RT units, {})\n", header.total_rays(),
+               o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
+               describe(config.bvh));
+  std::unique_ptr<EmbreeScene> embree;
+  std::unique_ptr<TraversalUnit> model;
+  std::unique_ptr<SimVerifier> verifier;
+  if (!o.no_verify) {
+    embree = std::make_unique<EmbreeScene>(scene.mesh);
+    model = std::make_unique<TraversalUnit>(image);
+    verifier = std::make_unique<SimVerifier>(scene.mesh, *model, *embree);
+  }
+  StreamRaySource source(reader);
+  RtSimulator sim(config, image, source, header.width, header.height, verifier.get());
+  auto start = std::chrono::steady_clock::now();
+  try {
+    sim.run();
+  } catch (const SimStallError& e) {
+    fmt::print(stderr, "rtsim: stall: {}", e.what());
+    return 1;
+  }
+  SimRunInfo info{o.stream, header, &image, verifier ? &verifier->report() : nullptr,
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  nlohmann::ordered_json doc = write_sim_results(o.output, sim, info);
+  if (!o.quiet) {
+    print_summary(doc);
+    fmt::print("host       {:.2f} s, {:.0f} rays/s; results in {}\n", info.host_seconds,
+               doc["host"]["rays_per_second"].get<double>(), o.output);
+  }
+  if (verifier) {
+    const VerifyReport& v = verifier->report();
+    if (!o.quiet || v.unexplained())
+      fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n", v.rays,
+                 v.mismatches(), v.unexplained());
+    if (v.unexplained() > 0) return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_sim_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("sim", "Run the cycle-approximate hardware model on a stream");
+  auto options = std::make_shared<SimOptions>();
+  cmd->add_option("stream", options->stream, "Ray stream (.rays)");
+  cmd->add_option("--config", options->config, "Hardware config (.toml; see configs/)");
+  cmd->add_option("--set", options->sets, "Override a config key: --set rt.l1.size_bytes=65536")
+      ->allow_extra_args(false);
+  cmd->add_option("-o,--output", options->output, "Folder for stats.json, config.toml, pixels");
+  cmd->add_option("--scene", options->scene, "Scene file or built-in (default: stream header)");
+  cmd->add_flag("--no-verify", options->no_verify, "Skip the check of every ray against Embree");
+  cmd->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
+  cmd->add_flag("--list-keys", options->list_keys, "List every hardware config key and exit");
+  cmd->callback([options, &exit_code] { exit_code = run_sim(*options); });
+}
+
+}  // namespace rtsim::app

@@ -1,0 +1,73 @@
+// Typed reads of hardware-config keys that document themselves: each read names its key, its
+// default, unit and one-line description, checks type and range, records the key as known and
+// records the value it resolved to. After all reads, finish() reports the first unknown key in
+// the file (with its line) or among the --set overrides. Reading an empty document lists every
+// key with its default (the documentation of the config) and, with other defaults, writes out
+// a resolved config.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace rtsim {
+
+struct ConfigKeyDoc {
+  std::string key;            // dotted: "rt.l1.size_bytes"
+  std::string type;           // integer, number, boolean, string
+  std::string default_value;  // as TOML writes it
+  std::string unit;
+  std::string description;
+};
+
+struct ConfigReadContext {
+  std::string file;                    // for error messages
+  std::vector<std::string> set_keys;   // keys given with --set
+  std::vector<ConfigKeyDoc> docs;      // every key read, in read order, with its default
+  std::vector<std::pair<std::string, nlohmann::ordered_json>> values;  // resolved, read order
+  std::vector<std::string> known;      // every key read, dotted
+  std::vector<std::string> sections;   // every section opened, dotted
+};
+
+class ConfigReader {
+public:
+  // table may be null: an absent section, every read returns its default.
+  ConfigReader(const toml::table* table, std::string prefix, ConfigReadContext& ctx);
+
+  ConfigReader section(const std::string& name);
+  uint64_t integer(const std::string& key, uint64_t def, const char* unit, const char* desc,
+                   uint64_t lo, uint64_t hi);
+  double real(const std::string& key, double def, const char* unit, const char* desc, double lo,
+              double hi);
+  bool boolean(const std::string& key, bool def, const char* desc);
+  std::string text(const std::string& key, const std::string& def, const char* desc,
+                   const std::vector<std::string>& choices = {});
+  // Throws InputError naming this section's key (or the section itself) and its line.
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+
+private:
+  const toml::node* take(const std::string& key, const char* type, const std::string& def,
+                         const char* unit, const char* desc);
+  void record(const std::string& key, nlohmann::ordered_json value);
+  std::string full_key(const std::string& key) const;
+
+  const toml::table* table_;
+  std::string prefix_;
+  ConfigReadContext& ctx_;
+};
+
+// Applies "key=value" (value in TOML syntax; a bare word is a string) to the document,
+// creating sections as needed; throws InputError naming the --set for a malformed one.
+void apply_override(toml::table& root, const std::string& assignment,
+                    std::vector<std::string>& set_keys);
+
+// Throws InputError for the first key of the document (by line) or of --set that was never
+// read, naming the file, the line and the keys that section does know.
+void check_unknown_keys(const toml::table& root, const ConfigReadContext& ctx);
+
+}  // namespace rtsim

@@ -1,0 +1,63 @@
+// The hardware config of a simulation: the RT units, their caches and test units, the shared
+// L2 and DRAM, the ray dispatcher, the treelet queues and the BVH the hardware traverses. The
+// TOML nesting follows the module tree (rt.l1 is each RT unit's L1). Every key is read in one
+// place, read_hw_config() in hw_config.cpp, with its default, unit and description; model/SIM.md
+// lists them all, and `rtsim sim --list-keys` prints them.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/bvh/bvh_config.h"
+#include "model/mem/cache.h"
+#include "model/mem/dram.h"
+#include "model/sched/dispatcher.h"
+#include "model/sched/rt_core.h"
+#include "model/sched/treelet_scheduler.h"
+
+namespace rtsim {
+
+struct SimulationConfig {
+  uint32_t quantum_cycles = 16;    // cycles: how far a unit runs ahead of SystemC time
+  uint64_t stall_cycles = 200000;  // cycles: no progress for this long stops with a stall error
+};
+
+struct HwConfig {
+  std::string name = "default";  // the preset's name, carried into results
+  std::string description;
+  double clock_ghz = 1.5;        // GHz: the clock of every unit (MRays/s = rays/cycle * clock)
+  SimulationConfig sim;
+  DispatchConfig dispatch;
+  uint32_t rt_units = 4;         // units: RT units, each with its own L1
+  RtCoreConfig rt;
+  CacheConfig l1{32 * 1024, 64, 4, "lru", 20, 16};
+  TreeletQueueConfig treelet_queues;
+  CacheConfig l2{2 * 1024 * 1024, 64, 16, "lru", 80, 128};
+  DramConfig dram{64.0, 200, 128};
+  BvhConfig bvh;
+};
+
+// One key's documentation (for SIM.md and --list-keys).
+struct HwConfigKey {
+  std::string key, type, default_value, unit, description;
+};
+
+// Loads a TOML file (path empty: the defaults) and applies the "key=value" overrides.
+// Throws InputError naming the file (or the --set) and line for a syntax error, a wrong type,
+// a value out of range, an unknown key, or an impossible combination.
+HwConfig load_hw_config(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// Every key of the config, in file order, with its default.
+std::vector<HwConfigKey> hw_config_keys();
+
+// The config with every key resolved: as TOML (each key commented with its unit and
+// description) and as nested JSON.
+std::string resolved_toml(const HwConfig& config);
+nlohmann::ordered_json resolved_json(const HwConfig& config);
+
+// Why the combination is impossible (empty if fine), naming the section.
+std::string hw_config_problem(const HwConfig& config);
+
+}  // namespace rtsim

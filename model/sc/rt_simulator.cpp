@@ -1,0 +1,90 @@
+#include "model/sc/rt_simulator.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace rtsim {
+namespace {
+
+uint32_t pool_size(const HwConfig& c) {
+  if (c.rt.mode == TraversalMode::Treelet) return c.treelet_queues.max_rays;
+  return c.rt_units * c.rt.warps * c.rt.warp_size;
+}
+
+Clock clock_of(const HwConfig& c) {
+  Clock clock;
+  clock.period = sc_core::sc_time(1.0 / c.clock_ghz, sc_core::SC_NS);
+  return clock;
+}
+
+}  // namespace
+
+RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySource& source,
+                         uint32_t width, uint32_t height, RayRetireListener* listener,
+                         MemoryBinder bind_memory)
+    : config_(config), clock_(clock_of(config)), traversal_(image), pool_(pool_size(config)),
+      collector_(width, height) {
+  fanout_.add(&collector_);
+  if (listener) fanout_.add(listener);
+  l2_ = std::make_unique<CacheModule>("l2", config.l2, clock_);
+  if (bind_memory) {
+    bind_memory(l2_->out);
+  } else {
+    dram_ = std::make_unique<DramModule>("dram", config.dram, clock_);
+    l2_->out.bind(dram_->in);
+  }
+  dispatch_ = std::make_unique<DispatcherModule>("dispatch", config.dispatch, source, pool_,
+                                                 &fanout_);
+  RaySupplyIf* supply = dispatch_.get();
+  if (config.rt.mode == TraversalMode::Treelet) {
+    uint32_t root = image.node_treelet.empty() ? 0 : image.node_treelet[0];
+    uint32_t count = std::max<uint32_t>(image.treelets.count, root + 1);
+    treelets_ = std::make_unique<TreeletQueueModule>("treelet_queues", config.treelet_queues,
+                                                     count, root, pool_);
+    treelets_->in.bind(dispatch_->out);
+    supply = treelets_.get();
+  }
+  for (uint32_t i = 0; i < config.rt_units; ++i) {
+    std::string name = "rt" + std::to_string(i);
+    units_.push_back(std::make_unique<RtUnitModule>(
+        name.c_str(), i, config.rt, config.l1, traversal_, clock_, config.sim.quantum_cycles,
+        &l2_->cache().stats(), control_));
+    units_.back()->supply.bind(*supply);
+    units_.back()->l1.out.bind(l2_->in);
+  }
+  watchdog_ = std::make_unique<StallWatchdog>("watchdog", config.sim.stall_cycles, clock_,
+                                              control_, [this] { return dump(); });
+}
+
+RtSimulator::~RtSimulator() = default;
+
+void RtSimulator::run() {
+  // sc_stop() ends a finished run; its "stopped by user" notice is not news.
+  sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
+  sc_core::sc_start();
+  if (control_.error) std::rethrow_exception(control_.error);
+  if (!control_.stall_report.empty()) throw SimStallError(control_.stall_report);
+  if (control_.units_running > 0)
+    throw SimStallError("the simulation ran out of events with " +
+                        std::to_string(control_.units_running) +
+                        " units unfinished (a unit slept with nothing to wake it); state:\n" +
+                        dump());
+}
+
+Cycle RtSimulator::cycles() const {
+  Cycle last = collector_.last_retire();
+  for (const auto& unit : units_) last = std::max(last, unit->core().stats().last_cycle);
+  return last;
+}
+
+std::string RtSimulator::dump() const {
+  std::ostringstream out;
+  const RayDispatcher& d = dispatch_->dispatcher();
+  out << "dispatch: " << d.stats().rays << " rays handed out, " << d.in_flight()
+      << " in flight, stream " << (d.exhausted() ? "exhausted" : "has rays") << "\n";
+  if (treelets_) out << treelets_->dump();
+  for (const auto& unit : units_) out << unit->core().dump();
+  return out.str();
+}
+
+}  // namespace rtsim

@@ -1,0 +1,71 @@
+// The whole simulated machine for one run, built from a HwConfig:
+//   dispatch -> [treelet_queues] -> rt0..rtN-1 (each with rtK.l1) -> l2 -> dram
+// plus the stall watchdog. The levels of the memory hierarchy meet at TLM-2.0 sockets; pass
+// bind_memory to put another loosely-timed TLM memory model where the DRAM is.
+// SystemC allows one elaboration per process: build one RtSimulator per process (tests and
+// benchmarks that compare runs use run_in_child(), model/sc/fork_run.h).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/config/hw_config.h"
+#include "model/sc/dispatcher_module.h"
+#include "model/sc/rt_unit_module.h"
+#include "model/sc/stall_watchdog.h"
+#include "model/sc/tlm_memory.h"
+#include "model/sc/treelet_queue_module.h"
+#include "model/sched/sim_stats.h"
+#include "model/sched/stats_registry.h"
+
+namespace rtsim {
+
+// A run that stopped making progress, or ran out of events with rays unfinished.
+class SimStallError : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+class RtSimulator {
+public:
+  using MemoryBinder = std::function<void(tlm_utils::simple_initiator_socket<CacheModule>&)>;
+
+  // width x height: the pixel grid of the rays (0 x 0: no pixel buffers). listener (optional)
+  // also sees every retired ray, after the stats (the verifier).
+  RtSimulator(const HwConfig& config, const BvhImage& image, RaySource& source,
+              uint32_t width = 0, uint32_t height = 0, RayRetireListener* listener = nullptr,
+              MemoryBinder bind_memory = {});
+  ~RtSimulator();
+
+  // Runs to the end of the stream. Throws SimStallError (with a state dump), or rethrows what
+  // a module threw (an InputError from a corrupt stream chunk, for example).
+  void run();
+
+  Cycle cycles() const;  // the cycle the last ray retired
+  uint64_t rays() const { return collector_.rays(); }
+  const SimStatsCollector& collected() const { return collector_; }
+  const HwConfig& config() const { return config_; }
+  // Every counter under its dotted name, and the derived ratios.
+  void report(StatsRegistry& stats) const;
+  std::string dump() const;  // every module's state
+
+private:
+  HwConfig config_;
+  Clock clock_;
+  TraversalUnit traversal_;
+  RayContextPool pool_;
+  SimStatsCollector collector_;
+  RetireFanout fanout_;
+  SimControl control_;
+  std::unique_ptr<CacheModule> l2_;
+  std::unique_ptr<DramModule> dram_;
+  std::unique_ptr<DispatcherModule> dispatch_;
+  std::unique_ptr<TreeletQueueModule> treelets_;
+  std::vector<std::unique_ptr<RtUnitModule>> units_;
+  std::unique_ptr<StallWatchdog> watchdog_;
+};
+
+}  // namespace rtsim

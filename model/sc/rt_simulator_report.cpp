@@ -1,0 +1,165 @@
+// RtSimulator::report: every module's counters under dotted names, and the ratios derived
+// from them (declared here once, computed when written).
+#include <string>
+
+#include "model/sc/rt_simulator.h"
+
+namespace rtsim {
+namespace {
+
+void report_cache(StatsRegistry& r, const std::string& p, const CacheModule& module) {
+  const CacheStats& s = module.cache().stats();
+  r.counter(p + ".accesses", s.accesses);
+  r.counter(p + ".hits", s.hits);
+  r.counter(p + ".misses", s.misses);
+  r.counter(p + ".mshr_merges", s.mshr_merges);
+  r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
+  r.counter(p + ".evictions", s.evictions);
+  r.counter(p + ".bytes_below", s.bytes_below);
+  r.counter(p + ".write_bytes", module.write_bytes());
+  r.ratio(p + ".hit_rate", p + ".hits", p + ".accesses");
+}
+
+void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPool& pool) {
+  const TestUnitStats& s = pool.stats();
+  r.counter(p + ".requests", s.requests);
+  r.counter(p + ".tests", s.tests);
+  r.counter(p + ".issues", s.issues);
+  r.counter(p + ".stall_cycles", s.stall_cycles);
+  r.ratio(p + ".utilisation", p + ".issues", "cycles", 1.0 / pool.config().count);
+}
+
+// Counters every unit has, summed over the units as "rt.*" too.
+struct UnitTotals {
+  uint64_t steps = 0, warp_steps = 0, active_lanes = 0, node_warp_steps = 0, distinct_nodes = 0;
+  uint64_t spill_entries = 0, refill_entries = 0, postponed = 0, refused = 0;
+  double ray_slot_cycles = 0;
+};
+
+}  // namespace
+
+void RtSimulator::report(StatsRegistry& r) const {
+  r.counter("cycles", cycles());
+  r.counter("rays", collector_.rays());
+  r.ratio("rays_per_cycle", "rays", "cycles");
+  r.ratio("mrays_per_second", "rays", "cycles", config_.clock_ghz * 1e3);
+
+  const DispatchStats& d = dispatch_->dispatcher().stats();
+  r.counter("dispatch.rays", d.rays);
+  r.counter("dispatch.takes", d.takes);
+  r.real("dispatch.busy_cycles", d.busy_cycles);
+  r.counter("dispatch.wait_cycles", d.wait_cycles);
+  r.ratio("dispatch.utilisation", "dispatch.busy_cycles", "cycles");
+
+  if (treelets_) {
+    const TreeletQueueStats& t = treelets_->scheduler().stats();
+    const std::string p = "treelet_queues";
+    r.counter(p + ".visits", t.visits);
+    r.counter(p + ".visit_rays", t.visit_rays);
+    r.counter(p + ".fresh_visits", t.fresh_visits);
+    r.counter(p + ".postponed", t.postponed);
+    r.counter(p + ".refused", t.refused);
+    r.counter(p + ".max_queued", t.max_queued);
+    r.counter(p + ".max_queue_length", t.max_queue_length);
+    r.real(p + ".queued_ray_cycles", t.queued_ray_cycles);
+    r.ratio(p + ".rays_per_visit", p + ".visit_rays", p + ".visits");
+    r.ratio(p + ".mean_queued", p + ".queued_ray_cycles", "cycles");
+    r.ratio(p + ".occupancy", p + ".queued_ray_cycles", "cycles",
+            1.0 / config_.treelet_queues.max_rays);
+  }
+
+  UnitTotals total;
+  uint32_t slots = config_.rt.warps * config_.rt.warp_size;
+  for (const auto& unit : units_) {
+    const RtCore& core = unit->core();
+    const RtCoreStats& s = core.stats();
+    const std::string p = "rt" + std::to_string(core.id());
+    uint64_t steps = s.node_steps + s.leaf_steps;
+    r.counter(p + ".rays", s.rays_retired);
+    r.counter(p + ".node_steps", s.node_steps);
+    r.counter(p + ".leaf_steps", s.leaf_steps);
+    r.counter(p + ".issue_stalls", s.issue_stalls);
+    r.counter(p + ".fetches", s.fetches);
+    r.counter(p + ".fetch_bytes", s.fetch_bytes);
+    r.counter(p + ".stack.spill_writes", s.spill_writes);
+    r.counter(p + ".stack.spill_entries", s.spill_entries);
+    r.counter(p + ".stack.refill_reads", s.refill_reads);
+    r.counter(p + ".stack.refill_entries", s.refill_entries);
+    r.real(p + ".ray_slot_cycles", s.ray_slot_cycles);
+    r.ratio(p + ".slot_occupancy", p + ".ray_slot_cycles", "cycles", 1.0 / slots);
+    bool packet = config_.rt.mode == TraversalMode::Packet;
+    r.counter(p + ".control.issues", packet ? s.warp_steps : steps);
+    r.ratio(p + ".control.utilisation", p + ".control.issues", "cycles",
+            1.0 / config_.rt.issue_per_cycle);
+    report_test_units(r, p + ".box", core.box());
+    report_test_units(r, p + ".triangle", core.triangle());
+    report_cache(r, p + ".l1", unit->l1);
+    total.steps += steps;
+    total.warp_steps += s.warp_steps;
+    total.active_lanes += s.active_lanes;
+    total.node_warp_steps += s.node_warp_steps;
+    total.distinct_nodes += s.distinct_nodes;
+    total.spill_entries += s.spill_entries;
+    total.refill_entries += s.refill_entries;
+    total.postponed += s.postponed;
+    total.refused += s.refused;
+    total.ray_slot_cycles += s.ray_slot_cycles;
+  }
+  r.counter("rt.steps", total.steps);
+  r.counter("rt.warp_steps", total.warp_steps);
+  r.counter("rt.active_lanes", total.active_lanes);
+  r.counter("rt.node_warp_steps", total.node_warp_steps);
+  r.counter("rt.distinct_nodes", total.distinct_nodes);
+  r.counter("rt.stack.spill_entries", total.spill_entries);
+  r.counter("rt.stack.refill_entries", total.refill_entries);
+  r.counter("rt.postponed", total.postponed);
+  r.counter("rt.postpones_refused", total.refused);
+  r.real("rt.ray_slot_cycles", total.ray_slot_cycles);
+  r.ratio("rt.simd_efficiency", "rt.active_lanes", "rt.warp_steps", 1.0 / config_.rt.warp_size);
+  r.ratio("rt.distinct_nodes_per_warp_step", "rt.distinct_nodes", "rt.node_warp_steps");
+  r.ratio("rt.slot_occupancy", "rt.ray_slot_cycles", "cycles",
+          1.0 / (double(slots) * config_.rt_units));
+
+  report_cache(r, "l2", *l2_);
+  if (dram_) {
+    const DramStats& s = dram_->dram().stats();
+    r.counter("dram.requests", s.requests);
+    r.counter("dram.bytes", s.bytes);
+    r.counter("dram.write_bytes", dram_->write_bytes());
+    r.real("dram.busy_cycles", s.busy_cycles);
+    r.counter("dram.queue_stall_cycles", s.queue_stall_cycles);
+    r.counter("dram.total_latency_cycles", s.total_latency_cycles);
+    r.ratio("dram.utilisation", "dram.busy_cycles", "cycles");
+    r.ratio("dram.bytes_per_cycle", "dram.bytes", "cycles");
+    r.ratio("dram.bytes_per_ray", "dram.bytes", "rays");
+    r.ratio("dram.mean_latency", "dram.total_latency_cycles", "dram.requests");
+  }
+
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    const RayTypeStats& s = collector_.by_type()[t];
+    if (s.rays == 0) continue;
+    const std::string p = std::string("type.") + ray_type_name(RayType(t));
+    r.counter(p + ".rays", s.rays);
+    r.counter(p + ".hits", s.hits);
+    r.counter(p + ".trav_nodes", s.counters.trav_nodes);
+    r.counter(p + ".trav_leaves", s.counters.trav_leaves);
+    r.counter(p + ".trav_prims", s.counters.trav_prims);
+    r.counter(p + ".trav_prim_hits", s.counters.trav_prim_hits);
+    r.counter(p + ".l1_accesses", s.l1_accesses);
+    r.counter(p + ".l1_hits", s.l1_hits);
+    r.counter(p + ".l2_accesses", s.l2_accesses);
+    r.counter(p + ".l2_hits", s.l2_hits);
+    r.counter(p + ".dram_bytes", s.dram_bytes);
+    r.counter(p + ".stack_spills", s.stack_spills);
+    r.counter(p + ".stack_refills", s.stack_refills);
+    r.counter(p + ".postponed", s.postponed);
+    r.ratio(p + ".nodes_per_ray", p + ".trav_nodes", p + ".rays");
+    r.ratio(p + ".triangles_per_ray", p + ".trav_prims", p + ".rays");
+    r.ratio(p + ".l1_hit_rate", p + ".l1_hits", p + ".l1_accesses");
+    r.ratio(p + ".l2_hit_rate", p + ".l2_hits", p + ".l2_accesses");
+    r.ratio(p + ".dram_bytes_per_ray", p + ".dram_bytes", p + ".rays");
+    r.ratio(p + ".stack_spills_per_ray", p + ".stack_spills", p + ".rays");
+  }
+}
+
+}  // namespace rtsim

@@ -1,0 +1,181 @@
+#include "model/sc/sim_report.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "model/verify/arbiter.h"
+#include "traces/error.h"
+
+namespace rtsim {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::string& p) {
+  return {{"rays", s.rays},
+          {"hits", s.hits},
+          {"latency_cycles",
+           {{"p50", s.latency.percentile(0.50)},
+            {"p95", s.latency.percentile(0.95)},
+            {"p99", s.latency.percentile(0.99)},
+            {"mean", s.latency.mean()},
+            {"max", s.latency.max()}}},
+          {"nodes_per_ray", r.value(p + ".nodes_per_ray")},
+          {"triangles_per_ray", r.value(p + ".triangles_per_ray")},
+          {"l1_hit_rate", r.value(p + ".l1_hit_rate")},
+          {"l2_hit_rate", r.value(p + ".l2_hit_rate")},
+          {"dram_bytes_per_ray", r.value(p + ".dram_bytes_per_ray")},
+          {"stack_spills_per_ray", r.value(p + ".stack_spills_per_ray")}};
+}
+
+Json verify_json(const VerifyReport& v) {
+  Json classes = Json::object();
+  for (int c = 0; c < kMismatchClassCount; ++c)
+    if (v.by_class[c]) classes[mismatch_class_name(MismatchClass(c))] = v.by_class[c];
+  Json examples = Json::array();
+  for (const Mismatch& m : v.examples)
+    examples.push_back({{"ray", m.index},
+                        {"class", mismatch_class_name(m.verdict.cls)},
+                        {"right", right_side_name(m.verdict.right)},
+                        {"embree_prim", m.embree.prim},
+                        {"model_prim", m.model_prim},
+                        {"embree_t", m.embree.t},
+                        {"model_t", m.model.t}});
+  return {{"rays", v.rays},         {"agree", v.agree},
+          {"mismatches", v.mismatches()}, {"unexplained", v.unexplained()},
+          {"by_class", classes},    {"examples", examples}};
+}
+
+double sum(const StatsRegistry& r, uint32_t units, const std::string& suffix) {
+  double total = 0;
+  for (uint32_t i = 0; i < units; ++i) total += r.value("rt" + std::to_string(i) + suffix);
+  return total;
+}
+
+Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
+  Json units = Json::object();
+  for (uint32_t i = 0; i < c.rt_units; ++i) {
+    std::string p = "rt" + std::to_string(i);
+    units[p] = {{"box", r.value(p + ".box.utilisation")},
+                {"triangle", r.value(p + ".triangle.utilisation")},
+                {"control", r.value(p + ".control.utilisation")},
+                {"ray_slots", r.value(p + ".slot_occupancy")}};
+  }
+  auto mean = [&](const char* suffix) { return sum(r, c.rt_units, suffix) / c.rt_units; };
+  return {{"mean",
+           {{"box", mean(".box.utilisation")},
+            {"triangle", mean(".triangle.utilisation")},
+            {"control", mean(".control.utilisation")},
+            {"ray_slots", r.value("rt.slot_occupancy")}}},
+          {"units", units},
+          {"dispatch", r.value("dispatch.utilisation")},
+          {"dram", r.value("dram.utilisation")}};
+}
+
+}  // namespace
+
+Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRunInfo& info) {
+  const HwConfig& c = sim.config();
+  Json doc;
+  doc["schema"] = kSimStatsSchema;
+  doc["config_name"] = c.name;
+  doc["input"] = {{"stream", info.stream},
+                  {"scene", info.header.scene_source},
+                  {"workload", info.header.workload},
+                  {"width", info.header.width},
+                  {"height", info.header.height}};
+  if (info.image)
+    doc["bvh"] = {{"description", describe(info.image->config)},
+                  {"nodes", info.image->node_count},
+                  {"triangles", info.image->triangle_count},
+                  {"treelets", info.image->treelets.count},
+                  {"bytes", info.image->total_bytes()}};
+  doc["summary"] = {{"mode", traversal_mode_name(c.rt.mode)},
+                    {"rays", sim.rays()},
+                    {"cycles", sim.cycles()},
+                    {"rays_per_cycle", r.value("rays_per_cycle")},
+                    {"clock_ghz", c.clock_ghz},
+                    {"mrays_per_second", r.value("mrays_per_second")}};
+  Json types = Json::object();
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    const RayTypeStats& s = sim.collected().by_type()[t];
+    if (s.rays == 0) continue;
+    std::string name = ray_type_name(RayType(t));
+    types[name] = ray_type_json(s, r, "type." + name);
+  }
+  doc["ray_types"] = types;
+  double l1_accesses = sum(r, c.rt_units, ".l1.accesses");
+  doc["memory"] = {{"l1_hit_rate", l1_accesses ? sum(r, c.rt_units, ".l1.hits") / l1_accesses : 0},
+                   {"l2_hit_rate", r.value("l2.hit_rate")},
+                   {"dram_bytes", r.value("dram.bytes")},
+                   {"dram_bytes_per_ray", r.value("dram.bytes_per_ray")},
+                   {"dram_bytes_per_cycle", r.value("dram.bytes_per_cycle")}};
+  doc["utilisation"] = utilisation_json(c, r);
+  // Coherence figures exist only in the mode that produces them; elsewhere they are null.
+  bool packet = c.rt.mode == TraversalMode::Packet, treelet = c.rt.mode == TraversalMode::Treelet;
+  auto when = [&](bool applies, const char* name) { return applies ? Json(r.value(name)) : Json(); };
+  doc["coherence"] = {
+      {"simd_efficiency", when(packet, "rt.simd_efficiency")},
+      {"distinct_nodes_per_warp_step", when(packet, "rt.distinct_nodes_per_warp_step")},
+      {"treelet_queue_occupancy", when(treelet, "treelet_queues.occupancy")},
+      {"treelet_queue_mean_rays", when(treelet, "treelet_queues.mean_queued")},
+      {"treelet_queue_max_rays", when(treelet, "treelet_queues.max_queued")},
+      {"rays_per_treelet_visit", when(treelet, "treelet_queues.rays_per_visit")}};
+  double rays = double(std::max<uint64_t>(sim.rays(), 1));
+  doc["stack"] = {{"spill_entries", r.value("rt.stack.spill_entries")},
+                  {"refill_entries", r.value("rt.stack.refill_entries")},
+                  {"spills_per_ray", r.value("rt.stack.spill_entries") / rays}};
+  doc["verify"] = info.verify ? verify_json(*info.verify) : Json{{"skipped", true}};
+  const PixelBuffers& px = sim.collected().pixels();
+  if (!px.cycles.empty())
+    doc["pixel_buffers"] = {{"width", px.width},
+                            {"height", px.height},
+                            {"format", "float32 little-endian, row-major, summed over the "
+                                       "pixel's rays of all frames"},
+                            {"rays_outside", px.outside},
+                            {"files",
+                             {{"cycles", "pixel_cycles.f32"},
+                              {"nodes", "pixel_nodes.f32"},
+                              {"dram_bytes", "pixel_dram_bytes.f32"}}}};
+  doc["stats"] = r.to_json();
+  doc["config"] = resolved_json(c);
+  doc["host"] = {{"seconds", info.host_seconds},
+                 {"rays_per_second", info.host_seconds > 0 ? sim.rays() / info.host_seconds : 0}};
+  return doc;
+}
+
+void write_file_atomic(const std::string& path, const std::string& bytes) {
+  std::string tmp = path + ".tmp-" + std::to_string(getpid());
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    if (!out) throw_input_error(path, "", "cannot write");
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+Json write_sim_results(const std::string& dir, const RtSimulator& sim, const SimRunInfo& info) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) throw_input_error(dir, "", "cannot create the output folder: " + error.message());
+  StatsRegistry stats;
+  sim.report(stats);
+  Json doc = sim_stats_json(sim, stats, info);
+  const PixelBuffers& px = sim.collected().pixels();
+  auto raw = [](const std::vector<float>& v) {
+    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float));
+  };
+  if (!px.cycles.empty()) {
+    write_file_atomic(dir + "/pixel_cycles.f32", raw(px.cycles));
+    write_file_atomic(dir + "/pixel_nodes.f32", raw(px.nodes));
+    write_file_atomic(dir + "/pixel_dram_bytes.f32", raw(px.dram_bytes));
+  }
+  write_file_atomic(dir + "/config.toml", resolved_toml(sim.config()));
+  write_file_atomic(dir + "/stats.json", doc.dump(2) + "\n");
+  return doc;
+}
+
+}  // namespace rtsim

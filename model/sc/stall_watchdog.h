@@ -1,0 +1,33 @@
+// Stall detection: the simulation must make progress (rays taken, steps, retirements) at least
+// once every stall_cycles cycles while units are running. If it does not, the watchdog stops
+// the run and leaves a report of every module's state (SimControl::stall_report), so a stuck
+// model ends with a clear error instead of a hang. It wakes only at the cycle the current
+// deadline expires (last progress + stall_cycles), never on idle cycles in between.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include <systemc>
+
+#include "model/sc/clock.h"
+#include "model/sc/ray_supply_if.h"
+
+namespace rtsim {
+
+class StallWatchdog : public sc_core::sc_module {
+public:
+  SC_HAS_PROCESS(StallWatchdog);
+  StallWatchdog(sc_core::sc_module_name name, uint64_t stall_cycles, const Clock& clock,
+                SimControl& control, std::function<std::string()> dump);
+
+private:
+  void run();
+
+  uint64_t stall_cycles_;
+  Clock clock_;
+  SimControl& control_;
+  std::function<std::string()> dump_;
+};
+
+}  // namespace rtsim

@@ -1,0 +1,60 @@
+// The per-ray traversal stack of an RT unit: `entries` on chip; deeper entries spill to memory.
+// Timing assumptions: a step that pushes the on-chip stack past its depth writes the oldest
+// entries out (one posted write per step, entry_bytes each, to the ray's spill region); a pop
+// that finds the on-chip stack empty while entries are spilled reads back exactly what it needs
+// (one read per step, which the step waits for). The functional stack in TraversalState stays
+// whole: this model only counts where its entries live and what moving them costs.
+// Spill traffic as in Aila & Karras (HPG 2010), who name stack traffic the main auxiliary cost.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "model/sched/ray_context.h"
+
+namespace rtsim {
+
+struct StackConfig {
+  uint32_t entries = 8;       // entries: depth of the on-chip stack per ray
+  uint32_t entry_bytes = 8;   // bytes: one spilled entry (node reference + entry distance)
+};
+
+std::string stack_config_problem(const StackConfig& config);
+
+// One transfer between the on-chip stack and memory; bytes = 0 means none.
+struct StackTransfer {
+  uint64_t addr = 0;
+  uint32_t bytes = 0;
+  uint32_t entries = 0;
+};
+
+class HardwareStack {
+public:
+  // Spill regions: one per ray context, region_bytes apart from base.
+  static constexpr uint64_t kSpillBase = 0x7000'0000'0000ull;
+  static constexpr uint64_t kRegionBytes = 4096;
+
+  explicit HardwareStack(const StackConfig& config) : config_(config) {}
+
+  // A ray starts with its root entry on chip.
+  void start(RayContext& ray) const {
+    ray.resident = 1;
+    ray.spilled = 0;
+  }
+  // Before a step that pops `pops` entries: the read that brings back the spilled ones it
+  // needs (none if the on-chip stack holds them).
+  StackTransfer refill(RayContext& ray, uint32_t pops) const;
+  // After a step: `kept` entries of the stack before it survive below `total` entries now;
+  // returns the write that spills what no longer fits on chip.
+  StackTransfer settle(RayContext& ray, uint32_t kept, uint32_t total) const;
+  const StackConfig& config() const { return config_; }
+
+private:
+  uint64_t address(const RayContext& ray, uint32_t entry) const {
+    return kSpillBase + ray.id * kRegionBytes + (uint64_t(entry) * config_.entry_bytes) %
+                                                     kRegionBytes;
+  }
+  StackConfig config_;
+};
+
+}  // namespace rtsim

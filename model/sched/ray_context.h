@@ -1,0 +1,60 @@
+// Everything the hardware holds for one ray in flight: the ray, its traversal state (the very
+// state the functional traversal steps), where its hardware stack stands, and what it cost so
+// far. Contexts come from a fixed pool sized by the rays the hardware can hold, so memory is
+// bounded by rays in flight, never by the length of the stream.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "model/mem/memory_level.h"
+#include "model/units/traversal.h"
+#include "traces/ray.h"
+
+namespace rtsim {
+
+// What one ray cost, accumulated step by step and read when it retires.
+struct RayCost {
+  uint32_t l1_accesses = 0, l1_hits = 0;  // line accesses of this ray's fetches at its L1
+  uint32_t l2_accesses = 0, l2_hits = 0;  // and at the L2, for the L1's misses
+  uint64_t dram_bytes = 0;                // bytes the L2 fetched from DRAM, plus spill writes
+  uint32_t stack_spills = 0;              // entries written out of the hardware stack
+  uint32_t stack_refills = 0;             // entries read back
+  uint32_t postponed = 0;                 // times it waited in a treelet queue
+};
+
+struct RayContext {
+  Ray ray;
+  uint64_t sequence = 0;  // position in the ray stream
+  uint32_t id = 0;        // index in the pool; names the ray's stack spill region
+  TraversalState state;
+  bool begun = false;     // ray setup done (TraversalUnit::begin)
+  Cycle dispatched = 0;   // cycle the dispatcher handed the ray out
+  Cycle ready = 0;        // earliest cycle of its next step (arrival, queue exit)
+  uint32_t unit = 0, slot = 0;  // where it runs now
+  // Hardware stack: entries on chip (the top of the traversal stack) and spilled below them.
+  uint32_t resident = 0, spilled = 0;
+  // Treelet mode: the treelet being traversed, the treelet of each stack entry, and the next
+  // ray in the same queue.
+  uint32_t treelet = 0;
+  std::vector<uint32_t> entry_treelet;
+  RayContext* next_in_queue = nullptr;
+  RayCost cost;
+};
+
+// A fixed set of contexts handed out and given back, last freed first (deterministic).
+class RayContextPool {
+public:
+  explicit RayContextPool(uint32_t capacity);
+  RayContext* acquire();  // nullptr when every context is in use
+  void release(RayContext* context);
+  uint32_t capacity() const { return uint32_t(contexts_.size()); }
+  uint32_t in_use() const { return capacity() - uint32_t(free_.size()); }
+
+private:
+  std::vector<std::unique_ptr<RayContext>> contexts_;
+  std::vector<RayContext*> free_;
+};
+
+}  // namespace rtsim

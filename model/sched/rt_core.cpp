@@ -1,0 +1,199 @@
+#include "model/sched/rt_core.h"
+
+#include <algorithm>
+#include <sstream>
+#include <stdexcept>
+
+#include "model/units/ray_box.h"
+
+namespace rtsim {
+
+const char* traversal_mode_name(TraversalMode mode) {
+  switch (mode) {
+    case TraversalMode::DepthFirst: return "depth_first";
+    case TraversalMode::Treelet: return "treelet";
+    case TraversalMode::Packet: return "packet";
+  }
+  return "?";
+}
+
+const char* packet_policy_name(PacketPolicy policy) {
+  return policy == PacketPolicy::NodeFirst ? "node_first" : "majority";
+}
+
+std::string rt_core_config_problem(const RtCoreConfig& c) {
+  if (c.warps == 0 || c.warps > 1024) return "warps must be 1..1024";
+  if (c.warp_size == 0 || c.warp_size > 256) return "warp_size must be 1..256";
+  if (c.issue_per_cycle == 0) return "issue_per_cycle must be at least 1";
+  std::string problem = stack_config_problem(c.stack);
+  if (!problem.empty()) return "stack: " + problem;
+  problem = test_unit_config_problem(c.box);
+  if (!problem.empty()) return "box: " + problem;
+  problem = test_unit_config_problem(c.triangle);
+  if (!problem.empty()) return "triangle: " + problem;
+  return {};
+}
+
+RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
+               RayMemory& memory, MemoryProbe probe)
+    : id_(id), config_(config), traversal_(traversal),
+      node_treelet_(traversal.image().node_treelet), memory_(memory), probe_(probe),
+      stack_(config.stack), box_(config.box), triangle_(config.triangle) {
+  std::string problem = rt_core_config_problem(config);
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  slots_.assign(size_t(config.warps) * config.warp_size, nullptr);
+  warp_live_.assign(config.warps, 0);
+  for (uint32_t w = config.warps; w-- > 0;) free_warps_.push_back(w);
+  for (uint32_t s = uint32_t(slots_.size()); s-- > 0;) free_slots_.push_back(s);
+  lane_next_.resize(config.warp_size);
+  lane_tests_.resize(config.warp_size);
+}
+
+void RtCore::account(Cycle now) {
+  if (now <= occupancy_since_) return;
+  stats_.ray_slot_cycles += double(in_flight_) * double(now - occupancy_since_);
+  occupancy_since_ = now;
+}
+
+uint64_t RtCore::poll(Cycle now) {
+  now_ = std::max(now_, now);
+  started_ = true;
+  progress_ = 0;
+  fill(now_);
+  return progress_;
+}
+
+uint64_t RtCore::advance(Cycle until) {
+  progress_ = 0;
+  while (!events_.empty() && events_.top().cycle < until) {
+    EventQueue::Event e = events_.pop();
+    now_ = std::max(now_, e.cycle);
+    if (config_.mode == TraversalMode::Packet)
+      on_warp(e.item, now_);
+    else
+      on_ray(e.item, now_);
+  }
+  return progress_;
+}
+
+bool RtCore::claim_issue(Cycle now) {
+  if (now != issue_cycle_) {
+    issue_cycle_ = now;
+    issued_ = 0;
+  }
+  if (issued_ == config_.issue_per_cycle) return false;
+  ++issued_;
+  return true;
+}
+
+RtCore::Next RtCore::peek(const TraversalState& s) const {
+  // The entry step() will visit: the topmost one that may still hold a closer hit (the same
+  // test step() makes; check_kind() catches a disagreement).
+  for (size_t i = s.stack.size(); i-- > 0;) {
+    const StackEntry& e = s.stack[i];
+    if (e.tnear > s.t_hit * kSlabFarGrowth) continue;
+    return {true, e.count > 0, uint32_t(i)};
+  }
+  return {};
+}
+
+void RtCore::check_kind(const StepResult& step, const Next& next) const {
+  bool leaf = step.kind == StepKind::Leaf;
+  if (step.kind == StepKind::Done ? next.live : !next.live || leaf != next.leaf)
+    throw std::logic_error("rt" + std::to_string(id_) +
+                           ": traversal visited another entry than the unit predicted; "
+                           "RtCore::peek must apply the same cull test as TraversalUnit::step");
+}
+
+void RtCore::fill(Cycle now) {
+  if (!supply_) throw std::logic_error("RtCore: no ray supply bound");
+  waiting_ = false;
+  bool per_warp = config_.mode != TraversalMode::Treelet;
+  uint32_t threshold = std::min<uint32_t>(config_.warp_size, uint32_t(slots_.size()));
+  while (per_warp ? !free_warps_.empty() : free_slots_.size() >= threshold) {
+    size_t max = per_warp ? config_.warp_size : free_slots_.size();
+    batch_.clear();
+    size_t n = supply_->take(id_, now, max, batch_);
+    if (n == 0) {
+      waiting_ = !supply_->exhausted();
+      return;
+    }
+    progress_ += n;
+    if (per_warp) {
+      uint32_t warp = free_warps_.back();
+      free_warps_.pop_back();
+      warp_live_[warp] = uint32_t(n);
+      Cycle start = 0;
+      for (size_t i = 0; i < n; ++i) {
+        install(batch_[i], warp * config_.warp_size + uint32_t(i), now);
+        start = std::max(start, batch_[i]->ready);
+      }
+      if (config_.mode == TraversalMode::Packet) events_.push(std::max(start, now), warp);
+    } else {
+      for (RayContext* ray : batch_) {
+        uint32_t slot = free_slots_.back();
+        free_slots_.pop_back();
+        install(ray, slot, now);
+      }
+    }
+  }
+}
+
+void RtCore::install(RayContext* ray, uint32_t slot, Cycle now) {
+  account(now);
+  slots_[slot] = ray;
+  ray->unit = id_;
+  ray->slot = slot;
+  in_flight_++;
+  if (!ray->begun) {
+    // Ray setup: the traversal state starts at the root, all of it on chip.
+    traversal_.begin(ray->state, ray->ray);
+    ray->state.accesses.clear();
+    stack_.start(*ray);
+    ray->entry_treelet.assign(1, node_treelet_.empty() ? 0 : node_treelet_[0]);
+    ray->begun = true;
+    ray->ready += config_.setup_latency;
+    stats_.rays_started++;
+  }
+  if (config_.mode != TraversalMode::Packet) events_.push(std::max(ray->ready, now), slot);
+}
+
+void RtCore::release(uint32_t slot, Cycle now) {
+  account(now);
+  slots_[slot] = nullptr;
+  in_flight_--;
+  if (config_.mode == TraversalMode::Treelet) {
+    free_slots_.push_back(slot);
+  } else {
+    uint32_t warp = slot / config_.warp_size;
+    if (--warp_live_[warp] == 0) free_warps_.push_back(warp);
+  }
+  stats_.last_cycle = std::max(stats_.last_cycle, now);
+}
+
+void RtCore::retire(uint32_t slot, Cycle now) {
+  RayContext* ray = slots_[slot];
+  release(slot, now);
+  stats_.rays_retired++;
+  progress_++;
+  supply_->retire(*ray, now);
+}
+
+std::string RtCore::dump() const {
+  std::ostringstream out;
+  out << "rt" << id_ << ": " << in_flight_ << " of " << slots_.size() << " ray slots busy, "
+      << events_.size() << " events pending";
+  if (!events_.empty()) out << " (next at cycle " << events_.top().cycle << ")";
+  out << ", local cycle " << now_ << (waiting_ ? ", waiting for rays" : "") << "\n";
+  int shown = 0;
+  for (const RayContext* ray : slots_) {
+    if (!ray || shown++ == 4) continue;
+    out << "  ray " << ray->sequence << " in slot " << ray->slot << ": stack "
+        << ray->state.stack.size() << " (" << ray->resident << " on chip, " << ray->spilled
+        << " spilled), " << ray->state.counters.trav_nodes << " nodes, ready at cycle "
+        << ray->ready << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace rtsim

@@ -1,0 +1,44 @@
+#include "model/sched/sim_stats.h"
+
+#include <algorithm>
+
+namespace rtsim {
+
+SimStatsCollector::SimStatsCollector(uint32_t width, uint32_t height) {
+  pixels_.width = width;
+  pixels_.height = height;
+  size_t n = size_t(width) * height;
+  pixels_.cycles.assign(n, 0.0f);
+  pixels_.nodes.assign(n, 0.0f);
+  pixels_.dram_bytes.assign(n, 0.0f);
+}
+
+void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
+  RayTypeStats& s = by_type_[size_t(ray.ray.type) % kRayTypeCount];
+  const RayCost& cost = ray.cost;
+  uint64_t latency = now - std::min(now, ray.dispatched);
+  s.rays++;
+  s.hits += ray.state.prim != kNoHit;
+  s.counters += ray.state.counters;
+  s.l1_accesses += cost.l1_accesses;
+  s.l1_hits += cost.l1_hits;
+  s.l2_accesses += cost.l2_accesses;
+  s.l2_hits += cost.l2_hits;
+  s.dram_bytes += cost.dram_bytes;
+  s.stack_spills += cost.stack_spills;
+  s.stack_refills += cost.stack_refills;
+  s.postponed += cost.postponed;
+  s.latency.add(latency);
+  rays_++;
+  last_retire_ = std::max(last_retire_, now);
+  if (pixels_.cycles.empty()) return;
+  if (ray.ray.pixel >= pixels_.cycles.size()) {
+    pixels_.outside++;
+    return;
+  }
+  pixels_.cycles[ray.ray.pixel] += float(latency);
+  pixels_.nodes[ray.ray.pixel] += float(ray.state.counters.trav_nodes);
+  pixels_.dram_bytes[ray.ray.pixel] += float(cost.dram_bytes);
+}
+
+}  // namespace rtsim

@@ -1,0 +1,62 @@
+// What the simulation learns from every retired ray: per ray type, counters (rays, traversal
+// counters under Embree's names, cache accesses and hits charged to the ray, DRAM bytes, stack
+// traffic) and the latency distribution; per pixel, buffers of cycles, nodes visited and DRAM
+// bytes for heatmaps. Plain counters; ratios are derived when written (model/sc/sim_report.h).
+// Memory: fixed per ray type, plus three floats per pixel of the stream's image.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "model/sched/latency_histogram.h"
+#include "model/sched/ray_supply.h"
+
+namespace rtsim {
+
+struct RayTypeStats {
+  uint64_t rays = 0, hits = 0;
+  TraversalCounters counters;  // trav_nodes, trav_leaves, trav_prims, trav_prim_hits
+  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0;
+  uint64_t dram_bytes = 0;
+  uint64_t stack_spills = 0, stack_refills = 0, postponed = 0;
+  LatencyHistogram latency;  // cycles from dispatch to retirement
+};
+
+struct PixelBuffers {
+  uint32_t width = 0, height = 0;
+  std::vector<float> cycles, nodes, dram_bytes;  // row-major, summed over a pixel's rays
+  uint64_t outside = 0;  // rays whose pixel index lies outside the image
+};
+
+class SimStatsCollector : public RayRetireListener {
+public:
+  // width x height: the stream's pixel grid (0 x 0: no pixel buffers).
+  SimStatsCollector(uint32_t width, uint32_t height);
+  void retired(const RayContext& ray, Cycle now) override;
+
+  const std::array<RayTypeStats, kRayTypeCount>& by_type() const { return by_type_; }
+  const PixelBuffers& pixels() const { return pixels_; }
+  uint64_t rays() const { return rays_; }
+  Cycle last_retire() const { return last_retire_; }
+
+private:
+  std::array<RayTypeStats, kRayTypeCount> by_type_;
+  PixelBuffers pixels_;
+  uint64_t rays_ = 0;
+  Cycle last_retire_ = 0;
+};
+
+// Several listeners in turn.
+class RetireFanout : public RayRetireListener {
+public:
+  void add(RayRetireListener* listener) { listeners_.push_back(listener); }
+  void retired(const RayContext& ray, Cycle now) override {
+    for (RayRetireListener* l : listeners_) l->retired(ray, now);
+  }
+
+private:
+  std::vector<RayRetireListener*> listeners_;
+};
+
+}  // namespace rtsim

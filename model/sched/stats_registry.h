@@ -1,0 +1,40 @@
+// The statistics of one run under dotted per-instance names ("rt0.l1.hits"): plain counters
+// that the modules report at the end, and derived statistics declared once as formulas
+// (numerator / denominator * scale) that are computed only when written, as in gem5.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace rtsim {
+
+class StatsRegistry {
+public:
+  // A counter (integer) or an accumulated quantity (real, e.g. fractional busy cycles).
+  void counter(const std::string& name, uint64_t value);
+  void real(const std::string& name, double value);
+  // name = numerator / denominator * scale, computed when written (0 if the denominator is 0).
+  void ratio(const std::string& name, const std::string& numerator,
+             const std::string& denominator, double scale = 1.0);
+
+  bool has(const std::string& name) const;
+  double value(const std::string& name) const;  // a counter, a real or a ratio; 0 if absent
+  // {"counters": {...}, "derived": {...}}, each in the order added.
+  nlohmann::ordered_json to_json() const;
+
+private:
+  struct Ratio {
+    std::string name, numerator, denominator;
+    double scale;
+  };
+  const std::pair<std::string, double>* find(const std::string& name) const;
+  std::vector<std::pair<std::string, double>> values_;
+  std::vector<bool> integral_;
+  std::vector<Ratio> ratios_;
+};
+
+}  // namespace rtsim

@@ -1,0 +1,61 @@
+// A pool of identical pipelined test units of an RT unit: the ray-box units (one pass tests
+// up to issue_width child boxes of a node) or the ray-triangle units (issue_width triangles).
+// Timing: each of `count` units accepts one issue per cycle of up to issue_width tests, fully
+// pipelined; the results of an issue at cycle c are ready at c + latency. A request of n tests
+// needs ceil(n / issue_width) issues, taken from the earliest cycles at or after its arrival
+// that still have a free unit (several units in one cycle, or consecutive cycles); it is ready
+// `latency` cycles after its last issue. A request that finds every unit taken waits
+// (back-pressure, counted as stall cycles). Reservations live in a cycle calendar, so requests
+// may be made in any order of their arrival cycles within kCalendarCycles of each other.
+// Follows the fixed-function box/triangle units of Aila & Karras (HPG 2010) and RT cores.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/mem/memory_level.h"
+
+namespace rtsim {
+
+struct TestUnitConfig {
+  uint32_t count = 1;        // units: identical pipelines in the pool
+  uint32_t issue_width = 1;  // tests: boxes or triangles one issue handles
+  uint32_t latency = 8;      // cycles: from an issue to its results
+};
+
+// Why the config is impossible (empty if fine).
+std::string test_unit_config_problem(const TestUnitConfig& config);
+
+struct TestUnitStats {
+  uint64_t requests = 0;      // steps served (a node's boxes, or a leaf's triangles)
+  uint64_t tests = 0;         // boxes or triangles tested
+  uint64_t issues = 0;        // issue slots used (the busy unit-cycles)
+  uint64_t stall_cycles = 0;  // sum over requests of first issue - arrival
+};
+
+class TestUnitPool {
+public:
+  static constexpr uint32_t kCalendarCycles = 1u << 16;
+
+  explicit TestUnitPool(const TestUnitConfig& config);  // throws std::invalid_argument
+
+  // Reserves the issues for `tests` tests arriving at cycle `arrival`; returns the cycle their
+  // results are ready. tests = 0 is treated as 1 (a step always passes through the unit).
+  Cycle reserve(Cycle arrival, uint32_t tests);
+  const TestUnitStats& stats() const { return stats_; }
+  const TestUnitConfig& config() const { return config_; }
+
+private:
+  struct Slot {
+    Cycle cycle = ~Cycle(0);  // the cycle this entry counts for; another value means free
+    uint32_t used = 0;        // issues taken in that cycle
+  };
+  uint32_t& used_at(Cycle cycle);
+
+  TestUnitConfig config_;
+  std::vector<Slot> calendar_;
+  TestUnitStats stats_;
+};
+
+}  // namespace rtsim

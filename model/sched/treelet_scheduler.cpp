@@ -1,0 +1,115 @@
+#include "model/sched/treelet_scheduler.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rtsim {
+
+std::string treelet_queue_config_problem(const TreeletQueueConfig& c) {
+  if (!make_treelet_policy(c.policy, 1))
+    return "policy '" + c.policy + "' is unknown (fullest, oldest)";
+  if (c.max_rays == 0 || c.max_rays > (1u << 24)) return "max_rays must be 1..16777216";
+  if (c.queue_capacity == 0) return "queue_capacity must be at least 1";
+  if (c.min_batch == 0) return "min_batch must be at least 1";
+  return {};
+}
+
+TreeletScheduler::TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets,
+                                   uint32_t root_treelet, RaySupply& upstream,
+                                   const RayContextPool& pool)
+    : config_(config), root_(root_treelet), upstream_(upstream), pool_(pool),
+      policy_(make_treelet_policy(config.policy, treelets)), queues_(treelets) {
+  std::string problem = treelet_queue_config_problem(config);
+  if (!problem.empty()) throw std::invalid_argument(problem);
+}
+
+void TreeletScheduler::account(Cycle now) {
+  if (now <= stats_.last_change) return;  // units may report slightly out of order
+  stats_.queued_ray_cycles += double(queued_) * double(now - stats_.last_change);
+  stats_.last_change = now;
+}
+
+void TreeletScheduler::set_length(uint32_t treelet, uint32_t length) {
+  Queue& q = queues_[treelet];
+  policy_->changed(treelet, q.length, length);
+  q.length = length;
+  stats_.max_queue_length = std::max<uint64_t>(stats_.max_queue_length, length);
+}
+
+size_t TreeletScheduler::take(uint32_t unit, Cycle now, size_t max,
+                              std::vector<RayContext*>& out) {
+  account(now);
+  std::optional<uint32_t> pick = policy_->pick();
+  if (pick && queues_[*pick].length >= config_.min_batch) return serve(*pick, now, max, out);
+  size_t room = pool_.capacity() - pool_.in_use();
+  if (room > 0 && !upstream_.exhausted()) {
+    size_t first = out.size();
+    size_t given = upstream_.take(unit, now, std::min(max, room), out);
+    for (size_t i = first; i < out.size(); ++i) out[i]->treelet = root_;
+    if (given > 0) {
+      executing_ += given;
+      stats_.visits++;
+      stats_.fresh_visits++;
+      stats_.visit_rays += given;
+      return given;
+    }
+  }
+  return pick ? serve(*pick, now, max, out) : 0;
+}
+
+size_t TreeletScheduler::serve(uint32_t treelet, Cycle now, size_t max,
+                               std::vector<RayContext*>& out) {
+  Queue& q = queues_[treelet];
+  size_t given = 0;
+  while (given < max && q.head) {
+    RayContext* ray = q.head;
+    q.head = ray->next_in_queue;
+    ray->next_in_queue = nullptr;
+    ray->treelet = treelet;
+    ray->ready = std::max(ray->ready, now + config_.dequeue_latency);
+    out.push_back(ray);
+    ++given;
+  }
+  if (!q.head) q.tail = nullptr;
+  set_length(treelet, q.length - uint32_t(given));
+  queued_ -= given;
+  executing_ += given;
+  stats_.visits++;
+  stats_.visit_rays += given;
+  return given;
+}
+
+bool TreeletScheduler::postpone(RayContext& ray, uint32_t treelet, Cycle now) {
+  Queue& q = queues_[treelet];
+  if (q.length >= config_.queue_capacity) {
+    stats_.refused++;
+    return false;
+  }
+  account(now);
+  ray.ready = now + config_.enqueue_latency;
+  ray.cost.postponed++;
+  ray.next_in_queue = nullptr;
+  if (q.tail)
+    q.tail->next_in_queue = &ray;
+  else
+    q.head = &ray;
+  q.tail = &ray;
+  set_length(treelet, q.length + 1);
+  queued_++;
+  executing_--;
+  stats_.postponed++;
+  stats_.max_queued = std::max(stats_.max_queued, queued_);
+  return true;
+}
+
+void TreeletScheduler::retire(RayContext& ray, Cycle now) {
+  account(now);
+  executing_--;
+  upstream_.retire(ray, now);
+}
+
+bool TreeletScheduler::exhausted() const {
+  return queued_ == 0 && executing_ == 0 && upstream_.exhausted();
+}
+
+}  // namespace rtsim
