@@ -11,8 +11,8 @@
 namespace rtsim::pipeline {
 namespace {
 
-// One spherical light per emissive object: a sphere of the emitter's equal-area disk radius,
-// set just in front of it (toward the scene centre) so shadow rays end before the emitter.
+// One spherical light per emissive object, placed so that shadow rays end before they reach
+// the emitter's own triangles (which stay in the scene).
 void add_emissive_lights(const Scene& scene, const MaterialTable& materials, float diagonal,
                          std::vector<Light>& out) {
   struct Acc {
@@ -38,16 +38,33 @@ void add_emissive_lights(const Scene& scene, const MaterialTable& materials, flo
     a.normal += n * area;
     a.power += glm::dvec3(m.emission) * area;
   }
-  for (const Acc& a : acc) {
+  for (size_t obj = 0; obj < acc.size(); ++obj) {
+    const Acc& a = acc[obj];
     if (a.area <= 0.0) continue;
     Light l;
     l.type = LightType::Sphere;
-    l.radius = float(std::sqrt(a.area / 3.14159265358979));
-    glm::dvec3 n = glm::length(a.normal) > 0.0 ? glm::normalize(a.normal) : glm::dvec3(0, -1, 0);
-    double gap = l.radius + 1e-3 * diagonal;
-    l.position = glm::vec3(a.centroid / a.area + n * gap);
-    // A Lambertian emitter of radiance L and area A has intensity L A along its normal.
-    l.intensity = glm::vec3(a.power);
+    glm::dvec3 centroid = a.centroid / a.area;
+    double gap = 1e-3 * diagonal;
+    if (glm::length(a.normal) > 0.5 * a.area) {
+      // Flat (a panel): a sphere of the panel's equal-area disk radius, just in front of it.
+      // A Lambertian emitter of radiance L and area A has intensity L A along its normal.
+      glm::dvec3 n = glm::normalize(a.normal);
+      l.radius = float(std::sqrt(a.area / 3.14159265358979));
+      l.position = glm::vec3(centroid + n * (l.radius + gap));
+      l.intensity = glm::vec3(a.power);
+    } else {
+      // Closed (a bulb): a sphere around it; a convex emitter shows a quarter of its area.
+      double reach = 0.0;
+      for (uint32_t tri = 0; tri < scene.triangle_count(); ++tri) {
+        uint32_t o = tri < scene.object_ids.size() ? scene.object_ids[tri] : 0;
+        if (std::min<size_t>(o, acc.size() - 1) != obj || !materials.of(tri).emissive()) continue;
+        for (int k = 0; k < 3; ++k)
+          reach = std::max(reach, glm::length(glm::dvec3(scene.mesh.vertex(tri, k)) - centroid));
+      }
+      l.radius = float(reach + gap);
+      l.position = glm::vec3(centroid);
+      l.intensity = glm::vec3(0.25 * a.power);
+    }
     out.push_back(l);
   }
 }

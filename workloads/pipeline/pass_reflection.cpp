@@ -15,8 +15,9 @@ glm::vec3 sample_reflection(const LayerStack& stack, int layer, const glm::vec3&
   glm::vec3 v_local = basis.to_local(v);
   rerolls = 0;
   for (uint32_t attempt = 0; attempt <= max_rerolls; ++attempt) {
-    glm::vec2 u = cranley_patterson(
-        glm::vec2(halton(index + attempt, 2), halton(index + attempt, 3)), rotation);
+    // Re-rolls jump far along the sequence (a prime stride), away from later frames' points.
+    uint32_t i = index + attempt * 1000003u;
+    glm::vec2 u = cranley_patterson(glm::vec2(halton(i, 2), halton(i, 3)), rotation);
     glm::vec3 h = sample_ggx_half_vector(u, stack.alpha[layer]);
     glm::vec3 l = reflect_dir(-v_local, h);
     if (l.z > 0.0f) return glm::normalize(basis.to_world(l));
@@ -32,8 +33,6 @@ PassOutcome run_reflection_pass(const FrameContext& ctx, const GBuffer& g, RaySi
   if (!spec.enabled) return {"disabled in the spec"};
   sink.set_pass(PassId::Reflection);
   bool any_surface = false;
-  // Each frame uses a fresh stretch of the Halton sequence, long enough for all re-rolls.
-  uint32_t stride = spec.max_rerolls + 1;
   for (uint32_t i : g.select(spec.resolution_scale, ctx.frame)) {
     const GSample& s = g.samples[i];
     if (!s.surface.hit()) continue;
@@ -49,7 +48,9 @@ PassOutcome run_reflection_pass(const FrameContext& ctx, const GBuffer& g, RaySi
       ReflectionRecord rec;
       rec.sample = i;
       rec.layer = uint8_t(choose_layer(stack, rng.uniform()));
-      uint32_t index = 1 + (ctx.frame * spec.rays_per_pixel + j) * stride;
+      // Consecutive frames take consecutive Halton points, so each pixel's directions over
+      // time are stratified.
+      uint32_t index = 1 + ctx.frame * spec.rays_per_pixel + j;
       uint32_t rerolls = 0;
       rec.dir = sample_reflection(stack, rec.layer, v, s.surface.normal, index, rotation,
                                   spec.max_rerolls, rerolls);

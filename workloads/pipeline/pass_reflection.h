@@ -1,8 +1,9 @@
 // Reflection pass (Pica Pica's raytraced reflections): from glossy surfaces (roughness at most
 // max_roughness, in the base or a clear coat), on a grid of resolution_scale (half resolution:
 // 1/4 ray per pixel). Directions importance-sample the GGX NDF (Walter et al. 2007) with a
-// Halton sequence, Cranley-Patterson rotated per pixel (PBRT); a direction below the horizon is
-// re-rolled with the next Halton point (at most max_rerolls times, then the mirror direction).
+// Halton sequence, Cranley-Patterson rotated per pixel (PBRT), one point per frame; a direction
+// below the horizon is re-rolled with another Halton point (at most max_rerolls times, then the
+// mirror direction).
 // Layered materials shoot one ray for the stack (layers.h).
 #pragma once
 

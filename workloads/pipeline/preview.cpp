@@ -27,6 +27,9 @@ std::vector<int64_t> records_by_cell(const GBuffer& g, float scale, size_t count
 class FrameShader {
 public:
   FrameShader(const Pipeline& p, const FrameResults& f) : p_(p), f_(f), s_(p.scene()) {
+    bool emissive = false;
+    for (const ShadingMaterial& m : s_.materials.materials) emissive |= m.emissive();
+    unlit_ = s_.lights.empty() && !emissive && s_.sky == glm::vec3(0.0f);
     const PassSpecs& passes = p.spec().passes;
     const GBuffer& g = f.gbuffer;
     reflection_ = records_by_cell(g, passes.reflection.resolution_scale, f.reflection.rays.size(),
@@ -52,6 +55,9 @@ public:
     if (int64_t r = lookup(ao_, gs.pixel, passes.ao.resolution_scale); r >= 0)
       ao = 0.25f + 0.75f * f_.ao.visibility[size_t(r)];
     glm::vec3 color = shade_surface(s_, gs.surface, vis) + indirect(gs.surface) * ao;
+    // A scene with no light at all: a white ambient term, so the picture still shows it.
+    if (unlit_)
+      color += diffuse_albedo(m) * ao * std::max(0.2f, -glm::dot(gs.view, gs.surface.normal));
     glm::vec3 v = -gs.view;
     if (int64_t r = lookup(reflection_, gs.pixel, passes.reflection.resolution_scale);
         r >= 0 && m.glossy(passes.reflection.max_roughness)) {
@@ -97,6 +103,7 @@ private:
   const FrameResults& f_;
   const SceneContext& s_;
   std::vector<int64_t> reflection_, ao_, refraction_, translucency_;
+  bool unlit_ = false;
 };
 
 // Fills pixels that got no sample (irregular placement) from the nearest pixel that did.

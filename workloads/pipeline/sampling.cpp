@@ -86,6 +86,7 @@ float ggx_d(float cos_theta_h, float alpha) {
 }
 
 glm::vec3 sample_ggx_half_vector(glm::vec2 u, float alpha) {
+  if (alpha <= 1e-4f) return glm::vec3(0.0f, 0.0f, 1.0f);  // a perfect mirror
   // tan^2(theta) = alpha^2 u / (1 - u) inverts the GGX marginal CDF of theta.
   float tan2 = alpha * alpha * u.x / std::max(1.0f - u.x, 1e-7f);
   float cos_theta = 1.0f / std::sqrt(1.0f + tan2);

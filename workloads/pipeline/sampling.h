@@ -35,7 +35,8 @@ glm::vec3 sample_uniform_cone(glm::vec2 u,
 
 // GGX normal distribution D(h) for cos_theta_h = n.h, alpha = roughness^2.
 float ggx_d(float cos_theta_h, float alpha);
-// A microfacet normal (local, z up) sampled with density D(h) cos_theta_h.
+// A microfacet normal (local, z up) sampled with density D(h) cos_theta_h; exactly the normal
+// for alpha <= 1e-4 (roughness 0 is a perfect mirror).
 glm::vec3 sample_ggx_half_vector(glm::vec2 u, float alpha);
 // Density of the reflected direction l = reflect(-v, h) in solid angle, all local, z up.
 float ggx_reflection_pdf(const glm::vec3& v, const glm::vec3& l, float alpha);

@@ -259,9 +259,10 @@ WorkloadSpec read_spec(const std::string& path) {
 }
 
 WorkloadSpec default_spec_for_scene(const std::string& scene) {
-  WorkloadSpec spec = parse_spec("scene = \"" + scene + "\"\n", "builtin-spec.toml");
+  WorkloadSpec spec = parse_spec("scene = \"builtin:cornell\"\n", "default-spec.toml");
   spec.file.clear();
-  spec.name = scene;
+  spec.scene = scene;
+  spec.name = std::filesystem::path(scene).stem().string();
   return spec;
 }
 

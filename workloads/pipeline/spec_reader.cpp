@@ -63,7 +63,8 @@ std::string SpecReader::line_of(const toml::node* node) const {
 bool SpecReader::has(const std::string& key) const { return table_ && table_->contains(key); }
 
 void SpecReader::fail(const std::string& key, const std::string& what) const {
-  const toml::node* node = table_ && !key.empty() ? table_->get(key) : table_;
+  const toml::node* node = table_ && !key.empty() ? table_->get(key) : nullptr;
+  if (!node && !prefix_.empty()) node = table_;  // an absent key: the line of its table
   throw_input_error(ctx_.file, line_of(node), fmt::format("key '{}': {}", full_key(key), what));
 }
 

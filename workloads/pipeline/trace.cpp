@@ -44,9 +44,12 @@ SpecOverrides make_overrides(const std::string& resolution, uint32_t frames,
 }
 
 WorkloadSpec load_workload(const std::string& workload) {
-  if (!std::filesystem::exists(workload) && is_builtin_scene(workload))
+  bool toml = workload.size() > 5 && workload.compare(workload.size() - 5, 5, ".toml") == 0;
+  if (toml) return read_spec(workload);
+  // A scene (built-in or file) with the default spec.
+  if (is_builtin_scene(workload) || std::filesystem::exists(workload))
     return default_spec_for_scene(workload);
-  return read_spec(workload);
+  throw_input_error(workload, "", "no such workload spec (.toml), scene file or built-in scene");
 }
 
 TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options) {

@@ -38,7 +38,7 @@ void apply_overrides(WorkloadSpec& spec, const SpecOverrides& overrides);
 SpecOverrides make_overrides(const std::string& resolution, uint32_t frames,
                              std::optional<uint64_t> seed, const std::string& scene);
 
-// A spec file path, or a built-in scene name (its default pica-pica spec).
+// A spec file (.toml), or a scene (built-in name or file) with the default spec.
 WorkloadSpec load_workload(const std::string& workload);
 
 TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options);

@@ -1,0 +1,102 @@
+// rtsim trace and bench-trace as a user runs them.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "tests/cli/run_rtsim.h"
+#include "traces/stream.h"
+
+namespace rtsim {
+namespace {
+
+using test::run_rtsim;
+
+std::string tmp(const std::string& name) { return ::testing::TempDir() + "cli-trace-" + name; }
+
+std::string spec(const std::string& name) {
+  return std::string(RTSIM_SOURCE_DIR) + "/workloads/specs/" + name + ".toml";
+}
+
+TEST(CliTrace, WritesTheStreamWithOverridesAndASummary) {
+  std::string out = tmp("cornell.rays");
+  auto r = run_rtsim("trace " + spec("cornell") + " -o " + out +
+                     " --resolution 64x48 --frames 2 --seed 5");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  StreamHeader h;
+  std::vector<Ray> rays = read_all_rays(out, &h);
+  EXPECT_EQ(h.width, 64u);
+  EXPECT_EQ(h.height, 48u);
+  EXPECT_EQ(h.frame_count, 2u);
+  EXPECT_EQ(h.seed, 5u);
+  EXPECT_EQ(h.workload, "cornell");
+  EXPECT_EQ(h.scene_source, "builtin:cornell");
+  EXPECT_EQ(h.counts[size_t(RayType::Camera)], 2u * 64u * 48u);
+  EXPECT_EQ(h.counts[size_t(RayType::Refraction)], 0u);
+  EXPECT_NE(r.out.find("skipped: no transmissive surface in view"), std::string::npos) << r.out;
+  // Not a terminal: plain progress lines, one per pass and frame.
+  EXPECT_NE(r.err.find("trace: frame 2/2: ao"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos);
+  std::remove(out.c_str());
+}
+
+TEST(CliTrace, SameInputsSameBytes) {
+  std::string a = tmp("a.rays"), b = tmp("b.rays");
+  ASSERT_EQ(run_rtsim("trace pica -q -o " + a + " --resolution 80x45").exit_code, 0);
+  ASSERT_EQ(run_rtsim("trace pica -q -o " + b + " --resolution 80x45").exit_code, 0);
+  EXPECT_TRUE(test::slurp(a) == test::slurp(b));
+  EXPECT_GT(test::slurp(a).size(), 10000u);
+  std::remove(a.c_str());
+  std::remove(b.c_str());
+}
+
+TEST(CliTrace, PreviewAndDensityImages) {
+  std::string png = tmp("pica.png");
+  auto r = run_rtsim("trace " + spec("pica") + " -q --preview " + png + " --resolution 96x54");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* pass : {"camera", "shadow", "reflection", "reflected_shadow", "diffuse_gi",
+                           "gi_light", "ao", "refraction", "translucency", "all"}) {
+    std::string path = tmp(std::string("pica.density-") + pass + ".png");
+    EXPECT_TRUE(std::filesystem::exists(path)) << path;
+    std::remove(path.c_str());
+  }
+  EXPECT_GT(std::filesystem::file_size(png), 1000u);
+  std::remove(png.c_str());
+}
+
+TEST(CliTrace, BadInputIsOneLineAndExitCode2) {
+  std::string bad = tmp("bad.toml");
+  {
+    std::FILE* f = std::fopen(bad.c_str(), "w");
+    std::fputs("scene = \"cornell\"\n[camera]\nfvo = 40\n", f);
+    std::fclose(f);
+  }
+  auto r = run_rtsim("trace " + bad + " -o " + tmp("x.rays"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "rtsim: error: " + bad + ": line 3: unknown key 'camera.fvo'\n");
+  EXPECT_FALSE(std::filesystem::exists(tmp("x.rays")));
+  r = run_rtsim("trace cornell -o " + tmp("x.rays") + " --resolution 12");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(test::count_lines(r.err), 1);
+  r = run_rtsim("trace no-such-scene.obj -o " + tmp("x.rays"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(test::count_lines(r.err), 1);
+  std::remove(bad.c_str());
+}
+
+TEST(CliTrace, ListKeysShowsEveryKeyWithItsDefault) {
+  auto r = run_rtsim("trace --list-keys");
+  ASSERT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("gi.budget"), std::string::npos);
+  EXPECT_NE(r.out.find("default 250000 (rays)"), std::string::npos) << r.out;
+}
+
+TEST(CliBenchTrace, PrintsTimesRatesAndTheEmbreeReference) {
+  auto r = run_rtsim("bench-trace cornell --resolution 64x36");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("Mrays/s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("reference: Embree alone"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace rtsim
