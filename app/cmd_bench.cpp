@@ -2,12 +2,12 @@
 // rays): diffuse-GI-like rays on a scene, default 1M rays on Conference. Each side runs
 // --repeat times, alternating, and the fastest run of each counts, since the machines are
 // noisy. Prints both times and their ratio (target: the model within 3x of Embree).
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
-
-#include <fmt/core.h>
 
 #include "app/commands.h"
 #include "model/bvh/bvh_image.h"
@@ -57,8 +57,8 @@ int run_bench(const BenchOptions& o) {
   fmt::print("model      {}, {} nodes, built in {:.2f} s (Embree: {:.2f} s, 1 thread)\n",
              describe(o.bvh), image.node_count, model_build, embree_build);
   std::vector<Ray> rays = sample_diffuse_rays(scene.mesh, o.rays, o.seed);
-  fmt::print("rays       {} diffuse-GI-like rays, seed {}, best of {} runs per side\n",
-             rays.size(), o.seed, o.repeat);
+  fmt::print("rays       {} diffuse-GI-like rays, seed {}, best of {} runs per side\n", rays.size(),
+             o.seed, o.repeat);
 
   TraversalUnit model(image);
   TraversalState state;
@@ -98,8 +98,7 @@ int run_bench(const BenchOptions& o) {
 void add_bench_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("bench", "Time the functional model against Embree");
   auto options = std::make_shared<BenchOptions>();
-  cmd->add_option("--scene", options->scene, "Scene file or built-in scene")
-      ->capture_default_str();
+  cmd->add_option("--scene", options->scene, "Scene file or built-in scene")->capture_default_str();
   cmd->add_option("--rays", options->rays, "Number of rays")->capture_default_str();
   cmd->add_option("--seed", options->seed, "Seed of the ray sampler")->capture_default_str();
   cmd->add_option("--repeat", options->repeat, "Runs per side; the fastest counts")

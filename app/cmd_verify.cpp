@@ -1,12 +1,12 @@
 // rtsim verify STREAM: traces every ray of a stream with the model and with Embree, classifies
 // each disagreement with the double-precision arbiter, prints a summary, and exits 1 when a
 // disagreement is unexplained. Also defines the BVH options shared with `rtsim bench`.
+#include <fmt/core.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
-
-#include <fmt/core.h>
 
 #include "app/commands.h"
 #include "model/bvh/bvh_image.h"
@@ -35,18 +35,18 @@ std::string hex3(const glm::vec3& v) {
 
 std::string answer(const Hit& hit, uint32_t prim) {
   if (!hit.hit()) return "miss";
-  if (hit.prim == kAnyPrim)
-    return prim == kNoHit ? "hit" : fmt::format("hit (triangle {})", prim);
+  if (hit.prim == kAnyPrim) return prim == kNoHit ? "hit" : fmt::format("hit (triangle {})", prim);
   return fmt::format("triangle {} t={} ({:.9g})", hit.prim, hex(hit.t), hit.t);
 }
 
 void print_bvh(const BvhImage& image) {
   fmt::print("model      {}\n", describe(image.config));
-  fmt::print("bvh        {} nodes x {} B + {} triangles x {} B = {:.2f} MiB; depth {}; "
-             "{} treelets ({} oversized)\n",
-             image.node_count, image.node_stride, image.triangle_count, image.triangle_stride,
-             image.total_bytes() / 1048576.0, image.stats.max_depth, image.treelets.count,
-             image.treelets.oversized);
+  fmt::print(
+      "bvh        {} nodes x {} B + {} triangles x {} B = {:.2f} MiB; depth {}; "
+      "{} treelets ({} oversized)\n",
+      image.node_count, image.node_stride, image.triangle_count, image.triangle_stride,
+      image.total_bytes() / 1048576.0, image.stats.max_depth, image.treelets.count,
+      image.treelets.oversized);
 }
 
 void print_report(const VerifyReport& r) {
@@ -66,10 +66,11 @@ void print_report(const VerifyReport& r) {
                right[int(RightSide::Both)]);
   }
   double n = r.rays ? double(r.rays) : 1.0;
-  fmt::print("\nper ray    trav_nodes {:.2f}  trav_leaves {:.2f}  trav_prims {:.2f}  "
-             "trav_prim_hits {:.2f}  fetches {:.2f}  bytes {:.1f}\n",
-             r.counters.trav_nodes / n, r.counters.trav_leaves / n, r.counters.trav_prims / n,
-             r.counters.trav_prim_hits / n, r.accesses / n, r.access_bytes / n);
+  fmt::print(
+      "\nper ray    trav_nodes {:.2f}  trav_leaves {:.2f}  trav_prims {:.2f}  "
+      "trav_prim_hits {:.2f}  fetches {:.2f}  bytes {:.1f}\n",
+      r.counters.trav_nodes / n, r.counters.trav_leaves / n, r.counters.trav_prims / n,
+      r.counters.trav_prim_hits / n, r.accesses / n, r.access_bytes / n);
   fmt::print("hits       model {}  embree {}\n", r.model_hits, r.embree_hits);
 }
 
@@ -132,8 +133,7 @@ int run_verify(const VerifyOptions& o) {
 }  // namespace
 
 void add_bvh_options(CLI::App& cmd, BvhConfig& bvh) {
-  cmd.add_option("--width", bvh.width, "BVH width: children per node, 2..8")
-      ->capture_default_str();
+  cmd.add_option("--width", bvh.width, "BVH width: children per node, 2..8")->capture_default_str();
   cmd.add_option_function<std::string>(
          "--format", [&bvh](const std::string& v) { bvh.node_format = *node_format_from_name(v); },
          "Node format")

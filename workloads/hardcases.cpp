@@ -1,12 +1,11 @@
 #include "workloads/hardcases.h"
 
-#include <cmath>
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <glm/vec2.hpp>
 #include <limits>
 #include <map>
-
-#include <glm/vec2.hpp>
 
 namespace rtsim::hardcases {
 namespace {
@@ -61,8 +60,8 @@ uint32_t add_vertex(TriangleMesh& m, const glm::vec3& p) {
 void append(TriangleMesh& into, const TriangleMesh& part) {
   uint32_t base = static_cast<uint32_t>(into.positions.size());
   into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
-  for (auto tri : part.triangles) into.triangles.push_back({tri[0] + base, tri[1] + base,
-                                                            tri[2] + base});
+  for (auto tri : part.triangles)
+    into.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
 }
 
 Ray make_ray(const glm::vec3& org, const glm::vec3& dir, RayType type = RayType::Camera) {
@@ -132,8 +131,7 @@ TriangleMesh split_cube(const glm::vec3& center) {
 }
 
 // A quad with corners a, b, c, d (two triangles).
-TriangleMesh quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
-                  const glm::vec3& d) {
+TriangleMesh quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c, const glm::vec3& d) {
   TriangleMesh m;
   m.positions = {a, b, c, d};
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
@@ -200,8 +198,8 @@ std::vector<Ray> rays_from_inside_sphere(const glm::vec3& center, float spread, 
   return rays;
 }
 
-std::vector<Ray> rays_from_inside_torus(const glm::vec3& center, float major_radius,
-                                        float spread, size_t count, uint64_t seed) {
+std::vector<Ray> rays_from_inside_torus(const glm::vec3& center, float major_radius, float spread,
+                                        size_t count, uint64_t seed) {
   Random random{seed};
   std::vector<Ray> rays;
   rays.reserve(count);
@@ -307,21 +305,21 @@ std::vector<HardCase> make_hard_cases(size_t n, uint64_t seed) {
 
   TriangleMesh odd = quad({-5, -5, -1}, {5, -5, -1}, {5, 5, -1}, {-5, 5, -1});
   TriangleMesh needles;
-  needles.positions = {{0, 0, 0},  {1, 0, 0},  {2, 0, 0},        {0, 1, 0},  {1, 2, 0},
-                       {0, 3, 0},  {4, 3, 0},  {0, 3.000001f, 0}, {-3, -3, 0}, {3, -3, 0},
-                       {0, -3.0000001f, 0}};
+  needles.positions = {{0, 0, 0},   {1, 0, 0},  {2, 0, 0},          {0, 1, 0},
+                       {1, 2, 0},   {0, 3, 0},  {4, 3, 0},          {0, 3.000001f, 0},
+                       {-3, -3, 0}, {3, -3, 0}, {0, -3.0000001f, 0}};
   needles.triangles = {{0, 1, 2}, {3, 3, 4}, {5, 6, 7}, {8, 9, 10}, {1, 1, 1}};
   append(odd, needles);
-  c = add("needles_degenerate", "zero-area, repeated-vertex and needle triangles over a wall",
-          odd, Expect::MatchEmbree);
+  c = add("needles_degenerate", "zero-area, repeated-vertex and needle triangles over a wall", odd,
+          Expect::MatchEmbree);
   for (size_t i = 0; i < n; ++i) {
     glm::vec3 target(random.range(-4, 4), random.range(-4, 4), 0.0f);
     glm::vec3 o = off_plane(target, 0.0f);
     if (o.z < 0) o.z = -o.z;
     c->rays.push_back(make_ray(o, target - o));
   }
-  c = add("tmax", "tmax exactly at, just before and beyond a plane, and +inf",
-          grid({0, 0, 0}, 8), Expect::MatchEmbree);
+  c = add("tmax", "tmax exactly at, just before and beyond a plane, and +inf", grid({0, 0, 0}, 8),
+          Expect::MatchEmbree);
   for (size_t i = 0; i < n; ++i) {
     Ray r = make_ray({random.range(0.5f, 7.5f), random.range(0.5f, 7.5f), random.range(1, 3)},
                      {0, 0, -1}, RayType::Shadow);

@@ -38,8 +38,8 @@ TriangleMesh closed_torus(const glm::vec3& center, float major_radius, float min
 std::vector<Ray> rays_from_inside_sphere(const glm::vec3& center, float spread, size_t count,
                                          uint64_t seed);
 // Rays from seeded points inside the tube of the torus (within `spread` of its center circle).
-std::vector<Ray> rays_from_inside_torus(const glm::vec3& center, float major_radius,
-                                        float spread, size_t count, uint64_t seed);
+std::vector<Ray> rays_from_inside_torus(const glm::vec3& center, float major_radius, float spread,
+                                        size_t count, uint64_t seed);
 
 // All cases; rays_per_case sizes the seeded random parts.
 std::vector<HardCase> make_hard_cases(size_t rays_per_case = 2000, uint64_t seed = 1);

@@ -101,8 +101,8 @@ Bvh2 build_binned_sah(const TriangleMesh& mesh, const BvhConfig& config) {
     for (int a = 0; a < 3; ++a)
       binner.scale[a] = extent[a] > 0.0f ? config.sah_bins / extent[a] : 0.0f;
     // Split where the SAH is cheapest; stay a leaf if that is cheaper and allowed.
-    Split split = count > 1 ? best_split(refs, task.begin, task.end, binner,
-                                         config.sah_node_cost, box.surface_area())
+    Split split = count > 1 ? best_split(refs, task.begin, task.end, binner, config.sah_node_cost,
+                                         box.surface_area())
                             : Split{};
     bool fits = count <= static_cast<uint32_t>(config.max_leaf_size);
     if (fits && (split.axis < 0 || split.cost >= static_cast<float>(count))) {

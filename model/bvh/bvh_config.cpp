@@ -59,9 +59,9 @@ std::optional<NodeLayout> node_layout_from_name(const std::string& name) {
 }
 
 std::string describe(const BvhConfig& c) {
-  std::string text = fmt::format("bvh{} {} {} {}", c.width, node_format_name(c.node_format),
-                                 triangle_format_name(c.triangle_format),
-                                 node_layout_name(c.node_layout));
+  std::string text =
+      fmt::format("bvh{} {} {} {}", c.width, node_format_name(c.node_format),
+                  triangle_format_name(c.triangle_format), node_layout_name(c.node_layout));
   return text + fmt::format(" (treelets {} B, leaves <= {}, {} bins)", c.treelet_bytes,
                             c.max_leaf_size, c.sah_bins);
 }

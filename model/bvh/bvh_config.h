@@ -26,16 +26,16 @@ enum class NodeLayout : uint8_t {
 };
 
 struct BvhConfig {
-  int sah_bins = 16;                   // bins per axis of the binned SAH build: 16 or 32
-  int max_leaf_size = 3;               // triangles: most triangles in one leaf (cwbvh8: <= 3)
-  float sah_node_cost = 1.0f;          // SAH cost of a node visit, in triangle tests
-  int width = 8;                       // children: most children of one node, 2..8
+  int sah_bins = 16;           // bins per axis of the binned SAH build: 16 or 32
+  int max_leaf_size = 3;       // triangles: most triangles in one leaf (cwbvh8: <= 3)
+  float sah_node_cost = 1.0f;  // SAH cost of a node visit, in triangle tests
+  int width = 8;               // children: most children of one node, 2..8
   NodeFormat node_format = NodeFormat::Aabb32;
   TriangleFormat triangle_format = TriangleFormat::Raw;
   NodeLayout node_layout = NodeLayout::Treelet;
-  uint32_t treelet_bytes = 4096;       // bytes: budget of one treelet, 512..65536
-  uint64_t node_base = 0x10000000;     // address: first byte of the node region
-  uint64_t region_align = 4096;        // bytes: the triangle region starts on this alignment
+  uint32_t treelet_bytes = 4096;    // bytes: budget of one treelet, 512..65536
+  uint64_t node_base = 0x10000000;  // address: first byte of the node region
+  uint64_t region_align = 4096;     // bytes: the triangle region starts on this alignment
 };
 
 // Empty if the config is usable, else one line naming the field and the allowed values.

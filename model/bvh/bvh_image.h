@@ -14,10 +14,10 @@
 namespace rtsim {
 
 struct BvhBuildStats {
-  uint32_t bvh2_nodes = 0;   // nodes of the binary BVH before collapsing
-  uint32_t bvh2_depth = 0;   // levels below the root of its deepest leaf
-  uint32_t leaves = 0;       // leaf children in the wide BVH
-  uint32_t max_depth = 0;    // levels below the root of the deepest wide node
+  uint32_t bvh2_nodes = 0;        // nodes of the binary BVH before collapsing
+  uint32_t bvh2_depth = 0;        // levels below the root of its deepest leaf
+  uint32_t leaves = 0;            // leaf children in the wide BVH
+  uint32_t max_depth = 0;         // levels below the root of the deepest wide node
   uint32_t child_slots_used = 0;  // children over all wide nodes (fill = used / nodes / width)
 };
 
@@ -25,9 +25,9 @@ struct BvhImage {
   BvhConfig config;
   uint32_t node_stride = 0, triangle_stride = 0;  // bytes per record
   uint32_t node_count = 0, triangle_count = 0;
-  uint64_t node_base = 0, triangle_base = 0;      // addresses of the two regions
-  std::vector<uint8_t> nodes, triangles;          // the bytes of the two regions
-  std::vector<uint32_t> node_treelet;  // treelet id of the node at each position
+  uint64_t node_base = 0, triangle_base = 0;  // addresses of the two regions
+  std::vector<uint8_t> nodes, triangles;      // the bytes of the two regions
+  std::vector<uint32_t> node_treelet;         // treelet id of the node at each position
   TreeletStats treelets;
   BvhBuildStats stats;
   float scene_extent = 0.0f;  // largest |coordinate| of any vertex

@@ -34,8 +34,7 @@ uint8_t quantize_up(float origin, float scale, float value) {
   return uint8_t(qi);
 }
 
-void encode_aabb32(int width, const WideNode& node, const ChildPlacement& placement,
-                   uint8_t* out) {
+void encode_aabb32(int width, const WideNode& node, const ChildPlacement& placement, uint8_t* out) {
   std::memset(out, 0, node_stride(NodeFormat::Aabb32, width));
   for (int c = 0; c < node.child_count; ++c) {
     const WideChild& child = node.child[c];

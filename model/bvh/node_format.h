@@ -39,13 +39,13 @@ using AliasedFloat = float __attribute__((__may_alias__));
 // One decoded node: child boxes (fp32, conservative), references and counts. lo and hi point at
 // kMaxWidth planes per axis, in the node's own bytes (aabb32, width 8) or in `planes`.
 struct NodeView {
-  int slots = 0;                 // child slots of the format
-  uint32_t valid = 0;            // bit s: slot s holds a child
+  int slots = 0;                   // child slots of the format
+  uint32_t valid = 0;              // bit s: slot s holds a child
   const AliasedFloat* lo[3] = {};  // per axis: kMaxWidth lower planes
   const AliasedFloat* hi[3] = {};  // per axis: kMaxWidth upper planes
-  uint32_t index[kMaxWidth];     // inner: node position; leaf: first triangle position
-  uint32_t count[kMaxWidth];     // leaf: triangles; 0 for an inner child
-  float planes[6][kMaxWidth];    // decoded planes: lo x, hi x, lo y, hi y, lo z, hi z
+  uint32_t index[kMaxWidth];       // inner: node position; leaf: first triangle position
+  uint32_t count[kMaxWidth];       // leaf: triangles; 0 for an inner child
+  float planes[6][kMaxWidth];      // decoded planes: lo x, hi x, lo y, hi y, lo z, hi z
 };
 
 // Set bits of an 8-bit mask (portable: no popcount instruction assumed).
@@ -68,9 +68,8 @@ inline float cwbvh_plane(float origin, float scale, uint8_t q) {
 }
 
 // cwbvh8 byte offsets (table in model/README.md).
-constexpr size_t kCwbvhOrigin = 0, kCwbvhExponents = 12, kCwbvhInnerMask = 15,
-                 kCwbvhChildBase = 16, kCwbvhTriBase = 20, kCwbvhMeta = 24, kCwbvhQuantLo = 32,
-                 kCwbvhQuantHi = 56;
+constexpr size_t kCwbvhOrigin = 0, kCwbvhExponents = 12, kCwbvhInnerMask = 15, kCwbvhChildBase = 16,
+                 kCwbvhTriBase = 20, kCwbvhMeta = 24, kCwbvhQuantLo = 32, kCwbvhQuantHi = 56;
 
 inline void decode_aabb32(const uint8_t* bytes, int width, NodeView& view) {
   view.slots = width;
@@ -79,8 +78,8 @@ inline void decode_aabb32(const uint8_t* bytes, int width, NodeView& view) {
     const uint8_t* source = bytes + 4 * plane * width;
     // Width 8 planes are read in place; narrower nodes are copied to whole rows.
     if (width != kMaxWidth) std::memcpy(view.planes[plane], source, 4 * width);
-    const AliasedFloat* row = width == kMaxWidth ? reinterpret_cast<const AliasedFloat*>(source)
-                                          : view.planes[plane];
+    const AliasedFloat* row =
+        width == kMaxWidth ? reinterpret_cast<const AliasedFloat*>(source) : view.planes[plane];
     (plane % 2 ? view.hi : view.lo)[plane / 2] = row;
   }
   std::memcpy(view.index, bytes + 24 * width, 4 * width);
@@ -101,16 +100,13 @@ inline void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
   std::memcpy(&child_base, bytes + kCwbvhChildBase, 4);
   std::memcpy(&tri_base, bytes + kCwbvhTriBase, 4);
   // Planes: origin + q * 2^e per axis, exactly as the encoder rounded them.
-  for (int axis = 0; axis < 3; ++axis) {
-    float scale = cwbvh_scale(bytes[kCwbvhExponents + axis]);
-    float* lo = view.planes[2 * axis];
-    float* hi = view.planes[2 * axis + 1];
-    for (int s = 0; s < 8; ++s) {
-      lo[s] = cwbvh_plane(origin[axis], scale, bytes[kCwbvhQuantLo + 8 * axis + s]);
-      hi[s] = cwbvh_plane(origin[axis], scale, bytes[kCwbvhQuantHi + 8 * axis + s]);
-    }
-    view.lo[axis] = lo;
-    view.hi[axis] = hi;
+  for (int plane = 0; plane < 6; ++plane) {
+    int axis = plane / 2;
+    const uint8_t* q = bytes + (plane % 2 ? kCwbvhQuantHi : kCwbvhQuantLo) + 8 * axis;
+    float base = origin[axis], scale = cwbvh_scale(bytes[kCwbvhExponents + axis]);
+    float* out = view.planes[plane];
+    for (int s = 0; s < 8; ++s) out[s] = base + static_cast<float>(q[s]) * scale;
+    (plane % 2 ? view.hi : view.lo)[axis] = out;
   }
   // References: inner children by rank among inner slots, leaves by their triangle offset.
   for (int s = 0; s < 8; ++s) {
@@ -126,7 +122,6 @@ inline void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
     }
   }
 }
-
 
 inline void decode_node(NodeFormat format, int width, const uint8_t* bytes, NodeView& view) {
   if (format == NodeFormat::Cwbvh8)

@@ -51,17 +51,16 @@ std::vector<uint32_t> level_order(const WideBvh& bvh) {
 
 }  // namespace
 
-std::vector<uint32_t> order_nodes(const WideBvh& bvh, const Treelets& treelets,
-                                  NodeLayout layout, bool sibling_groups) {
+std::vector<uint32_t> order_nodes(const WideBvh& bvh, const Treelets& treelets, NodeLayout layout,
+                                  bool sibling_groups) {
   switch (layout) {
-    case NodeLayout::DepthFirst:
-      return sibling_groups ? group_preorder(bvh) : preorder(bvh);
-    case NodeLayout::BreadthFirst:
-      return level_order(bvh);
+    case NodeLayout::DepthFirst: return sibling_groups ? group_preorder(bvh) : preorder(bvh);
+    case NodeLayout::BreadthFirst: return level_order(bvh);
     default: {
       std::vector<uint32_t> order;
       order.reserve(bvh.nodes.size());
-      for (const auto& nodes : treelets.nodes) order.insert(order.end(), nodes.begin(), nodes.end());
+      for (const auto& nodes : treelets.nodes)
+        order.insert(order.end(), nodes.begin(), nodes.end());
       return order;
     }
   }

@@ -14,7 +14,7 @@ namespace rtsim {
 
 // order[i] is the wide node stored at position i; order[0] is the root. With sibling_groups
 // (cwbvh8) the inner children of every node are stored next to each other, in slot order.
-std::vector<uint32_t> order_nodes(const WideBvh& bvh, const Treelets& treelets,
-                                  NodeLayout layout, bool sibling_groups);
+std::vector<uint32_t> order_nodes(const WideBvh& bvh, const Treelets& treelets, NodeLayout layout,
+                                  bool sibling_groups);
 
 }  // namespace rtsim

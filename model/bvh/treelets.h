@@ -19,9 +19,9 @@
 namespace rtsim {
 
 struct TreeletStats {
-  uint32_t count = 0;                 // treelets
-  uint32_t oversized = 0;             // treelets over the budget (one sibling group)
-  uint32_t budget_bytes = 0;          // bytes: the budget they were formed with
+  uint32_t count = 0;         // treelets
+  uint32_t oversized = 0;     // treelets over the budget (one sibling group)
+  uint32_t budget_bytes = 0;  // bytes: the budget they were formed with
   uint64_t min_bytes = 0, max_bytes = 0, total_bytes = 0;
   // Treelets by fill: bin i holds size in (i/10, (i+1)/10] of the budget; bin 9 also > budget.
   std::array<uint32_t, 10> fill_histogram{};

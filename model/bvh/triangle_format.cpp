@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstring>
-
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -34,8 +33,7 @@ uint32_t triangle_stride(TriangleFormat format) {
   return format == TriangleFormat::Woop ? kWoopTriangleBytes : kRawTriangleBytes;
 }
 
-void encode_triangle(TriangleFormat format, const TriangleMesh& mesh, uint32_t prim,
-                     uint8_t* out) {
+void encode_triangle(TriangleFormat format, const TriangleMesh& mesh, uint32_t prim, uint8_t* out) {
   glm::vec3 v[3] = {mesh.vertex(prim, 0), mesh.vertex(prim, 1), mesh.vertex(prim, 2)};
   if (format == TriangleFormat::Raw) {
     std::memcpy(out, v, 36);

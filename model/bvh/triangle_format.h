@@ -19,7 +19,6 @@ constexpr uint32_t kWoopTriangleBytes = 52;
 uint32_t triangle_stride(TriangleFormat format);
 
 // Writes the record of triangle `prim` of the mesh.
-void encode_triangle(TriangleFormat format, const TriangleMesh& mesh, uint32_t prim,
-                     uint8_t* out);
+void encode_triangle(TriangleFormat format, const TriangleMesh& mesh, uint32_t prim, uint8_t* out);
 
 }  // namespace rtsim

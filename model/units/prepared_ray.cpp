@@ -24,8 +24,8 @@ PreparedRay prepare_ray(const Ray& ray, float scene_extent, float box_padding) {
   r.tmin = ray.tmin;
   r.tmax = ray.tmax;
   if (e != 0) {
-    r.dir = glm::vec3(std::ldexp(ray.dir.x, -e), std::ldexp(ray.dir.y, -e),
-                      std::ldexp(ray.dir.z, -e));
+    r.dir =
+        glm::vec3(std::ldexp(ray.dir.x, -e), std::ldexp(ray.dir.y, -e), std::ldexp(ray.dir.z, -e));
     r.t_exponent = -e;
     r.tmin = std::ldexp(ray.tmin, e);
     r.tmax = std::ldexp(ray.tmax, e);
@@ -33,8 +33,9 @@ PreparedRay prepare_ray(const Ray& ray, float scene_extent, float box_padding) {
 
   // Box setup: reciprocal (+-inf for a +-0 component), near plane by the sign bit, and the
   // origin moved by the padding so that each box is tested grown on every side.
-  float pad = box_padding * (std::max({std::fabs(r.org.x), std::fabs(r.org.y),
-                                       std::fabs(r.org.z)}) + scene_extent);
+  float pad =
+      box_padding *
+      (std::max({std::fabs(r.org.x), std::fabs(r.org.y), std::fabs(r.org.z)}) + scene_extent);
   for (int a = 0; a < 3; ++a) {
     r.inv_dir[a] = 1.0f / r.dir[a];
     r.near_is_hi[a] = std::signbit(r.dir[a]) ? 1 : 0;

@@ -16,8 +16,8 @@
 namespace rtsim {
 
 // 1 + 2 * gamma(3) with gamma(n) = n u / (1 - n u), u = 2^-24, rounded up.
-constexpr float kSlabFarGrowth = 1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f) +
-                                 0x1p-23f;
+constexpr float kSlabFarGrowth =
+    1.0f + 2.0f * (3.0f * 0x1p-24f) / (1.0f - 3.0f * 0x1p-24f) + 0x1p-23f;
 
 // Hit slots as a bit mask; tnear[s] is where the ray enters the box of slot s (hit slots only).
 // A box counts as hit where its (grown) span overlaps [ray.tmin, tmax]. All kMaxWidth slots are

@@ -25,8 +25,8 @@ struct TriangleHit {
 };
 
 // Tests run inline in the traversal loop: they are the hot path of every model run.
-inline bool intersect_watertight(const PreparedRay& ray, const float vertices[9], float tmin, float tmax,
-                          TriangleHit& hit) {
+inline bool intersect_watertight(const PreparedRay& ray, const float vertices[9], float tmin,
+                                 float tmax, TriangleHit& hit) {
   // Translate the vertices to the ray origin.
   float a[3], b[3], c[3];
   for (int i = 0; i < 3; ++i) {
@@ -69,7 +69,7 @@ inline bool intersect_watertight(const PreparedRay& ray, const float vertices[9]
 }
 
 inline bool intersect_woop(const PreparedRay& ray, const float rows[12], float tmin, float tmax,
-                    TriangleHit& hit) {
+                           TriangleHit& hit) {
   auto apply = [&](int row, const glm::vec3& p, float w) {
     const float* r = rows + 4 * row;
     return r[0] * p.x + r[1] * p.y + r[2] * p.z + r[3] * w;
@@ -90,7 +90,7 @@ inline bool intersect_woop(const PreparedRay& ray, const float rows[12], float t
 }
 
 inline bool intersect_triangle(TriangleFormat format, const PreparedRay& ray, const uint8_t* bytes,
-                        float tmin, float tmax, TriangleHit& hit, uint32_t& prim) {
+                               float tmin, float tmax, TriangleHit& hit, uint32_t& prim) {
   float values[12];
   bool woop = format == TriangleFormat::Woop;
   std::memcpy(values, bytes, woop ? 48 : 36);

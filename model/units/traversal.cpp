@@ -66,8 +66,7 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
     out.access_count = 1;
   }
   NodeView node;
-  decode_node(image_.config.node_format, image_.config.width, image_.node_bytes(entry.index),
-              node);
+  decode_node(image_.config.node_format, image_.config.width, image_.node_bytes(entry.index), node);
   // Test every child box.
   float tnear[kMaxWidth];
   uint32_t hits = intersect_children(s.ray, node, s.t_hit, tnear);

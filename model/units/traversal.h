@@ -68,8 +68,8 @@ struct StepResult {
   StepKind kind = StepKind::Done;
   uint32_t first_access = 0;  // this step's fetches: state.accesses[first, first + count)
   uint32_t access_count = 0;
-  uint32_t tests = 0;         // boxes (node) or triangles (leaf) tested
-  uint32_t hits = 0;          // boxes entered, or triangles hit
+  uint32_t tests = 0;  // boxes (node) or triangles (leaf) tested
+  uint32_t hits = 0;   // boxes entered, or triangles hit
 };
 
 class TraversalUnit {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace rtsim {
@@ -47,8 +46,8 @@ ExactHit exact_intersect(const TriangleMesh& mesh, uint32_t prim, const Ray& ray
   for (int c = 0; c < 3; ++c) v[c] = glm::dvec3(mesh.vertex(prim, c)) - o;
   // Shape: normal, cosine with the ray, area against the longest edge.
   glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
-  double longest = std::max({glm::length(v[1] - v[0]), glm::length(v[2] - v[1]),
-                             glm::length(v[0] - v[2])});
+  double longest =
+      std::max({glm::length(v[1] - v[0]), glm::length(v[2] - v[1]), glm::length(v[0] - v[2])});
   double n_len = glm::length(n);
   ex.area_ratio = longest > 0.0 ? n_len / (longest * longest) : 0.0;
   ex.cosine = n_len > 0.0 ? std::fabs(glm::dot(n, d)) / (n_len * glm::length(d)) : 0.0;
@@ -167,7 +166,7 @@ Verdict Arbiter::judge(const Ray& ray, const Hit& embree, uint32_t model_prim,
       if (v.cls != MismatchClass::Degenerate && v.cls != MismatchClass::Grazing)
         v.cls = ill_conditioned ? MismatchClass::Grazing : MismatchClass::Unexplained;
       v.right = std::fabs(model_t - ex.t) <= std::fabs(embree.t - ex.t) ? RightSide::Model
-                                                                         : RightSide::Embree;
+                                                                        : RightSide::Embree;
       return v;
     }
     // Different distances: the side with the nearer hit claims the other missed it.

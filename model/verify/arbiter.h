@@ -44,8 +44,8 @@ struct ArbiterConfig {
 // The disputed triangle recomputed in double: translated to the origin and sheared like the
 // watertight test, with exact-enough edge functions.
 struct ExactHit {
-  bool inside = false;     // every normalized barycentric >= 0 and the plane is crossed
-  bool in_range = false;   // and tmin <= t <= tmax
+  bool inside = false;    // every normalized barycentric >= 0 and the plane is crossed
+  bool in_range = false;  // and tmin <= t <= tmax
   double t = 0.0;
   double min_barycentric = 0.0;  // signed, normalized: < 0 outside, ~0 on an edge
   double cosine = 0.0;           // |cos| between the ray and the plane normal

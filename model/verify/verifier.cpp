@@ -4,10 +4,9 @@
 
 namespace rtsim {
 
-Verifier::Verifier(const TriangleMesh& mesh, const TraversalUnit& model,
-                   const EmbreeScene& embree, ArbiterConfig config, size_t max_examples)
-    : model_(model), embree_(embree), arbiter_(mesh, embree, config),
-      max_examples_(max_examples) {}
+Verifier::Verifier(const TriangleMesh& mesh, const TraversalUnit& model, const EmbreeScene& embree,
+                   ArbiterConfig config, size_t max_examples)
+    : model_(model), embree_(embree), arbiter_(mesh, embree, config), max_examples_(max_examples) {}
 
 bool Verifier::check(const Ray& ray) {
   Hit model = model_.trace(state_, ray);

@@ -31,7 +31,7 @@ struct VerifyReport {
   std::array<uint64_t, kRayTypeCount> rays_by_type{}, mismatches_by_type{};
   TraversalCounters counters;  // summed over all rays
   uint64_t accesses = 0, access_bytes = 0;
-  std::vector<Mismatch> examples;  // the first max_examples mismatches
+  std::vector<Mismatch> examples;              // the first max_examples mismatches
   std::vector<Mismatch> unexplained_examples;  // the first max_examples unexplained ones
 
   uint64_t mismatches() const { return rays - agree; }

@@ -1,7 +1,8 @@
 // The double-precision arbiter: exact recomputation and the classification of disagreements.
+#include "model/verify/arbiter.h"
+
 #include <gtest/gtest.h>
 
-#include "model/verify/arbiter.h"
 #include "model_test_util.h"
 
 namespace rtsim {

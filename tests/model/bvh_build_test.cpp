@@ -32,8 +32,7 @@ TEST(BinnedSah, EveryTriangleInExactlyOneLeafWithinLeafSize) {
           continue;
         }
         EXPECT_LE(node.count, uint32_t(leaf)) << "bins " << bins;
-        for (uint32_t i = node.first; i < node.first + node.count; ++i)
-          seen[bvh.prim_order[i]]++;
+        for (uint32_t i = node.first; i < node.first + node.count; ++i) seen[bvh.prim_order[i]]++;
       }
       EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int s) { return s == 1; }));
       EXPECT_LT(bvh.depth, 40u) << "a binned SAH tree over 5000 triangles stays shallow";

@@ -1,14 +1,14 @@
 // The numerical hard cases (workloads/hardcases.h) through every node format and width: rays
 // that must hit do, and every disagreement with Embree is explained by the arbiter.
+#include "workloads/hardcases.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
-
 #include <glm/geometric.hpp>
 
 #include "model/verify/verifier.h"
 #include "model_test_util.h"
-#include "workloads/hardcases.h"
 #include "workloads/scene.h"
 
 namespace rtsim {
@@ -18,11 +18,10 @@ std::string describe_examples(const VerifyReport& r) {
   std::string out;
   char line[512];
   for (const Mismatch& m : r.unexplained_examples) {
-    std::snprintf(line, sizeof line,
-                  "  %s: org %a %a %a dir %a %a %a tmax %a embree %u %a model %u %a\n",
-                  mismatch_class_name(m.verdict.cls), m.ray.org.x, m.ray.org.y, m.ray.org.z,
-                  m.ray.dir.x, m.ray.dir.y, m.ray.dir.z, m.ray.tmax, m.embree.prim, m.embree.t,
-                  m.model_prim, m.model.t);
+    std::snprintf(
+        line, sizeof line, "  %s: org %a %a %a dir %a %a %a tmax %a embree %u %a model %u %a\n",
+        mismatch_class_name(m.verdict.cls), m.ray.org.x, m.ray.org.y, m.ray.org.z, m.ray.dir.x,
+        m.ray.dir.y, m.ray.dir.z, m.ray.tmax, m.embree.prim, m.embree.t, m.model_prim, m.model.t);
     out += line;
   }
   return out;

@@ -48,8 +48,8 @@ TEST(NodeLayout, EveryLayoutReachesEveryNodeOnce) {
 
 TEST(NodeLayout, DepthFirstPutsFirstChildNextToParent) {
   TriangleMesh mesh = test::random_soup(3000, 0.3f, 2);
-  BvhImage image =
-      build_bvh_image(mesh, with_layout(test::config(NodeFormat::Aabb32, 4), NodeLayout::DepthFirst));
+  BvhImage image = build_bvh_image(
+      mesh, with_layout(test::config(NodeFormat::Aabb32, 4), NodeLayout::DepthFirst));
   auto parent = parents(image);
   // In pre-order, node i + 1 is a child of node i unless node i has no inner children.
   int adjacent = 0, inner = 0;
@@ -104,8 +104,8 @@ TEST(Treelets, RespectTheBudgetAndAreConnected) {
   TriangleMesh mesh = test::random_soup(20000, 0.2f, 6);
   uint32_t previous_count = 0;
   for (uint32_t budget : {512u, 4096u, 65536u}) {
-    BvhImage image = build_bvh_image(mesh, with_layout(test::config(NodeFormat::Aabb32, 4),
-                                                       NodeLayout::Treelet, budget));
+    BvhImage image = build_bvh_image(
+        mesh, with_layout(test::config(NodeFormat::Aabb32, 4), NodeLayout::Treelet, budget));
     const TreeletStats& s = image.treelets;
     EXPECT_EQ(s.oversized, 0u) << "single nodes always fit";
     EXPECT_LE(s.max_bytes, budget);

@@ -1,10 +1,11 @@
 // Node and triangle formats: exact byte sizes, conservative cwbvh8 quantization, contiguity.
+#include "model/bvh/node_format.h"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
 #include <stdexcept>
 
-#include "model/bvh/node_format.h"
 #include "model/bvh/triangle_format.h"
 #include "model_test_util.h"
 

@@ -1,6 +1,5 @@
 // rtsim verify and rtsim bench as a user runs them: streams written with RayStreamWriter.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include "model/verify/ray_samples.h"
@@ -60,7 +59,9 @@ TEST_F(VerifyCli, PrintsSummaryCountersAndHexMismatches) {
                            "camera", "bvh8 aabb32 raw breadth-first"})
     EXPECT_NE(r.out.find(part), std::string::npos) << part << "\n" << r.out;
   // Mismatching rays, if any, are printed as hex floats.
-  if (r.out.find("first ") != std::string::npos) EXPECT_NE(r.out.find("0x"), std::string::npos);
+  if (r.out.find("first ") != std::string::npos) {
+    EXPECT_NE(r.out.find("0x"), std::string::npos);
+  }
 }
 
 TEST_F(VerifyCli, SceneFingerprintMismatchIsBadInput) {
