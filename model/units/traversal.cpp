@@ -76,8 +76,8 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
   float dist[kMaxWidth];
   int slot_of[kMaxWidth];
   int n = 0;
-  for (int slot = 0; slot < node.slots; ++slot) {
-    if (!(hits & (1u << slot))) continue;
+  for (uint32_t left = hits; left != 0; left &= left - 1) {
+    int slot = __builtin_ctz(left);
     int i = n++;
     while (i > 0 && dist[i - 1] > tnear[slot]) {
       dist[i] = dist[i - 1];
