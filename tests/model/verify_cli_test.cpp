@@ -2,8 +2,14 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+
 #include "model/verify/ray_samples.h"
 #include "run_rtsim.h"
+#include "traces/hash.h"
 #include "traces/stream.h"
 #include "workloads/hardcases.h"
 #include "workloads/scene.h"
@@ -78,6 +84,35 @@ TEST_F(VerifyCli, BadInputExitsTwo) {
   auto r = test::run_rtsim("verify " + stream_ + " --format cwbvh8 --leaf-size 4");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("max_leaf_size"), std::string::npos) << r.err;
+}
+
+// A one-ray stream whose ray direction is patched to NaN, with its chunk CRC fixed up: the
+// reader must reject the ray with a clear error before anything is traced.
+TEST(VerifyCliInput, NanRayInStreamIsRejected) {
+  Scene scene = load_scene("cornell");
+  StreamHeader header;
+  header.scene_source = scene.source;
+  header.scene_fingerprint = scene.fingerprint;
+  std::string path = temp_path("nan.rays");
+  RayStreamWriter writer(path, header);
+  writer.write(sample_camera_rays(scene.mesh, 1, 1)[0]);
+  writer.finish();
+  std::ifstream in(path, std::ios::binary);
+  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  uint32_t header_bytes;
+  std::memcpy(&header_bytes, bytes.data() + 12, 4);
+  float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(bytes.data() + header_bytes + 4 + 12, &nan, 4);  // count, then org, then dir.x
+  uint32_t crc = crc32(bytes.data() + header_bytes, 4 + kRayRecordBytes);
+  std::memcpy(bytes.data() + header_bytes + 4 + kRayRecordBytes, &crc, 4);
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  auto r = test::run_rtsim("verify " + path);
+  std::remove(path.c_str());
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("NaN"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("OK:"), std::string::npos) << "no ray was traced";
 }
 
 TEST(BenchCli, RunsOnABuiltinScene) {
