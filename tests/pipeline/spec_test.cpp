@@ -165,8 +165,10 @@ TEST(Spec, ResolutionSyntax) {
 }
 
 TEST(Spec, OverridesReplaceSpecValues) {
-  WorkloadSpec s = parse_spec("scene = \"cornell\"\nseed = 3\n", "w.toml");
+  WorkloadSpec s =
+      parse_spec("scene = \"cornell\"\nseed = 3\n[camera]\nposition = [1, 2, 3]\n", "w.toml");
   apply_overrides(s, make_overrides("320x200", 4, 77, "pica"));
+  EXPECT_FALSE(s.camera.position.has_value());  // a new scene gets an automatic camera
   EXPECT_EQ(s.width, 320u);
   EXPECT_EQ(s.height, 200u);
   EXPECT_EQ(s.frames, 4u);

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "workloads/pipeline/image_io.h"
+#include "workloads/pipeline/preview_filter.h"
 #include "workloads/pipeline/sampling.h"
 #include "workloads/pipeline/shading.h"
 
@@ -34,13 +35,22 @@ public:
     const GBuffer& g = f.gbuffer;
     reflection_ = records_by_cell(g, passes.reflection.resolution_scale, f.reflection.rays.size(),
                                   [&](size_t r) { return f.reflection.rays[r].sample; });
-    ao_ = records_by_cell(g, passes.ao.resolution_scale, f.ao.samples.size(),
-                          [&](size_t r) { return f.ao.samples[r]; });
     refraction_ = records_by_cell(g, passes.refraction.resolution_scale, f.refraction.rays.size(),
                                   [&](size_t r) { return f.refraction.rays[r].sample; });
     translucency_ =
         records_by_cell(g, passes.translucency.resolution_scale, f.translucency.samples.size(),
                         [&](size_t r) { return f.translucency.samples[r]; });
+    if (passes.shadow.enabled && !s_.lights.empty())
+      shadow_ = filter_on_surfaces(g, f.shadow.visibility, s_.lights.size(), 2);
+    // AO visibility of each sample's cell, then filtered.
+    std::vector<int64_t> ao_cells = records_by_cell(g, passes.ao.resolution_scale,
+                                                    f.ao.samples.size(),
+                                                    [&](size_t r) { return f.ao.samples[r]; });
+    ao_.assign(g.samples.size(), -1.0f);
+    for (size_t i = 0; i < g.samples.size(); ++i)
+      if (int64_t r = lookup(ao_cells, g.samples[i].pixel, passes.ao.resolution_scale); r >= 0)
+        ao_[i] = f.ao.visibility[size_t(r)];
+    ao_ = filter_on_surfaces(g, ao_, 1, 2);
   }
 
   glm::vec3 sample(size_t i) const {
@@ -48,49 +58,51 @@ public:
     if (!gs.surface.hit()) return s_.sky;
     const PassSpecs& passes = p_.spec().passes;
     const ShadingMaterial& m = s_.materials.materials[gs.material];
-    const float* vis = passes.shadow.enabled && !s_.lights.empty()
-                           ? &f_.shadow.visibility[i * s_.lights.size()]
-                           : nullptr;
-    float ao = 1.0f;
-    if (int64_t r = lookup(ao_, gs.pixel, passes.ao.resolution_scale); r >= 0)
-      ao = 0.25f + 0.75f * f_.ao.visibility[size_t(r)];
+    const float* vis = shadow_.empty() ? nullptr : &shadow_[i * s_.lights.size()];
+    float ao = ao_[i] >= 0.0f ? 0.25f + 0.75f * ao_[i] : 1.0f;
     glm::vec3 color = shade_surface(s_, gs.surface, vis) + indirect(gs.surface) * ao;
     // A scene with no light at all: a white ambient term, so the picture still shows it.
     if (unlit_)
       color += diffuse_albedo(m) * ao * std::max(0.2f, -glm::dot(gs.view, gs.surface.normal));
-    glm::vec3 v = -gs.view;
-    if (int64_t r = lookup(reflection_, gs.pixel, passes.reflection.resolution_scale);
-        r >= 0 && m.glossy(passes.reflection.max_roughness)) {
-      const ReflectionRecord& rec = f_.reflection.rays[size_t(r)];
-      glm::vec3 incoming = s_.sky;
-      if (rec.hit.hit()) {
-        const float* rvis = p_.spec().passes.reflected_shadow && !s_.lights.empty()
-                                ? &f_.reflected_shadow.visibility[size_t(r) * s_.lights.size()]
-                                : nullptr;
-        incoming = shade_surface(s_, rec.hit, rvis) + indirect(rec.hit);
-      }
-      float cos_v = std::max(0.0f, glm::dot(v, gs.surface.normal));
-      glm::vec3 f0 = glm::mix(glm::vec3(0.04f), m.base_color, m.metalness);
-      glm::vec3 fresnel = f0 + (glm::vec3(1.0f) - f0) * std::pow(1.0f - cos_v, 5.0f);
-      if (m.layers > 1)
-        fresnel = glm::max(fresnel, glm::vec3(schlick(dielectric_f0(m.ior), cos_v)));
-      color = color * (glm::vec3(1.0f) - fresnel) + fresnel * incoming;
-    }
-    if (int64_t r = lookup(refraction_, gs.pixel, passes.refraction.resolution_scale);
-        r >= 0 && m.transmission > 0.0f) {
-      const Surface& hit = f_.refraction.rays[size_t(r)].last_hit;
-      glm::vec3 through = hit.hit() ? shade_surface(s_, hit, nullptr) + indirect(hit) : s_.sky;
-      color = glm::mix(color, m.base_color * through, m.transmission);
-    }
     if (int64_t r = lookup(translucency_, gs.pixel, passes.translucency.resolution_scale);
         r >= 0 && m.translucency > 0.0f)
       color += m.base_color * m.translucency * f_.translucency.radiance[size_t(r)];
-    return color;
+    if (int64_t r = lookup(refraction_, gs.pixel, passes.refraction.resolution_scale);
+        r >= 0 && m.transmission > 0.0f) {
+      const Surface& hit = f_.refraction.rays[size_t(r)].last_hit;
+      // A chain that ends on glass (max_depth reached) shows the sky it would reach.
+      bool opaque = hit.hit() && s_.material_of(hit.prim).transmission <= 0.0f;
+      glm::vec3 through = opaque ? secondary(hit, nullptr) : s_.sky;
+      color = glm::mix(color, m.base_color * through, m.transmission);
+    }
+    int64_t r = lookup(reflection_, gs.pixel, passes.reflection.resolution_scale);
+    if (r < 0 || !m.glossy(passes.reflection.max_roughness)) return color;
+    const ReflectionRecord& rec = f_.reflection.rays[size_t(r)];
+    glm::vec3 incoming = s_.sky;
+    if (rec.hit.hit()) {
+      const float* rvis = passes.reflected_shadow && !s_.lights.empty()
+                              ? &f_.reflected_shadow.visibility[size_t(r) * s_.lights.size()]
+                              : nullptr;
+      incoming = secondary(rec.hit, rvis);
+    }
+    float cos_v = std::max(0.0f, glm::dot(-gs.view, gs.surface.normal));
+    glm::vec3 f0 = glm::mix(glm::vec3(dielectric_f0(m.ior)), m.base_color, m.metalness);
+    glm::vec3 fresnel = f0 + (glm::vec3(1.0f) - f0) * std::pow(1.0f - cos_v, 5.0f);
+    if (m.layers > 1) fresnel = glm::max(fresnel, glm::vec3(schlick(dielectric_f0(m.ior), cos_v)));
+    return color * (glm::vec3(1.0f) - fresnel) + fresnel * incoming;
   }
 
 private:
   int64_t lookup(const std::vector<int64_t>& cells, uint32_t pixel, float scale) const {
     return cells[GBuffer::cell_of(pixel, f_.gbuffer.width, f_.gbuffer.height, scale)];
+  }
+
+  // Light leaving a surface that a reflection or refraction ray found. Its own mirror or glass
+  // lobes are not traced further: they show the sky instead.
+  glm::vec3 secondary(const Surface& hit, const float* visibility) const {
+    const ShadingMaterial& m = s_.material_of(hit.prim);
+    return shade_surface(s_, hit, visibility) + indirect(hit) +
+           s_.sky * m.base_color * std::min(1.0f, m.metalness + m.transmission);
   }
 
   glm::vec3 indirect(const Surface& s) const {
@@ -102,7 +114,8 @@ private:
   const Pipeline& p_;
   const FrameResults& f_;
   const SceneContext& s_;
-  std::vector<int64_t> reflection_, ao_, refraction_, translucency_;
+  std::vector<int64_t> reflection_, refraction_, translucency_;
+  std::vector<float> shadow_, ao_;  // filtered, per G-buffer sample (x lights for shadow_)
   bool unlit_ = false;
 };
 

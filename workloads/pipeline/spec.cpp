@@ -33,8 +33,10 @@ void read_camera(SpecReader& r, CameraSpec& c) {
                                   "camera path: the camera moves through these keys, "
                                   "evenly spread over the frames")) {
     CameraKey key;
-    auto position = k->maybe_vec3("position", "scene units", "camera position at this key");
-    auto look_at = k->maybe_vec3("look_at", "scene units", "look-at point at this key");
+    auto position =
+        k->maybe_vec3("position", "scene units", "camera position at this key", "(required)");
+    auto look_at =
+        k->maybe_vec3("look_at", "scene units", "look-at point at this key", "(required)");
     if (k->documenting()) continue;
     if (!position || !look_at) k->fail("", "a camera key needs position and look_at");
     c.keys.push_back({*position, *look_at});
@@ -168,7 +170,7 @@ void read_passes(SpecReader& r, PassSpecs& p) {
 }
 
 void read_root(SpecReader& r, WorkloadSpec& s, const std::string& stem) {
-  s.name = r.text("name", stem, "workload name written into the stream (default: file name)");
+  s.name = r.text("name", stem, "workload name written into the stream; default: the file name");
   s.preset =
       r.text("preset", s.preset, "pass budgets the pass sections start from", preset_names());
   s.passes = preset_passes(s.preset);

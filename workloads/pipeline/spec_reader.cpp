@@ -82,8 +82,9 @@ double SpecReader::real(const std::string& key, double def, const char* unit, co
 }
 
 std::optional<double> SpecReader::maybe_real(const std::string& key, const char* unit,
-                                             const char* desc, double lo, double hi) {
-  const toml::node* node = take(key, "number", "(scene's)", unit, desc);
+                                             const char* desc, double lo, double hi,
+                                             const char* absent) {
+  const toml::node* node = take(key, "number", absent, unit, desc);
   if (!node) return std::nullopt;
   return check_real(key, *node, lo, hi);
 }
@@ -156,8 +157,8 @@ glm::vec3 SpecReader::vec3(const std::string& key, glm::vec3 def, const char* un
 }
 
 std::optional<glm::vec3> SpecReader::maybe_vec3(const std::string& key, const char* unit,
-                                                const char* desc) {
-  const toml::node* node = take(key, "[x, y, z]", "(scene's)", unit, desc);
+                                                const char* desc, const char* absent) {
+  const toml::node* node = take(key, "[x, y, z]", absent, unit, desc);
   if (!node) return std::nullopt;
   return to_vec3(key, *node);
 }

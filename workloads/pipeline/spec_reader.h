@@ -46,10 +46,12 @@ public:
   glm::vec3 vec3(const std::string& key, glm::vec3 def, const char* unit, const char* desc);
   std::optional<glm::vec3> vec3_or_auto(const std::string& key, const char* auto_meaning,
                                         const char* unit, const char* desc);
-  // Optional keys without a default (material rules): nullopt when absent.
+  // Optional keys without a default (material rules): nullopt when absent; `absent` says what
+  // that means in the documentation.
   std::optional<double> maybe_real(const std::string& key, const char* unit, const char* desc,
-                                   double lo, double hi);
-  std::optional<glm::vec3> maybe_vec3(const std::string& key, const char* unit, const char* desc);
+                                   double lo, double hi, const char* absent = "(scene's)");
+  std::optional<glm::vec3> maybe_vec3(const std::string& key, const char* unit, const char* desc,
+                                      const char* absent = "(scene's)");
 
   SpecReader& section(const std::string& key, const char* desc);
   std::vector<SpecReader*> sections(const std::string& key, const char* desc);

@@ -24,7 +24,13 @@ void apply_overrides(WorkloadSpec& spec, const SpecOverrides& o) {
   if (o.width) spec.width = *o.width;
   if (o.height) spec.height = *o.height;
   if (o.seed) spec.seed = *o.seed;
-  if (o.scene) spec.scene = *o.scene;
+  if (o.scene) {
+    // The spec's camera was placed for its own scene: fit one to the new scene instead.
+    spec.scene = *o.scene;
+    spec.camera.position.reset();
+    spec.camera.look_at.reset();
+    spec.camera.keys.clear();
+  }
 }
 
 SpecOverrides make_overrides(const std::string& resolution, uint32_t frames,

@@ -27,7 +27,8 @@ struct TraceResult {
   std::vector<std::string> images;  // pictures written
 };
 
-// Command-line overrides of a spec; unset fields keep the spec's value.
+// Command-line overrides of a spec; unset fields keep the spec's value. A new scene also makes
+// the camera automatic (the spec's lights and material rules stay).
 struct SpecOverrides {
   std::optional<uint32_t> frames, width, height;
   std::optional<uint64_t> seed;
