@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "traces/error.h"
-#include "workloads/pipeline/trace.h"
+#include "workloads/pipeline/workload.h"
 
 namespace rtsim::pipeline {
 namespace {

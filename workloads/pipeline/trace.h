@@ -4,12 +4,12 @@
 
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "workloads/pipeline/pipeline.h"
 #include "workloads/pipeline/spec.h"
+#include "workloads/pipeline/workload.h"
 
 namespace rtsim::pipeline {
 
@@ -26,21 +26,6 @@ struct TraceResult {
   RunSummary summary;
   std::vector<std::string> images;  // pictures written
 };
-
-// Command-line overrides of a spec; unset fields keep the spec's value. A new scene also makes
-// the camera automatic (the spec's lights and material rules stay).
-struct SpecOverrides {
-  std::optional<uint32_t> frames, width, height;
-  std::optional<uint64_t> seed;
-  std::optional<std::string> scene;
-};
-void apply_overrides(WorkloadSpec& spec, const SpecOverrides& overrides);
-// From command-line text: resolution "WxH" or "" (InputError if malformed), frames 0 = unset.
-SpecOverrides make_overrides(const std::string& resolution, uint32_t frames,
-                             std::optional<uint64_t> seed, const std::string& scene);
-
-// A spec file (.toml), or a scene (built-in name or file) with the default spec.
-WorkloadSpec load_workload(const std::string& workload);
 
 TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options);
 
