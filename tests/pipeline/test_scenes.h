@@ -11,6 +11,7 @@
 #include "workloads/pipeline/context.h"
 #include "workloads/pipeline/gbuffer.h"
 #include "workloads/pipeline/pass_camera.h"
+#include "workloads/pipeline/ray_sink.h"
 #include "workloads/pipeline/samples.h"
 #include "workloads/scene.h"
 
@@ -86,6 +87,21 @@ struct Fixture {
     return run_camera_pass(f, regular_samples(spec.width, spec.height, {0, 0}), nullptr);
   }
 };
+
+// Rays a pass shot, with the triangle each left from.
+struct RecordedRays {
+  std::vector<Ray> rays;
+  std::vector<uint32_t> origins;
+};
+
+inline RaySink recording_sink(const Fixture& fx, RecordedRays& out) {
+  RaySink sink(nullptr, fx.spec.width, fx.spec.height, false);
+  sink.observer = [&out](const Ray& r, PassId, uint32_t origin) {
+    out.rays.push_back(r);
+    out.origins.push_back(origin);
+  };
+  return sink;
+}
 
 inline LightSpec point_light(glm::vec3 position, float intensity = 10.0f) {
   LightSpec l;

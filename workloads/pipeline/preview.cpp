@@ -43,9 +43,9 @@ public:
     if (passes.shadow.enabled && !s_.lights.empty())
       shadow_ = filter_on_surfaces(g, f.shadow.visibility, s_.lights.size(), 2);
     // AO visibility of each sample's cell, then filtered.
-    std::vector<int64_t> ao_cells = records_by_cell(g, passes.ao.resolution_scale,
-                                                    f.ao.samples.size(),
-                                                    [&](size_t r) { return f.ao.samples[r]; });
+    std::vector<int64_t> ao_cells =
+        records_by_cell(g, passes.ao.resolution_scale, f.ao.samples.size(),
+                        [&](size_t r) { return f.ao.samples[r]; });
     ao_.assign(g.samples.size(), -1.0f);
     for (size_t i = 0; i < g.samples.size(); ++i)
       if (int64_t r = lookup(ao_cells, g.samples[i].pixel, passes.ao.resolution_scale); r >= 0)

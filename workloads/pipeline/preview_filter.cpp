@@ -1,7 +1,6 @@
 #include "workloads/pipeline/preview_filter.h"
 
 #include <cmath>
-
 #include <glm/geometric.hpp>
 
 namespace rtsim::pipeline {
@@ -38,8 +37,7 @@ std::vector<float> filter_on_surfaces(const GBuffer& g, const std::vector<float>
     add(i);
     int64_t x0 = s.pixel % g.width, y0 = s.pixel / g.width;
     for (int64_t y = std::max<int64_t>(0, y0 - radius); y <= std::min(h - 1, y0 + radius); ++y)
-      for (int64_t x = std::max<int64_t>(0, x0 - radius); x <= std::min(w - 1, x0 + radius);
-           ++x) {
+      for (int64_t x = std::max<int64_t>(0, x0 - radius); x <= std::min(w - 1, x0 + radius); ++x) {
         int64_t j = first[size_t(y * w + x)];
         if (j >= 0 && size_t(j) != i && same_surface(s, g.samples[size_t(j)])) add(size_t(j));
       }
