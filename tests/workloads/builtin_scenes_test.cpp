@@ -35,7 +35,7 @@ TEST(BuiltinScenes, NamesAreRecognizedWithOrWithoutPrefix) {
   for (const char* spec : {"cornell.obj", "scenes/pica.gltf", "/tmp/grid.ply"})
     EXPECT_FALSE(is_builtin_scene(spec)) << spec;
   EXPECT_EQ(builtin_scene_names(),
-            (std::vector<std::string>{"cornell", "pica", "grid:N", "foliage:N"}));
+            (std::vector<std::string>{"cornell", "pica", "grid:N", "foliage:N", "hardcases"}));
   EXPECT_EQ(load_scene("cornell").fingerprint, load_scene("builtin:cornell").fingerprint);
 }
 
