@@ -27,7 +27,10 @@ std::vector<int64_t> records_by_cell(const GBuffer& g, float scale, size_t count
 
 class FrameShader {
 public:
-  FrameShader(const Pipeline& p, const FrameResults& f) : p_(p), f_(f), s_(p.scene()) {
+  FrameShader(const Pipeline& p, const FrameResults& f)
+      : p_(p), f_(f), s_(p.scene()), surfels_(p.surfels()), coarse_(3.0f * surfels_.radius()) {
+    surfels_.smooth_irradiance(3.0f);
+    for (const Surfel& s : surfels_.surfels()) coarse_.add(s);
     bool emissive = false;
     for (const ShadingMaterial& m : s_.materials.materials) emissive |= m.emissive();
     unlit_ = s_.lights.empty() && !emissive && s_.sky == glm::vec3(0.0f);
@@ -51,6 +54,14 @@ public:
       if (int64_t r = lookup(ao_cells, g.samples[i].pixel, passes.ao.resolution_scale); r >= 0)
         ao_[i] = f.ao.visibility[size_t(r)];
     ao_ = filter_on_surfaces(g, ao_, 1, 2);
+    // Surfel GI of each sample, blurred in screen space as the talk applies surfels.
+    gi_.assign(g.samples.size() * 3, -1.0f);
+    for (size_t i = 0; i < g.samples.size(); ++i) {
+      glm::vec3 e;
+      if (g.samples[i].surface.hit() && irradiance(g.samples[i].surface, e))
+        for (int k = 0; k < 3; ++k) gi_[i * 3 + size_t(k)] = e[k];
+    }
+    gi_ = filter_on_surfaces(g, gi_, 3, 12, 3);
   }
 
   glm::vec3 sample(size_t i) const {
@@ -60,7 +71,9 @@ public:
     const ShadingMaterial& m = s_.materials.materials[gs.material];
     const float* vis = shadow_.empty() ? nullptr : &shadow_[i * s_.lights.size()];
     float ao = ao_[i] >= 0.0f ? 0.25f + 0.75f * ao_[i] : 1.0f;
-    glm::vec3 color = shade_surface(s_, gs.surface, vis) + indirect(gs.surface) * ao;
+    glm::vec3 gi = gi_[i * 3] >= 0.0f ? glm::vec3(gi_[i * 3], gi_[i * 3 + 1], gi_[i * 3 + 2])
+                                      : glm::vec3(0.0f);
+    glm::vec3 color = shade_surface(s_, gs.surface, vis) + diffuse_albedo(m) / kPi * gi * ao;
     // A scene with no light at all: a white ambient term, so the picture still shows it.
     if (unlit_)
       color += diffuse_albedo(m) * ao * std::max(0.2f, -glm::dot(gs.view, gs.surface.normal));
@@ -105,17 +118,26 @@ private:
            s_.sky * m.base_color * std::min(1.0f, m.metalness + m.transmission);
   }
 
+  bool irradiance(const Surface& s, glm::vec3& out) const {
+    // Where one frame left a hole between surfels (later frames would fill it), look farther.
+    return surfels_.irradiance(s.position, s.normal, out) ||
+           coarse_.irradiance(s.position, s.normal, out);
+  }
+
   glm::vec3 indirect(const Surface& s) const {
-    glm::vec3 irradiance;
-    if (!p_.surfels().irradiance(s.position, s.normal, irradiance)) return glm::vec3(0.0f);
-    return diffuse_albedo(s_.material_of(s.prim)) / kPi * irradiance;
+    glm::vec3 e;
+    if (!irradiance(s, e)) return glm::vec3(0.0f);
+    return diffuse_albedo(s_.material_of(s.prim)) / kPi * e;
   }
 
   const Pipeline& p_;
   const FrameResults& f_;
   const SceneContext& s_;
   std::vector<int64_t> reflection_, refraction_, translucency_;
-  std::vector<float> shadow_, ao_;  // filtered, per G-buffer sample (x lights for shadow_)
+  // Filtered, per G-buffer sample (x lights for shadow_, x 3 for gi_).
+  std::vector<float> shadow_, ao_, gi_;
+  SurfelCache surfels_;  // with smoothed irradiance
+  SurfelCache coarse_;   // the same surfels, looked up three times as far
   bool unlit_ = false;
 };
 
@@ -212,12 +234,13 @@ std::vector<std::string> write_density_images(const std::string& preview_path, c
   std::vector<uint32_t> all(size_t(width) * height, 0);
   auto write = [&](const std::vector<uint32_t>& counts, const std::string& name) {
     uint32_t most = *std::max_element(counts.begin(), counts.end());
+    // One colour per count, log scale.
+    std::vector<glm::vec3> colour(size_t(most) + 1);
+    for (uint32_t c = 0; c <= most; ++c)
+      colour[c] = heat(most ? float(std::log1p(double(c)) / std::log1p(double(most))) : 0.0f);
     std::vector<uint8_t> rgb(counts.size() * 3);
-    for (size_t p = 0; p < counts.size(); ++p) {
-      float t = most ? float(std::log1p(double(counts[p])) / std::log1p(double(most))) : 0.0f;
-      glm::vec3 c = heat(t);
-      for (int k = 0; k < 3; ++k) rgb[p * 3 + size_t(k)] = to_byte(c[k]);
-    }
+    for (size_t p = 0; p < counts.size(); ++p)
+      for (int k = 0; k < 3; ++k) rgb[p * 3 + size_t(k)] = to_byte(colour[counts[p]][k]);
     std::string path = density_image_path(preview_path, name);
     write_png(path, width, height, rgb);
     written.push_back(path);

@@ -15,7 +15,7 @@ bool same_surface(const GSample& a, const GSample& b) {
 }  // namespace
 
 std::vector<float> filter_on_surfaces(const GBuffer& g, const std::vector<float>& values,
-                                      size_t channels, int radius) {
+                                      size_t channels, int radius, int stride) {
   std::vector<float> out = values;
   std::vector<int64_t> first = g.first_sample_of_pixel();
   auto w = int64_t(g.width), h = int64_t(g.height);
@@ -36,8 +36,10 @@ std::vector<float> filter_on_surfaces(const GBuffer& g, const std::vector<float>
     };
     add(i);
     int64_t x0 = s.pixel % g.width, y0 = s.pixel / g.width;
-    for (int64_t y = std::max<int64_t>(0, y0 - radius); y <= std::min(h - 1, y0 + radius); ++y)
-      for (int64_t x = std::max<int64_t>(0, x0 - radius); x <= std::min(w - 1, x0 + radius); ++x) {
+    for (int64_t dy = -radius; dy <= radius; dy += stride)
+      for (int64_t dx = -radius; dx <= radius; dx += stride) {
+        int64_t x = x0 + dx, y = y0 + dy;
+        if (x < 0 || y < 0 || x >= w || y >= h) continue;
         int64_t j = first[size_t(y * w + x)];
         if (j >= 0 && size_t(j) != i && same_surface(s, g.samples[size_t(j)])) add(size_t(j));
       }

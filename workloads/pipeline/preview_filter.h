@@ -12,9 +12,9 @@ namespace rtsim::pipeline {
 
 // values holds `channels` numbers per G-buffer sample; negative means "none" and is left alone.
 // Each other value becomes the mean of the values of the same channel at the first samples of
-// the pixels within `radius`, among those on the same surface (normals within ~25 degrees,
-// depths within 5%).
+// every stride-th pixel within `radius`, among those on the same surface (normals within ~25
+// degrees, depths within 5%).
 std::vector<float> filter_on_surfaces(const GBuffer& g, const std::vector<float>& values,
-                                      size_t channels, int radius);
+                                      size_t channels, int radius, int stride = 1);
 
 }  // namespace rtsim::pipeline

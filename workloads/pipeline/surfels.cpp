@@ -81,6 +81,29 @@ bool SurfelCache::irradiance(const glm::vec3& p, const glm::vec3& n, glm::vec3& 
   return true;
 }
 
+void SurfelCache::smooth_irradiance(float reach) {
+  std::vector<glm::vec3> mean(surfels_.size(), glm::vec3(0.0f));
+  std::vector<float> weight(surfels_.size(), 0.0f);
+  float inv_two_sigma2 = 2.0f / (reach * reach);
+  for (size_t i = 0; i < surfels_.size(); ++i) {
+    const Surfel& s = surfels_[i];
+    for_each_near(s.position, reach * radius_, [&](const Surfel& t) {
+      if (t.irradiance_samples == 0) return;
+      float dist = distance(t, s.position);
+      float cos = glm::dot(s.normal, t.normal);
+      if (dist >= reach || cos <= 0.0f) return;
+      float w = std::exp(-dist * dist * inv_two_sigma2) * cos * cos * float(t.irradiance_samples);
+      mean[i] += w * t.irradiance_sum / float(t.irradiance_samples);
+      weight[i] += w;
+    });
+  }
+  for (size_t i = 0; i < surfels_.size(); ++i) {
+    if (weight[i] <= 0.0f) continue;
+    surfels_[i].irradiance_sum = mean[i] / weight[i];
+    surfels_[i].irradiance_samples = 1;
+  }
+}
+
 uint32_t spawn_surfels(const FrameContext& ctx, const GBuffer& g, SurfelCache& cache) {
   const GiSpec& spec = ctx.passes.gi;
   std::vector<int64_t> first = g.first_sample_of_pixel();

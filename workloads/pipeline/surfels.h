@@ -44,6 +44,10 @@ public:
   // distance and the squared cosine; false if none is near. Smoother than coverage, for
   // pictures.
   bool irradiance(const glm::vec3& p, const glm::vec3& n, glm::vec3& out) const;
+  // Replaces each surfel's irradiance by the weighted mean over the surfels within `reach`
+  // radii (Gaussian of sigma reach / 2, squared cosine): a denoise for pictures, where a
+  // surfel has had only a few rays.
+  void smooth_irradiance(float reach);
 
 private:
   template <typename F>
