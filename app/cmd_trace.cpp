@@ -55,7 +55,7 @@ void add_trace_command(CLI::App& app, int& exit_code) {
       "trace", "Generate the ray stream of a workload (spec file or built-in scene)");
   auto a = std::make_shared<TraceArgs>();
   cmd->add_option("workload", a->workload,
-                  "Workload spec (.toml), or a built-in scene name for the default spec");
+                  "Workload spec (.toml), or a scene (built-in or file) with the default spec");
   cmd->add_option("-o,--output", a->output, "Ray stream to write (.rays)");
   cmd->add_option("--frames", a->frames, "Frames to trace (overrides the spec)")
       ->check(CLI::PositiveNumber);
