@@ -11,6 +11,7 @@ namespace rtsim::app {
 
 void add_scene_info_command(CLI::App& app, int& exit_code);
 void add_trace_info_command(CLI::App& app, int& exit_code);
+void add_hardcases_command(CLI::App& app, int& exit_code);
 void add_trace_command(CLI::App& app, int& exit_code);
 void add_bench_trace_command(CLI::App& app, int& exit_code);
 

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   rtsim::app::add_scene_info_command(app, exit_code);
   rtsim::app::add_trace_info_command(app, exit_code);
+  rtsim::app::add_hardcases_command(app, exit_code);
   rtsim::app::add_trace_command(app, exit_code);
   rtsim::app::add_bench_trace_command(app, exit_code);
   rtsim::app::add_verify_command(app, exit_code);
