@@ -1,0 +1,193 @@
+#include "model/fidelity/cache_level.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "model/mem/cache.h"
+#include "model/mem/dram.h"
+#include "model/sched/hardware_stack.h"
+#include "model/units/traversal.h"
+#include "traces/stream.h"
+
+namespace rtsim {
+namespace {
+
+// Every read happens this many cycles after the previous one, so each finds the caches idle:
+// this level counts hits and misses, it does not time them.
+constexpr Cycle kReadGap = 1 << 16;
+
+struct Lane {
+  Ray ray;
+  TraversalState state;
+  bool live = false;
+  uint32_t spilled = 0;  // stack entries held in memory, below the on-chip ones
+  double latency = 0;
+  CostTotals cost;
+};
+
+struct Warp {
+  std::vector<Lane> lanes;
+  uint32_t live = 0;
+  double slowest = 0;  // latency of its slowest ray so far
+};
+
+class CacheWalk {
+public:
+  CacheWalk(const HwConfig& config, const BvhImage& image)
+      : c_(config), traversal_(image), dram_(config.dram), l2_(config.l2, &dram_) {
+    for (uint32_t u = 0; u < c_.rt_units; ++u) {
+      l1_.push_back(std::make_unique<Cache>(c_.l1, &l2_));
+      units_.emplace_back(c_.rt.warps);
+      for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
+    }
+    work_.resize(c_.rt_units);
+  }
+
+  void run(RayStreamReader& reader) {
+    for (uint32_t u = 0; u < c_.rt_units; ++u)
+      for (Warp& w : units_[u]) fill(w, reader);
+    while (live_ > 0) {
+      for (uint32_t u = 0; u < c_.rt_units; ++u)
+        for (uint32_t w = 0; w < c_.rt.warps; ++w) {
+          Warp& warp = units_[u][w];
+          for (uint32_t l = 0; l < c_.rt.warp_size; ++l)
+            if (warp.lanes[l].live) step(u, warp, warp.lanes[l], w * c_.rt.warp_size + l);
+          if (warp.live == 0 && warp.slowest > 0) {
+            work_[u].warp_cycles += warp.slowest;
+            warp.slowest = 0;
+            fill(warp, reader);
+          }
+        }
+    }
+  }
+
+  const std::array<CostTotals, kRayTypeCount>& by_type() const { return by_type_; }
+  const std::vector<UnitWork>& work() const { return work_; }
+  uint64_t dram_bytes() const { return dram_bytes_; }
+
+private:
+  void fill(Warp& warp, RayStreamReader& reader) {
+    for (Lane& lane : warp.lanes) {
+      if (!reader.next(lane.ray)) break;
+      traversal_.begin(lane.state, lane.ray);
+      lane.live = true;
+      lane.spilled = 0;
+      lane.latency = c_.rt.setup_latency;
+      lane.cost = {};
+      warp.live++;
+      live_++;
+    }
+  }
+
+  // One read through the unit's L1; charges the lane and returns the latency of the data.
+  double read(uint32_t unit, Lane& lane, uint64_t addr, uint32_t bytes) {
+    Cache& l1 = *l1_[unit];
+    CacheStats a1 = l1.stats(), a2 = l2_.stats();
+    now_ += kReadGap;
+    l1.read(addr, bytes, now_);
+    const CacheStats& b1 = l1.stats();
+    const CacheStats& b2 = l2_.stats();
+    lane.cost.l1_accesses += b1.accesses - a1.accesses;
+    lane.cost.l1_hits += b1.hits - a1.hits;
+    lane.cost.l2_accesses += b2.accesses - a2.accesses;
+    lane.cost.l2_hits += b2.hits - a2.hits;
+    uint64_t below = b2.bytes_below - a2.bytes_below;
+    lane.cost.dram_bytes += below;
+    dram_bytes_ += below;
+    double latency = c_.l1.hit_latency;
+    if (b1.misses > a1.misses) latency += c_.l2.hit_latency;
+    if (b2.misses > a2.misses)
+      latency += c_.dram.latency + double(c_.l2.line_bytes) / c_.dram.bytes_per_cycle;
+    return latency;
+  }
+
+  void step(uint32_t unit, Warp& warp, Lane& lane, uint32_t slot) {
+    TraversalState& s = lane.state;
+    const StackConfig& stack = c_.rt.stack;
+    uint64_t spill_region = HardwareStack::kSpillBase +
+                            uint64_t(unit * c_.rt.warps * c_.rt.warp_size + slot) *
+                                HardwareStack::kRegionBytes;
+    if (s.stack.size() == lane.spilled && lane.spilled > 0) {
+      lane.spilled--;
+      lane.latency += read(unit, lane, spill_region + lane.spilled * stack.entry_bytes,
+                           stack.entry_bytes);
+    }
+    s.accesses.clear();
+    StepResult r = traversal_.step(s);
+    if (r.kind == StepKind::Done) {
+      retire(warp, lane);
+      return;
+    }
+    UnitWork& w = work_[unit];
+    if (r.access_count > 0) {
+      const MemoryAccess& first = s.accesses[r.first_access];
+      const MemoryAccess& last = s.accesses[r.first_access + r.access_count - 1];
+      lane.latency += read(unit, lane, first.address,
+                           uint32_t(last.address + last.bytes - first.address));
+    }
+    bool node = r.kind == StepKind::Node;
+    const TestUnitConfig& tests = node ? c_.rt.box : c_.rt.triangle;
+    uint64_t issues = (std::max<uint32_t>(r.tests, 1) + tests.issue_width - 1) / tests.issue_width;
+    (node ? w.box_issues : w.triangle_issues) += issues;
+    lane.latency += tests.latency + double(issues - 1) + c_.rt.control_latency;
+    w.steps++;
+    uint32_t size = uint32_t(s.stack.size());
+    lane.spilled = std::min(lane.spilled, size);
+    if (size - lane.spilled > stack.entries) {
+      uint32_t spill = size - lane.spilled - stack.entries;
+      lane.spilled += spill;
+      lane.cost.dram_bytes += uint64_t(spill) * stack.entry_bytes;
+      dram_bytes_ += uint64_t(spill) * stack.entry_bytes;
+    }
+  }
+
+  void retire(Warp& warp, Lane& lane) {
+    lane.live = false;
+    warp.live--;
+    live_--;
+    warp.slowest = std::max(warp.slowest, lane.latency);
+    lane.cost.rays = 1;
+    lane.cost.nodes = lane.state.counters.trav_nodes;
+    lane.cost.triangles = lane.state.counters.trav_prims;
+    lane.cost.latency = lane.latency;
+    by_type_[int(lane.ray.type) % kRayTypeCount] += lane.cost;
+  }
+
+  HwConfig c_;
+  TraversalUnit traversal_;
+  Dram dram_;
+  Cache l2_;
+  std::vector<std::unique_ptr<Cache>> l1_;
+  std::vector<std::vector<Warp>> units_;
+  std::vector<UnitWork> work_;
+  std::array<CostTotals, kRayTypeCount> by_type_{};
+  uint64_t live_ = 0, dram_bytes_ = 0;
+  Cycle now_ = 0;
+};
+
+}  // namespace
+
+FidelityResult run_cache_level(const HwConfig& config, const BvhImage& image,
+                               const std::string& stream, AnalyticTime* bounds) {
+  HostTimer timer;
+  RayStreamReader reader(stream);
+  CacheWalk walk(config, image);
+  walk.run(reader);
+  FidelityResult result;
+  result.level = FidelityLevel::CacheLevel;
+  result.clock_ghz = config.clock_ghz;
+  set_exact_estimates(result, walk.by_type(), true, true);
+  result.simulated_rays = result.rays;
+  double latency = 0;
+  for (const CostTotals& t : walk.by_type()) latency += t.latency;
+  AnalyticInputs inputs{walk.work(), result.rays, walk.dram_bytes(),
+                        latency / double(std::max<uint64_t>(result.rays, 1))};
+  AnalyticTime time = analytic_time(config, inputs);
+  result.cycles = Estimate::exact(time.cycles);
+  result.time_model = "roofline, bound by " + time.bound;
+  if (bounds) *bounds = time;
+  timer.stop(result);
+  return result;
+}
+
+}  // namespace rtsim

@@ -1,0 +1,28 @@
+// Fidelity level 2, cache-level: the rays of the stream run through the traversal unit with
+// the real cache and DRAM models of model/mem (same sizes, lines, ways and replacement as the
+// config), but without the SystemC timing model. Rays are dealt to the RT units a warp at a
+// time; each unit holds warps x warp_size rays and every ray in flight takes one step per
+// round, so the caches see the interleaving of many rays in flight as the hardware does. A
+// warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
+// per-ray traversal here (their scheduling changes the order, which only the cycle level has).
+// Stack spills and refills follow the on-chip depth roughly (entries beyond rt.stack.entries
+// spill; an empty on-chip stack with spilled entries refills one entry through the L1).
+// Each ray's latency is the sum over its steps of the memory latency of its fetch (L1 hit, L2
+// hit, or DRAM), the test unit latency and issues, and the control latency; the cycles come
+// from the roofline of analytic_time.h.
+#pragma once
+
+#include <string>
+
+#include "model/bvh/bvh_image.h"
+#include "model/config/hw_config.h"
+#include "model/fidelity/analytic_time.h"
+#include "model/fidelity/fidelity_result.h"
+
+namespace rtsim {
+
+// bounds (optional) receives every resource's lower bound.
+FidelityResult run_cache_level(const HwConfig& config, const BvhImage& image,
+                               const std::string& stream, AnalyticTime* bounds = nullptr);
+
+}  // namespace rtsim

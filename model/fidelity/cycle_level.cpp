@@ -1,0 +1,48 @@
+#include "model/fidelity/cycle_level.h"
+
+#include <cstdlib>
+
+#include "model/sched/ray_source.h"
+#include "traces/stream.h"
+
+namespace rtsim {
+
+FidelityResult cycle_level_result(const RtSimulator& sim) {
+  std::array<CostTotals, kRayTypeCount> by_type{};
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    const RayTypeStats& s = sim.collected().by_type()[t];
+    CostTotals& c = by_type[t];
+    c.rays = s.rays;
+    c.nodes = s.counters.trav_nodes;
+    c.triangles = s.counters.trav_prims;
+    c.l1_accesses = s.l1_accesses;
+    c.l1_hits = s.l1_hits;
+    c.l2_accesses = s.l2_accesses;
+    c.l2_hits = s.l2_hits;
+    c.dram_bytes = s.dram_bytes;
+    c.latency = s.latency.mean() * double(s.latency.count());
+  }
+  FidelityResult result;
+  result.level = FidelityLevel::Cycle;
+  result.clock_ghz = sim.config().clock_ghz;
+  set_exact_estimates(result, by_type, true, true);
+  result.simulated_rays = result.rays;
+  result.cycles = Estimate::exact(double(sim.cycles()));
+  result.time_model = "cycle-approximate model";
+  return result;
+}
+
+FidelityResult run_cycle_level(const HwConfig& config, const BvhImage& image,
+                               const std::string& stream) {
+  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  HostTimer timer;
+  RayStreamReader reader(stream);
+  StreamRaySource source(reader);
+  RtSimulator sim(config, image, source);
+  sim.run();
+  FidelityResult result = cycle_level_result(sim);
+  timer.stop(result);
+  return result;
+}
+
+}  // namespace rtsim

@@ -1,0 +1,163 @@
+#include "model/fidelity/fidelity_result.h"
+
+#include <time.h>
+
+namespace rtsim {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kLevelNames[] = {"functional", "cache", "cycle", "sampled"};
+
+double clock_seconds(clockid_t clock) {
+  timespec t{};
+  clock_gettime(clock, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double ratio(double num, double den) { return den > 0 ? num / den : 0.0; }
+
+Json estimate_json(const Estimate& e) {
+  if (!e.known) return Json();
+  return Json{{"value", e.value}, {"ci95", e.ci95}};
+}
+
+Estimate estimate_from(const nlohmann::json& j) {
+  if (j.is_null()) return {};
+  return {true, j.at("value").get<double>(), j.at("ci95").get<double>()};
+}
+
+}  // namespace
+
+HostTimer::HostTimer()
+    : wall_(clock_seconds(CLOCK_MONOTONIC)), cpu_(clock_seconds(CLOCK_PROCESS_CPUTIME_ID)) {}
+
+void HostTimer::stop(FidelityResult& result) const {
+  result.host_seconds = clock_seconds(CLOCK_MONOTONIC) - wall_;
+  result.cpu_seconds = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu_;
+}
+
+const char* fidelity_level_name(FidelityLevel level) { return kLevelNames[int(level)]; }
+
+std::optional<FidelityLevel> fidelity_level_from_name(const std::string& name) {
+  for (int i = 0; i < 4; ++i)
+    if (name == kLevelNames[i]) return FidelityLevel(i);
+  return std::nullopt;
+}
+
+CostTotals& CostTotals::operator+=(const CostTotals& o) {
+  rays += o.rays;
+  nodes += o.nodes;
+  triangles += o.triangles;
+  l1_accesses += o.l1_accesses;
+  l1_hits += o.l1_hits;
+  l2_accesses += o.l2_accesses;
+  l2_hits += o.l2_hits;
+  dram_bytes += o.dram_bytes;
+  latency += o.latency;
+  return *this;
+}
+
+double FidelityResult::mrays_per_second() const {
+  return cycles.known ? ratio(double(rays), cycles.value) * clock_ghz * 1e3 : 0.0;
+}
+
+void set_exact_estimates(FidelityResult& result,
+                         const std::array<CostTotals, kRayTypeCount>& by_type, bool cached,
+                         bool timed) {
+  CostTotals all;
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    const CostTotals& c = by_type[t];
+    all += c;
+    TypeEstimate& e = result.types[t];
+    e.rays = c.rays;
+    if (c.rays == 0) continue;
+    double n = double(c.rays);
+    e.nodes_per_ray = Estimate::exact(c.nodes / n);
+    e.triangles_per_ray = Estimate::exact(c.triangles / n);
+    if (cached) {
+      e.l1_hit_rate = Estimate::exact(ratio(c.l1_hits, c.l1_accesses));
+      e.l2_hit_rate = Estimate::exact(ratio(c.l2_hits, c.l2_accesses));
+      e.dram_bytes_per_ray = Estimate::exact(c.dram_bytes / n);
+    }
+    if (timed) e.latency_mean = Estimate::exact(c.latency / n);
+  }
+  result.rays = result.measured_rays = all.rays;
+  double n = double(std::max<uint64_t>(all.rays, 1));
+  result.nodes_per_ray = Estimate::exact(all.nodes / n);
+  result.triangles_per_ray = Estimate::exact(all.triangles / n);
+  if (cached) {
+    result.l1_hit_rate = Estimate::exact(ratio(all.l1_hits, all.l1_accesses));
+    result.l2_hit_rate = Estimate::exact(ratio(all.l2_hits, all.l2_accesses));
+    result.dram_bytes = Estimate::exact(double(all.dram_bytes));
+  }
+}
+
+Json FidelityResult::to_json() const {
+  Json types_json = Json::object();
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    const TypeEstimate& e = types[t];
+    if (e.rays == 0) continue;
+    types_json[ray_type_name(RayType(t))] = {
+        {"rays", e.rays},
+        {"nodes_per_ray", estimate_json(e.nodes_per_ray)},
+        {"triangles_per_ray", estimate_json(e.triangles_per_ray)},
+        {"l1_hit_rate", estimate_json(e.l1_hit_rate)},
+        {"l2_hit_rate", estimate_json(e.l2_hit_rate)},
+        {"dram_bytes_per_ray", estimate_json(e.dram_bytes_per_ray)},
+        {"latency_mean", estimate_json(e.latency_mean)}};
+  }
+  return {{"level", fidelity_level_name(level)},
+          {"sample_rate", sample_rate},
+          {"rays", rays},
+          {"simulated_rays", simulated_rays},
+          {"measured_rays", measured_rays},
+          {"strata", strata},
+          {"clock_ghz", clock_ghz},
+          {"time_model", time_model},
+          {"cycles", estimate_json(cycles)},
+          {"mrays_per_second", cycles.known ? Json(mrays_per_second()) : Json()},
+          {"dram_bytes", estimate_json(dram_bytes)},
+          {"l1_hit_rate", estimate_json(l1_hit_rate)},
+          {"l2_hit_rate", estimate_json(l2_hit_rate)},
+          {"nodes_per_ray", estimate_json(nodes_per_ray)},
+          {"triangles_per_ray", estimate_json(triangles_per_ray)},
+          {"ray_types", types_json},
+          {"host_seconds", host_seconds},
+          {"cpu_seconds", cpu_seconds}};
+}
+
+FidelityResult FidelityResult::from_json(const nlohmann::json& doc) {
+  FidelityResult r;
+  r.level = fidelity_level_from_name(doc.at("level").get<std::string>()).value();
+  r.sample_rate = doc.at("sample_rate").get<uint32_t>();
+  r.rays = doc.at("rays").get<uint64_t>();
+  r.simulated_rays = doc.at("simulated_rays").get<uint64_t>();
+  r.measured_rays = doc.at("measured_rays").get<uint64_t>();
+  r.strata = doc.at("strata").get<uint32_t>();
+  r.clock_ghz = doc.at("clock_ghz").get<double>();
+  r.time_model = doc.at("time_model").get<std::string>();
+  r.cycles = estimate_from(doc.at("cycles"));
+  r.dram_bytes = estimate_from(doc.at("dram_bytes"));
+  r.l1_hit_rate = estimate_from(doc.at("l1_hit_rate"));
+  r.l2_hit_rate = estimate_from(doc.at("l2_hit_rate"));
+  r.nodes_per_ray = estimate_from(doc.at("nodes_per_ray"));
+  r.triangles_per_ray = estimate_from(doc.at("triangles_per_ray"));
+  for (const auto& [name, t] : doc.at("ray_types").items()) {
+    auto type = ray_type_from_name(name);
+    if (!type) continue;
+    TypeEstimate& e = r.types[int(*type)];
+    e.rays = t.at("rays").get<uint64_t>();
+    e.nodes_per_ray = estimate_from(t.at("nodes_per_ray"));
+    e.triangles_per_ray = estimate_from(t.at("triangles_per_ray"));
+    e.l1_hit_rate = estimate_from(t.at("l1_hit_rate"));
+    e.l2_hit_rate = estimate_from(t.at("l2_hit_rate"));
+    e.dram_bytes_per_ray = estimate_from(t.at("dram_bytes_per_ray"));
+    e.latency_mean = estimate_from(t.at("latency_mean"));
+  }
+  r.host_seconds = doc.at("host_seconds").get<double>();
+  r.cpu_seconds = doc.at("cpu_seconds").get<double>();
+  return r;
+}
+
+}  // namespace rtsim

@@ -1,0 +1,29 @@
+#include "model/fidelity/level_runner.h"
+
+#include "model/fidelity/cache_level.h"
+#include "model/fidelity/cycle_level.h"
+#include "model/fidelity/functional_level.h"
+#include "model/fidelity/sampled_level.h"
+#include "model/sc/fork_run.h"
+
+namespace rtsim {
+
+FidelityResult run_level(const LevelRequest& request, const HwConfig& config,
+                         const BvhImage& image, const std::string& stream) {
+  switch (request.level) {
+    case FidelityLevel::Functional: return run_functional_level(image, stream);
+    case FidelityLevel::CacheLevel: return run_cache_level(config, image, stream);
+    case FidelityLevel::Cycle: return run_cycle_level(config, image, stream);
+    case FidelityLevel::Sampled: break;
+  }
+  return run_sampled_level(config, image, stream, request.sampling);
+}
+
+FidelityResult run_level_in_child(const LevelRequest& request, const HwConfig& config,
+                                  const BvhImage& image, const std::string& stream) {
+  std::string text = run_in_child(
+      [&] { return run_level(request, config, image, stream).to_json().dump(); });
+  return FidelityResult::from_json(nlohmann::json::parse(text));
+}
+
+}  // namespace rtsim

@@ -1,0 +1,41 @@
+"""The look of rtsim's charts, and deterministic PNG output.
+
+Agg backend; PNGs carry no Software tag and no timestamp, so the same data gives the same
+bytes. Files are written to a temporary name and renamed.
+"""
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+RAY_TYPE_COLORS = {
+    "camera": "#4c72b0", "shadow": "#55a868", "reflection": "#c44e52",
+    "reflected_shadow": "#8172b2", "diffuse_gi": "#ccb974", "ao": "#64b5cd",
+    "refraction": "#937860", "translucency": "#da8bc3",
+}
+
+
+def setup():
+    plt.rcParams.update({
+        "svg.hashsalt": "rtsim", "figure.dpi": 100, "font.size": 9,
+        "axes.grid": True, "grid.alpha": 0.3, "axes.axisbelow": True,
+        "axes.spines.top": False, "axes.spines.right": False,
+    })
+
+
+def color(ray_type):
+    return RAY_TYPE_COLORS.get(ray_type, "#777777")
+
+
+def save(fig, path):
+    tmp = path + ".tmp-%d" % os.getpid()
+    fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None})
+    os.replace(tmp, path)
+    plt.close(fig)
+
+
+def new(width=7.0, height=3.6, **kwargs):
+    setup()
+    return plt.subplots(figsize=(width, height), **kwargs)

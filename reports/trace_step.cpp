@@ -1,0 +1,129 @@
+#include "reports/trace_step.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/core.h>
+
+#include "model/sc/sim_report.h"
+#include "traces/error.h"
+#include "traces/hash.h"
+#include "workloads/pipeline/trace.h"
+
+namespace rtsim::reports {
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The request as recorded: a spec file by absolute path and the hash of its contents.
+Json request_json(const TraceRequest& r) {
+  Json j;
+  bool file = fs::is_regular_file(r.workload);
+  j["workload"] = file ? fs::absolute(r.workload).lexically_normal().string() : r.workload;
+  if (file) {
+    std::string text = read_text(r.workload);
+    j["spec_hash"] = fmt::format("{:016x}", fnv1a64(text.data(), text.size()));
+  }
+  j["resolution"] = r.resolution;
+  j["frames"] = r.frames;
+  j["seed"] = r.seed ? Json(*r.seed) : Json();
+  j["scene"] = r.scene;
+  return j;
+}
+
+Json summary_json(const pipeline::RunSummary& s) {
+  Json passes = Json::array();
+  for (int p = 0; p < pipeline::kPassCount; ++p) {
+    const pipeline::PassSummary& ps = s.passes[size_t(p)];
+    auto id = pipeline::PassId(p);
+    std::string why = ps.reason.empty() ? "nothing to do" : ps.reason;
+    passes.push_back({{"pass", pipeline::pass_name(id)},
+                      {"ray_type", ray_type_name(pipeline::pass_ray_type(id))},
+                      {"rays", ps.rays},
+                      {"budget_per_frame", ps.budget},
+                      {"frames_skipped", ps.frames_skipped},
+                      {"skipped", ps.rays == 0},
+                      {"reason", ps.rays == 0 || ps.frames_skipped > 0 ? why : ""}});
+  }
+  return {{"workload", s.workload},
+          {"scene", s.scene_source},
+          {"triangles", s.triangles},
+          {"width", s.width},
+          {"height", s.height},
+          {"frames", s.frames},
+          {"lights", s.lights},
+          {"surfels", s.surfels},
+          {"rays", s.total_rays()},
+          {"passes", passes},
+          {"seconds", {{"load", s.load_seconds}, {"build", s.build_seconds},
+                       {"trace", s.trace_seconds}}}};
+}
+
+}  // namespace
+
+TraceOutcome read_trace_dir(const std::string& dir) {
+  std::string path = dir + "/trace.json";
+  if (!fs::exists(path)) throw_input_error(dir, "", "not a trace folder (no trace.json)");
+  TraceOutcome out;
+  try {
+    out.summary = Json::parse(read_text(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw_input_error(path, "", std::string("not valid JSON: ") + e.what());
+  }
+  if (out.summary.value("schema", "") != kTraceSchema)
+    throw_input_error(path, "schema", std::string("expected ") + kTraceSchema);
+  out.dir = dir;
+  out.stream = dir + "/rays.rays";
+  if (!fs::exists(out.stream)) throw_input_error(out.stream, "", "missing");
+  if (fs::exists(dir + "/preview.png")) out.preview = dir + "/preview.png";
+  out.reused = true;
+  return out;
+}
+
+TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, bool quiet) {
+  Json wanted = request_json(request);
+  if (fs::exists(dir + "/trace.json") && fs::exists(dir + "/rays.rays")) {
+    TraceOutcome old = read_trace_dir(dir);
+    if (old.summary["request"] == wanted) {
+      if (!quiet) fmt::print("trace      reusing {} ({} rays)\n", dir, old.summary["rays"].get<uint64_t>());
+      return old;
+    }
+  }
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) throw_input_error(dir, "", "cannot create the folder: " + error.message());
+  pipeline::WorkloadSpec spec = pipeline::load_workload(request.workload);
+  pipeline::apply_overrides(spec, pipeline::make_overrides(request.resolution, request.frames,
+                                                           request.seed, request.scene));
+  pipeline::TraceOptions options;
+  options.output = dir + "/rays.rays";
+  options.preview = dir + "/preview.png";
+  options.generator = "rtsim " RTSIM_VERSION;
+  pipeline::TraceResult result = pipeline::trace_workload(spec, options);
+  Json summary;
+  summary["schema"] = kTraceSchema;
+  summary["request"] = wanted;
+  Json pipeline_summary = summary_json(result.summary);
+  for (auto& [key, value] : pipeline_summary.items()) summary[key] = value;
+  summary["stream"] = "rays.rays";
+  summary["preview"] = "preview.png";
+  write_file_atomic(dir + "/trace.json", summary.dump(2) + "\n");
+  if (!quiet)
+    fmt::print("trace      {}: {} rays of {} on {} ({} triangles), {}x{}, {} frame(s) -> {}\n",
+               result.summary.workload, result.summary.total_rays(), request.workload,
+               result.summary.scene_source, result.summary.triangles, result.summary.width,
+               result.summary.height, result.summary.frames, dir);
+  TraceOutcome out{dir, options.output, options.preview, summary, false};
+  return out;
+}
+
+}  // namespace rtsim::reports

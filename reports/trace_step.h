@@ -1,0 +1,41 @@
+// The first step of `rtsim run`, `sweep`, `regress` and `speed-vs-error`: trace a workload
+// (spec file or built-in scene) into a folder, once. The folder holds
+//   rays.rays      the ray stream
+//   trace.json     what was asked (the request) and the pipeline's summary: scene, triangles,
+//                  rays per pass against the budget, passes skipped and why
+//   preview.png    the shaded last frame, and preview.density-PASS.png per pass
+// A folder whose trace.json records the same request (and the same spec file contents) is
+// reused as it is, so sweeps and reruns trace each workload once.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace rtsim::reports {
+
+struct TraceRequest {
+  std::string workload;    // spec file (.toml) or built-in scene name
+  std::string resolution;  // "WxH" or "" (the spec's)
+  uint32_t frames = 0;     // 0: the spec's
+  std::optional<uint64_t> seed;
+  std::string scene;       // replaces the spec's scene; "" keeps it
+};
+
+struct TraceOutcome {
+  std::string dir, stream, preview;  // preview: "" if none was written
+  nlohmann::ordered_json summary;    // trace.json
+  bool reused = false;
+};
+
+constexpr const char* kTraceSchema = "rtsim.trace/1";
+
+// Traces into dir (created if needed), or reuses it. Throws InputError on a bad workload.
+TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, bool quiet);
+
+// Reads a folder written by trace_into (InputError if it is not one).
+TraceOutcome read_trace_dir(const std::string& dir);
+
+}  // namespace rtsim::reports
