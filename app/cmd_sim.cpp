@@ -39,19 +39,21 @@ void print_summary(const nlohmann::ordered_json& doc) {
              s["cycles"].get<uint64_t>(), s["rays_per_cycle"].get<double>(),
              s["mrays_per_second"].get<double>(), s["clock_ghz"].get<double>());
   for (const auto& [type, t] : doc["ray_types"].items())
-    fmt::print("{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  nodes {:.1f}  tris {:.1f}  "
-               "L1 {:.1f}%  L2 {:.1f}%  DRAM {:.0f} B/ray\n",
-               type, t["rays"].get<uint64_t>(), t["latency_cycles"]["p50"].get<uint64_t>(),
-               t["latency_cycles"]["p95"].get<uint64_t>(),
-               t["latency_cycles"]["p99"].get<uint64_t>(), t["nodes_per_ray"].get<double>(),
-               t["triangles_per_ray"].get<double>(), 100 * t["l1_hit_rate"].get<double>(),
-               100 * t["l2_hit_rate"].get<double>(), t["dram_bytes_per_ray"].get<double>());
+    fmt::print(
+        "{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  nodes {:.1f}  tris {:.1f}  "
+        "L1 {:.1f}%  L2 {:.1f}%  DRAM {:.0f} B/ray\n",
+        type, t["rays"].get<uint64_t>(), t["latency_cycles"]["p50"].get<uint64_t>(),
+        t["latency_cycles"]["p95"].get<uint64_t>(), t["latency_cycles"]["p99"].get<uint64_t>(),
+        t["nodes_per_ray"].get<double>(), t["triangles_per_ray"].get<double>(),
+        100 * t["l1_hit_rate"].get<double>(), 100 * t["l2_hit_rate"].get<double>(),
+        t["dram_bytes_per_ray"].get<double>());
   const auto& u = doc["utilisation"]["mean"];
-  fmt::print("busy       box {:.1f}%  triangle {:.1f}%  control {:.1f}%  ray slots {:.1f}%  "
-             "DRAM {:.1f}%\n",
-             100 * u["box"].get<double>(), 100 * u["triangle"].get<double>(),
-             100 * u["control"].get<double>(), 100 * u["ray_slots"].get<double>(),
-             100 * doc["utilisation"]["dram"].get<double>());
+  fmt::print(
+      "busy       box {:.1f}%  triangle {:.1f}%  control {:.1f}%  ray slots {:.1f}%  "
+      "DRAM {:.1f}%\n",
+      100 * u["box"].get<double>(), 100 * u["triangle"].get<double>(),
+      100 * u["control"].get<double>(), 100 * u["ray_slots"].get<double>(),
+      100 * doc["utilisation"]["dram"].get<double>());
   const auto& c = doc["coherence"];
   std::string coherence;
   if (!c["simd_efficiency"].is_null())

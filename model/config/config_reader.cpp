@@ -173,8 +173,8 @@ struct Unknown {
   std::string key, section;
 };
 
-void find_unknown(const toml::table& table, const std::string& prefix,
-                  const ConfigReadContext& ctx, std::vector<Unknown>& out) {
+void find_unknown(const toml::table& table, const std::string& prefix, const ConfigReadContext& ctx,
+                  std::vector<Unknown>& out) {
   for (auto&& [name, node] : table) {
     std::string key(name.str());
     std::string full = prefix.empty() ? key : prefix + "." + key;
@@ -196,19 +196,17 @@ void check_unknown_keys(const toml::table& root, const ConfigReadContext& ctx) {
   // Overrides first (they have no line), then the file's first unknown key by line.
   auto set = std::find_if(unknown.begin(), unknown.end(),
                           [&](const Unknown& u) { return contains(ctx.set_keys, u.key); });
-  const Unknown& u = set != unknown.end() ? *set
-                                          : *std::min_element(unknown.begin(), unknown.end(),
-                                                              [](auto& a, auto& b) {
-                                                                return a.line < b.line;
-                                                              });
+  const Unknown& u = set != unknown.end()
+                         ? *set
+                         : *std::min_element(unknown.begin(), unknown.end(),
+                                             [](auto& a, auto& b) { return a.line < b.line; });
   std::string known;
   for (const ConfigKeyDoc& doc : ctx.docs) {
-    std::string section = doc.key.substr(0, doc.key.rfind('.') == std::string::npos
-                                                ? 0
-                                                : doc.key.rfind('.'));
+    std::string section =
+        doc.key.substr(0, doc.key.rfind('.') == std::string::npos ? 0 : doc.key.rfind('.'));
     if (section == u.section)
-      known += (known.empty() ? "" : ", ") + doc.key.substr(u.section.empty() ? 0
-                                                                  : u.section.size() + 1);
+      known += (known.empty() ? "" : ", ") +
+               doc.key.substr(u.section.empty() ? 0 : u.section.size() + 1);
   }
   std::string what = fmt::format("unknown key '{}'", u.key);
   if (!known.empty())

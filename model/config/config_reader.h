@@ -26,12 +26,12 @@ struct ConfigKeyDoc {
 };
 
 struct ConfigReadContext {
-  std::string file;                    // for error messages
-  std::vector<std::string> set_keys;   // keys given with --set
-  std::vector<ConfigKeyDoc> docs;      // every key read, in read order, with its default
+  std::string file;                   // for error messages
+  std::vector<std::string> set_keys;  // keys given with --set
+  std::vector<ConfigKeyDoc> docs;     // every key read, in read order, with its default
   std::vector<std::pair<std::string, nlohmann::ordered_json>> values;  // resolved, read order
-  std::vector<std::string> known;      // every key read, dotted
-  std::vector<std::string> sections;   // every section opened, dotted
+  std::vector<std::string> known;                                      // every key read, dotted
+  std::vector<std::string> sections;  // every section opened, dotted
 };
 
 class ConfigReader {

@@ -16,79 +16,79 @@ constexpr uint64_t kMaxU32 = 0xffffffffull;
 void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
   c.size_bytes = r.integer("size_bytes", c.size_bytes, "bytes",
                            fmt::format("data capacity of {}", which).c_str(), 64, 1ull << 34);
-  c.line_bytes = uint32_t(r.integer("line_bytes", c.line_bytes, "bytes",
-                                    "line size, a power of two", 4, 4096));
+  c.line_bytes = uint32_t(
+      r.integer("line_bytes", c.line_bytes, "bytes", "line size, a power of two", 4, 4096));
   c.ways = uint32_t(r.integer("ways", c.ways, "lines", "associativity: lines per set", 1, 1024));
-  c.replacement = r.text("replacement", c.replacement, "replacement policy",
-                         replacement_policy_names());
-  c.hit_latency = uint32_t(r.integer("hit_latency", c.hit_latency, "cycles",
-                                     "request to data on a hit; also the tag check of a miss",
-                                     0, 100000));
-  c.mshrs = uint32_t(r.integer("mshrs", c.mshrs, "count", "line misses in flight at once", 1,
-                               65536));
+  c.replacement =
+      r.text("replacement", c.replacement, "replacement policy", replacement_policy_names());
+  c.hit_latency =
+      uint32_t(r.integer("hit_latency", c.hit_latency, "cycles",
+                         "request to data on a hit; also the tag check of a miss", 0, 100000));
+  c.mshrs =
+      uint32_t(r.integer("mshrs", c.mshrs, "count", "line misses in flight at once", 1, 65536));
 }
 
 void read_test_units(ConfigReader r, TestUnitConfig& c, const char* tests) {
   c.count = uint32_t(r.integer("count", c.count, "units", "identical pipelined units", 1, 64));
   c.issue_width = uint32_t(r.integer("issue_width", c.issue_width, "tests",
                                      fmt::format("{} one issue tests", tests).c_str(), 1, 64));
-  c.latency = uint32_t(r.integer("latency", c.latency, "cycles",
-                                 "from an issue to its results", 1, 10000));
+  c.latency =
+      uint32_t(r.integer("latency", c.latency, "cycles", "from an issue to its results", 1, 10000));
 }
 
 // Every key of the config, read once, here. Defaults are the values already in `c`.
 void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.name = r.text("name", c.name, "the preset's name, carried into results");
   c.description = r.text("description", c.description, "what the preset models");
-  c.clock_ghz = r.section("clock").real("ghz", c.clock_ghz, "GHz",
-                                        "clock of every unit; MRays/s = rays per cycle * clock",
-                                        0.001, 100);
+  c.clock_ghz =
+      r.section("clock").real("ghz", c.clock_ghz, "GHz",
+                              "clock of every unit; MRays/s = rays per cycle * clock", 0.001, 100);
 
   ConfigReader sim = r.section("sim");
   c.sim.quantum_cycles = uint32_t(sim.integer(
       "quantum_cycles", c.sim.quantum_cycles, "cycles",
-      "how far a unit may run ahead of SystemC time (TLM temporal decoupling; 1 = exact order)",
-      1, 1 << 20));
-  c.sim.stall_cycles = sim.integer("stall_cycles", c.sim.stall_cycles, "cycles",
-                                   "no progress for this long stops the run with a stall error",
-                                   1, 1ull << 40);
+      "how far a unit may run ahead of SystemC time (TLM temporal decoupling; 1 = exact order)", 1,
+      1 << 20));
+  c.sim.stall_cycles =
+      sim.integer("stall_cycles", c.sim.stall_cycles, "cycles",
+                  "no progress for this long stops the run with a stall error", 1, 1ull << 40);
+  c.sim.direct_l1 = sim.boolean("direct_l1", c.sim.direct_l1,
+                                "RT units read their L1 by a direct call (like a TLM DMI "
+                                "pointer) instead of a transaction: same timing, faster");
 
   ConfigReader dispatch = r.section("dispatch");
-  c.dispatch.rays_per_cycle = dispatch.real("rays_per_cycle", c.dispatch.rays_per_cycle,
-                                            "rays/cycle", "ray delivery bandwidth to all units",
-                                            0.001, 1e6);
-  c.dispatch.latency = uint32_t(dispatch.integer("latency", c.dispatch.latency, "cycles",
-                                                 "from delivery to arrival at the unit", 0,
-                                                 100000));
+  c.dispatch.rays_per_cycle =
+      dispatch.real("rays_per_cycle", c.dispatch.rays_per_cycle, "rays/cycle",
+                    "ray delivery bandwidth to all units", 0.001, 1e6);
+  c.dispatch.latency = uint32_t(dispatch.integer(
+      "latency", c.dispatch.latency, "cycles", "from delivery to arrival at the unit", 0, 100000));
 
   ConfigReader rt = r.section("rt");
-  c.rt_units = uint32_t(rt.integer("count", c.rt_units, "units", "RT units, each with its L1",
-                                   1, 1024));
+  c.rt_units =
+      uint32_t(rt.integer("count", c.rt_units, "units", "RT units, each with its L1", 1, 1024));
   std::string mode = rt.text("mode", traversal_mode_name(c.rt.mode),
                              "traversal: per-ray depth-first, treelet queues, warp packets",
                              {"depth_first", "treelet", "packet"});
   c.rt.mode = mode == "treelet"  ? TraversalMode::Treelet
               : mode == "packet" ? TraversalMode::Packet
                                  : TraversalMode::DepthFirst;
-  c.rt.warps = uint32_t(rt.integer("warps", c.rt.warps, "warps", "warp slots per unit", 1,
-                                   1024));
+  c.rt.warps = uint32_t(rt.integer("warps", c.rt.warps, "warps", "warp slots per unit", 1, 1024));
   c.rt.warp_size = uint32_t(rt.integer("warp_size", c.rt.warp_size, "rays",
                                        "rays per warp; ray slots = warps * warp_size", 1, 256));
-  c.rt.issue_per_cycle = uint32_t(rt.integer(
-      "issue_per_cycle", c.rt.issue_per_cycle, "steps",
-      "steps traversal control starts per cycle (packet mode: warp steps)", 1, 1024));
+  c.rt.issue_per_cycle = uint32_t(
+      rt.integer("issue_per_cycle", c.rt.issue_per_cycle, "steps",
+                 "steps traversal control starts per cycle (packet mode: warp steps)", 1, 1024));
   c.rt.setup_latency = uint32_t(rt.integer("setup_latency", c.rt.setup_latency, "cycles",
-                                           "ray setup, from arrival to the first step", 0,
-                                           100000));
-  c.rt.control_latency = uint32_t(rt.integer("control_latency", c.rt.control_latency, "cycles",
-                                             "stack pop, sort and push after a step's tests", 0,
-                                             100000));
+                                           "ray setup, from arrival to the first step", 0, 100000));
+  c.rt.control_latency =
+      uint32_t(rt.integer("control_latency", c.rt.control_latency, "cycles",
+                          "stack pop, sort and push after a step's tests", 0, 100000));
   ConfigReader stack = rt.section("stack");
-  c.rt.stack.entries = uint32_t(stack.integer("entries", c.rt.stack.entries, "entries",
-                                              "on-chip stack depth per ray; deeper entries spill",
-                                              1, 4096));
-  c.rt.stack.entry_bytes = uint32_t(stack.integer("entry_bytes", c.rt.stack.entry_bytes,
-                                                  "bytes", "one spilled stack entry", 1, 64));
+  c.rt.stack.entries =
+      uint32_t(stack.integer("entries", c.rt.stack.entries, "entries",
+                             "on-chip stack depth per ray; deeper entries spill", 1, 4096));
+  c.rt.stack.entry_bytes = uint32_t(stack.integer("entry_bytes", c.rt.stack.entry_bytes, "bytes",
+                                                  "one spilled stack entry", 1, 64));
   read_test_units(rt.section("box"), c.rt.box, "child boxes");
   read_test_units(rt.section("triangle"), c.rt.triangle, "triangles");
   std::string policy = rt.section("packet").text(
@@ -101,21 +101,21 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   ConfigReader tq = r.section("treelet_queues");
   c.treelet_queues.policy = tq.text("policy", c.treelet_queues.policy,
                                     "which queue a unit serves next", treelet_policy_names());
-  c.treelet_queues.max_rays = uint32_t(tq.integer(
-      "max_rays", c.treelet_queues.max_rays, "rays",
-      "ray buffer: rays queued plus executing (memory grows with it)", 1, 1 << 24));
+  c.treelet_queues.max_rays = uint32_t(
+      tq.integer("max_rays", c.treelet_queues.max_rays, "rays",
+                 "ray buffer: rays queued plus executing (memory grows with it)", 1, 1 << 24));
   c.treelet_queues.queue_capacity = uint32_t(tq.integer(
       "queue_capacity", c.treelet_queues.queue_capacity, "rays",
       "most rays one treelet's queue holds; a full queue lets the ray go on", 1, kMaxU32));
-  c.treelet_queues.min_batch = uint32_t(tq.integer(
-      "min_batch", c.treelet_queues.min_batch, "rays",
-      "a queue this long is served before fresh rays are admitted", 1, kMaxU32));
-  c.treelet_queues.enqueue_latency = uint32_t(tq.integer(
-      "enqueue_latency", c.treelet_queues.enqueue_latency, "cycles",
-      "from postponing a ray to it being queued", 0, 100000));
-  c.treelet_queues.dequeue_latency = uint32_t(tq.integer(
-      "dequeue_latency", c.treelet_queues.dequeue_latency, "cycles",
-      "from a unit taking a ray to its next step", 0, 100000));
+  c.treelet_queues.min_batch = uint32_t(
+      tq.integer("min_batch", c.treelet_queues.min_batch, "rays",
+                 "a queue this long is served before fresh rays are admitted", 1, kMaxU32));
+  c.treelet_queues.enqueue_latency =
+      uint32_t(tq.integer("enqueue_latency", c.treelet_queues.enqueue_latency, "cycles",
+                          "from postponing a ray to it being queued", 0, 100000));
+  c.treelet_queues.dequeue_latency =
+      uint32_t(tq.integer("dequeue_latency", c.treelet_queues.dequeue_latency, "cycles",
+                          "from a unit taking a ray to its next step", 0, 100000));
 
   read_cache(r.section("l2"), c.l2, "the shared L2");
 
@@ -128,24 +128,24 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                              "requests that may wait for the bus", 1, 1 << 20));
 
   ConfigReader bvh = r.section("bvh");
-  c.bvh.width = int(bvh.integer("width", uint64_t(c.bvh.width), "children",
-                                "most children of a node", 2, 8));
+  c.bvh.width =
+      int(bvh.integer("width", uint64_t(c.bvh.width), "children", "most children of a node", 2, 8));
   std::string format = bvh.text("node_format", node_format_name(c.bvh.node_format),
                                 "node encoding: fp32 boxes, or compressed 8-wide (Ylitie 2017)",
                                 {"aabb32", "cwbvh8"});
   c.bvh.node_format = *node_format_from_name(format);
-  std::string triangles = bvh.text("triangle_format", triangle_format_name(c.bvh.triangle_format),
-                                   "triangle encoding: raw vertices or Woop transform",
-                                   {"raw", "woop"});
+  std::string triangles =
+      bvh.text("triangle_format", triangle_format_name(c.bvh.triangle_format),
+               "triangle encoding: raw vertices or Woop transform", {"raw", "woop"});
   c.bvh.triangle_format = *triangle_format_from_name(triangles);
-  std::string layout = bvh.text("layout", node_layout_name(c.bvh.node_layout),
-                                "node order in memory", {"depth-first", "breadth-first",
-                                                         "treelet"});
+  std::string layout =
+      bvh.text("layout", node_layout_name(c.bvh.node_layout), "node order in memory",
+               {"depth-first", "breadth-first", "treelet"});
   c.bvh.node_layout = *node_layout_from_name(layout);
   c.bvh.treelet_bytes = uint32_t(bvh.integer("treelet_bytes", c.bvh.treelet_bytes, "bytes",
                                              "node budget of one treelet", 512, 65536));
-  c.bvh.max_leaf_size = int(bvh.integer("max_leaf_size", uint64_t(c.bvh.max_leaf_size),
-                                        "triangles", "most triangles in one leaf", 1, 16));
+  c.bvh.max_leaf_size = int(bvh.integer("max_leaf_size", uint64_t(c.bvh.max_leaf_size), "triangles",
+                                        "most triangles in one leaf", 1, 16));
   c.bvh.sah_bins = int(bvh.integer("sah_bins", uint64_t(c.bvh.sah_bins), "bins",
                                    "bins per axis of the binned SAH build: 16 or 32", 16, 32));
 }
@@ -183,9 +183,10 @@ std::string hw_config_problem(const HwConfig& c) {
   if (p.empty()) p = section("bvh", validate(c.bvh));
   uint64_t slots = uint64_t(c.rt_units) * c.rt.warps * c.rt.warp_size;
   if (p.empty() && c.rt.mode == TraversalMode::Treelet && c.treelet_queues.max_rays < slots)
-    p = fmt::format("[treelet_queues] max_rays ({}) must be at least the ray slots of all units "
-                    "(rt.count * rt.warps * rt.warp_size = {})",
-                    c.treelet_queues.max_rays, slots);
+    p = fmt::format(
+        "[treelet_queues] max_rays ({}) must be at least the ray slots of all units "
+        "(rt.count * rt.warps * rt.warp_size = {})",
+        c.treelet_queues.max_rays, slots);
   return p;
 }
 

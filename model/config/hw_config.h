@@ -22,15 +22,16 @@ namespace rtsim {
 struct SimulationConfig {
   uint32_t quantum_cycles = 16;    // cycles: how far a unit runs ahead of SystemC time
   uint64_t stall_cycles = 200000;  // cycles: no progress for this long stops with a stall error
+  bool direct_l1 = true;           // RT units call their L1 directly instead of through the socket
 };
 
 struct HwConfig {
   std::string name = "default";  // the preset's name, carried into results
   std::string description;
-  double clock_ghz = 1.5;        // GHz: the clock of every unit (MRays/s = rays/cycle * clock)
+  double clock_ghz = 1.5;  // GHz: the clock of every unit (MRays/s = rays/cycle * clock)
   SimulationConfig sim;
   DispatchConfig dispatch;
-  uint32_t rt_units = 4;         // units: RT units, each with its own L1
+  uint32_t rt_units = 4;  // units: RT units, each with its own L1
   RtCoreConfig rt;
   CacheConfig l1{32 * 1024, 64, 4, "lru", 20, 16};
   TreeletQueueConfig treelet_queues;

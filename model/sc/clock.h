@@ -12,7 +12,11 @@ namespace rtsim {
 struct Clock {
   sc_core::sc_time period{1.0, sc_core::SC_NS};  // 1 GHz
 
-  Cycle cycles(const sc_core::sc_time& t) const { return Cycle(std::llround(t / period)); }
+  // Integer arithmetic on the kernel's time values: no rounding call on the hot path.
+  Cycle cycles(const sc_core::sc_time& t) const {
+    uint64_t p = period.value();
+    return Cycle((t.value() + p / 2) / p);
+  }
   sc_core::sc_time time(Cycle c) const { return double(c) * period; }
 };
 

@@ -22,8 +22,8 @@ struct SimControl {
   uint64_t progress = 0;          // rays taken, steps and retirements, all units
   Cycle last_progress_cycle = 0;  // SystemC cycle of the latest progress
   uint32_t units_running = 0;
-  std::exception_ptr error;       // the first exception a process threw
-  std::string stall_report;       // set by the watchdog when it stops a stalled run
+  std::exception_ptr error;  // the first exception a process threw
+  std::string stall_report;  // set by the watchdog when it stops a stalled run
 
   void made_progress(uint64_t amount, Cycle now) {
     if (amount == 0) return;

@@ -22,7 +22,10 @@ Clock clock_of(const HwConfig& c) {
 RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySource& source,
                          uint32_t width, uint32_t height, RayRetireListener* listener,
                          MemoryBinder bind_memory)
-    : config_(config), clock_(clock_of(config)), traversal_(image), pool_(pool_size(config)),
+    : config_(config),
+      clock_(clock_of(config)),
+      traversal_(image),
+      pool_(pool_size(config)),
       collector_(width, height) {
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);
@@ -33,14 +36,14 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     dram_ = std::make_unique<DramModule>("dram", config.dram, clock_);
     l2_->out.bind(dram_->in);
   }
-  dispatch_ = std::make_unique<DispatcherModule>("dispatch", config.dispatch, source, pool_,
-                                                 &fanout_);
+  dispatch_ =
+      std::make_unique<DispatcherModule>("dispatch", config.dispatch, source, pool_, &fanout_);
   RaySupplyIf* supply = dispatch_.get();
   if (config.rt.mode == TraversalMode::Treelet) {
     uint32_t root = image.node_treelet.empty() ? 0 : image.node_treelet[0];
     uint32_t count = std::max<uint32_t>(image.treelets.count, root + 1);
-    treelets_ = std::make_unique<TreeletQueueModule>("treelet_queues", config.treelet_queues,
-                                                     count, root, pool_);
+    treelets_ = std::make_unique<TreeletQueueModule>("treelet_queues", config.treelet_queues, count,
+                                                     root, pool_);
     treelets_->in.bind(dispatch_->out);
     supply = treelets_.get();
   }
@@ -48,12 +51,12 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     std::string name = "rt" + std::to_string(i);
     units_.push_back(std::make_unique<RtUnitModule>(
         name.c_str(), i, config.rt, config.l1, traversal_, clock_, config.sim.quantum_cycles,
-        &l2_->cache().stats(), control_));
+        config.sim.direct_l1, &l2_->cache().stats(), control_));
     units_.back()->supply.bind(*supply);
     units_.back()->l1.out.bind(l2_->in);
   }
-  watchdog_ = std::make_unique<StallWatchdog>("watchdog", config.sim.stall_cycles, clock_,
-                                              control_, [this] { return dump(); });
+  watchdog_ = std::make_unique<StallWatchdog>("watchdog", config.sim.stall_cycles, clock_, control_,
+                                              [this] { return dump(); });
 }
 
 RtSimulator::~RtSimulator() = default;
@@ -65,10 +68,9 @@ void RtSimulator::run() {
   if (control_.error) std::rethrow_exception(control_.error);
   if (!control_.stall_report.empty()) throw SimStallError(control_.stall_report);
   if (control_.units_running > 0)
-    throw SimStallError("the simulation ran out of events with " +
-                        std::to_string(control_.units_running) +
-                        " units unfinished (a unit slept with nothing to wake it); state:\n" +
-                        dump());
+    throw SimStallError(
+        "the simulation ran out of events with " + std::to_string(control_.units_running) +
+        " units unfinished (a unit slept with nothing to wake it); state:\n" + dump());
 }
 
 Cycle RtSimulator::cycles() const {

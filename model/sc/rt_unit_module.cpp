@@ -6,12 +6,19 @@ namespace rtsim {
 
 RtUnitModule::RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
                            const CacheConfig& l1_config, const TraversalUnit& traversal,
-                           const Clock& clock, uint32_t quantum_cycles,
+                           const Clock& clock, uint32_t quantum_cycles, bool direct_l1,
                            const CacheStats* l2_stats, SimControl& control)
-    : sc_module(name), mem("mem"), supply("supply"), l1("l1", l1_config, clock), clock_(clock),
-      quantum_(std::max<uint32_t>(quantum_cycles, 1)), control_(control),
+    : sc_module(name),
+      mem("mem"),
+      supply("supply"),
+      l1("l1", l1_config, clock),
+      clock_(clock),
+      quantum_(std::max<uint32_t>(quantum_cycles, 1)),
+      control_(control),
       port_([this](auto& trans, auto& delay) { mem->b_transport(trans, delay); }, clock),
-      core_(id, config, traversal, port_, MemoryProbe{&l1.cache().stats(), l2_stats}) {
+      direct_(l1.direct(), port_),
+      core_(id, config, traversal, direct_l1 ? static_cast<RayMemory&>(direct_) : port_,
+            MemoryProbe{&l1.cache().stats(), l2_stats}) {
   mem.bind(l1.in);
   SC_METHOD(run);
 }

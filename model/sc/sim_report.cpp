@@ -44,9 +44,12 @@ Json verify_json(const VerifyReport& v) {
                         {"model_prim", m.model_prim},
                         {"embree_t", m.embree.t},
                         {"model_t", m.model.t}});
-  return {{"rays", v.rays},         {"agree", v.agree},
-          {"mismatches", v.mismatches()}, {"unexplained", v.unexplained()},
-          {"by_class", classes},    {"examples", examples}};
+  return {{"rays", v.rays},
+          {"agree", v.agree},
+          {"mismatches", v.mismatches()},
+          {"unexplained", v.unexplained()},
+          {"by_class", classes},
+          {"examples", examples}};
 }
 
 double sum(const StatsRegistry& r, uint32_t units, const std::string& suffix) {
@@ -116,7 +119,9 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   doc["utilisation"] = utilisation_json(c, r);
   // Coherence figures exist only in the mode that produces them; elsewhere they are null.
   bool packet = c.rt.mode == TraversalMode::Packet, treelet = c.rt.mode == TraversalMode::Treelet;
-  auto when = [&](bool applies, const char* name) { return applies ? Json(r.value(name)) : Json(); };
+  auto when = [&](bool applies, const char* name) {
+    return applies ? Json(r.value(name)) : Json();
+  };
   doc["coherence"] = {
       {"simd_efficiency", when(packet, "rt.simd_efficiency")},
       {"distinct_nodes_per_warp_step", when(packet, "rt.distinct_nodes_per_warp_step")},
@@ -133,8 +138,9 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   if (!px.cycles.empty())
     doc["pixel_buffers"] = {{"width", px.width},
                             {"height", px.height},
-                            {"format", "float32 little-endian, row-major, summed over the "
-                                       "pixel's rays of all frames"},
+                            {"format",
+                             "float32 little-endian, row-major, summed over the "
+                             "pixel's rays of all frames"},
                             {"rays_outside", px.outside},
                             {"files",
                              {{"cycles", "pixel_cycles.f32"},

@@ -14,11 +14,11 @@
 namespace rtsim {
 
 struct SimRunInfo {
-  std::string stream;         // the ray stream's path (or a description of generated rays)
-  StreamHeader header;        // scene, workload, pixel grid
+  std::string stream;   // the ray stream's path (or a description of generated rays)
+  StreamHeader header;  // scene, workload, pixel grid
   const BvhImage* image = nullptr;
   const VerifyReport* verify = nullptr;  // null: verification skipped
-  double host_seconds = 0;    // wall time of the simulation alone
+  double host_seconds = 0;               // wall time of the simulation alone
 };
 
 constexpr const char* kSimStatsSchema = "rtsim.sim.stats/1";

@@ -7,7 +7,10 @@ namespace rtsim {
 StallWatchdog::StallWatchdog(sc_core::sc_module_name name, uint64_t stall_cycles,
                              const Clock& clock, SimControl& control,
                              std::function<std::string()> dump)
-    : sc_module(name), stall_cycles_(stall_cycles), clock_(clock), control_(control),
+    : sc_module(name),
+      stall_cycles_(stall_cycles),
+      clock_(clock),
+      control_(control),
       dump_(std::move(dump)) {
   SC_METHOD(run);
 }
@@ -22,8 +25,8 @@ void StallWatchdog::run() {
   }
   std::ostringstream report;
   report << "no progress for " << stall_cycles_ << " cycles (last progress at cycle "
-         << control_.last_progress_cycle << ", now cycle " << now << ", "
-         << control_.units_running << " units running); state:\n"
+         << control_.last_progress_cycle << ", now cycle " << now << ", " << control_.units_running
+         << " units running); state:\n"
          << dump_();
   control_.stall_report = report.str();
   sc_core::sc_stop();

@@ -10,17 +10,18 @@ void serve(MemoryLevel& level, const Clock& clock, tlm::tlm_generic_payload& tra
     trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
     return;
   }
-  sc_core::sc_time start = sc_core::sc_time_stamp() + delay;
-  Cycle ready = level.read(trans.get_address(), trans.get_data_length(), clock.cycles(start));
-  delay = clock.time(ready) - sc_core::sc_time_stamp();
+  sc_core::sc_time stamp = sc_core::sc_time_stamp();
+  Cycle ready = level.read(trans.get_address(), trans.get_data_length(),
+                           clock.cycles(stamp + delay));
+  delay = clock.time(ready) - stamp;
   trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 
 }  // namespace
 
 Cycle TlmReadPort::read(uint64_t addr, uint32_t bytes, Cycle now) {
-  scratch_.resize(bytes);
-  tlm::tlm_generic_payload trans;
+  if (scratch_.size() < bytes) scratch_.resize(bytes);
+  tlm::tlm_generic_payload& trans = trans_;
   trans.set_command(tlm::TLM_READ_COMMAND);
   trans.set_address(addr);
   trans.set_data_ptr(scratch_.data());
@@ -29,12 +30,13 @@ Cycle TlmReadPort::read(uint64_t addr, uint32_t bytes, Cycle now) {
   trans.set_byte_enable_ptr(nullptr);
   trans.set_dmi_allowed(false);
   trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  sc_core::sc_time delay = clock_.time(now) - sc_core::sc_time_stamp();
+  sc_core::sc_time stamp = sc_core::sc_time_stamp();
+  sc_core::sc_time delay = clock_.time(now) - stamp;
   transport_(trans, delay);
   if (trans.is_response_error())
     throw std::runtime_error("memory read at " + std::to_string(addr) + " failed: " +
                              trans.get_response_string());
-  return clock_.cycles(sc_core::sc_time_stamp() + delay);
+  return clock_.cycles(stamp + delay);
 }
 
 CacheModule::CacheModule(sc_core::sc_module_name name, const CacheConfig& config,
@@ -66,9 +68,10 @@ void DramModule::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& 
   if (trans.get_command() == tlm::TLM_WRITE_COMMAND) {
     // A write takes the bus for its bytes like a read; the writer does not wait for it.
     write_bytes_ += trans.get_data_length();
-    sc_core::sc_time start = sc_core::sc_time_stamp() + delay;
-    Cycle ready = dram_.read(trans.get_address(), trans.get_data_length(), clock_.cycles(start));
-    delay = clock_.time(ready) - sc_core::sc_time_stamp();
+    sc_core::sc_time stamp = sc_core::sc_time_stamp();
+    Cycle ready = dram_.read(trans.get_address(), trans.get_data_length(),
+                             clock_.cycles(stamp + delay));
+    delay = clock_.time(ready) - stamp;
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
     return;
   }

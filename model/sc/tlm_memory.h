@@ -38,6 +38,7 @@ public:
 private:
   Transport transport_;
   Clock clock_;
+  tlm::tlm_generic_payload trans_;  // reused: a level has one read in flight in the call chain
   std::vector<unsigned char> scratch_;
 };
 
@@ -49,6 +50,10 @@ public:
 
   CacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock);
   const Cache& cache() const { return cache_; }
+  // The cache level itself, for the initiator that owns this cache (an RT unit and its L1):
+  // reads without a transaction, the timing analogue of a TLM DMI pointer. Same answers as
+  // the `in` socket; misses still go out through `out`.
+  MemoryLevel& direct() { return cache_; }
   uint64_t write_bytes() const { return write_bytes_; }  // bytes written around this level
 
 private:

@@ -22,8 +22,8 @@ Cycle TlmRayPort::send(tlm::tlm_command command, uint64_t addr, uint32_t bytes, 
   sc_core::sc_time delay = clock_.time(now) - stamp;
   transport_(trans_, delay);
   if (trans_.is_response_error())
-    throw std::runtime_error("memory access at " + std::to_string(addr) + " failed: " +
-                             trans_.get_response_string());
+    throw std::runtime_error("memory access at " + std::to_string(addr) +
+                             " failed: " + trans_.get_response_string());
   return clock_.cycles(stamp + delay);
 }
 

@@ -31,8 +31,14 @@ private:
 TreeletQueueModule::TreeletQueueModule(sc_core::sc_module_name name,
                                        const TreeletQueueConfig& config, uint32_t treelets,
                                        uint32_t root_treelet, const RayContextPool& pool)
-    : sc_module(name), in("in"), out("out"), config_(config), treelets_(treelets),
-      root_(root_treelet), pool_(pool), work_("work") {
+    : sc_module(name),
+      in("in"),
+      out("out"),
+      config_(config),
+      treelets_(treelets),
+      root_(root_treelet),
+      pool_(pool),
+      work_("work") {
   out.bind(*this);
 }
 
@@ -47,8 +53,7 @@ RaySupply& TreeletQueueModule::supply() { return *notifying_; }
 std::string TreeletQueueModule::dump() const {
   std::ostringstream out;
   out << name() << ": " << scheduler_->queued() << " rays queued, " << scheduler_->executing()
-      << " executing, dispatcher " << (upstream_->exhausted() ? "exhausted" : "has rays")
-      << "\n";
+      << " executing, dispatcher " << (upstream_->exhausted() ? "exhausted" : "has rays") << "\n";
   return out.str();
 }
 

@@ -11,8 +11,8 @@ std::string dispatch_config_problem(const DispatchConfig& c) {
   return {};
 }
 
-RayDispatcher::RayDispatcher(const DispatchConfig& config, RaySource& source,
-                             RayContextPool& pool, RayRetireListener* listener)
+RayDispatcher::RayDispatcher(const DispatchConfig& config, RaySource& source, RayContextPool& pool,
+                             RayRetireListener* listener)
     : config_(config), source_(source), pool_(pool), listener_(listener) {
   read_ahead();
 }

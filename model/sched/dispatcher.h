@@ -22,12 +22,12 @@ struct DispatchConfig {
 std::string dispatch_config_problem(const DispatchConfig& config);
 
 struct DispatchStats {
-  uint64_t rays = 0;           // rays handed out
-  uint64_t retired = 0;        // rays given back finished
-  uint64_t takes = 0;          // requests that received rays
-  double busy_cycles = 0;      // cycles the delivery port was busy
-  uint64_t wait_cycles = 0;    // sum over requests of first delivery - request
-  uint64_t pool_empty = 0;     // requests cut short because every context was in use
+  uint64_t rays = 0;         // rays handed out
+  uint64_t retired = 0;      // rays given back finished
+  uint64_t takes = 0;        // requests that received rays
+  double busy_cycles = 0;    // cycles the delivery port was busy
+  uint64_t wait_cycles = 0;  // sum over requests of first delivery - request
+  uint64_t pool_empty = 0;   // requests cut short because every context was in use
 };
 
 class RayDispatcher : public RaySupply {

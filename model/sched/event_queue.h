@@ -1,8 +1,12 @@
 // The pending events of one simulated unit: (cycle, item) pairs served earliest cycle first,
 // and in insertion order within a cycle, so a run is deterministic. A unit keeps one queue
 // for all its rays instead of a SystemC thread per ray, and wakes only at the cycles in it.
+// A timing wheel: events within kWheel cycles of the earliest pending cycle sit in per-cycle
+// FIFO lists (constant time per event); later ones wait in a heap and move onto the wheel as
+// it turns. Events must not be scheduled before the last cycle popped.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <queue>
 #include <vector>
@@ -15,28 +19,42 @@ class EventQueue {
 public:
   struct Event {
     Cycle cycle = 0;
-    uint64_t order = 0;  // insertion number: ties at one cycle are served first in, first out
-    uint32_t item = 0;   // what the owner schedules: a ray slot or a warp
+    uint32_t item = 0;  // what the owner schedules: a ray slot or a warp
   };
+  static constexpr uint32_t kWheel = 512;
 
-  void push(Cycle cycle, uint32_t item) { heap_.push({cycle, next_order_++, item}); }
-  bool empty() const { return heap_.empty(); }
-  size_t size() const { return heap_.size(); }
-  const Event& top() const { return heap_.top(); }
-  Event pop() {
-    Event e = heap_.top();
-    heap_.pop();
-    return e;
-  }
+  EventQueue();
+  void push(Cycle cycle, uint32_t item);
+  bool empty() const { return size_ == 0; }
+  size_t size() const { return size_; }
+  Cycle next_cycle();  // the earliest pending cycle; the queue must not be empty
+  Event pop();
 
 private:
-  struct Later {
-    bool operator()(const Event& a, const Event& b) const {
-      return a.cycle != b.cycle ? a.cycle > b.cycle : a.order > b.order;
+  static constexpr uint32_t kNone = ~0u;
+  struct Node {
+    uint32_t item = 0, next = kNone;
+  };
+  struct Far {
+    Cycle cycle;
+    uint64_t order;
+    uint32_t item;
+    bool operator>(const Far& o) const {
+      return cycle != o.cycle ? cycle > o.cycle : order > o.order;
     }
   };
-  std::priority_queue<Event, std::vector<Event>, Later> heap_;
-  uint64_t next_order_ = 0;
+  void append(Cycle cycle, uint32_t item);
+  void settle();  // turns the wheel to the earliest pending cycle
+  uint32_t gap(Cycle from) const;
+
+  Cycle cursor_ = 0;                     // no pending event is earlier
+  std::vector<uint32_t> head_, tail_;    // per wheel slot: FIFO list of nodes
+  uint64_t occupied_[kWheel / 64] = {};  // bit per wheel slot with events: skips idle cycles
+  std::vector<Node> nodes_;
+  uint32_t free_ = kNone;  // free list of nodes
+  size_t size_ = 0, on_wheel_ = 0;
+  uint64_t far_order_ = 0;
+  std::priority_queue<Far, std::vector<Far>, std::greater<Far>> far_;
 };
 
 }  // namespace rtsim

@@ -15,8 +15,8 @@
 namespace rtsim {
 
 struct StackConfig {
-  uint32_t entries = 8;       // entries: depth of the on-chip stack per ray
-  uint32_t entry_bytes = 8;   // bytes: one spilled entry (node reference + entry distance)
+  uint32_t entries = 8;      // entries: depth of the on-chip stack per ray
+  uint32_t entry_bytes = 8;  // bytes: one spilled entry (node reference + entry distance)
 };
 
 std::string stack_config_problem(const StackConfig& config);
@@ -51,8 +51,8 @@ public:
 
 private:
   uint64_t address(const RayContext& ray, uint32_t entry) const {
-    return kSpillBase + ray.id * kRegionBytes + (uint64_t(entry) * config_.entry_bytes) %
-                                                     kRegionBytes;
+    return kSpillBase + ray.id * kRegionBytes +
+           (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
   }
   StackConfig config_;
 };

@@ -29,9 +29,9 @@ struct RayContext {
   uint64_t sequence = 0;  // position in the ray stream
   uint32_t id = 0;        // index in the pool; names the ray's stack spill region
   TraversalState state;
-  bool begun = false;     // ray setup done (TraversalUnit::begin)
-  Cycle dispatched = 0;   // cycle the dispatcher handed the ray out
-  Cycle ready = 0;        // earliest cycle of its next step (arrival, queue exit)
+  bool begun = false;           // ray setup done (TraversalUnit::begin)
+  Cycle dispatched = 0;         // cycle the dispatcher handed the ray out
+  Cycle ready = 0;              // earliest cycle of its next step (arrival, queue exit)
   uint32_t unit = 0, slot = 0;  // where it runs now
   // Hardware stack: entries on chip (the top of the traversal stack) and spilled below them.
   uint32_t resident = 0, spilled = 0;

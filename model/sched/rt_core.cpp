@@ -10,9 +10,12 @@ namespace rtsim {
 
 const char* traversal_mode_name(TraversalMode mode) {
   switch (mode) {
-    case TraversalMode::DepthFirst: return "depth_first";
-    case TraversalMode::Treelet: return "treelet";
-    case TraversalMode::Packet: return "packet";
+    case TraversalMode::DepthFirst:
+      return "depth_first";
+    case TraversalMode::Treelet:
+      return "treelet";
+    case TraversalMode::Packet:
+      return "packet";
   }
   return "?";
 }
@@ -36,13 +39,20 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
 
 RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
                RayMemory& memory, MemoryProbe probe)
-    : id_(id), config_(config), traversal_(traversal),
-      node_treelet_(traversal.image().node_treelet), memory_(memory), probe_(probe),
-      stack_(config.stack), box_(config.box), triangle_(config.triangle) {
+    : id_(id),
+      config_(config),
+      traversal_(traversal),
+      node_treelet_(traversal.image().node_treelet),
+      memory_(memory),
+      probe_(probe),
+      stack_(config.stack),
+      box_(config.box),
+      triangle_(config.triangle) {
   std::string problem = rt_core_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
   slots_.assign(size_t(config.warps) * config.warp_size, nullptr);
   warp_live_.assign(config.warps, 0);
+  issue_granted_.assign(slots_.size(), ~Cycle(0));
   for (uint32_t w = config.warps; w-- > 0;) free_warps_.push_back(w);
   for (uint32_t s = uint32_t(slots_.size()); s-- > 0;) free_slots_.push_back(s);
   lane_next_.resize(config.warp_size);
@@ -65,7 +75,7 @@ uint64_t RtCore::poll(Cycle now) {
 
 uint64_t RtCore::advance(Cycle until) {
   progress_ = 0;
-  while (!events_.empty() && events_.top().cycle < until) {
+  while (!events_.empty() && events_.next_cycle() < until) {
     EventQueue::Event e = events_.pop();
     now_ = std::max(now_, e.cycle);
     if (config_.mode == TraversalMode::Packet)
@@ -76,14 +86,30 @@ uint64_t RtCore::advance(Cycle until) {
   return progress_;
 }
 
-bool RtCore::claim_issue(Cycle now) {
-  if (now != issue_cycle_) {
+Cycle RtCore::reserve_issue(Cycle now) {
+  if (now > issue_cycle_) {
     issue_cycle_ = now;
     issued_ = 0;
   }
-  if (issued_ == config_.issue_per_cycle) return false;
+  if (issued_ == config_.issue_per_cycle) {
+    ++issue_cycle_;
+    issued_ = 0;
+  }
   ++issued_;
-  return true;
+  return issue_cycle_;
+}
+
+bool RtCore::claim_issue(uint32_t item, Cycle now) {
+  if (issue_granted_[item] == now) {  // reserved earlier for this cycle
+    issue_granted_[item] = ~Cycle(0);
+    return true;
+  }
+  Cycle at = reserve_issue(now);
+  if (at == now) return true;
+  issue_granted_[item] = at;
+  stats_.issue_stalls++;
+  events_.push(at, item);
+  return false;
 }
 
 RtCore::Next RtCore::peek(const TraversalState& s) const {
@@ -183,7 +209,6 @@ std::string RtCore::dump() const {
   std::ostringstream out;
   out << "rt" << id_ << ": " << in_flight_ << " of " << slots_.size() << " ray slots busy, "
       << events_.size() << " events pending";
-  if (!events_.empty()) out << " (next at cycle " << events_.top().cycle << ")";
   out << ", local cycle " << now_ << (waiting_ ? ", waiting for rays" : "") << "\n";
   int shown = 0;
   for (const RayContext* ray : slots_) {

@@ -58,11 +58,11 @@ struct MemoryProbe {
 struct RtCoreStats {
   uint64_t rays_started = 0, rays_retired = 0;
   uint64_t node_steps = 0, leaf_steps = 0;
-  uint64_t issue_stalls = 0;            // step starts deferred a cycle by the issue width
+  uint64_t issue_stalls = 0;              // step starts deferred a cycle by the issue width
   uint64_t fetches = 0, fetch_bytes = 0;  // reads to the L1 (packet mode: after coalescing)
   uint64_t spill_writes = 0, spill_entries = 0, refill_reads = 0, refill_entries = 0;
   uint64_t postponed = 0, refused = 0;  // treelet mode: rays queued, rays a full queue refused
-  uint64_t warp_steps = 0, active_lanes = 0;     // packet mode
+  uint64_t warp_steps = 0, active_lanes = 0;  // packet mode
   uint64_t node_warp_steps = 0, distinct_nodes = 0;
   double ray_slot_cycles = 0;  // integral of occupied ray slots over cycles
   Cycle last_cycle = 0;        // the last cycle the unit did anything
@@ -70,8 +70,8 @@ struct RtCoreStats {
 
 class RtCore {
 public:
-  RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
-         RayMemory& memory, MemoryProbe probe = {});
+  RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal, RayMemory& memory,
+         MemoryProbe probe = {});
 
   void set_supply(RaySupply* supply) { supply_ = supply; }
   // Asks for rays at cycle now (also after a "work available" notice); returns progress made.
@@ -81,7 +81,7 @@ public:
   uint64_t advance(Cycle until);
 
   bool has_event() const { return !events_.empty(); }
-  Cycle next_event() const { return events_.top().cycle; }
+  Cycle next_event() { return events_.next_cycle(); }
   bool started() const { return started_; }
   bool waiting() const { return waiting_; }  // has free slots the supply could not fill yet
   bool finished() const { return in_flight_ == 0 && events_.empty() && !waiting_ && started_; }
@@ -98,12 +98,16 @@ public:
 
 private:
   struct Next {
-    bool live = false;   // an entry that step() will visit (not culled)
+    bool live = false;  // an entry that step() will visit (not culled)
     bool leaf = false;
     uint32_t depth = 0;  // its position in the stack
   };
   Next peek(const TraversalState& state) const;
-  bool claim_issue(Cycle now);
+  // The cycle traversal control can start a step asked for at `now`: now, or the first later
+  // cycle with a free issue slot (reserved, so the step is scheduled once, not retried).
+  Cycle reserve_issue(Cycle now);
+  // Whether slot or warp `item` may step at `now`; if not, it is scheduled at its issue cycle.
+  bool claim_issue(uint32_t item, Cycle now);
   void fill(Cycle now);
   void install(RayContext* ray, uint32_t slot, Cycle now);
   void retire(uint32_t slot, Cycle now);
@@ -127,17 +131,18 @@ private:
   HardwareStack stack_;
   TestUnitPool box_, triangle_;
   EventQueue events_;
-  std::vector<RayContext*> slots_;     // warps * warp_size
-  std::vector<uint32_t> warp_live_;    // rays still in each warp (per-ray and packet modes)
-  std::vector<uint32_t> free_slots_;   // treelet mode
-  std::vector<uint32_t> free_warps_;   // per-ray and packet modes
+  std::vector<RayContext*> slots_;    // warps * warp_size
+  std::vector<uint32_t> warp_live_;   // rays still in each warp (per-ray and packet modes)
+  std::vector<Cycle> issue_granted_;  // per slot (packet mode: per warp): a reserved issue
+  std::vector<uint32_t> free_slots_;  // treelet mode
+  std::vector<uint32_t> free_warps_;  // per-ray and packet modes
   std::vector<RayContext*> batch_;
-  std::vector<Next> lane_next_;        // packet mode scratch
+  std::vector<Next> lane_next_;  // packet mode scratch
   std::vector<uint32_t> lane_tests_;
   std::vector<uint64_t> warp_reads_;
   uint32_t in_flight_ = 0;
   bool waiting_ = false, started_ = false;
-  Cycle now_ = 0;                      // the latest cycle handled: the unit's local time
+  Cycle now_ = 0;  // the latest cycle handled: the unit's local time
   Cycle issue_cycle_ = 0;
   uint32_t issued_ = 0;
   uint64_t progress_ = 0;

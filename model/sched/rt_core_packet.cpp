@@ -10,11 +10,7 @@
 namespace rtsim {
 
 void RtCore::on_warp(uint32_t warp, Cycle now) {
-  if (!claim_issue(now)) {
-    stats_.issue_stalls++;
-    events_.push(now + 1, warp);
-    return;
-  }
+  if (!claim_issue(warp, now)) return;
   uint32_t base = warp * config_.warp_size;
   // What each lane visits next; a lane with nothing left retires now.
   uint32_t nodes = 0, leaves = 0;

@@ -9,18 +9,22 @@ namespace rtsim {
 Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now) {
   // The call chain through L1, L2 and DRAM is synchronous: the counters' growth during it is
   // exactly this read's doing.
-  CacheStats l1_before = probe_.l1 ? *probe_.l1 : CacheStats{};
-  CacheStats l2_before = probe_.l2 ? *probe_.l2 : CacheStats{};
+  const CacheStats* l1 = probe_.l1;
+  const CacheStats* l2 = probe_.l2;
+  uint64_t l1_accesses = l1 ? l1->accesses : 0, l1_hits = l1 ? l1->hits : 0;
+  uint64_t l1_below = l1 ? l1->bytes_below : 0;
+  uint64_t l2_accesses = l2 ? l2->accesses : 0, l2_hits = l2 ? l2->hits : 0;
+  uint64_t l2_below = l2 ? l2->bytes_below : 0;
   Cycle ready = memory_.read(addr, bytes, now);
-  if (probe_.l1) {
-    ray.cost.l1_accesses += uint32_t(probe_.l1->accesses - l1_before.accesses);
-    ray.cost.l1_hits += uint32_t(probe_.l1->hits - l1_before.hits);
-    if (!probe_.l2) ray.cost.dram_bytes += probe_.l1->bytes_below - l1_before.bytes_below;
+  if (l1) {
+    ray.cost.l1_accesses += uint32_t(l1->accesses - l1_accesses);
+    ray.cost.l1_hits += uint32_t(l1->hits - l1_hits);
+    if (!l2) ray.cost.dram_bytes += l1->bytes_below - l1_below;
   }
-  if (probe_.l2) {
-    ray.cost.l2_accesses += uint32_t(probe_.l2->accesses - l2_before.accesses);
-    ray.cost.l2_hits += uint32_t(probe_.l2->hits - l2_before.hits);
-    ray.cost.dram_bytes += probe_.l2->bytes_below - l2_before.bytes_below;
+  if (l2) {
+    ray.cost.l2_accesses += uint32_t(l2->accesses - l2_accesses);
+    ray.cost.l2_hits += uint32_t(l2->hits - l2_hits);
+    ray.cost.dram_bytes += l2->bytes_below - l2_below;
   }
   stats_.fetches++;
   stats_.fetch_bytes += bytes;
@@ -71,11 +75,7 @@ void RtCore::settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cy
 void RtCore::on_ray(uint32_t slot, Cycle now) {
   RayContext& ray = *slots_[slot];
   // Traversal control starts issue_per_cycle steps a cycle.
-  if (!claim_issue(now)) {
-    stats_.issue_stalls++;
-    events_.push(now + 1, slot);
-    return;
-  }
+  if (!claim_issue(slot, now)) return;
   Next next = peek(ray.state);
   // Treelet mode: about to leave the treelet, the ray goes to the next treelet's queue.
   if (config_.mode == TraversalMode::Treelet && next.live) {

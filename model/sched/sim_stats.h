@@ -26,7 +26,7 @@ struct RayTypeStats {
 struct PixelBuffers {
   uint32_t width = 0, height = 0;
   std::vector<float> cycles, nodes, dram_bytes;  // row-major, summed over a pixel's rays
-  uint64_t outside = 0;  // rays whose pixel index lies outside the image
+  uint64_t outside = 0;                          // rays whose pixel index lies outside the image
 };
 
 class SimStatsCollector : public RayRetireListener {

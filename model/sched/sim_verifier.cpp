@@ -6,8 +6,7 @@ namespace rtsim {
 
 SimVerifier::SimVerifier(const TriangleMesh& mesh, const TraversalUnit& model,
                          const EmbreeScene& embree, ArbiterConfig config, size_t max_examples)
-    : model_(model), embree_(embree), arbiter_(mesh, embree, config),
-      max_examples_(max_examples) {}
+    : model_(model), embree_(embree), arbiter_(mesh, embree, config), max_examples_(max_examples) {}
 
 void SimVerifier::retired(const RayContext& context, Cycle) {
   const Ray& ray = context.ray;

@@ -18,8 +18,8 @@ public:
   void counter(const std::string& name, uint64_t value);
   void real(const std::string& name, double value);
   // name = numerator / denominator * scale, computed when written (0 if the denominator is 0).
-  void ratio(const std::string& name, const std::string& numerator,
-             const std::string& denominator, double scale = 1.0);
+  void ratio(const std::string& name, const std::string& numerator, const std::string& denominator,
+             double scale = 1.0);
 
   bool has(const std::string& name) const;
   double value(const std::string& name) const;  // a counter, a real or a ratio; 0 if absent

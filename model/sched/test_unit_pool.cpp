@@ -18,10 +18,34 @@ TestUnitPool::TestUnitPool(const TestUnitConfig& config)
   if (!problem.empty()) throw std::invalid_argument(problem);
 }
 
-uint32_t& TestUnitPool::used_at(Cycle cycle) {
+TestUnitPool::Slot* TestUnitPool::slot_at(Cycle cycle) {
   Slot& slot = calendar_[cycle & (kCalendarCycles - 1)];
-  if (slot.cycle != cycle) slot = Slot{cycle, 0};  // a past cycle's entry: free again
-  return slot.used;
+  auto epoch = uint32_t(cycle / kCalendarCycles + 1);
+  if (slot.epoch == epoch) return &slot;
+  if (slot.epoch > epoch) {
+    stats_.calendar_conflicts++;
+    return nullptr;
+  }
+  slot = Slot{epoch, 0, 0};  // an earlier cycle's entry: free again
+  return &slot;
+}
+
+Cycle TestUnitPool::find_free(Cycle cycle) {
+  constexpr int kPath = 32;
+  Cycle path[kPath];
+  int length = 0;
+  for (;;) {
+    Slot* slot = slot_at(cycle);
+    if (slot && slot->used < config_.count) break;
+    if (length < kPath) path[length++] = cycle;
+    cycle += slot && slot->skip > 0 ? slot->skip : 1;
+  }
+  // Every booked cycle passed on the way now points (close to) here.
+  for (int i = 0; i < length; ++i) {
+    Slot* slot = slot_at(path[i]);
+    if (slot) slot->skip = uint16_t(std::min<Cycle>(cycle - path[i], kCalendarCycles - 1));
+  }
+  return cycle;
 }
 
 Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
@@ -29,17 +53,16 @@ Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
   stats_.requests++;
   stats_.tests += tests;
   stats_.issues += issues;
-  Cycle cycle = arrival, first = ~Cycle(0), last = arrival;
-  while (issues > 0) {
-    uint32_t& used = used_at(cycle);
-    uint32_t take = std::min(config_.count - used, issues);
-    if (take > 0) {
-      if (first == ~Cycle(0)) first = cycle;
-      used += take;
-      issues -= take;
-      last = cycle;
-    }
-    ++cycle;
+  Cycle cycle = find_free(arrival), first = cycle, last = cycle;
+  for (;;) {
+    Slot* slot = slot_at(cycle);
+    uint32_t take = std::min<uint32_t>(config_.count - slot->used, issues);
+    slot->used = uint16_t(slot->used + take);
+    if (slot->used == config_.count) slot->skip = 1;
+    issues -= take;
+    last = cycle;
+    if (issues == 0) break;
+    cycle = find_free(cycle + 1);
   }
   stats_.stall_cycles += first - arrival;
   return last + config_.latency;

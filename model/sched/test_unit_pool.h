@@ -5,8 +5,12 @@
 // needs ceil(n / issue_width) issues, taken from the earliest cycles at or after its arrival
 // that still have a free unit (several units in one cycle, or consecutive cycles); it is ready
 // `latency` cycles after its last issue. A request that finds every unit taken waits
-// (back-pressure, counted as stall cycles). Reservations live in a cycle calendar, so requests
-// may be made in any order of their arrival cycles within kCalendarCycles of each other.
+// (back-pressure, counted as stall cycles). Reservations live in a small cycle calendar, so
+// requests may come in any order of their arrival cycles; reservations more than
+// kCalendarCycles apart share an entry, and then the earlier cycle counts as fully booked
+// (conservative; counted as calendar_conflicts, zero in practice). Booked cycles keep skip
+// hints with path compression (as in union-find), so a busy pool finds its next free cycle
+// in near-constant time.
 // Follows the fixed-function box/triangle units of Aila & Karras (HPG 2010) and RT cores.
 #pragma once
 
@@ -28,15 +32,16 @@ struct TestUnitConfig {
 std::string test_unit_config_problem(const TestUnitConfig& config);
 
 struct TestUnitStats {
-  uint64_t requests = 0;      // steps served (a node's boxes, or a leaf's triangles)
-  uint64_t tests = 0;         // boxes or triangles tested
-  uint64_t issues = 0;        // issue slots used (the busy unit-cycles)
-  uint64_t stall_cycles = 0;  // sum over requests of first issue - arrival
+  uint64_t requests = 0;            // steps served (a node's boxes, or a leaf's triangles)
+  uint64_t tests = 0;               // boxes or triangles tested
+  uint64_t issues = 0;              // issue slots used (the busy unit-cycles)
+  uint64_t stall_cycles = 0;        // sum over requests of first issue - arrival
+  uint64_t calendar_conflicts = 0;  // cycles taken as booked because a later one held the entry
 };
 
 class TestUnitPool {
 public:
-  static constexpr uint32_t kCalendarCycles = 1u << 16;
+  static constexpr uint32_t kCalendarCycles = 1u << 10;
 
   explicit TestUnitPool(const TestUnitConfig& config);  // throws std::invalid_argument
 
@@ -48,10 +53,14 @@ public:
 
 private:
   struct Slot {
-    Cycle cycle = ~Cycle(0);  // the cycle this entry counts for; another value means free
-    uint32_t used = 0;        // issues taken in that cycle
+    uint32_t epoch = 0;  // cycle / kCalendarCycles + 1 of the cycle this entry counts for
+    uint16_t used = 0;   // issues taken in that cycle
+    uint16_t skip = 0;   // when booked: cycles to jump ahead to look for a free one (a hint)
   };
-  uint32_t& used_at(Cycle cycle);
+  // The entry of `cycle`, or nullptr if it holds a later cycle (count as booked).
+  Slot* slot_at(Cycle cycle);
+  // The first cycle at or after `cycle` with a free issue; shortens the skips it followed.
+  Cycle find_free(Cycle cycle);
 
   TestUnitConfig config_;
   std::vector<Slot> calendar_;

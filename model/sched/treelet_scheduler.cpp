@@ -17,8 +17,12 @@ std::string treelet_queue_config_problem(const TreeletQueueConfig& c) {
 TreeletScheduler::TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets,
                                    uint32_t root_treelet, RaySupply& upstream,
                                    const RayContextPool& pool)
-    : config_(config), root_(root_treelet), upstream_(upstream), pool_(pool),
-      policy_(make_treelet_policy(config.policy, treelets)), queues_(treelets) {
+    : config_(config),
+      root_(root_treelet),
+      upstream_(upstream),
+      pool_(pool),
+      policy_(make_treelet_policy(config.policy, treelets)),
+      queues_(treelets) {
   std::string problem = treelet_queue_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
 }
@@ -36,8 +40,7 @@ void TreeletScheduler::set_length(uint32_t treelet, uint32_t length) {
   stats_.max_queue_length = std::max<uint64_t>(stats_.max_queue_length, length);
 }
 
-size_t TreeletScheduler::take(uint32_t unit, Cycle now, size_t max,
-                              std::vector<RayContext*>& out) {
+size_t TreeletScheduler::take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) {
   account(now);
   std::optional<uint32_t> pick = policy_->pick();
   if (pick && queues_[*pick].length >= config_.min_batch) return serve(*pick, now, max, out);
