@@ -1,0 +1,199 @@
+// rtsim multi-device WORKLOAD_OR_STREAM -o DIR: M devices render every frame together (no
+// alternate-frame rendering), once per split strategy (static, balanced, cost, current; Harada &
+// Fujita 2014), with SEED's mGPU flow as the frame's cost model, and one device alone for the
+// speed-up. Devices come from a device set (--devices-file configs/multi/*.toml) or from
+// --config HW.toml --devices M, or one --device-config per device. A workload spec or scene is
+// traced first into DIR/workload.rays. Writes DIR/report.json, report.md, frames.csv,
+// devices.csv and chart.png, and prints the deviation figures. Keys and report:
+// model/multi/README.md.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <thread>
+
+#include <fmt/core.h>
+
+#include "app/commands.h"
+#include "model/multi/device_set.h"
+#include "model/multi/multi_report.h"
+#include "model/multi/multi_run.h"
+#include "model/multi/multi_summary.h"
+#include "model/multi/systemc_backend.h"
+#include "traces/error.h"
+#include "workloads/pipeline/trace.h"
+#include "workloads/scene.h"
+
+namespace rtsim::app {
+namespace {
+
+struct MultiOptions {
+  std::string input, output, devices_file, config, resolution;
+  std::vector<std::string> device_configs, sets, hw_sets, split;
+  uint32_t devices = 0, frames = 0, jobs = 0;
+  uint64_t seed = 0;
+  float orbit = 0;
+  bool seed_set = false, orbit_set = false, importance = false;
+  bool no_chart = false, quiet = false, list_keys = false;
+};
+
+void print_keys() {
+  for (const ConfigKeyDoc& k : multi::device_set_keys())
+    fmt::print("{:<28} {:<18} default {}{}\n    {}\n", k.key, k.type, k.default_value,
+               k.unit.empty() ? "" : " (" + k.unit + ")", k.description);
+}
+
+bool is_stream(const std::string& input) {
+  return std::filesystem::path(input).extension() == ".rays";
+}
+
+// Traces a workload spec or scene into dir/workload.rays; returns the stream's path.
+std::string trace_input(const MultiOptions& o) {
+  pipeline::WorkloadSpec spec = pipeline::load_workload(o.input);
+  pipeline::apply_overrides(
+      spec, pipeline::make_overrides(o.resolution, o.frames,
+                                     o.seed_set ? std::optional<uint64_t>(o.seed) : std::nullopt,
+                                     ""));
+  if (o.importance) spec.samples.placement = pipeline::Placement::Importance;
+  if (o.orbit_set) spec.camera.orbit = o.orbit;
+  std::filesystem::create_directories(o.output);
+  pipeline::TraceOptions options;
+  options.output = o.output + "/workload.rays";
+  options.generator = "rtsim " RTSIM_VERSION;
+  if (!o.quiet)
+    fmt::print("trace      {} ({} frames, {}x{}) into {}\n", spec.name, spec.frames, spec.width,
+               spec.height, options.output);
+  pipeline::trace_workload(spec, options);
+  return options.output;
+}
+
+multi::DeviceSet device_set(const MultiOptions& o) {
+  multi::DeviceSet set = multi::load_device_set(o.devices_file, o.sets);
+  if (!o.devices_file.empty() && (!o.config.empty() || !o.device_configs.empty()))
+    throw InputError("multi-device: give devices by --devices-file or by --config/--device-config"
+                     ", not both");
+  if (!o.device_configs.empty()) {
+    if (o.devices && o.devices != o.device_configs.size())
+      throw InputError(fmt::format("multi-device: --devices {} but {} --device-config", o.devices,
+                                   o.device_configs.size()));
+    set.devices.clear();
+    for (const std::string& c : o.device_configs) set.devices.push_back({c, {}});
+  } else if (o.devices_file.empty()) {
+    set.devices.assign(o.devices ? o.devices : 4, multi::DeviceHardware{o.config, {}});
+  } else if (o.devices) {
+    throw InputError("multi-device: --devices does not apply to --devices-file");
+  }
+  if (!o.split.empty()) {
+    set.strategies.clear();
+    for (const std::string& name : o.split) {
+      auto s = multi::strategy_from_name(name);
+      if (!s) throw InputError("--split " + name + ": not one of static, balanced, cost, current");
+      set.strategies.push_back(*s);
+    }
+  }
+  return set;
+}
+
+void check_scene(const std::string& stream, const StreamHeader& header, const Scene& scene) {
+  if (scene.fingerprint != header.scene_fingerprint)
+    throw_input_error(stream, "header",
+                      fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
+                                  header.scene_fingerprint, header.scene_source,
+                                  scene.fingerprint));
+}
+
+int run_multi(const MultiOptions& o) {
+  if (o.list_keys) {
+    print_keys();
+    return 0;
+  }
+  if (o.input.empty() || o.output.empty())
+    throw CLI::RequiredError("WORKLOAD_OR_STREAM and -o DIR are required (or --list-keys)");
+  multi::DeviceSet set = device_set(o);
+  multi::DeviceConfigs configs(set, o.hw_sets);
+  bool stream_input = is_stream(o.input);
+  if (stream_input && (!o.resolution.empty() || o.seed_set || o.importance || o.orbit_set))
+    throw InputError("multi-device: --resolution, --seed, --importance and --orbit apply to a "
+                     "workload, not to a stream");
+  std::string stream = stream_input ? o.input : trace_input(o);
+  RayStreamReader reader(stream);
+  StreamHeader header = reader.header();
+  Scene scene = load_scene(header.scene_source);
+  check_scene(stream, header, scene);
+  unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
+  multi::SystemCBackend backend(scene.mesh, jobs);
+  multi::MultiRunOptions options;
+  options.max_frames = stream_input ? o.frames : 0;
+  bool tty = isatty(fileno(stderr)) != 0;
+  if (!o.quiet)
+    options.progress = [tty](uint32_t frame, uint32_t frames) {
+      fmt::print(stderr, tty ? "\rframe {}/{}" : "frame {}/{}\n", frame + 1, frames);
+    };
+  auto start = std::chrono::steady_clock::now();
+  multi::MultiRunResult result;
+  try {
+    result = multi::run_multi_device(reader, set, configs, backend, options);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    fmt::print(stderr, "rtsim: multi-device: a device simulation failed: {}\n", e.what());
+    return 1;
+  }
+  if (!o.quiet && tty) fmt::print(stderr, "\r{:<20}\r", "");
+  multi::ReportInput in{stream, header, &set, &configs, &result, {}, 0};
+  std::vector<uint32_t> changes = multi::change_frames(result);
+  for (const multi::StrategyRun& run : result.runs)
+    in.summaries.push_back(multi::summarize(run, result.devices, changes, set.settle_pct));
+  in.host_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  multi::write_multi_report(o.output, in, !o.no_chart);
+  std::string chart_problem = o.no_chart ? "" : multi::draw_multi_chart(o.output);
+  if (!o.quiet) {
+    fmt::print("{}", multi::format_multi_summary(in));
+    fmt::print("host       {:.1f} s; results in {}\n", in.host_seconds, o.output);
+  }
+  if (!chart_problem.empty()) fmt::print(stderr, "rtsim: warning: no chart: {}\n", chart_problem);
+  return 0;
+}
+
+}  // namespace
+
+void add_multi_device_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "multi-device", "Several devices render each frame together: split strategies compared");
+  auto o = std::make_shared<MultiOptions>();
+  cmd->add_option("input", o->input, "Ray stream (.rays), or a workload spec or scene to trace");
+  cmd->add_option("-o,--output", o->output, "Folder for the report, CSV files and chart");
+  cmd->add_option("--devices-file", o->devices_file, "Device set (.toml; see configs/multi/)");
+  cmd->add_option("--config", o->config, "Hardware config of every device (.toml; configs/)");
+  cmd->add_option("--devices", o->devices, "Number of devices with --config (default 4)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--device-config", o->device_configs,
+                  "Hardware config of one device; repeat once per device")
+      ->allow_extra_args(false);
+  cmd->add_option("--split", o->split, "Strategies to compare: static,balanced,cost,current")
+      ->delimiter(',')
+      ->allow_extra_args(false);
+  cmd->add_option("--set", o->sets, "Override a device-set key: --set link.bandwidth_gbps=32")
+      ->allow_extra_args(false);
+  cmd->add_option("--hw-set", o->hw_sets, "Override a hardware key of every device")
+      ->allow_extra_args(false);
+  cmd->add_option("--frames", o->frames, "Frames: of the stream, or to trace")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--resolution", o->resolution, "Image size WxH of a traced workload");
+  cmd->add_option("--seed", o->seed, "Random seed of a traced workload")
+      ->each([o](const std::string&) { o->seed_set = true; });
+  cmd->add_flag("--importance", o->importance,
+                "Place a traced workload's camera samples by importance (irregular samples)");
+  cmd->add_option("--orbit", o->orbit, "Camera orbit of a traced workload, degrees over all frames")
+      ->each([o](const std::string&) { o->orbit_set = true; });
+  cmd->add_option("-j,--jobs", o->jobs, "Device simulations at once (default: CPU count)");
+  cmd->add_flag("--no-chart", o->no_chart, "Skip chart.png (no Python needed)");
+  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");
+  cmd->add_flag("--list-keys", o->list_keys, "List every device-set key and exit");
+  cmd->callback([o, &exit_code] { exit_code = run_multi(*o); });
+}
+
+}  // namespace rtsim::app

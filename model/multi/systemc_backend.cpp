@@ -1,0 +1,107 @@
+#include "model/multi/systemc_backend.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <numeric>
+#include <stdexcept>
+
+#include "model/multi/child_pool.h"
+#include "model/sc/rt_simulator.h"
+#include "model/sched/ray_source.h"
+
+namespace rtsim::multi {
+namespace {
+
+// Child to parent, in this machine's byte order: rays and cycles (u64 each), rays and cycles
+// per ray type (f64 each), then one float per position of the region.
+constexpr size_t kHeaderBytes = 16 + 2 * kRayTypeCount * sizeof(double);
+
+std::string encode(const DeviceResult& r) {
+  std::string bytes(kHeaderBytes + r.cost.size() * sizeof(float), '\0');
+  char* out = bytes.data();
+  std::memcpy(out, &r.rays, 8);
+  std::memcpy(out + 8, &r.cycles, 8);
+  std::memcpy(out + 16, r.type_rays.data(), sizeof r.type_rays);
+  std::memcpy(out + 16 + sizeof r.type_rays, r.type_cycles.data(), sizeof r.type_cycles);
+  if (!r.cost.empty()) std::memcpy(out + kHeaderBytes, r.cost.data(), r.cost.size() * 4);
+  return bytes;
+}
+
+DeviceResult decode(const std::string& bytes, const DeviceTask& task) {
+  size_t positions = task.region.size();
+  if (bytes.size() != kHeaderBytes + positions * sizeof(float))
+    throw std::runtime_error("device simulation returned a malformed result");
+  DeviceResult r;
+  const char* in = bytes.data();
+  std::memcpy(&r.rays, in, 8);
+  std::memcpy(&r.cycles, in + 8, 8);
+  std::memcpy(r.type_rays.data(), in + 16, sizeof r.type_rays);
+  std::memcpy(r.type_cycles.data(), in + 16 + sizeof r.type_rays, sizeof r.type_cycles);
+  r.cost.resize(positions);
+  if (positions) std::memcpy(r.cost.data(), in + kHeaderBytes, positions * sizeof(float));
+  r.time_ns = double(r.cycles) / task.config->clock_ghz;
+  return r;
+}
+
+std::string simulate(const HwConfig& config, const BvhImage& image, const DeviceTask& task,
+                     const ScreenLayout& layout) {
+  VectorRaySource source(task.rays);
+  RtSimulator sim(config, image, source, layout.width, layout.height);
+  sim.run();
+  DeviceResult r;
+  r.rays = sim.rays();
+  r.cycles = sim.cycles();
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    const LatencyHistogram& latency = sim.collected().by_type()[t].latency;
+    r.type_rays[t] = double(latency.count());
+    r.type_cycles[t] = latency.mean() * double(latency.count());
+  }
+  const std::vector<float>& cycles = sim.collected().pixels().cycles;
+  r.cost.assign(task.region.size(), 0.0f);
+  for (uint32_t p = task.region.begin; p < task.region.end; ++p)
+    r.cost[p - task.region.begin] = cycles[layout.pixel_at(p)];
+  return encode(r);
+}
+
+}  // namespace
+
+SystemCBackend::SystemCBackend(const TriangleMesh& mesh, unsigned jobs)
+    : mesh_(mesh), jobs_(std::max(jobs, 1u)) {
+  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+}
+
+const BvhImage& SystemCBackend::image_for(const HwConfig& config) {
+  std::string key = resolved_json(config)["bvh"].dump();
+  auto it = images_.find(key);
+  if (it == images_.end()) it = images_.emplace(key, build_bvh_image(mesh_, config.bvh)).first;
+  return it->second;
+}
+
+std::vector<DeviceResult> SystemCBackend::run(const std::vector<DeviceTask>& tasks,
+                                              const ScreenLayout& layout) {
+  std::vector<std::function<std::string()>> work;
+  std::vector<size_t> busy;  // tasks with rays, largest first
+  for (size_t i = 0; i < tasks.size(); ++i) {
+    const DeviceTask& task = tasks[i];
+    if (!task.config) throw std::invalid_argument("SystemCBackend: a task without hardware");
+    const BvhImage& image = image_for(*task.config);
+    work.push_back([&task, &image, &layout] {
+      return simulate(*task.config, image, task, layout);
+    });
+    if (!task.rays.empty()) busy.push_back(i);
+  }
+  std::stable_sort(busy.begin(), busy.end(), [&](size_t a, size_t b) {
+    return tasks[a].rays.size() > tasks[b].rays.size();
+  });
+  std::vector<std::function<std::string()>> busy_work;
+  for (size_t i : busy) busy_work.push_back(work[i]);
+  std::vector<std::string> texts = run_in_children(busy_work, jobs_);
+  std::vector<DeviceResult> results(tasks.size());
+  for (size_t i = 0; i < tasks.size(); ++i) results[i].cost.assign(tasks[i].region.size(), 0.0f);
+  for (size_t k = 0; k < busy.size(); ++k) results[busy[k]] = decode(texts[k], tasks[busy[k]]);
+  return results;
+}
+
+}  // namespace rtsim::multi

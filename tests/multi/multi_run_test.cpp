@@ -1,0 +1,194 @@
+// The driver over a stream with a backend of known speed: each ray costs 100 cycles of one RT
+// unit, so a device takes rays * 100 / rt_units / clock ns. With it the balancers' behaviour
+// is exact: irregular samples, heterogeneous and changing devices, empty frames, M = 1.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "model/multi/multi_run.h"
+#include "model/multi/multi_summary.h"
+#include "synthetic_frames.h"
+#include "traces/error.h"
+
+namespace rtsim::multi {
+namespace {
+
+const std::string kMobile = std::string(RTSIM_SOURCE_DIR) + "/configs/mobile.toml";
+
+class LinearBackend : public DeviceBackend {
+public:
+  std::vector<DeviceResult> run(const std::vector<DeviceTask>& tasks,
+                                const ScreenLayout& layout) override {
+    std::vector<DeviceResult> out;
+    for (const DeviceTask& t : tasks) {
+      DeviceResult r;
+      r.rays = t.rays.size();
+      r.cycles = r.rays * 100 / t.config->rt_units;
+      r.time_ns = double(r.cycles) / t.config->clock_ghz;
+      r.cost.assign(t.region.size(), 0.0f);
+      for (const Ray& ray : t.rays) {
+        r.type_rays[size_t(ray.type)] += 1;
+        r.type_cycles[size_t(ray.type)] += 100;
+        uint32_t p = ray.pixel < layout.pixels() ? layout.position_of(ray.pixel) : 0;
+        if (p >= t.region.begin && p < t.region.end) r.cost[p - t.region.begin] += 100;
+      }
+      out.push_back(r);
+    }
+    return out;
+  }
+};
+
+DeviceSet mobile_set(uint32_t devices, std::vector<std::string> last_device_sets = {}) {
+  DeviceSet set;
+  set.devices.assign(devices, DeviceHardware{kMobile, {}});
+  set.devices.back().sets = last_device_sets;
+  return set;
+}
+
+MultiRunResult run(const std::string& stream, const DeviceSet& set) {
+  RayStreamReader reader(stream);
+  DeviceConfigs configs(set);
+  LinearBackend backend;
+  return run_multi_device(reader, set, configs, backend);
+}
+
+std::vector<StrategySummary> summaries(const MultiRunResult& r, double settle_pct = 5.0) {
+  std::vector<StrategySummary> out;
+  for (const StrategyRun& run : r.runs)
+    out.push_back(summarize(run, r.devices, change_frames(r), settle_pct));
+  return out;
+}
+
+TEST(MultiRun, BalancersBeatStaticOnIrregularSamples) {
+  test::SyntheticFrames s;
+  s.frames = 10;
+  MultiRunResult r = run(test::write_synthetic_stream("irregular", s, "x", 1), mobile_set(4));
+  ASSERT_EQ(r.runs.size(), 4u);
+  std::vector<StrategySummary> sum = summaries(r);
+  EXPECT_GT(sum[0].avg_max_dev_pct, 10.0) << "static: samples and cost are not even";
+  EXPECT_LT(sum[1].avg_max_dev_pct, sum[0].avg_max_dev_pct / 2) << "balanced";
+  EXPECT_LT(sum[2].avg_max_dev_pct, 3.0) << "cost-weighted sees the costly blob too";
+  EXPECT_LT(sum[2].avg_max_dev_pct, sum[1].avg_max_dev_pct);
+  EXPECT_LT(sum[3].avg_max_dev_pct, 1.0) << "current: the frame's own rays, no lag";
+  for (const StrategyRun& run : r.runs) {
+    ASSERT_EQ(run.frames.size(), 10u);
+    EXPECT_EQ(run.frames[0].devices[0].region, (Region{0, 576})) << "frame 0: by area";
+    for (const FrameRecord& f : run.frames) {
+      uint64_t rays = 0;
+      for (const DeviceFrame& d : f.devices) rays += d.rays;
+      EXPECT_EQ(rays, test::synthetic_frame(s, f.frame).size()) << "every ray traced once";
+      EXPECT_GT(f.speedup, 1.0);
+      EXPECT_GT(f.timing.copy_overhead_ns, 0.0);
+    }
+  }
+}
+
+TEST(MultiRun, HeterogeneousDevicesConvergeAndSettleAfterAChange) {
+  test::SyntheticFrames s;
+  s.frames = 12;
+  s.extra_rays = 0;  // cost follows the samples: every balancer can settle
+  DeviceSet set = mobile_set(4, {"rt.count=2"});  // the last device has half the units
+  set.changes.push_back({6, 0, {"", {"clock.ghz=0.45"}}});  // the primary throttles at 6
+  MultiRunResult r = run(test::write_synthetic_stream("hetero", s, "x", 1), set);
+  EXPECT_EQ(change_frames(r), (std::vector<uint32_t>{6}));
+  std::vector<StrategySummary> sum = summaries(r);
+  for (size_t k : {1, 2, 3}) {
+    const StrategySummary& b = sum[k];
+    ASSERT_EQ(b.settle.size(), 2u);
+    EXPECT_EQ(b.settle[0].frame, 0u);
+    EXPECT_GE(b.settle[0].settle_frames, 0) << strategy_name(b.strategy);
+    EXPECT_LE(b.settle[0].settle_frames, 3) << strategy_name(b.strategy);
+    EXPECT_EQ(b.settle[1].frame, 6u);
+    EXPECT_GE(b.settle[1].settle_frames, 0) << strategy_name(b.strategy);
+    EXPECT_LE(b.settle[1].settle_frames, 3) << strategy_name(b.strategy);
+    const FrameRecord& last = r.runs[k].frames.back();
+    EXPECT_NEAR(double(last.devices[0].rays) / double(last.devices[1].rays), 0.5, 0.1)
+        << "the throttled primary";
+    EXPECT_NEAR(double(last.devices[3].rays) / double(last.devices[1].rays), 0.5, 0.1)
+        << "half the units";
+  }
+  EXPECT_EQ(sum[0].settle[0].settle_frames, -1) << "static never balances unequal devices";
+  // The cost balancer gives the half device about half the cost of a full one.
+  const FrameRecord& f5 = r.runs[2].frames[5];
+  EXPECT_NEAR(f5.devices[3].cost / f5.devices[1].cost, 0.5, 0.05);
+}
+
+TEST(MultiRun, EmptyFrameLeavesAValidSplit) {
+  test::SyntheticFrames s;
+  s.frames = 4;
+  MultiRunResult r = run(test::write_synthetic_stream("empty", s, "x", 1, {1}), mobile_set(3));
+  for (const StrategyRun& run : r.runs) {
+    ASSERT_EQ(run.frames.size(), 4u);
+    const FrameRecord& empty = run.frames[1];
+    EXPECT_EQ(empty.max_deviation_pct, 0.0);
+    for (const DeviceFrame& d : empty.devices) EXPECT_EQ(d.rays, 0u);
+    EXPECT_GT(empty.timing.frame_ns, 0.0) << "ray generation and filtering still run";
+    for (const FrameRecord& f : run.frames) {
+      Split split;
+      for (const DeviceFrame& d : f.devices) split.push_back(d.region);
+      EXPECT_EQ(split_problem(split, s.width * s.height), "") << "frame " << f.frame;
+    }
+    if (run.strategy != SplitStrategy::Static)
+      EXPECT_LT(run.frames[3].max_deviation_pct, 10.0) << strategy_name(run.strategy);
+  }
+}
+
+TEST(MultiRun, OneDeviceIsTheBaseline) {
+  test::SyntheticFrames s;
+  s.frames = 3;
+  MultiRunResult r = run(test::write_synthetic_stream("one", s, "x", 1), mobile_set(1));
+  for (const StrategyRun& run : r.runs)
+    for (const FrameRecord& f : run.frames) {
+      EXPECT_DOUBLE_EQ(f.speedup, 1.0);
+      EXPECT_EQ(f.timing.copy_bytes, 0u);
+      EXPECT_EQ(f.max_deviation_pct, 0.0);
+      EXPECT_EQ(f.devices[0].region, (Region{0, s.width * s.height}));
+    }
+}
+
+TEST(MultiRun, RaysOutsideTheImageGoToThePrimary) {
+  std::string path = "/tmp/rtsim-multi-" + std::to_string(getpid()) + "-outside.rays";
+  StreamHeader h;
+  h.frame_count = 1;
+  h.width = 4;
+  h.height = 2;
+  {
+    RayStreamWriter w(path, h);
+    for (uint32_t pixel : {0u, 7u, 8u, 1000u}) {
+      Ray ray;
+      ray.pixel = pixel;
+      w.write(ray);
+    }
+    w.finish();
+  }
+  MultiRunResult r = run(path, mobile_set(2));
+  EXPECT_EQ(r.outside, 2u);
+  EXPECT_EQ(r.runs[0].frames[0].devices[0].rays, 3u);
+  EXPECT_EQ(r.runs[0].frames[0].devices[1].rays, 1u);
+}
+
+TEST(MultiRun, RaysOutOfFrameOrderAreAnInputError) {
+  std::string path = "/tmp/rtsim-multi-" + std::to_string(getpid()) + "-order.rays";
+  StreamHeader h;
+  h.frame_count = 3;
+  h.width = h.height = 2;
+  {
+    RayStreamWriter w(path, h);
+    for (uint32_t frame : {0u, 2u, 1u}) {
+      Ray ray;
+      ray.frame = frame;
+      w.write(ray);
+    }
+    w.finish();
+  }
+  try {
+    run(path, mobile_set(2));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not in frame order"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rtsim::multi
