@@ -1,0 +1,31 @@
+// rtsim report DIR: redraws the charts and rewrites the pages of a run folder (from its
+// report.json) or a sweep folder (from its sweep.json), e.g. after installing matplotlib.
+#include <filesystem>
+#include <memory>
+
+#include <fmt/core.h>
+
+#include "app/commands.h"
+#include "reports/report_writer.h"
+#include "traces/error.h"
+
+namespace rtsim::app {
+
+void add_report_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand("report", "Rewrite the report of a run or sweep folder");
+  auto dir = std::make_shared<std::string>();
+  auto no_charts = std::make_shared<bool>(false);
+  cmd->add_option("folder", *dir, "Run folder (report.json) or sweep folder (sweep.json)")
+      ->required();
+  cmd->add_flag("--no-charts", *no_charts, "Write the pages without running Python");
+  cmd->callback([dir, no_charts, &exit_code] {
+    reports::ReportOptions options{!*no_charts, true};
+    bool sweep = false;
+    reports::ReportOutcome out = reports::rewrite_report(*dir, options);
+    if (!out.charts_ok) fmt::print("charts     missing: {}\n", out.message);
+    fmt::print("report     {}/{}\n", *dir, sweep ? "sweep.html" : "report.html");
+    exit_code = 0;
+  });
+}
+
+}  // namespace rtsim::app

@@ -1,0 +1,37 @@
+// Helpers for the report pages: escaping, base64 for embedded images, and number cells that
+// carry the JSON key and raw value they show (data-key, data-value), so a page can be checked
+// against its JSON (tests/reports) and a reader can find where a number comes from.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace rtsim::reports {
+
+enum class Style { Integer, Real, Percent, Text };
+
+std::string html_escape(const std::string& text);
+std::string base64(const std::string& bytes);
+std::string read_file(const std::string& path);  // "" if missing
+
+// The value at a dotted key ("timing.cycles", "workload.passes.0.rays": a number indexes an
+// array); null if any part is missing.
+const nlohmann::ordered_json& at_key(const nlohmann::ordered_json& doc, const std::string& key);
+
+// How a value is shown: integers whole, reals to 4 significant digits, rates as percentages
+// with 2 decimals, null as "n/a".
+std::string show(const nlohmann::ordered_json& value, Style style);
+
+// <td data-key=KEY data-value=RAW>SHOWN</td> for the value at key in doc.
+std::string html_cell(const nlohmann::ordered_json& doc, const std::string& key, Style style);
+
+// A two-column table: label, value (rows of label, key, style).
+struct Row {
+  std::string label, key;
+  Style style;
+};
+std::string html_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
+std::string markdown_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
+
+}  // namespace rtsim::reports

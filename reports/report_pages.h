@@ -1,0 +1,36 @@
+// The pages of a run report, rendered from its JSON (report_doc.h): report.html, one
+// self-contained page (styles inline, images embedded as data: URIs, so it opens offline from
+// disk and can be mailed as one file), and report.md, a Markdown summary that links the PNGs
+// under images/. Every number cell of the HTML names its JSON key (data-key) and raw value.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace rtsim::reports {
+
+// run_dir: where images/ are read from (for embedding).
+std::string report_html(const nlohmann::ordered_json& report, const std::string& run_dir);
+std::string report_markdown(const nlohmann::ordered_json& report);
+
+// A table with one row per key of doc[prefix] (ray types), columns (title, key under the row,
+// style); the HTML cells carry their full keys.
+struct Column {
+  std::string title, key;
+  int style;  // a Style
+};
+std::string html_type_table(const nlohmann::ordered_json& doc, const std::string& prefix,
+                            const std::vector<Column>& columns);
+std::string markdown_type_table(const nlohmann::ordered_json& doc, const std::string& prefix,
+                                const std::vector<Column>& columns);
+
+// The image gallery of one kind list ("picture,heatmap" or "chart").
+std::string html_figures(const nlohmann::ordered_json& report, const std::string& run_dir,
+                         const std::vector<std::string>& kinds);
+
+// Shared page chrome: head with the inline style sheet, and the end.
+std::string html_head(const std::string& title);
+std::string html_tail();
+
+}  // namespace rtsim::reports

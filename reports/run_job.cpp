@@ -1,0 +1,77 @@
+#include "reports/run_job.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+
+#include "model/fidelity/cycle_level.h"
+#include "model/sc/sim_report.h"
+#include "model/sched/ray_source.h"
+#include "model/sched/sim_stats.h"
+#include "model/sched/sim_verifier.h"
+#include "reports/run_collector.h"
+#include "traces/embree_scene.h"
+#include "traces/error.h"
+#include "workloads/scene.h"
+
+namespace rtsim::reports {
+namespace {
+
+void create_folder(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) throw_input_error(dir, "", "cannot create the folder: " + error.message());
+}
+
+RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image) {
+  RayStreamReader reader(job.stream);
+  StreamHeader header = reader.header();
+  std::unique_ptr<EmbreeScene> embree;
+  std::unique_ptr<TraversalUnit> model;
+  std::unique_ptr<SimVerifier> verifier;
+  RunCollector collector;
+  RetireFanout listeners;
+  listeners.add(&collector);
+  if (job.verify) {
+    embree = std::make_unique<EmbreeScene>(scene.mesh);
+    model = std::make_unique<TraversalUnit>(image);
+    verifier = std::make_unique<SimVerifier>(scene.mesh, *model, *embree);
+    listeners.add(verifier.get());
+  }
+  StreamRaySource source(reader);
+  RtSimulator sim(job.config, image, source, header.width, header.height, &listeners);
+  HostTimer timer;
+  RunResult result;
+  try {
+    sim.run();
+  } catch (const SimStallError& e) {
+    result.stalled = true;
+    result.stall_message = e.what();
+    return result;
+  }
+  result.fidelity = cycle_level_result(sim);
+  timer.stop(result.fidelity);
+  SimRunInfo info{job.stream, header, &image, verifier ? &verifier->report() : nullptr,
+                  result.fidelity.host_seconds};
+  result.stats = write_sim_results(job.output, sim, info);
+  result.collected = collector.to_json();
+  write_file_atomic(job.output + "/fidelity.json", result.fidelity.to_json().dump(2) + "\n");
+  return result;
+}
+
+}  // namespace
+
+RunResult run_job(const RunJob& job) {
+  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  create_folder(job.output);
+  Scene scene = load_scene(job.scene);
+  BvhImage image = build_bvh_image(scene.mesh, job.config.bvh);
+  if (job.level.level == FidelityLevel::Cycle) return run_cycle(job, scene, image);
+  RunResult result;
+  result.fidelity = run_level(job.level, job.config, image, job.stream);
+  write_file_atomic(job.output + "/config.toml", resolved_toml(job.config));
+  write_file_atomic(job.output + "/fidelity.json", result.fidelity.to_json().dump(2) + "\n");
+  return result;
+}
+
+}  // namespace rtsim::reports
