@@ -69,14 +69,11 @@ std::string relative_to(const std::string& file, const std::string& path) {
 }
 
 DeviceHardware read_hardware(ConfigReader& r, const toml::table* table, const std::string& prefix,
-                             ConfigReadContext& ctx, const char* what) {
+                             ConfigReadContext& ctx, const char* config_desc,
+                             const char* sets_desc) {
   DeviceHardware h;
-  h.config = relative_to(ctx.file, r.text("config", "",
-                                          fmt::format("hardware config of {} (relative to this "
-                                                      "file; empty: the built-in defaults)",
-                                                      what).c_str()));
-  h.sets = read_strings(table, prefix, "set", {},
-                        "hardware key=value overrides, as rtsim sim --set takes them", ctx);
+  h.config = relative_to(ctx.file, r.text("config", "", config_desc));
+  h.sets = read_strings(table, prefix, "set", {}, sets_desc, ctx);
   return h;
 }
 
@@ -90,7 +87,10 @@ void read_devices(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
   for (size_t i = 0; i < std::max<size_t>(elements, 1); ++i) {  // one empty read documents keys
     const toml::table* table = i < elements ? array->get(i)->as_table() : nullptr;
     ConfigReader r(table, prefix, ctx);
-    DeviceHardware h = read_hardware(r, table, prefix, ctx, "these devices");
+    DeviceHardware h = read_hardware(
+        r, table, prefix, ctx,
+        "hardware config of these devices, relative to this file (empty: built-in defaults)",
+        "hardware key=value overrides, as rtsim sim --set takes them");
     auto count = uint32_t(r.integer("count", 1, "devices", "identical devices of this hardware",
                                     1, 1024));
     if (!table) break;
@@ -114,7 +114,10 @@ void read_changes(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
                                  1u << 30));
     c.device = uint32_t(r.integer("device", 0, "index", "which device changes (0: primary)", 0,
                                   1023));
-    c.hardware = read_hardware(r, table, prefix, ctx, "the device from this frame on");
+    c.hardware = read_hardware(
+        r, table, prefix, ctx,
+        "the device's hardware config from this frame on (empty: the device's own)",
+        "overrides added to the device's own from this frame on (empty: none)");
     if (!table) break;
     check_element_keys(*table, prefix, ctx);
     if (c.device >= s.devices.size() && !s.devices.empty())
@@ -272,10 +275,13 @@ DeviceConfigs::DeviceConfigs(const DeviceSet& set, const std::vector<std::string
 
 uint32_t DeviceConfigs::index(uint32_t device, uint32_t frame) {
   DeviceHardware h = base_.at(device);
-  for (const DeviceChange& c : changes_) {
-    if (c.device != device || c.frame > frame) continue;
-    if (!c.hardware.config.empty()) h.config = c.hardware.config;
-    h.sets.insert(h.sets.end(), c.hardware.sets.begin(), c.hardware.sets.end());
+  const DeviceChange* latest = nullptr;  // changes are sorted by frame
+  for (const DeviceChange& c : changes_)
+    if (c.device == device && c.frame <= frame) latest = &c;
+  if (latest) {
+    if (!latest->hardware.config.empty()) h.config = latest->hardware.config;
+    const std::vector<std::string>& sets = latest->hardware.sets;
+    h.sets.insert(h.sets.end(), sets.begin(), sets.end());
   }
   h.sets.insert(h.sets.end(), hw_overrides_.begin(), hw_overrides_.end());
   std::string label = h.config.empty() ? "(defaults)"

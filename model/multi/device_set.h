@@ -2,7 +2,8 @@
 // split strategies to compare (model/multi/README.md lists every key). TOML, in configs/multi/:
 //   name, description; [link] [flow] [split] [report] sections of single keys;
 //   [[device]] config (a hardware config, relative to this file), count, set (overrides);
-//   [[change]] frame, device, config, set: from that frame on, the device's hardware changes.
+//   [[change]] frame, device, config, set: from that frame on, the device's hardware changes
+//   (relative to the device's own; an empty change restores it).
 // Device 0 is the primary of the mGPU flow. Every key is read in one place, device_set.cpp.
 #pragma once
 
@@ -27,9 +28,12 @@ struct DeviceHardware {
   std::vector<std::string> sets;
 };
 
+// From `frame` on (until the device's next change), the device's hardware is its own with this
+// change applied: config, if not empty, replaces its file; sets are added to its own sets.
+// Changes do not accumulate: an empty change restores the device's own hardware.
 struct DeviceChange {
   uint32_t frame = 0, device = 0;
-  DeviceHardware hardware;  // config empty: keep the device's file; sets are added to its own
+  DeviceHardware hardware;
 };
 
 struct DeviceSet {
