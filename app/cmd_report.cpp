@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "reports/report_writer.h"
+#include "reports/sweep_report.h"
 #include "traces/error.h"
 
 namespace rtsim::app {
@@ -20,8 +21,9 @@ void add_report_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-charts", *no_charts, "Write the pages without running Python");
   cmd->callback([dir, no_charts, &exit_code] {
     reports::ReportOptions options{!*no_charts, true};
-    bool sweep = false;
-    reports::ReportOutcome out = reports::rewrite_report(*dir, options);
+    bool sweep = std::filesystem::exists(*dir + "/sweep.json");
+    reports::ReportOutcome out = sweep ? reports::rewrite_sweep_report(*dir, options)
+                                       : reports::rewrite_report(*dir, options);
     if (!out.charts_ok) fmt::print("charts     missing: {}\n", out.message);
     fmt::print("report     {}/{}\n", *dir, sweep ? "sweep.html" : "report.html");
     exit_code = 0;

@@ -1,0 +1,136 @@
+#!/usr/bin/python3
+"""Charts of an `rtsim sweep`.
+
+Usage: sweep_charts.py SWEEP.json OUTDIR  -- draws every chart listed in SWEEP.json's
+"charts" into OUTDIR (their "file" paths):
+  curve:  a metric against a swept key, one line per value of the series key (and of any
+          other swept key); a y of "type.*.NAME" draws NAME for every ray type.
+  pareto: cycles against on-chip memory, every point, with each workload's Pareto front.
+Exits 1 if any chart failed, after drawing the others.
+"""
+import json
+import os
+import sys
+import traceback
+
+from matplotlib.lines import Line2D
+
+import chart_style
+
+LINESTYLES = ["-", "--", ":", "-."]
+
+
+def value_of(point, key):
+    if key == "workload":
+        return point["workload"]
+    return point["values"].get(key)
+
+
+def metric(point, name):
+    return (point.get("metrics") or {}).get(name)
+
+
+def label(point, keys):
+    return ", ".join("%s=%s" % (k, value_of(point, k)) for k in keys)
+
+
+def order(text):
+    try:
+        return (0, float(text), "")
+    except ValueError:
+        return (1, 0.0, text)
+
+
+def groups(points, keys):
+    out = {}
+    for p in points:
+        out.setdefault(tuple(str(value_of(p, k)) for k in keys), []).append(p)
+    return out
+
+
+def curve(doc, chart):
+    points = [p for p in doc["points"] if p["metrics"]]
+    x_key, series = chart["x"], chart["series"]
+    others = [series] + [k for k in doc["spec"]["keys"] if k not in (x_key, series)]
+    if chart["y"].startswith("type.*."):
+        name = chart["y"][len("type.*."):]
+        types = sorted({m.split(".")[1] for p in points for m in p["metrics"]
+                        if m.startswith("type.") and m.endswith("." + name)})
+        ys = [("type.%s.%s" % (t, name), t) for t in types]
+    else:
+        ys = [(chart["y"], None)]
+    fig, ax = chart_style.new(9.5, 4.2)
+    legend = []
+    grouped = sorted(groups(points, others).items(), key=lambda kv: [order(v) for v in kv[0]])
+    for g, (key, members) in enumerate(grouped):
+        members.sort(key=lambda p: value_of(p, x_key))
+        xs = [value_of(p, x_key) for p in members]
+        style = LINESTYLES[g % len(LINESTYLES)]
+        for y, ray_type in ys:
+            values = [metric(p, y) for p in members]
+            if all(v is None for v in values):
+                continue
+            if ray_type is None:
+                ax.plot(xs, values, marker="o", ms=3, label=label(members[0], others))
+                continue
+            ax.plot(xs, values, marker="o", ms=3, ls=style, color=chart_style.color(ray_type),
+                    label=ray_type if g == 0 else None)
+        if ys[0][1] is not None:
+            legend.append(Line2D([], [], color="black", ls=style, label=label(members[0], others)))
+    xs = [value_of(p, x_key) for p in points]
+    if xs and min(xs) > 0 and max(xs) / min(xs) >= 8:
+        ax.set_xscale("log", base=2)
+    ax.set_xlabel(x_key)
+    ax.set_ylabel(chart["y"].replace("type.*.", ""))
+    ax.set_title(chart["title"])
+    handles, _ = ax.get_legend_handles_labels()
+    ax.legend(handles=handles + legend, fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1))
+    fig.tight_layout()
+    return fig
+
+
+def pareto(doc, chart):
+    points = [p for p in doc["points"] if metric(p, "cycles") is not None]
+    fig, ax = chart_style.new(8, 4.6)
+    for w, members in sorted(groups(points, ["workload"]).items()):
+        xs = [metric(p, "on_chip_bytes") for p in members]
+        ys = [metric(p, "cycles") for p in members]
+        dots = ax.scatter(xs, ys, s=18, label=w[0])
+        front, best = [], float("inf")
+        for p in sorted(members, key=lambda p: (metric(p, "on_chip_bytes"), metric(p, "cycles"))):
+            if metric(p, "cycles") < best:
+                best = metric(p, "cycles")
+                front.append(p)
+        ax.step([metric(p, "on_chip_bytes") for p in front], [metric(p, "cycles") for p in front],
+                where="post", color=dots.get_facecolor()[0], lw=1)
+        for p in front:
+            ax.annotate(label(p, doc["spec"]["keys"]), (metric(p, "on_chip_bytes"),
+                        metric(p, "cycles")), fontsize=5, xytext=(3, 3),
+                        textcoords="offset points")
+    ax.set_xscale("log", base=2)
+    ax.set_xlabel("on-chip memory (bytes: L1s, L2, ray stacks)")
+    ax.set_ylabel("cycles")
+    ax.set_title(chart["title"])
+    ax.legend(fontsize=7)
+    return fig
+
+
+def main(path, outdir):
+    doc = json.load(open(path))
+    os.makedirs(os.path.join(outdir, "images"), exist_ok=True)
+    failed = []
+    for chart in doc["charts"]:
+        try:
+            fig = pareto(doc, chart) if chart["kind"] == "pareto" else curve(doc, chart)
+            chart_style.save(fig, os.path.join(outdir, chart["file"]))
+        except Exception:
+            traceback.print_exc()
+            failed.append(chart["id"])
+    if failed:
+        sys.exit("failed: " + ", ".join(failed))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2])

@@ -1,0 +1,22 @@
+// The flat metrics of a run, by name, read from its report.json: what sweeps tabulate and
+// chart and what regression suites compare. Names: cycles, cycles_ci95, mrays_per_second,
+// rays, dram_bytes, dram_bytes_per_ray, l1_bytes_per_ray, l2_bytes_per_ray, l1_hit_rate,
+// l2_hit_rate, dram_utilisation, nodes_per_ray, triangles_per_ray, stack_spills_per_ray,
+// on_chip_bytes, unexplained, host_seconds, and per ray type type.T.rays,
+// type.T.dram_bytes_per_ray, type.T.l1_hit_rate, type.T.l2_hit_rate, type.T.nodes_per_ray,
+// type.T.latency_mean, type.T.latency_p50, type.T.latency_p99. A metric the run's fidelity
+// level does not model is null.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace rtsim::reports {
+
+nlohmann::ordered_json flat_metrics(const nlohmann::ordered_json& report);
+
+// Whether a larger value is better ("higher"), worse ("lower"), or neither ("either").
+std::string metric_direction(const std::string& name);
+
+}  // namespace rtsim::reports

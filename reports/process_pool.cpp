@@ -1,0 +1,63 @@
+#include "reports/process_pool.h"
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <thread>
+
+namespace rtsim::reports {
+namespace {
+
+pid_t start(const ProcessJob& job) {
+  std::vector<std::string> words = job.argv;
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  std::fflush(nullptr);
+  pid_t pid = fork();
+  if (pid != 0) return pid;
+  int fd = open(job.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
+  }
+  execv(argv[0], argv.data());
+  _exit(127);
+}
+
+}  // namespace
+
+std::string self_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }
+
+uint32_t local_cores() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+void run_processes(const std::vector<ProcessJob>& jobs, uint32_t parallel,
+                   const std::function<void(size_t, int)>& done) {
+  std::map<pid_t, size_t> running;
+  size_t next = 0;
+  while (next < jobs.size() || !running.empty()) {
+    while (next < jobs.size() && running.size() < std::max(parallel, 1u)) {
+      pid_t pid = start(jobs[next]);
+      if (pid < 0) {
+        done(next++, 127);
+        continue;
+      }
+      running[pid] = next++;
+    }
+    int status = 0;
+    pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) break;
+    auto it = running.find(pid);
+    if (it == running.end()) continue;
+    size_t index = it->second;
+    running.erase(it);
+    done(index, WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status));
+  }
+}
+
+}  // namespace rtsim::reports

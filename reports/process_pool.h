@@ -1,0 +1,30 @@
+// Runs commands as child processes, a fixed number at a time (the local cores by default), and
+// reports each one's exit as it happens. Sweeps and regression suites run one `rtsim run` per
+// point this way: each in its own process (SystemC elaborates once per process), output to a
+// log file, nothing shared but the files they read.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace rtsim::reports {
+
+struct ProcessJob {
+  std::vector<std::string> argv;  // argv[0]: the program's path
+  std::string log;                // stdout and stderr go here
+};
+
+// The path of this executable (to run `rtsim run` children).
+std::string self_executable();
+
+// Local cores (at least 1).
+uint32_t local_cores();
+
+// Runs every job, at most `parallel` at once; done(index, exit code) is called in this process
+// as each finishes (exit code 128 + signal if a child was killed, 127 if it could not start).
+void run_processes(const std::vector<ProcessJob>& jobs, uint32_t parallel,
+                   const std::function<void(size_t, int)>& done);
+
+}  // namespace rtsim::reports

@@ -1,0 +1,114 @@
+// sweep.html (self-contained) and sweep.md: the spec, every point with its main metrics, and
+// the charts.
+#include <fmt/core.h>
+
+#include "reports/page_util.h"
+#include "reports/report_pages.h"
+#include "reports/sweep_report.h"
+
+namespace rtsim::reports {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+struct Metric {
+  const char* name;
+  const char* title;
+  Style style;
+};
+const Metric kMetrics[] = {{"cycles", "cycles", Style::Integer},
+                           {"mrays_per_second", "MRays/s", Style::Real},
+                           {"dram_bytes_per_ray", "DRAM B/ray", Style::Real},
+                           {"l1_hit_rate", "L1 hit", Style::Percent},
+                           {"l2_hit_rate", "L2 hit", Style::Percent},
+                           {"on_chip_bytes", "on-chip bytes", Style::Integer},
+                           {"unexplained", "unexplained", Style::Integer}};
+
+std::string title_of(const Json& doc) {
+  return "rtsim sweep: " + doc["spec"]["name"].get<std::string>();
+}
+
+Json figures_doc(const Json& doc) {
+  Json images = Json::array();
+  for (const Json& c : doc["charts"])
+    images.push_back({{"id", c["id"]}, {"file", c["file"]}, {"kind", "chart"},
+                      {"title", c["title"]},
+                      {"caption", c["kind"] == "pareto"
+                                      ? "Each point's cycles against its on-chip memory (caches "
+                                        "and ray stacks); the line joins the Pareto-optimal "
+                                        "points of each workload."
+                                      : fmt::format("{} against {}, one line per {}.",
+                                                    c["y"].get<std::string>(),
+                                                    c["x"].get<std::string>(),
+                                                    c["series"].get<std::string>())},
+                      {"available", c["available"]}, {"reason", c["reason"]}});
+  return {{"images", images}};
+}
+
+}  // namespace
+
+std::string sweep_html(const Json& doc, const std::string& dir) {
+  std::string out = html_head(title_of(doc)) + "<h1>" + html_escape(title_of(doc)) + "</h1>\n";
+  const Json& spec = doc["spec"];
+  out += "<p class=\"meta\">" + html_escape(doc["generator"].get<std::string>()) + " &middot; " +
+         html_escape(spec["file"].get<std::string>()) + " &middot; data: sweep.json, sweep.csv</p>\n";
+  if (!spec["description"].get<std::string>().empty())
+    out += "<p>" + html_escape(spec["description"].get<std::string>()) + "</p>\n";
+  out += "<section id=\"spec\">\n<h2>Spec</h2>\n" +
+         html_rows(doc, {{"base config", "spec.config", Style::Text},
+                         {"fidelity", "spec.fidelity", Style::Text},
+                         {"verify", "spec.verify", Style::Text}}) +
+         "<p>Swept keys: <code>" + html_escape(spec["keys"].dump()) + "</code>; workloads: <code>" +
+         html_escape(spec["workloads"].dump()) + "</code></p>\n</section>\n";
+  out += "<section id=\"points\">\n<h2>Points</h2>\n<table>\n<tr><th>workload</th>";
+  for (const Json& k : spec["keys"]) out += "<th>" + html_escape(k.get<std::string>()) + "</th>";
+  out += "<th>status</th>";
+  for (const Metric& m : kMetrics) out += std::string("<th>") + m.title + "</th>";
+  out += "</tr>\n";
+  const Json& points = doc["points"];
+  for (size_t i = 0; i < points.size(); ++i) {
+    std::string p = "points." + std::to_string(i);
+    out += "<tr><th>" + html_escape(points[i]["workload"].get<std::string>()) + "</th>";
+    for (const Json& k : spec["keys"])
+      out += "<td>" + html_escape(show(at_key(points[i]["values"], k.get<std::string>()), Style::Real)) + "</td>";
+    out += html_cell(doc, p + ".status", Style::Text);
+    for (const Metric& m : kMetrics) out += html_cell(doc, p + ".metrics." + m.name, m.style);
+    out += "</tr>\n";
+  }
+  out += "</table>\n</section>\n<section id=\"charts\">\n<h2>Charts</h2>\n" +
+         html_figures(figures_doc(doc), dir, {"chart"}) + "</section>\n";
+  return out + html_tail();
+}
+
+std::string sweep_markdown(const Json& doc) {
+  const Json& spec = doc["spec"];
+  std::string out = "# " + title_of(doc) + "\n\n" + spec["description"].get<std::string>() +
+                    "\n\nBase config: " + spec["config"].get<std::string>() + ", fidelity " +
+                    spec["fidelity"].get<std::string>() + ". Data: sweep.json, sweep.csv; full "
+                    "page: sweep.html.\n\n| workload |";
+  for (const Json& k : spec["keys"]) out += " " + k.get<std::string>() + " |";
+  out += " status |";
+  for (const Metric& m : kMetrics) out += std::string(" ") + m.title + " |";
+  out += "\n|---|";
+  for (size_t i = 0; i < spec["keys"].size() + 1 + std::size(kMetrics); ++i) out += "---|";
+  out += "\n";
+  for (const Json& p : doc["points"]) {
+    out += "| " + p["workload"].get<std::string>() + " |";
+    for (const Json& k : spec["keys"])
+      out += " " + show(at_key(p["values"], k.get<std::string>()), Style::Real) + " |";
+    out += " " + p["status"].get<std::string>() + " |";
+    for (const Metric& m : kMetrics)
+      out += " " + show(at_key(p, std::string("metrics.") + m.name), m.style) + " |";
+    out += "\n";
+  }
+  out += "\n";
+  for (const Json& c : doc["charts"])
+    out += c["available"].get<bool>()
+               ? fmt::format("## {}\n\n![{}]({})\n\n", c["title"].get<std::string>(),
+                             c["title"].get<std::string>(), c["file"].get<std::string>())
+               : fmt::format("## {}\n\nNot available: {}.\n\n", c["title"].get<std::string>(),
+                             c["reason"].get<std::string>());
+  return out;
+}
+
+}  // namespace rtsim::reports

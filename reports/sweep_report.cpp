@@ -1,0 +1,151 @@
+#include "reports/sweep_report.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <fmt/core.h>
+
+#include "model/sc/sim_report.h"
+#include "reports/charts.h"
+#include "reports/page_util.h"
+#include "traces/error.h"
+
+namespace rtsim::reports {
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+bool numeric_key(const Json& points, const std::string& key) {
+  for (const Json& p : points)
+    if (!p["values"].contains(key) || !p["values"][key].is_number()) return false;
+  return true;
+}
+
+std::string chart_title(const Json& c) {
+  std::string y = c["y"].get<std::string>();
+  if (y.rfind("type.*.", 0) == 0) y = y.substr(7) + " per ray type";
+  return fmt::format("{} against {}", y, c["x"].get<std::string>());
+}
+
+// The curves asked for, or cycles and DRAM bytes per ray (per ray type) against each numeric
+// key; then the Pareto chart.
+Json chart_list(const SweepSpec& spec, const Json& points) {
+  Json charts = Json::array();
+  auto add = [&](const std::string& x, const std::string& y, const std::string& series) {
+    charts.push_back({{"id", "curve_" + std::to_string(charts.size())},
+                      {"kind", "curve"}, {"x", x}, {"y", y}, {"series", series}});
+  };
+  for (const SweepChart& c : spec.charts) add(c.x, c.y, c.series);
+  if (spec.charts.empty())
+    for (const std::string& key : spec.keys)
+      if (numeric_key(points, key)) {
+        add(key, "cycles", "workload");
+        add(key, "type.*.dram_bytes_per_ray", "workload");
+      }
+  for (Json& c : charts) c["title"] = chart_title(c);
+  charts.push_back({{"id", "pareto"}, {"kind", "pareto"}, {"x", "on_chip_bytes"},
+                    {"y", "cycles"}, {"series", "workload"},
+                    {"title", "Pareto: cycles against on-chip memory"}});
+  for (Json& c : charts) {
+    c["file"] = "images/" + c["id"].get<std::string>() + ".png";
+    c["available"] = true;
+    c["reason"] = "";
+  }
+  return charts;
+}
+
+std::string csv_field(const Json& v) {
+  if (v.is_null()) return "";
+  if (v.is_string()) return v.get<std::string>();
+  return v.dump();
+}
+
+}  // namespace
+
+Json sweep_json(const SweepSpec& spec, const std::vector<PointRun>& runs) {
+  Json points = Json::array();
+  for (const PointRun& p : runs)
+    points.push_back({{"id", p.id},
+                      {"workload", p.workload},
+                      {"values", p.point->values},
+                      {"status", !p.ok ? "failed" : p.reused ? "reused" : "done"},
+                      {"exit_code", p.exit_code},
+                      {"dir", "points/" + p.id},
+                      {"metrics", p.ok ? p.metrics : Json()}});
+  Json workloads = Json::array();
+  for (const SweepWorkload& w : spec.workloads)
+    workloads.push_back({{"name", w.name}, {"workload", w.trace.workload},
+                         {"resolution", w.trace.resolution}, {"frames", w.trace.frames}});
+  Json doc;
+  doc["schema"] = kSweepSchema;
+  doc["generator"] = "rtsim " RTSIM_VERSION;
+  doc["spec"] = {{"file", spec.file}, {"name", spec.name}, {"description", spec.description},
+                 {"config", spec.config}, {"sets", spec.sets}, {"workloads", workloads},
+                 {"keys", spec.keys}, {"fidelity", spec.fidelity},
+                 {"sample_rate", spec.sampling.rate}, {"verify", spec.verify}};
+  doc["points"] = points;
+  doc["charts"] = chart_list(spec, points);
+  return doc;
+}
+
+std::string sweep_csv(const Json& doc) {
+  std::vector<std::string> metrics;
+  for (const Json& p : doc["points"])
+    if (p["metrics"].is_object())
+      for (const auto& [name, value] : p["metrics"].items())
+        if (std::find(metrics.begin(), metrics.end(), name) == metrics.end())
+          metrics.push_back(name);
+  std::string out = "workload,id,status";
+  for (const Json& k : doc["spec"]["keys"]) out += "," + k.get<std::string>();
+  for (const std::string& m : metrics) out += "," + m;
+  out += "\n";
+  for (const Json& p : doc["points"]) {
+    out += p["workload"].get<std::string>() + "," + p["id"].get<std::string>() + "," +
+           p["status"].get<std::string>();
+    for (const Json& k : doc["spec"]["keys"])
+      out += "," + csv_field(at_key(p["values"], k.get<std::string>()));
+    for (const std::string& m : metrics)
+      out += "," + (p["metrics"].is_object() && p["metrics"].contains(m)
+                        ? csv_field(p["metrics"][m]) : std::string());
+    out += "\n";
+  }
+  return out;
+}
+
+ReportOutcome write_sweep_report(Json& doc, const std::string& dir, const ReportOptions& options) {
+  fs::create_directories(dir + "/images");
+  std::string json_path = dir + "/sweep.json";
+  write_file_atomic(json_path, doc.dump(2) + "\n");
+  write_file_atomic(dir + "/sweep.csv", sweep_csv(doc));
+  ReportOutcome outcome{false, "charts skipped (--no-charts)"};
+  if (options.charts) {
+    ChartRun charts = run_chart_script("sweep_charts.py", {json_path, dir});
+    outcome = {charts.ok, charts.message};
+  }
+  for (Json& c : doc["charts"])
+    if (!fs::exists(dir + "/" + c["file"].get<std::string>())) {
+      c["available"] = false;
+      c["reason"] = outcome.charts_ok ? "file missing" : outcome.message;
+    }
+  write_file_atomic(json_path, doc.dump(2) + "\n");
+  write_file_atomic(dir + "/sweep.html", sweep_html(doc, dir));
+  write_file_atomic(dir + "/sweep.md", sweep_markdown(doc));
+  return outcome;
+}
+
+ReportOutcome rewrite_sweep_report(const std::string& dir, const ReportOptions& options) {
+  std::string path = dir + "/sweep.json";
+  Json doc;
+  try {
+    doc = Json::parse(read_file(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw_input_error(path, "", std::string("not valid JSON: ") + e.what());
+  }
+  if (doc.value("schema", "") != kSweepSchema)
+    throw_input_error(path, "schema", std::string("expected ") + kSweepSchema);
+  for (Json& c : doc["charts"]) c["available"] = true;
+  return write_sweep_report(doc, dir, options);
+}
+
+}  // namespace rtsim::reports

@@ -1,0 +1,188 @@
+#include "reports/sweep_spec.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <fmt/core.h>
+#include <toml++/toml.h>
+
+#include "model/config/hw_config.h"
+#include "traces/error.h"
+
+namespace rtsim::reports {
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+namespace {
+
+struct Reader {
+  std::string file;
+
+  [[noreturn]] void fail(const toml::node& node, const std::string& what) const {
+    throw_input_error(file, fmt::format("line {}", node.source().begin.line), what);
+  }
+  void only(const toml::table& table, const std::vector<std::string>& keys,
+            const std::string& where) const {
+    for (const auto& [key, node] : table)
+      if (std::find(keys.begin(), keys.end(), std::string(key.str())) == keys.end())
+        fail(node, fmt::format("unknown key '{}' in {}", key.str(), where));
+  }
+  std::string text(const toml::table& t, const char* key, const std::string& def = "") const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    if (!n->is_string()) fail(*n, fmt::format("'{}' must be a string", key));
+    return std::string(*n->value<std::string>());
+  }
+  int64_t integer(const toml::table& t, const char* key, int64_t def, int64_t lo,
+                  int64_t hi) const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    if (!n->is_integer()) fail(*n, fmt::format("'{}' must be an integer", key));
+    int64_t v = *n->value<int64_t>();
+    if (v < lo || v > hi) fail(*n, fmt::format("'{}' must be {} to {}", key, lo, hi));
+    return v;
+  }
+  // A path relative to the spec's folder, if such a file exists; else as written.
+  std::string resolve(const std::string& path) const {
+    fs::path candidate = fs::path(file).parent_path() / path;
+    return !path.empty() && fs::exists(candidate) ? candidate.lexically_normal().string() : path;
+  }
+};
+
+// A TOML value as the text of --set KEY=VALUE, and as JSON.
+std::pair<std::string, Json> scalar(const Reader& r, const toml::node& n) {
+  if (auto v = n.value_exact<int64_t>()) return {std::to_string(*v), *v};
+  if (auto v = n.value_exact<double>()) return {fmt::format("{}", *v), *v};
+  if (auto v = n.value_exact<bool>()) return {*v ? "true" : "false", *v};
+  if (auto v = n.value_exact<std::string>()) return {"\"" + *v + "\"", *v};
+  r.fail(n, "a config value must be an integer, number, boolean or string");
+}
+
+// Flattens nested tables into dotted keys ("rt.l1.size_bytes").
+void flatten(const toml::table& t, const std::string& prefix,
+             std::vector<std::pair<std::string, const toml::node*>>& out) {
+  for (const auto& [key, node] : t) {
+    std::string name = prefix + std::string(key.str());
+    if (node.is_table()) flatten(*node.as_table(), name + ".", out);
+    else out.emplace_back(name, &node);
+  }
+}
+
+void add_grid(const Reader& r, const toml::table& grid, SweepSpec& spec) {
+  std::vector<std::pair<std::string, const toml::node*>> axes;
+  flatten(grid, "", axes);
+  spec.points.push_back({Json::object(), {}});
+  for (const auto& [key, node] : axes) {
+    const toml::array* values = node->as_array();
+    if (!values || values->empty()) r.fail(*node, "grid key '" + key + "' needs a list of values");
+    spec.keys.push_back(key);
+    std::vector<SweepPoint> next;
+    for (const SweepPoint& p : spec.points)
+      for (const toml::node& v : *values) {
+        SweepPoint q = p;
+        auto [set, json] = scalar(r, v);
+        q.values[key] = json;
+        q.sets.push_back(key + "=" + set);
+        next.push_back(q);
+      }
+    spec.points = next;
+  }
+}
+
+void add_point(const Reader& r, const toml::table& table, SweepSpec& spec) {
+  std::vector<std::pair<std::string, const toml::node*>> keys;
+  flatten(table, "", keys);
+  SweepPoint p{Json::object(), {}};
+  for (const auto& [key, node] : keys) {
+    auto [set, json] = scalar(r, *node);
+    p.values[key] = json;
+    p.sets.push_back(key + "=" + set);
+    if (std::find(spec.keys.begin(), spec.keys.end(), key) == spec.keys.end())
+      spec.keys.push_back(key);
+  }
+  spec.points.push_back(p);
+}
+
+void read_workloads(const Reader& r, const toml::table& root, SweepSpec& spec) {
+  const toml::array* list = root["workload"].as_array();
+  if (!list || list->empty()) throw_input_error(r.file, "", "no [[workload]]");
+  for (const toml::node& n : *list) {
+    const toml::table* t = n.as_table();
+    if (!t) r.fail(n, "[[workload]] must be a table");
+    r.only(*t, {"name", "workload", "resolution", "frames", "seed", "scene"}, "[[workload]]");
+    SweepWorkload w;
+    w.trace.workload = r.resolve(r.text(*t, "workload", "pica"));
+    w.name = r.text(*t, "name", fs::path(w.trace.workload).stem().string());
+    w.trace.resolution = r.text(*t, "resolution");
+    w.trace.frames = uint32_t(r.integer(*t, "frames", 0, 0, 1 << 20));
+    if (t->get("seed")) w.trace.seed = uint64_t(r.integer(*t, "seed", 1, 0, INT64_MAX));
+    w.trace.scene = r.text(*t, "scene");
+    spec.workloads.push_back(w);
+  }
+}
+
+void read_run(const Reader& r, const toml::table& run, SweepSpec& spec) {
+  r.only(run, {"fidelity", "sample_rate", "verify", "jobs"}, "[run]");
+  spec.fidelity = r.text(run, "fidelity", "cycle");
+  spec.sampling.rate = uint32_t(r.integer(run, "sample_rate", 16, 2, 1024));
+  spec.jobs = uint32_t(r.integer(run, "jobs", 0, 0, 1024));
+  if (const toml::node* v = run.get("verify")) {
+    if (!v->is_boolean()) r.fail(*v, "'verify' must be true or false");
+    spec.verify = *v->value<bool>();
+  }
+}
+
+void read_charts(const Reader& r, const toml::table& root, SweepSpec& spec) {
+  const toml::array* list = root["chart"].as_array();
+  if (!list) return;
+  for (const toml::node& n : *list) {
+    const toml::table* t = n.as_table();
+    if (!t) r.fail(n, "[[chart]] must be a table");
+    r.only(*t, {"x", "y", "series"}, "[[chart]]");
+    SweepChart c{r.text(*t, "x"), r.text(*t, "y", "cycles"), r.text(*t, "series", "workload")};
+    if (std::find(spec.keys.begin(), spec.keys.end(), c.x) == spec.keys.end())
+      r.fail(n, "chart x '" + c.x + "' is not a swept key");
+    spec.charts.push_back(c);
+  }
+}
+
+}  // namespace
+
+SweepSpec read_sweep_spec(const std::string& path) {
+  Reader r{path};
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
+                      std::string(e.description()));
+  }
+  r.only(root, {"name", "description", "config", "set", "workload", "grid", "point", "run", "chart"},
+         "the sweep spec");
+  SweepSpec spec;
+  spec.file = path;
+  spec.name = r.text(root, "name", fs::path(path).stem().string());
+  spec.description = r.text(root, "description");
+  spec.config = r.resolve(r.text(root, "config"));
+  if (const toml::array* sets = root["set"].as_array())
+    for (const toml::node& s : *sets) spec.sets.push_back(std::string(s.value_or(std::string())));
+  read_workloads(r, root, spec);
+  bool grid = root["grid"].is_table(), list = root["point"].is_array();
+  if (grid == list) throw_input_error(path, "", "give either [grid] or [[point]] lists, not both");
+  if (grid) add_grid(r, *root["grid"].as_table(), spec);
+  if (list)
+    for (const toml::node& n : *root["point"].as_array()) {
+      if (!n.is_table()) r.fail(n, "[[point]] must be a table");
+      add_point(r, *n.as_table(), spec);
+    }
+  if (const toml::table* run = root["run"].as_table()) read_run(r, *run, spec);
+  read_charts(r, root, spec);
+  for (const SweepPoint& p : spec.points) {
+    std::vector<std::string> sets = spec.sets;
+    sets.insert(sets.end(), p.sets.begin(), p.sets.end());
+    load_hw_config(spec.config, sets);
+  }
+  return spec;
+}
+
+}  // namespace rtsim::reports

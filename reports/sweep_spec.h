@@ -1,0 +1,48 @@
+// A sweep spec (TOML): hardware points (a grid, the product of value lists per config key, or
+// an explicit list of points) over one or more workloads, on a base config. Format and
+// examples: reports/README.md, reports/examples/. Unknown keys are errors naming the line;
+// config keys are checked by loading each point's config before anything runs.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/fidelity/sample_plan.h"
+#include "reports/trace_step.h"
+
+namespace rtsim::reports {
+
+struct SweepWorkload {
+  std::string name;  // label in tables and charts
+  TraceRequest trace;
+};
+
+struct SweepPoint {
+  nlohmann::ordered_json values;  // config key -> value, in spec order
+  std::vector<std::string> sets;  // the same as --set KEY=VALUE (TOML syntax values)
+};
+
+struct SweepChart {
+  std::string x, y, series;  // y may hold "*" for every ray type; series: key or "workload"
+};
+
+struct SweepSpec {
+  std::string file, name, description;
+  std::string config;               // base hardware config file ("" = defaults)
+  std::vector<std::string> sets;    // applied to every point, before the point's own
+  std::vector<SweepWorkload> workloads;
+  std::vector<std::string> keys;    // swept keys, in spec order
+  std::vector<SweepPoint> points;
+  std::string fidelity = "cycle";
+  SamplingConfig sampling;
+  bool verify = true;
+  uint32_t jobs = 0;                // parallel runs; 0: every local core
+  std::vector<SweepChart> charts;   // empty: curves of cycles and DRAM bytes per swept key
+};
+
+SweepSpec read_sweep_spec(const std::string& path);
+
+}  // namespace rtsim::reports
