@@ -1,0 +1,132 @@
+#include "reports/regress_suite.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <fmt/core.h>
+#include <toml++/toml.h>
+
+#include "model/config/hw_config.h"
+#include "traces/error.h"
+
+namespace rtsim::reports {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Reader {
+  std::string file;
+
+  [[noreturn]] void fail(const toml::node& node, const std::string& what) const {
+    throw_input_error(file, fmt::format("line {}", node.source().begin.line), what);
+  }
+  void only(const toml::table& t, const std::vector<std::string>& keys,
+            const std::string& where) const {
+    for (const auto& [key, node] : t)
+      if (std::find(keys.begin(), keys.end(), std::string(key.str())) == keys.end())
+        fail(node, fmt::format("unknown key '{}' in {}", key.str(), where));
+  }
+  std::string text(const toml::table& t, const char* key, const std::string& def) const {
+    const toml::node* n = t.get(key);
+    if (!n) return def;
+    if (!n->is_string()) fail(*n, fmt::format("'{}' must be a string", key));
+    return std::string(*n->value<std::string>());
+  }
+  double number(const toml::node& n, const std::string& what) const {
+    auto v = n.value<double>();
+    if (!v || *v < 0) fail(n, what + " must be a number >= 0");
+    return *v;
+  }
+  std::string resolve(const std::string& path) const {
+    fs::path candidate = fs::path(file).parent_path() / path;
+    return !path.empty() && fs::exists(candidate) ? candidate.lexically_normal().string() : path;
+  }
+};
+
+RegressCase read_case(const Reader& r, const toml::table& t, const toml::table* defaults,
+                      const std::string& config) {
+  const std::vector<std::string> keys{"name", "workload", "resolution", "frames", "seed",
+                                      "scene", "config", "set", "fidelity", "sample_rate"};
+  r.only(t, keys, "[[case]]");
+  auto pick = [&](const char* key) -> const toml::node* {
+    if (const toml::node* n = t.get(key)) return n;
+    return defaults ? defaults->get(key) : nullptr;
+  };
+  auto text = [&](const char* key, const std::string& def) {
+    const toml::node* n = pick(key);
+    if (!n) return def;
+    if (!n->is_string()) r.fail(*n, fmt::format("'{}' must be a string", key));
+    return std::string(*n->value<std::string>());
+  };
+  RegressCase c;
+  c.trace.workload = r.resolve(text("workload", "pica"));
+  c.name = text("name", fs::path(c.trace.workload).stem().string());
+  c.trace.resolution = text("resolution", "");
+  c.trace.scene = text("scene", "");
+  if (const toml::node* n = pick("frames")) c.trace.frames = uint32_t(n->value_or(int64_t(0)));
+  if (const toml::node* n = pick("seed")) c.trace.seed = uint64_t(n->value_or(int64_t(1)));
+  c.config = r.resolve(text("config", config));
+  if (const toml::node* n = pick("set")) {
+    if (!n->is_array()) r.fail(*n, "'set' must be a list of \"key=value\" strings");
+    for (const toml::node& s : *n->as_array()) c.sets.push_back(s.value_or(std::string()));
+  }
+  c.fidelity = text("fidelity", "cycle");
+  if (const toml::node* n = pick("sample_rate")) c.sampling.rate = uint32_t(n->value_or(int64_t(16)));
+  load_hw_config(c.config, c.sets);
+  return c;
+}
+
+Tolerance read_tolerance(const Reader& r, const std::string& metric, const toml::node& n) {
+  Tolerance t{metric, 0, 0, ""};
+  if (!n.is_table()) {
+    t.relative = r.number(n, "tolerance '" + metric + "'");
+    return t;
+  }
+  const toml::table& table = *n.as_table();
+  r.only(table, {"relative", "absolute", "direction"}, "tolerance '" + metric + "'");
+  if (const toml::node* v = table.get("relative")) t.relative = r.number(*v, "relative");
+  if (const toml::node* v = table.get("absolute")) t.absolute = r.number(*v, "absolute");
+  t.direction = r.text(table, "direction", "");
+  if (!t.direction.empty() && t.direction != "lower" && t.direction != "higher" &&
+      t.direction != "either")
+    r.fail(n, "direction must be lower, higher or either");
+  return t;
+}
+
+}  // namespace
+
+RegressSuite read_regress_suite(const std::string& path) {
+  Reader r{path};
+  toml::table root;
+  try {
+    root = toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
+                      std::string(e.description()));
+  }
+  r.only(root, {"name", "description", "config", "verify", "defaults", "case", "tolerance"},
+         "the suite");
+  RegressSuite suite;
+  suite.file = path;
+  suite.name = r.text(root, "name", fs::path(path).stem().string());
+  suite.description = r.text(root, "description", "");
+  if (const toml::node* v = root.get("verify")) suite.verify = v->value_or(true);
+  std::string config = r.text(root, "config", "");
+  const toml::array* cases = root["case"].as_array();
+  if (!cases || cases->empty()) throw_input_error(path, "", "no [[case]]");
+  for (const toml::node& n : *cases) {
+    if (!n.is_table()) r.fail(n, "[[case]] must be a table");
+    suite.cases.push_back(read_case(r, *n.as_table(), root["defaults"].as_table(), config));
+    for (size_t i = 0; i + 1 < suite.cases.size(); ++i)
+      if (suite.cases[i].name == suite.cases.back().name)
+        r.fail(n, "two cases named '" + suite.cases.back().name + "'");
+  }
+  const toml::table* tolerances = root["tolerance"].as_table();
+  if (!tolerances || tolerances->empty())
+    throw_input_error(path, "", "no [tolerance] table: which metrics does the suite compare?");
+  for (const auto& [metric, node] : *tolerances)
+    suite.tolerances.push_back(read_tolerance(r, std::string(metric.str()), node));
+  return suite;
+}
+
+}  // namespace rtsim::reports
