@@ -1,0 +1,87 @@
+// `rtsim regress`: against its own baseline it passes (exit 0, JUnit XML without failures);
+// after a config change that slows the design beyond the tolerance it fails (exit 1, the delta
+// table and the JUnit XML say which metric); a faster design passes as "improved".
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/reports/report_test_util.h"
+
+namespace rtsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+class Regress : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = test::fresh_dir("regress");
+    fs::copy_file(test::source_path("configs/mobile.toml"), dir_ + "/hw.toml");
+    std::ofstream(dir_ + "/suite.toml") << "name = \"tiny\"\n"
+                                           "config = \"hw.toml\"\n"
+                                           "[[case]]\n"
+                                           "name = \"pica\"\n"
+                                           "workload = \"pica\"\n"
+                                           "resolution = \"32x18\"\n"
+                                           "[tolerance]\n"
+                                           "cycles = 0.02\n"
+                                           "l1_hit_rate = { absolute = 0.01 }\n"
+                                           "\"type.*.dram_bytes_per_ray\" = 0.05\n";
+    test::RunResult r = regress("--update-baseline");
+    ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  test::RunResult regress(const std::string& extra = "") {
+    return test::run_rtsim("regress " + dir_ + "/suite.toml --baseline " + dir_ + "/baseline -o " +
+                           dir_ + "/out " + extra);
+  }
+  void set_l1_hit_latency(int cycles) {
+    std::string config = test::slurp(dir_ + "/hw.toml");
+    size_t at = config.find("hit_latency = 16");
+    ASSERT_NE(at, std::string::npos) << "the mobile preset's L1 hit latency";
+    config.replace(at, 16, "hit_latency = " + std::to_string(cycles));
+    std::ofstream(dir_ + "/hw.toml") << config;
+  }
+  std::string dir_;
+};
+
+TEST_F(Regress, PassesAgainstItsOwnBaseline) {
+  EXPECT_TRUE(fs::exists(dir_ + "/baseline/baseline.json"));
+  test::RunResult r = regress();
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("cycles"), std::string::npos) << "the delta table names each metric";
+  std::string junit = test::slurp(dir_ + "/out/junit.xml");
+  EXPECT_NE(junit.find("<testsuite name=\"rtsim.regress.tiny\""), std::string::npos) << junit;
+  EXPECT_NE(junit.find("failures=\"0\""), std::string::npos) << junit;
+  EXPECT_EQ(junit.find("<failure"), std::string::npos) << junit;
+}
+
+TEST_F(Regress, FailsWhenAConfigChangeSlowsTheDesign) {
+  set_l1_hit_latency(64);
+  test::RunResult r = regress();
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("regressed"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FAILED"), std::string::npos) << r.out;
+  std::string junit = test::slurp(dir_ + "/out/junit.xml");
+  EXPECT_NE(junit.find("name=\"cycles\" time=\"0\"><failure"), std::string::npos) << junit;
+  EXPECT_NE(test::slurp(dir_ + "/out/deltas.md").find("regressed"), std::string::npos);
+}
+
+TEST_F(Regress, AFasterDesignPassesAsImproved) {
+  set_l1_hit_latency(2);
+  test::RunResult r = regress();
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("improved"), std::string::npos) << r.out;
+}
+
+TEST_F(Regress, AMissingBaselineIsBadInput) {
+  test::RunResult r = test::run_rtsim("regress " + dir_ + "/suite.toml --baseline " + dir_ +
+                                      "/nothing -o " + dir_ + "/out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--update-baseline"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace rtsim

@@ -1,0 +1,128 @@
+// `rtsim run` on the built-in pica scene at a tiny resolution: the report has every section the
+// issue lists, every number on the page is the JSON's, every image is named and shown, and the
+// charts are reproducible byte for byte.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "tests/reports/report_test_util.h"
+
+namespace rtsim {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+class RunReport : public ::testing::Test {
+protected:
+  void SetUp() override {
+    dir_ = test::shared_run("run", "run pica --resolution 64x36 --config " +
+                                       test::source_path("configs/mobile.toml"));
+    ASSERT_FALSE(dir_.empty()) << "rtsim run failed";
+    report_ = test::read_json(dir_ + "/report.json");
+    html_ = test::slurp(dir_ + "/report.html");
+    markdown_ = test::slurp(dir_ + "/report.md");
+  }
+  std::string dir_, html_, markdown_;
+  Json report_;
+};
+
+TEST_F(RunReport, HasEverySection) {
+  for (const char* id : {"summary", "workload", "hardware", "timing", "bandwidth", "coherence",
+                         "verification", "pictures", "charts"})
+    EXPECT_NE(html_.find(std::string("<section id=\"") + id + "\">"), std::string::npos) << id;
+  for (const char* heading : {"## Workload", "## Hardware config", "## Timing", "## Bandwidth",
+                              "## Coherence", "## Verification", "## Pictures and charts"})
+    EXPECT_NE(markdown_.find(heading), std::string::npos) << heading;
+  EXPECT_EQ(report_["workload"]["scene"], "builtin:pica");
+  EXPECT_EQ(report_["workload"]["triangles"], 4144);
+  EXPECT_GT(report_["workload"]["rays_per_type"]["camera"].get<int>(), 0);
+  EXPECT_EQ(report_["workload"]["passes"].size(), 9u) << "every pass, skipped or not";
+  for (const Json& pass : report_["workload"]["passes"])
+    if (pass["skipped"].get<bool>()) {
+      EXPECT_FALSE(pass["reason"].get<std::string>().empty()) << "a skipped pass says why";
+    }
+  EXPECT_EQ(report_["hardware"]["name"], "mobile");
+  EXPECT_GT(report_["timing"]["cycles"].get<double>(), 0);
+  EXPECT_NEAR(report_["timing"]["mrays_per_second"].get<double>(),
+              report_["timing"]["rays"].get<double>() / report_["timing"]["cycles"].get<double>() *
+                  report_["timing"]["clock_ghz"].get<double>() * 1e3,
+              1e-6) << "MRays/s at the configured clock";
+  for (const char* level : {"l1_bytes_per_ray", "l2_bytes_per_ray", "dram_bytes_per_ray",
+                            "dram_utilisation"})
+    EXPECT_TRUE(report_["bandwidth"][level].is_number()) << level;
+  EXPECT_TRUE(report_["coherence"]["nodes_per_ray"].is_number());
+  EXPECT_TRUE(report_["verification"]["passed"].get<bool>());
+  EXPECT_NE(html_.find("PASSED"), std::string::npos);
+}
+
+TEST_F(RunReport, EveryNumberOnThePageIsTheJsons) {
+  std::vector<test::Cell> cells = test::number_cells(html_);
+  ASSERT_GT(cells.size(), 100u);
+  for (const test::Cell& c : cells) {
+    const Json& value = reports::at_key(report_, c.key);
+    EXPECT_EQ(Json::parse(c.value), value) << c.key << " carries the JSON's value";
+    if (value.is_number()) {
+      double shown = std::stod(c.shown);
+      double v = value.get<double>() * (c.shown.back() == '%' ? 100.0 : 1.0);
+      EXPECT_NEAR(shown, v, 1e-3 * std::abs(v) + 0.006) << c.key << " shows " << c.shown;
+    }
+  }
+  for (const char* key : {"timing.cycles", "timing.mrays_per_second",
+                          "bandwidth.dram_bytes_per_ray", "verification.unexplained",
+                          "workload.triangles", "hardware.l2.size_bytes"}) {
+    bool found = false;
+    for (const test::Cell& c : cells) found |= c.key == key;
+    EXPECT_TRUE(found) << key << " is on the page";
+  }
+  std::string cycles = reports::show(report_["timing"]["cycles"], reports::Style::Integer);
+  EXPECT_NE(markdown_.find("| cycles | " + cycles + " |"), std::string::npos) << cycles;
+}
+
+TEST_F(RunReport, NamesAndShowsEveryImage) {
+  std::vector<test::Figure> figures = test::figures(html_);
+  ASSERT_EQ(figures.size(), report_["images"].size()) << "one figure per listed image";
+  size_t charts = 0, heatmaps = 0;
+  for (const Json& image : report_["images"]) {
+    std::string id = image["id"], file = image["file"], title = image["title"];
+    ASSERT_TRUE(image["available"].get<bool>()) << id << ": " << image["reason"];
+    charts += image["kind"] == "chart";
+    heatmaps += image["kind"] == "heatmap";
+    std::string png = test::slurp(dir_ + "/" + file);
+    ASSERT_EQ(png.substr(1, 3), "PNG") << file << " is a PNG";
+    auto it = std::find_if(figures.begin(), figures.end(),
+                           [&](const test::Figure& f) { return f.id == id; });
+    ASSERT_NE(it, figures.end()) << id;
+    EXPECT_EQ(it->base64, reports::base64(png)) << id << " is embedded as it is on disk";
+    EXPECT_NE(it->caption.find(title), std::string::npos) << id << " is named";
+    EXPECT_NE(it->caption.find(file), std::string::npos) << id << " names its file";
+    EXPECT_NE(markdown_.find("![" + title + "](" + file + ")"), std::string::npos) << id;
+  }
+  EXPECT_EQ(charts, 3u) << "latency per ray type, hit rates, where the time went";
+  EXPECT_EQ(heatmaps, 3u) << "cycles, nodes and DRAM bytes per pixel";
+}
+
+TEST_F(RunReport, ChartsAreReproducibleByteForByte) {
+  std::string copy = test::fresh_dir("report-again");
+  std::filesystem::copy(dir_, copy, std::filesystem::copy_options::recursive);
+  test::RunResult r = test::run_rtsim("report " + copy);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const Json& image : report_["images"]) {
+    std::string file = image["file"];
+    EXPECT_EQ(test::slurp(copy + "/" + file), test::slurp(dir_ + "/" + file)) << file;
+  }
+  EXPECT_EQ(test::slurp(copy + "/report.html"), test::slurp(dir_ + "/report.html"));
+  std::filesystem::remove_all(copy);
+}
+
+TEST(RunCommand, BadInputIsOneLineAndExitTwo) {
+  std::string dir = test::fresh_dir("bad");
+  test::RunResult r = test::run_rtsim("run pica --resolution 16x9 --set rt.l1.bogus=1 -o " + dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("bogus"), std::string::npos) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rtsim

@@ -1,0 +1,108 @@
+// Sweep specs and regression suites: grids multiply, lists list, relative paths resolve next to
+// the file, and every mistake is an InputError naming the file and line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "reports/regress_suite.h"
+#include "reports/sweep_spec.h"
+#include "tests/reports/report_test_util.h"
+#include "traces/error.h"
+
+namespace rtsim::reports {
+namespace {
+
+std::string write(const std::string& name, const std::string& text) {
+  std::string dir = test::fresh_dir("specs");
+  std::filesystem::copy_file(test::source_path("configs/mobile.toml"), dir + "/hw.toml");
+  std::ofstream(dir + "/" + name) << text;
+  return dir + "/" + name;
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SweepSpec, AGridIsTheProductOfItsLists) {
+  SweepSpec s = read_sweep_spec(write("s.toml", R"(config = "hw.toml"
+[[workload]]
+workload = "pica"
+[[workload]]
+workload = "cornell"
+[grid]
+"rt.l1.size_bytes" = [8192, 16384, 32768]
+l2.size_bytes = [65536, 131072]
+"rt.mode" = ["depth_first", "treelet"]
+)"));
+  EXPECT_EQ(s.points.size(), 12u);
+  EXPECT_EQ(s.workloads.size(), 2u);
+  EXPECT_EQ(s.keys.size(), 3u) << "nested tables flatten to dotted keys";
+  EXPECT_NE(s.config.find("hw.toml"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(s.config)) << "resolved next to the spec";
+  bool quoted = false;
+  for (const std::string& set : s.points[0].sets) quoted |= set == "rt.mode=\"depth_first\"";
+  EXPECT_TRUE(quoted) << "strings are passed in TOML syntax";
+}
+
+TEST(SweepSpec, AListGivesItsPoints) {
+  SweepSpec s = read_sweep_spec(write("s.toml", R"([[workload]]
+workload = "pica"
+[[point]]
+"rt.count" = 2
+[[point]]
+"rt.count" = 8
+"l2.size_bytes" = 1048576
+)"));
+  ASSERT_EQ(s.points.size(), 2u);
+  EXPECT_EQ(s.points[1].sets.size(), 2u);
+  EXPECT_EQ(s.keys.size(), 2u);
+}
+
+TEST(SweepSpec, MistakesNameTheFileAndLine) {
+  EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\nworkload = \"pica\"\n"
+                                                          "[grid]\n\"rt.count\" = [1]\nbogus = 1\n")); })
+                .find("line 5"),
+            std::string::npos);
+  EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\n[grid]\n\"rt.nope\" = [1]\n")); })
+                .find("rt.nope"),
+            std::string::npos) << "config keys are checked before anything runs";
+  EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\n[grid]\n\"rt.count\" = [1]\n"
+                                                          "[[point]]\n\"rt.count\" = 2\n")); })
+                .find("not both"),
+            std::string::npos);
+}
+
+TEST(RegressSuite, ReadsCasesDefaultsAndTolerances) {
+  RegressSuite s = read_regress_suite(write("r.toml", R"(config = "hw.toml"
+[defaults]
+resolution = "32x18"
+[[case]]
+name = "a"
+[[case]]
+name = "b"
+workload = "cornell"
+set = ["rt.count=2"]
+[tolerance]
+cycles = 0.02
+l1_hit_rate = { absolute = 0.01, direction = "higher" }
+)"));
+  ASSERT_EQ(s.cases.size(), 2u);
+  EXPECT_EQ(s.cases[0].trace.resolution, "32x18") << "defaults apply to every case";
+  EXPECT_EQ(s.cases[1].sets, std::vector<std::string>{"rt.count=2"});
+  ASSERT_EQ(s.tolerances.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.tolerances[0].relative, 0.02);
+  EXPECT_DOUBLE_EQ(s.tolerances[1].absolute, 0.01);
+  EXPECT_EQ(s.tolerances[1].direction, "higher");
+  EXPECT_NE(error_of([] { read_regress_suite(write("r.toml", "[[case]]\nname = \"a\"\n")); })
+                .find("tolerance"),
+            std::string::npos) << "a suite must say what it compares";
+}
+
+}  // namespace
+}  // namespace rtsim::reports

@@ -1,0 +1,45 @@
+// `rtsim speed-vs-error` on pica at a small resolution: a row per level and rate with its time,
+// speed-up and errors against the full model, as a table, JSON, CSV, Markdown and a chart.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/reports/report_test_util.h"
+
+namespace rtsim {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+TEST(SpeedVsError, ComparesEveryLevelWithTheFullModel) {
+  std::string dir = test::fresh_dir("speed");
+  test::RunResult r = test::run_rtsim("speed-vs-error pica --resolution 96x54 --config " +
+                                      test::source_path("configs/mobile.toml") +
+                                      " --rates 4,8 -o " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  Json doc = test::read_json(dir + "/speed_vs_error.json");
+  std::vector<std::string> labels;
+  for (const Json& row : doc["rows"]) labels.push_back(row["label"]);
+  EXPECT_EQ(labels, (std::vector<std::string>{"cycle", "functional", "cache", "sampled 1/4",
+                                              "sampled 1/8"}));
+  const Json& reference = doc["rows"][0];
+  EXPECT_DOUBLE_EQ(reference["cycles"]["error"].get<double>(), 0.0);
+  for (const Json& row : doc["rows"]) {
+    EXPECT_GT(row["cpu_seconds"].get<double>(), 0.0) << row["label"];
+    EXPECT_GT(row["speedup"].get<double>(), 0.0) << row["label"];
+    bool timed = row["level"] != "functional";
+    EXPECT_EQ(row["cycles"].is_null(), !timed) << row["label"];
+    if (timed) {
+      EXPECT_TRUE(row["dram_bytes"]["error"].is_number()) << row["label"];
+    }
+  }
+  EXPECT_GT(doc["rows"][3]["cycles"]["ci95"].get<double>(), 0.0) << "sampled: an interval";
+  EXPECT_NE(r.out.find("sampled 1/8"), std::string::npos) << "the table is printed";
+  EXPECT_EQ(test::count_lines(test::slurp(dir + "/speed_vs_error.csv")), 6);
+  EXPECT_NE(test::slurp(dir + "/speed_vs_error.md").find("| sampled 1/4 |"), std::string::npos);
+  EXPECT_EQ(test::slurp(dir + "/speed_vs_error.png").substr(1, 3), "PNG");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rtsim

@@ -1,0 +1,114 @@
+// `rtsim sweep` over 8 points: it finishes with the CSV, JSON, charts and pages; killed half
+// way it resumes without redoing finished points; with some results deleted it redoes only
+// those.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <thread>
+
+#include "tests/reports/report_test_util.h"
+
+namespace rtsim {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+std::string spec() { return test::source_path("tests/reports/sweep-tiny.toml"); }
+
+std::map<std::string, fs::file_time_type> finished_points(const std::string& dir) {
+  std::map<std::string, fs::file_time_type> out;
+  if (!fs::exists(dir + "/points")) return out;
+  for (const auto& entry : fs::directory_iterator(dir + "/points"))
+    if (fs::exists(entry.path() / "report.json"))
+      out[entry.path().filename()] = fs::last_write_time(entry.path() / "report.json");
+  return out;
+}
+
+TEST(Sweep, FinishesWithCsvJsonChartsAndPages) {
+  std::string dir = test::shared_run("sweep", "sweep " + spec() + " -j 2");
+  ASSERT_FALSE(dir.empty()) << "rtsim sweep failed";
+  Json doc = test::read_json(dir + "/sweep.json");
+  ASSERT_EQ(doc["points"].size(), 8u);
+  for (const Json& p : doc["points"]) {
+    EXPECT_EQ(p["status"], "done") << p["id"];
+    EXPECT_GT(p["metrics"]["cycles"].get<double>(), 0) << p["id"];
+  }
+  std::string csv = test::slurp(dir + "/sweep.csv");
+  EXPECT_EQ(test::count_lines(csv), 9) << "a header and one row per point";
+  EXPECT_EQ(csv.rfind("workload,id,status,l2.size_bytes,rt.l1.size_bytes,", 0), 0u) << csv;
+  std::string html = test::slurp(dir + "/sweep.html");
+  std::vector<test::Figure> figures = test::figures(html);
+  ASSERT_EQ(figures.size(), doc["charts"].size());
+  bool pareto = false;
+  for (const Json& c : doc["charts"]) {
+    EXPECT_TRUE(c["available"].get<bool>()) << c["id"] << ": " << c["reason"];
+    std::string png = test::slurp(dir + "/" + c["file"].get<std::string>());
+    EXPECT_EQ(png.substr(1, 3), "PNG") << c["file"];
+    pareto |= c["kind"] == "pareto";
+  }
+  EXPECT_TRUE(pareto) << "the Pareto chart of cycles against on-chip memory";
+  EXPECT_GE(doc["charts"].size(), 3u) << "curves of cycles and DRAM bytes per ray, and Pareto";
+  for (const test::Cell& c : test::number_cells(html))
+    EXPECT_EQ(Json::parse(c.value), reports::at_key(doc, c.key)) << c.key;
+}
+
+TEST(Sweep, ResumesAfterBeingKilledWithoutRedoingPoints) {
+  std::string dir = test::fresh_dir("sweep-killed");
+  pid_t pid = fork();
+  if (pid == 0) {
+    setpgid(0, 0);
+    execl(RTSIM_EXE, RTSIM_EXE, "sweep", spec().c_str(), "-o", dir.c_str(), "-j", "1", "-q",
+          "--no-charts", nullptr);
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (finished_points(dir).size() < 2 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  kill(-pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  auto before = finished_points(dir);
+  ASSERT_GE(before.size(), 2u) << "two points finished before the kill";
+  ASSERT_LT(before.size(), 8u) << "the kill came before the end";
+  test::RunResult r = test::run_rtsim("sweep " + spec() + " -o " + dir + " -j 2 --no-charts");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find(std::to_string(before.size()) + " done before"), std::string::npos) << r.out;
+  auto after = finished_points(dir);
+  EXPECT_EQ(after.size(), 8u);
+  for (const auto& [id, time] : before) EXPECT_EQ(after[id], time) << id << " was not redone";
+  EXPECT_EQ(test::count_lines(test::slurp(dir + "/sweep.csv")), 9);
+  fs::remove_all(dir);
+}
+
+TEST(Sweep, RedoesOnlyThePointsWhoseResultsAreMissing) {
+  std::string done = test::shared_run("sweep", "sweep " + spec() + " -j 2");
+  ASSERT_FALSE(done.empty());
+  std::string dir = test::fresh_dir("sweep-partial");
+  fs::copy(done, dir, fs::copy_options::recursive);
+  auto before = finished_points(dir);
+  std::vector<std::string> removed;
+  for (const auto& [id, time] : before)
+    if (removed.size() < 3) {
+      fs::remove(dir + "/points/" + id + "/report.json");
+      removed.push_back(id);
+    }
+  test::RunResult r = test::run_rtsim("sweep " + spec() + " -o " + dir + " -j 2 --no-charts");
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("5 done before, 3 to run"), std::string::npos) << r.out;
+  auto after = finished_points(dir);
+  EXPECT_EQ(after.size(), 8u);
+  for (const auto& [id, time] : before)
+    if (std::find(removed.begin(), removed.end(), id) == removed.end()) {
+      EXPECT_EQ(after[id], time) << id << " was not redone";
+    }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace rtsim
