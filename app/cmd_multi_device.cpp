@@ -110,7 +110,7 @@ int run_multi(const MultiOptions& o) {
     return 0;
   }
   if (o.input.empty() || o.output.empty())
-    throw CLI::RequiredError("WORKLOAD_OR_STREAM and -o DIR are required (or --list-keys)");
+    throw InputError("multi-device: WORKLOAD_OR_STREAM and -o DIR are required (or --list-keys)");
   multi::DeviceSet set = device_set(o);
   multi::DeviceConfigs configs(set, o.hw_sets);
   bool stream_input = is_stream(o.input);

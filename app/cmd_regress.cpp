@@ -3,7 +3,6 @@
 // compares its metrics with the stored baseline under the suite's per-metric tolerances. Prints
 // the delta table, writes OUT/junit.xml, OUT/regress.json and OUT/deltas.md, and exits 1 on a
 // regression or a verification failure. --update-baseline records DIR/baseline.json instead.
-#include <chrono>
 #include <filesystem>
 #include <memory>
 
@@ -64,11 +63,10 @@ std::vector<reports::CaseOutcome> run_cases(const reports::RegressSuite& suite,
     cases.push_back({c.name, false, 0, Json(), 0});
   }
   uint32_t parallel = o.jobs ? o.jobs : reports::local_cores();
-  auto start = std::chrono::steady_clock::now();
-  reports::run_processes(jobs, parallel, [&](size_t i, int code) {
+  reports::run_processes(jobs, parallel, [&](size_t i, int code, double seconds) {
     reports::CaseOutcome& c = cases[i];
     c.exit_code = code;
-    c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    c.seconds = seconds;
     std::string text = reports::read_file(o.output + "/cases/" + c.name + "/report.json");
     c.ran = !text.empty();
     if (c.ran) c.metrics = reports::flat_metrics(Json::parse(text));
@@ -106,7 +104,12 @@ int run_regress(const RegressOptions& o) {
     std::string text = reports::read_file(o.baseline + "/baseline.json");
     if (text.empty())
       throw_input_error(o.baseline, "", "no baseline.json (record one with --update-baseline)");
-    baseline = Json::parse(text);
+    try {
+      baseline = Json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw_input_error(o.baseline + "/baseline.json", fmt::format("byte {}", e.byte),
+                        "not valid JSON");
+    }
     if (baseline.value("schema", "") != reports::kBaselineSchema)
       throw_input_error(o.baseline + "/baseline.json", "schema",
                         std::string("expected ") + reports::kBaselineSchema);
@@ -142,7 +145,7 @@ void add_regress_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--junit", o->junit, "JUnit XML path (default: OUTPUT/junit.xml)");
   cmd->add_option("--set", o->sets, "Override a config key in every case")->allow_extra_args(false);
   cmd->add_option("-j,--jobs", o->jobs, "Cases run at once (default: all cores)");
-  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors and the verdict");
+  cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors (the exit code is the verdict)");
   cmd->callback([o, &exit_code] { exit_code = run_regress(*o); });
 }
 

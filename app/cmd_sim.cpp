@@ -27,10 +27,12 @@ struct SimOptions {
   bool no_verify = false, quiet = false, list_keys = false;
 };
 
+// A Markdown table, as model/SIM.md shows it.
 void print_keys() {
-  fmt::print("{:<34} {:<12} {:<14} {}\n", "key", "default", "unit", "description");
+  fmt::print("| key | type | default | unit | description |\n|---|---|---|---|---|\n");
   for (const HwConfigKey& k : hw_config_keys())
-    fmt::print("{:<34} {:<12} {:<14} {}\n", k.key, k.default_value, k.unit, k.description);
+    fmt::print("| `{}` | {} | {} | {} | {} |\n", k.key, k.type, k.default_value, k.unit,
+               k.description);
 }
 
 void print_summary(const nlohmann::ordered_json& doc) {
@@ -75,7 +77,7 @@ int run_sim(const SimOptions& o) {
     return 0;
   }
   if (o.stream.empty() || o.output.empty())
-    throw CLI::RequiredError("STREAM and -o DIR are required (or --list-keys)");
+    throw InputError("sim: STREAM and -o DIR are required (or --list-keys)");
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   HwConfig config = load_hw_config(o.config, o.sets);
   RayStreamReader reader(o.stream);
@@ -122,6 +124,10 @@ int run_sim(const SimOptions& o) {
     if (!o.quiet || v.unexplained())
       fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n", v.rays,
                  v.mismatches(), v.unexplained());
+    for (const Mismatch& m : v.unexplained_examples)
+      fmt::print("unexplained ray {} ({}): Embree triangle {} t={}, model triangle {} t={}\n",
+                 m.index, ray_type_name(m.ray.type), m.embree.prim, m.embree.t, m.model_prim,
+                 m.model.t);
     if (v.unexplained() > 0) return 1;
   }
   return 0;

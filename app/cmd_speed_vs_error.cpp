@@ -35,7 +35,7 @@ struct SpeedErrorOptions {
   bool no_charts = false;
 };
 
-// The fastest of `repeat` runs (host time is noisy; the results are deterministic).
+// The run with the least CPU time of `repeat` (host time is noisy; results are deterministic).
 FidelityResult best_of(const SpeedErrorOptions& o, const LevelRequest& request,
                        const HwConfig& config, const BvhImage& image, const std::string& stream) {
   FidelityResult best = run_level_in_child(request, config, image, stream);
@@ -150,7 +150,7 @@ void add_speed_vs_error_command(CLI::App& app, int& exit_code) {
       ->delimiter(',')
       ->capture_default_str();
   reports::add_sampling_options(*cmd, o->sampling);
-  cmd->add_option("--repeat", o->repeat, "Runs per level; the fastest host time counts")
+  cmd->add_option("--repeat", o->repeat, "Runs per level; the one with the least CPU time counts")
       ->check(CLI::Range(1, 20))
       ->capture_default_str();
   cmd->add_option("--seeds", o->seeds, "Sampled level: seeds per rate (rms error over them)")

@@ -19,20 +19,12 @@ void add_verify_command(CLI::App& app, int& exit_code);
 void add_bench_command(CLI::App& app, int& exit_code);
 void add_sim_command(CLI::App& app, int& exit_code);
 void add_bench_sim_command(CLI::App& app, int& exit_code);
+void add_multi_device_command(CLI::App& app, int& exit_code);
 void add_speed_vs_error_command(CLI::App& app, int& exit_code);
 void add_run_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);
 void add_regress_command(CLI::App& app, int& exit_code);
-void add_speed_vs_error_command(CLI::App& app, int& exit_code);
-void add_run_command(CLI::App& app, int& exit_code);
-void add_report_command(CLI::App& app, int& exit_code);
-void add_sweep_command(CLI::App& app, int& exit_code);
-void add_speed_vs_error_command(CLI::App& app, int& exit_code);
-void add_run_command(CLI::App& app, int& exit_code);
-void add_report_command(CLI::App& app, int& exit_code);
-void add_multi_device_command(CLI::App& app, int& exit_code);
-void add_speed_vs_error_command(CLI::App& app, int& exit_code);
 // BVH build options shared by verify and bench (defined in cmd_verify.cpp).
 void add_bvh_options(CLI::App& cmd, BvhConfig& config);
 

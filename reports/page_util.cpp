@@ -51,6 +51,12 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
+const Json& swept_value(const Json& values, const std::string& key) {
+  static const Json null;
+  auto it = values.find(key);
+  return it == values.end() ? null : *it;
+}
+
 const Json& at_key(const Json& doc, const std::string& key) {
   static const Json null;
   const Json* node = &doc;

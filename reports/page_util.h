@@ -19,6 +19,11 @@ std::string read_file(const std::string& path);  // "" if missing
 // array); null if any part is missing.
 const nlohmann::ordered_json& at_key(const nlohmann::ordered_json& doc, const std::string& key);
 
+// The value of a swept key in a point's "values" (keyed by the whole dotted name); null if
+// the point does not set it.
+const nlohmann::ordered_json& swept_value(const nlohmann::ordered_json& values,
+                                          const std::string& key);
+
 // How a value is shown: integers whole, reals to 4 significant digits, rates as percentages
 // with 2 decimals, null as "n/a".
 std::string show(const nlohmann::ordered_json& value, Style style);

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -37,26 +38,28 @@ std::string self_executable() { return std::filesystem::read_symlink("/proc/self
 uint32_t local_cores() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 void run_processes(const std::vector<ProcessJob>& jobs, uint32_t parallel,
-                   const std::function<void(size_t, int)>& done) {
-  std::map<pid_t, size_t> running;
+                   const std::function<void(size_t, int, double)>& done) {
+  using Clock = std::chrono::steady_clock;
+  std::map<pid_t, std::pair<size_t, Clock::time_point>> running;
   size_t next = 0;
   while (next < jobs.size() || !running.empty()) {
     while (next < jobs.size() && running.size() < std::max(parallel, 1u)) {
       pid_t pid = start(jobs[next]);
       if (pid < 0) {
-        done(next++, 127);
+        done(next++, 127, 0.0);
         continue;
       }
-      running[pid] = next++;
+      running[pid] = {next++, Clock::now()};
     }
     int status = 0;
     pid_t pid = waitpid(-1, &status, 0);
     if (pid < 0) break;
     auto it = running.find(pid);
     if (it == running.end()) continue;
-    size_t index = it->second;
+    auto [index, started] = it->second;
     running.erase(it);
-    done(index, WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status));
+    done(index, WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status),
+         std::chrono::duration<double>(Clock::now() - started).count());
   }
 }
 

@@ -22,9 +22,10 @@ std::string self_executable();
 // Local cores (at least 1).
 uint32_t local_cores();
 
-// Runs every job, at most `parallel` at once; done(index, exit code) is called in this process
-// as each finishes (exit code 128 + signal if a child was killed, 127 if it could not start).
+// Runs every job, at most `parallel` at once; done(index, exit code, wall seconds) is called in
+// this process as each finishes (exit code 128 + signal if a child was killed, 127 if it could
+// not start).
 void run_processes(const std::vector<ProcessJob>& jobs, uint32_t parallel,
-                   const std::function<void(size_t, int)>& done);
+                   const std::function<void(size_t, int, double)>& done);
 
 }  // namespace rtsim::reports

@@ -120,13 +120,14 @@ std::string delta_table(const RegressResult& r, bool markdown) {
 }
 
 std::string junit_xml(const RegressSuite& suite, const RegressResult& r) {
-  size_t tests = r.checks.size() + r.cases.size(), failures = r.case_failures.size();
+  size_t tests = r.checks.size() + r.cases.size(), failures = 0;
   for (const MetricCheck& c : r.checks) failures += c.failed();
   std::string body;
   for (const CaseOutcome& c : r.cases) {
     std::string failure;
     for (const std::string& f : r.case_failures)
       if (f.rfind(c.name + ":", 0) == 0) failure += f + "\n";
+    failures += !failure.empty();
     body += fmt::format("    <testcase classname=\"{}.{}\" name=\"run and verification\" time=\"{:.3f}\">",
                         html_escape(suite.name), html_escape(c.name), c.seconds);
     if (!failure.empty())

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/core.h>
 #include <toml++/toml.h>
 
 #include "model/config/hw_config.h"
+#include "model/fidelity/fidelity_result.h"
 #include "traces/error.h"
 
 namespace rtsim::reports {
@@ -32,6 +34,15 @@ struct Reader {
     if (!n->is_string()) fail(*n, fmt::format("'{}' must be a string", key));
     return std::string(*n->value<std::string>());
   }
+  int64_t integer(const toml::node& n, const char* key, int64_t lo, int64_t hi) const {
+    std::optional<int64_t> v = n.is_integer() ? n.value<int64_t>() : std::nullopt;
+    if (!v || *v < lo || *v > hi) fail(n, fmt::format("'{}' must be an integer {} to {}", key, lo, hi));
+    return *v;
+  }
+  bool boolean(const toml::node& n, const char* key) const {
+    if (!n.is_boolean()) fail(n, fmt::format("'{}' must be true or false", key));
+    return *n.value<bool>();
+  }
   double number(const toml::node& n, const std::string& what) const {
     auto v = n.value<double>();
     if (!v || *v < 0) fail(n, what + " must be a number >= 0");
@@ -45,8 +56,10 @@ struct Reader {
 
 RegressCase read_case(const Reader& r, const toml::table& t, const toml::table* defaults,
                       const std::string& config) {
-  const std::vector<std::string> keys{"name", "workload", "resolution", "frames", "seed",
-                                      "scene", "config", "set", "fidelity", "sample_rate"};
+  std::vector<std::string> keys{"workload", "resolution", "frames", "seed",
+                                "scene", "config", "set", "fidelity", "sample_rate"};
+  if (defaults) r.only(*defaults, keys, "[defaults]");
+  keys.push_back("name");
   r.only(t, keys, "[[case]]");
   auto pick = [&](const char* key) -> const toml::node* {
     if (const toml::node* n = t.get(key)) return n;
@@ -63,15 +76,18 @@ RegressCase read_case(const Reader& r, const toml::table& t, const toml::table* 
   c.name = text("name", fs::path(c.trace.workload).stem().string());
   c.trace.resolution = text("resolution", "");
   c.trace.scene = text("scene", "");
-  if (const toml::node* n = pick("frames")) c.trace.frames = uint32_t(n->value_or(int64_t(0)));
-  if (const toml::node* n = pick("seed")) c.trace.seed = uint64_t(n->value_or(int64_t(1)));
+  if (const toml::node* n = pick("frames")) c.trace.frames = uint32_t(r.integer(*n, "frames", 0, 1 << 20));
+  if (const toml::node* n = pick("seed")) c.trace.seed = uint64_t(r.integer(*n, "seed", 0, INT64_MAX));
   c.config = r.resolve(text("config", config));
   if (const toml::node* n = pick("set")) {
     if (!n->is_array()) r.fail(*n, "'set' must be a list of \"key=value\" strings");
     for (const toml::node& s : *n->as_array()) c.sets.push_back(s.value_or(std::string()));
   }
   c.fidelity = text("fidelity", "cycle");
-  if (const toml::node* n = pick("sample_rate")) c.sampling.rate = uint32_t(n->value_or(int64_t(16)));
+  if (!fidelity_level_from_name(c.fidelity))
+    r.fail(*pick("fidelity"), "'fidelity' must be functional, cache, cycle or sampled");
+  if (const toml::node* n = pick("sample_rate"))
+    c.sampling.rate = uint32_t(r.integer(*n, "sample_rate", 2, 1024));
   load_hw_config(c.config, c.sets);
   return c;
 }
@@ -110,7 +126,7 @@ RegressSuite read_regress_suite(const std::string& path) {
   suite.file = path;
   suite.name = r.text(root, "name", fs::path(path).stem().string());
   suite.description = r.text(root, "description", "");
-  if (const toml::node* v = root.get("verify")) suite.verify = v->value_or(true);
+  if (const toml::node* v = root.get("verify")) suite.verify = r.boolean(*v, "verify");
   std::string config = r.text(root, "config", "");
   const toml::array* cases = root["case"].as_array();
   if (!cases || cases->empty()) throw_input_error(path, "", "no [[case]]");

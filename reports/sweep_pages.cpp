@@ -69,8 +69,10 @@ std::string sweep_html(const Json& doc, const std::string& dir) {
   for (size_t i = 0; i < points.size(); ++i) {
     std::string p = "points." + std::to_string(i);
     out += "<tr><th>" + html_escape(points[i]["workload"].get<std::string>()) + "</th>";
-    for (const Json& k : spec["keys"])
-      out += "<td>" + html_escape(show(at_key(points[i]["values"], k.get<std::string>()), Style::Real)) + "</td>";
+    for (const Json& k : spec["keys"]) {
+      const Json& value = swept_value(points[i]["values"], k.get<std::string>());
+      out += "<td>" + html_escape(show(value, Style::Real)) + "</td>";
+    }
     out += html_cell(doc, p + ".status", Style::Text);
     for (const Metric& m : kMetrics) out += html_cell(doc, p + ".metrics." + m.name, m.style);
     out += "</tr>\n";
@@ -95,7 +97,7 @@ std::string sweep_markdown(const Json& doc) {
   for (const Json& p : doc["points"]) {
     out += "| " + p["workload"].get<std::string>() + " |";
     for (const Json& k : spec["keys"])
-      out += " " + show(at_key(p["values"], k.get<std::string>()), Style::Real) + " |";
+      out += " " + show(swept_value(p["values"], k.get<std::string>()), Style::Real) + " |";
     out += " " + p["status"].get<std::string>() + " |";
     for (const Metric& m : kMetrics)
       out += " " + show(at_key(p, std::string("metrics.") + m.name), m.style) + " |";

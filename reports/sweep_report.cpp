@@ -104,7 +104,7 @@ std::string sweep_csv(const Json& doc) {
     out += p["workload"].get<std::string>() + "," + p["id"].get<std::string>() + "," +
            p["status"].get<std::string>();
     for (const Json& k : doc["spec"]["keys"])
-      out += "," + csv_field(at_key(p["values"], k.get<std::string>()));
+      out += "," + csv_field(swept_value(p["values"], k.get<std::string>()));
     for (const std::string& m : metrics)
       out += "," + (p["metrics"].is_object() && p["metrics"].contains(m)
                         ? csv_field(p["metrics"][m]) : std::string());

@@ -101,7 +101,7 @@ std::vector<PointRun> run_sweep(const SweepSpec& spec, const SweepRunOptions& o)
                points.size(), points.size() - jobs.size(), jobs.size(), parallel);
   auto start = std::chrono::steady_clock::now();
   size_t finished = 0;
-  run_processes(jobs, parallel, [&](size_t job, int code) {
+  run_processes(jobs, parallel, [&](size_t job, int code, double) {
     PointRun& p = points[job_point[job]];
     p.exit_code = code;
     Json report = finished_report(p.dir, Json::parse(read_file(p.dir + "/request.json")));

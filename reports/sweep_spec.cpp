@@ -7,6 +7,7 @@
 #include <toml++/toml.h>
 
 #include "model/config/hw_config.h"
+#include "model/fidelity/fidelity_result.h"
 #include "traces/error.h"
 
 namespace rtsim::reports {
@@ -117,6 +118,9 @@ void read_workloads(const Reader& r, const toml::table& root, SweepSpec& spec) {
     w.trace.frames = uint32_t(r.integer(*t, "frames", 0, 0, 1 << 20));
     if (t->get("seed")) w.trace.seed = uint64_t(r.integer(*t, "seed", 1, 0, INT64_MAX));
     w.trace.scene = r.text(*t, "scene");
+    for (const SweepWorkload& other : spec.workloads)
+      if (other.name == w.name)
+        r.fail(n, "two workloads are named '" + w.name + "' (their traces would share a folder)");
     spec.workloads.push_back(w);
   }
 }
@@ -124,6 +128,8 @@ void read_workloads(const Reader& r, const toml::table& root, SweepSpec& spec) {
 void read_run(const Reader& r, const toml::table& run, SweepSpec& spec) {
   r.only(run, {"fidelity", "sample_rate", "verify", "jobs"}, "[run]");
   spec.fidelity = r.text(run, "fidelity", "cycle");
+  if (!fidelity_level_from_name(spec.fidelity))
+    r.fail(*run.get("fidelity"), "'fidelity' must be functional, cache, cycle or sampled");
   spec.sampling.rate = uint32_t(r.integer(run, "sample_rate", 16, 2, 1024));
   spec.jobs = uint32_t(r.integer(run, "jobs", 0, 0, 1024));
   if (const toml::node* v = run.get("verify")) {
@@ -168,7 +174,8 @@ SweepSpec read_sweep_spec(const std::string& path) {
     for (const toml::node& s : *sets) spec.sets.push_back(std::string(s.value_or(std::string())));
   read_workloads(r, root, spec);
   bool grid = root["grid"].is_table(), list = root["point"].is_array();
-  if (grid == list) throw_input_error(path, "", "give either [grid] or [[point]] lists, not both");
+  if (grid && list) throw_input_error(path, "", "give either [grid] or [[point]] lists, not both");
+  if (!grid && !list) throw_input_error(path, "", "no [grid] table or [[point]] list to sweep");
   if (grid) add_grid(r, *root["grid"].as_table(), spec);
   if (list)
     for (const toml::node& n : *root["point"].as_array()) {

@@ -52,7 +52,7 @@ public:
           Warp& warp = units_[u][w];
           for (uint32_t l = 0; l < c_.rt.warp_size; ++l)
             if (warp.lanes[l].live) step(u, warp, warp.lanes[l], w * c_.rt.warp_size + l);
-          if (warp.live == 0 && warp.slowest > 0) {
+          if (warp.live == 0) {
             work_[u].warp_cycles += warp.slowest;
             warp.slowest = 0;
             fill(warp, reader);

@@ -7,7 +7,8 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "model/multi/child_pool.h"
+#include "model/sc/fork_run.h"
+#include "model/multi/slot_cost.h"
 #include "model/sc/rt_simulator.h"
 #include "model/sched/ray_source.h"
 
@@ -48,20 +49,18 @@ DeviceResult decode(const std::string& bytes, const DeviceTask& task) {
 std::string simulate(const HwConfig& config, const BvhImage& image, const DeviceTask& task,
                      const ScreenLayout& layout) {
   VectorRaySource source(task.rays);
-  RtSimulator sim(config, image, source, layout.width, layout.height);
+  SlotCostListener slots(config, layout.pixels());
+  RtSimulator sim(config, image, source, layout.width, layout.height, &slots);
   sim.run();
+  slots.finish();
   DeviceResult r;
   r.rays = sim.rays();
   r.cycles = sim.cycles();
-  for (int t = 0; t < kRayTypeCount; ++t) {
-    const LatencyHistogram& latency = sim.collected().by_type()[t].latency;
-    r.type_rays[t] = double(latency.count());
-    r.type_cycles[t] = latency.mean() * double(latency.count());
-  }
-  const std::vector<float>& cycles = sim.collected().pixels().cycles;
+  r.type_rays = slots.type_rays();
+  r.type_cycles = slots.type_cost();
   r.cost.assign(task.region.size(), 0.0f);
   for (uint32_t p = task.region.begin; p < task.region.end; ++p)
-    r.cost[p - task.region.begin] = cycles[layout.pixel_at(p)];
+    r.cost[p - task.region.begin] = float(slots.pixel_cost()[layout.pixel_at(p)]);
   return encode(r);
 }
 

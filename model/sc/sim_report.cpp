@@ -31,25 +31,30 @@ Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::str
           {"stack_spills_per_ray", r.value(p + ".stack_spills_per_ray")}};
 }
 
+Json mismatch_json(const Mismatch& m) {
+  return {{"ray", m.index},
+          {"class", mismatch_class_name(m.verdict.cls)},
+          {"right", right_side_name(m.verdict.right)},
+          {"embree_prim", m.embree.prim},
+          {"model_prim", m.model_prim},
+          {"embree_t", m.embree.t},
+          {"model_t", m.model.t}};
+}
+
 Json verify_json(const VerifyReport& v) {
   Json classes = Json::object();
   for (int c = 0; c < kMismatchClassCount; ++c)
     if (v.by_class[c]) classes[mismatch_class_name(MismatchClass(c))] = v.by_class[c];
-  Json examples = Json::array();
-  for (const Mismatch& m : v.examples)
-    examples.push_back({{"ray", m.index},
-                        {"class", mismatch_class_name(m.verdict.cls)},
-                        {"right", right_side_name(m.verdict.right)},
-                        {"embree_prim", m.embree.prim},
-                        {"model_prim", m.model_prim},
-                        {"embree_t", m.embree.t},
-                        {"model_t", m.model.t}});
+  Json examples = Json::array(), unexplained = Json::array();
+  for (const Mismatch& m : v.examples) examples.push_back(mismatch_json(m));
+  for (const Mismatch& m : v.unexplained_examples) unexplained.push_back(mismatch_json(m));
   return {{"rays", v.rays},
           {"agree", v.agree},
           {"mismatches", v.mismatches()},
           {"unexplained", v.unexplained()},
           {"by_class", classes},
-          {"examples", examples}};
+          {"examples", examples},
+          {"unexplained_examples", unexplained}};
 }
 
 double sum(const StatsRegistry& r, uint32_t units, const std::string& suffix) {

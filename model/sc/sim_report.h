@@ -18,7 +18,7 @@ struct SimRunInfo {
   StreamHeader header;  // scene, workload, pixel grid
   const BvhImage* image = nullptr;
   const VerifyReport* verify = nullptr;  // null: verification skipped
-  double host_seconds = 0;               // wall time of the simulation alone
+  double host_seconds = 0;               // wall time of the run, the Embree check included
 };
 
 constexpr const char* kSimStatsSchema = "rtsim.sim.stats/1";

@@ -34,9 +34,9 @@ size_t RayDispatcher::take(uint32_t unit, Cycle now, size_t max, std::vector<Ray
     ray->unit = unit;
     ray->cost = {};
     ray->next_in_queue = nullptr;
-    // Deliveries are spaced 1 / rays_per_cycle apart on the port.
+    // Deliveries are spaced 1 / rays_per_cycle apart on the port: rays_per_cycle a cycle.
     double slot = start + double(given) / config_.rays_per_cycle;
-    ray->dispatched = Cycle(std::ceil(slot));
+    ray->dispatched = Cycle(std::floor(slot));
     ray->ready = ray->dispatched + config_.latency;
     out.push_back(ray);
     ++given;

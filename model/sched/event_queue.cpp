@@ -67,9 +67,9 @@ void EventQueue::settle() {
   }
 }
 
-Cycle EventQueue::next_cycle() {
-  settle();
-  return cursor_;
+Cycle EventQueue::next_cycle() const {
+  if (on_wheel_ == 0) return far_.top().cycle;
+  return cursor_ + gap(cursor_);
 }
 
 EventQueue::Event EventQueue::pop() {

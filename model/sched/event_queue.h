@@ -27,7 +27,9 @@ public:
   void push(Cycle cycle, uint32_t item);
   bool empty() const { return size_ == 0; }
   size_t size() const { return size_; }
-  Cycle next_cycle();  // the earliest pending cycle; the queue must not be empty
+  // The earliest pending cycle (the queue must not be empty). Only pop() turns the wheel, so
+  // events may still be pushed for any cycle from the last one popped on.
+  Cycle next_cycle() const;
   Event pop();
 
 private:

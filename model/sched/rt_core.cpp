@@ -210,14 +210,16 @@ std::string RtCore::dump() const {
   out << "rt" << id_ << ": " << in_flight_ << " of " << slots_.size() << " ray slots busy, "
       << events_.size() << " events pending";
   out << ", local cycle " << now_ << (waiting_ ? ", waiting for rays" : "") << "\n";
-  int shown = 0;
+  const int max_shown = 4;
+  int busy = 0;
   for (const RayContext* ray : slots_) {
-    if (!ray || shown++ == 4) continue;
+    if (!ray || ++busy > max_shown) continue;
     out << "  ray " << ray->sequence << " in slot " << ray->slot << ": stack "
         << ray->state.stack.size() << " (" << ray->resident << " on chip, " << ray->spilled
         << " spilled), " << ray->state.counters.trav_nodes << " nodes, ready at cycle "
         << ray->ready << "\n";
   }
+  if (busy > max_shown) out << "  (" << busy - max_shown << " more rays)\n";
   return out.str();
 }
 

@@ -81,7 +81,7 @@ public:
   uint64_t advance(Cycle until);
 
   bool has_event() const { return !events_.empty(); }
-  Cycle next_event() { return events_.next_cycle(); }
+  Cycle next_event() const { return events_.next_cycle(); }
   bool started() const { return started_; }
   bool waiting() const { return waiting_; }  // has free slots the supply could not fill yet
   bool finished() const { return in_flight_ == 0 && events_.empty() && !waiting_ && started_; }

@@ -76,6 +76,18 @@ TEST(SweepSpec, MistakesNameTheFileAndLine) {
                                                           "[[point]]\n\"rt.count\" = 2\n")); })
                 .find("not both"),
             std::string::npos);
+  EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\n")); }).find("no [grid]"),
+            std::string::npos);
+  EXPECT_NE(error_of([] {
+              read_sweep_spec(write("s.toml", "[[workload]]\n[[workload]]\n[grid]\n"
+                                              "\"rt.count\" = [1]\n"));
+            }).find("line 2: two workloads are named 'pica'"),
+            std::string::npos);
+  EXPECT_NE(error_of([] {
+              read_sweep_spec(write("s.toml", "[[workload]]\n[grid]\n\"rt.count\" = [1]\n"
+                                              "[run]\nfidelity = \"fast\"\n"));
+            }).find("line 5: 'fidelity' must be"),
+            std::string::npos) << "checked when read, not point by point";
 }
 
 TEST(RegressSuite, ReadsCasesDefaultsAndTolerances) {
@@ -102,6 +114,20 @@ l1_hit_rate = { absolute = 0.01, direction = "higher" }
   EXPECT_NE(error_of([] { read_regress_suite(write("r.toml", "[[case]]\nname = \"a\"\n")); })
                 .find("tolerance"),
             std::string::npos) << "a suite must say what it compares";
+  const std::string tolerance = "[tolerance]\ncycles = 0.02\n";
+  EXPECT_NE(error_of([&] {
+              read_regress_suite(write("r.toml", "[defaults]\nresolutoin = \"8x8\"\n[[case]]\n" +
+                                                     tolerance));
+            }).find("line 2: unknown key 'resolutoin' in [defaults]"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              read_regress_suite(write("r.toml", "[[case]]\nframes = \"2\"\n" + tolerance));
+            }).find("line 2: 'frames' must be an integer"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] {
+              read_regress_suite(write("r.toml", "verify = 1\n[[case]]\n" + tolerance));
+            }).find("line 1: 'verify' must be true or false"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // those.
 #include <gtest/gtest.h>
 
+#include <fmt/core.h>
+
 #include <signal.h>
 #include <sys/wait.h>
 
@@ -42,6 +44,12 @@ TEST(Sweep, FinishesWithCsvJsonChartsAndPages) {
   std::string csv = test::slurp(dir + "/sweep.csv");
   EXPECT_EQ(test::count_lines(csv), 9) << "a header and one row per point";
   EXPECT_EQ(csv.rfind("workload,id,status,l2.size_bytes,rt.l1.size_bytes,", 0), 0u) << csv;
+  for (const Json& p : doc["points"]) {
+    std::string row = fmt::format("{},{},done,{},{},", p["workload"].get<std::string>(),
+                                  p["id"].get<std::string>(), p["values"]["l2.size_bytes"].dump(),
+                                  p["values"]["rt.l1.size_bytes"].dump());
+    EXPECT_NE(csv.find("\n" + row), std::string::npos) << "the swept values of " << p["id"];
+  }
   std::string html = test::slurp(dir + "/sweep.html");
   std::vector<test::Figure> figures = test::figures(html);
   ASSERT_EQ(figures.size(), doc["charts"].size());

@@ -1,0 +1,50 @@
+// The on-chip traversal stack alone: what spills when a step pushes past the depth, and what a
+// pop from an empty on-chip stack reads back.
+#include <gtest/gtest.h>
+
+#include "model/sched/hardware_stack.h"
+
+namespace rtsim {
+namespace {
+
+TEST(HardwareStack, SpillsTheOldestEntriesPastTheDepth) {
+  HardwareStack stack({4, 8});
+  RayContext ray;
+  ray.id = 3;
+  stack.start(ray);
+  // The root popped, 7 children pushed: 7 entries, 4 fit.
+  StackTransfer spill = stack.settle(ray, 0, 7);
+  EXPECT_EQ(spill.entries, 3u);
+  EXPECT_EQ(spill.bytes, 24u);
+  EXPECT_EQ(spill.addr, HardwareStack::kSpillBase + 3 * HardwareStack::kRegionBytes)
+      << "the ray's own region, from its bottom";
+  EXPECT_EQ(ray.resident, 4u);
+  EXPECT_EQ(ray.spilled, 3u);
+  EXPECT_EQ(ray.cost.stack_spills, 3u);
+}
+
+TEST(HardwareStack, RefillsExactlyWhatAPopNeeds) {
+  HardwareStack stack({4, 8});
+  RayContext ray;
+  stack.start(ray);
+  stack.settle(ray, 0, 7);  // 4 on chip, 3 spilled
+  EXPECT_EQ(stack.refill(ray, 4).bytes, 0u) << "4 pops: all on chip";
+  StackTransfer read = stack.refill(ray, 6);
+  EXPECT_EQ(read.entries, 2u) << "6 pops with 4 on chip: two come back";
+  EXPECT_EQ(read.addr, HardwareStack::kSpillBase + 1 * 8) << "the top two spilled entries";
+  EXPECT_EQ(ray.spilled, 1u);
+  EXPECT_EQ(ray.cost.stack_refills, 2u);
+}
+
+TEST(HardwareStack, DeepStackNeverSpillsAndClearFreesAll) {
+  HardwareStack stack({64, 8});
+  RayContext ray;
+  stack.start(ray);
+  EXPECT_EQ(stack.settle(ray, 0, 40).bytes, 0u);
+  stack.settle(ray, 39, 0);  // an any-hit query cleared its stack
+  EXPECT_EQ(ray.resident, 0u);
+  EXPECT_EQ(ray.spilled, 0u);
+}
+
+}  // namespace
+}  // namespace rtsim

@@ -1,0 +1,98 @@
+// One RT unit alone with mock neighbours: the exact cycle of every stage of a ray (setup,
+// fetch, memory, box and triangle units, control), issue width, and no progress while the
+// memory never answers.
+#include <gtest/gtest.h>
+
+#include "model/sched/rt_core.h"
+#include "tests/model/model_test_util.h"
+#include "tests/sched/drive_cores.h"
+#include "tests/sched/mock_neighbours.h"
+
+namespace rtsim {
+namespace {
+
+// One triangle in front of a ray: a root node step, a leaf step, then done.
+struct OneTriangle {
+  OneTriangle() {
+    test::add_triangle(mesh, {-1, -1, 5}, {1, -1, 5}, {0, 1, 5});
+    image = build_bvh_image(mesh, BvhConfig{});
+    ray.dir = {0, 0, 1};
+  }
+  TriangleMesh mesh;
+  BvhImage image;
+  Ray ray;
+};
+
+RtCoreConfig timing_config() {
+  RtCoreConfig c;
+  c.warps = 1;
+  c.warp_size = 1;
+  c.setup_latency = 4;
+  c.control_latency = 1;
+  c.box = {1, 8, 8};
+  c.triangle = {1, 1, 12};
+  return c;
+}
+
+TEST(RtCoreTiming, EveryStageTakesExactlyItsLatency) {
+  OneTriangle scene;
+  TraversalUnit unit(scene.image);
+  test::MockMemory memory(50);
+  test::MockSupply supply({scene.ray}, unit, 1, {1.0, 10});
+  RtCore core(0, timing_config(), unit, memory);
+  core.set_supply(&supply.dispatcher);
+  test::drive({&core});
+  ASSERT_EQ(supply.listener.done.size(), 1u);
+  const test::Retired& r = supply.listener.done[0];
+  ASSERT_EQ(r.counters.trav_nodes, 1u);
+  ASSERT_EQ(r.counters.trav_leaves, 1u);
+  ASSERT_TRUE(r.hit.hit());
+  // Arrival 0 + dispatch latency 10, setup 4: the node fetch at 14.
+  ASSERT_EQ(memory.reads.size(), 2u);
+  EXPECT_EQ(memory.reads[0].at, 14u) << "node fetch after dispatch and setup";
+  EXPECT_EQ(memory.reads[0].bytes, scene.image.node_stride);
+  // Data at 64, box unit 8, control 1: the leaf fetch at 73.
+  EXPECT_NE(memory.reads[1].at, 72u) << "not one cycle early";
+  EXPECT_EQ(memory.reads[1].at, 73u) << "leaf fetch after memory, box unit and control";
+  // Data at 123, triangle unit 12, control 1: the done step retires the ray at 136.
+  EXPECT_EQ(r.cycle, 136u);
+  EXPECT_EQ(core.stats().node_steps, 1u);
+  EXPECT_EQ(core.stats().leaf_steps, 1u);
+  EXPECT_EQ(core.box().stats().tests, 1u) << "the root has one child box";
+}
+
+TEST(RtCoreTiming, IssueWidthDefersTheFourthRay) {
+  OneTriangle scene;
+  TraversalUnit unit(scene.image);
+  test::MockMemory memory(50);
+  std::vector<Ray> rays(4, scene.ray);
+  test::MockSupply supply(rays, unit, 4);  // all four arrive at cycle 0
+  RtCoreConfig c = timing_config();
+  c.warp_size = 4;
+  c.issue_per_cycle = 3;
+  RtCore core(0, c, unit, memory);
+  core.set_supply(&supply.dispatcher);
+  test::drive({&core});
+  ASSERT_GE(memory.reads.size(), 4u);
+  EXPECT_EQ(memory.reads[0].at, 4u);
+  EXPECT_EQ(memory.reads[2].at, 4u) << "three steps start in one cycle";
+  EXPECT_EQ(memory.reads[3].at, 5u) << "the fourth starts a cycle later";
+  EXPECT_EQ(core.stats().issue_stalls, 1u);
+}
+
+TEST(RtCoreTiming, NoProgressWhileMemoryNeverAnswers) {
+  OneTriangle scene;
+  TraversalUnit unit(scene.image);
+  test::MockMemory memory(Cycle(1) << 40);
+  test::MockSupply supply({scene.ray}, unit, 1);
+  RtCore core(0, timing_config(), unit, memory);
+  core.set_supply(&supply.dispatcher);
+  EXPECT_EQ(core.poll(0), 1u) << "the ray was taken";
+  EXPECT_EQ(core.advance(1000), 1u) << "its first step issued a fetch";
+  EXPECT_EQ(core.advance(1000000), 0u) << "then nothing: the data never comes";
+  EXPECT_FALSE(core.finished());
+  EXPECT_NE(core.dump().find("1 of 1 ray slots busy"), std::string::npos) << core.dump();
+}
+
+}  // namespace
+}  // namespace rtsim

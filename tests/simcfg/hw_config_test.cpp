@@ -1,0 +1,117 @@
+// The hardware config: presets load, every key has a default, unit and description and is
+// documented in model/SIM.md, bad input is one clear error naming the file, line and key, and
+// --set overrides any key.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "model/config/hw_config.h"
+#include "traces/error.h"
+
+namespace rtsim {
+namespace {
+
+std::string write_toml(const std::string& text) {
+  static int n = 0;
+  std::string path = ::testing::TempDir() + "rtsim-hw-" + std::to_string(getpid()) + "-" +
+                     std::to_string(n++) + ".toml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+std::string error_of(const std::string& path, const std::vector<std::string>& sets = {}) {
+  try {
+    load_hw_config(path, sets);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(HwConfig, EveryPresetLoadsAndRoundTrips) {
+  int presets = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(RTSIM_SOURCE_DIR "/configs")) {
+    if (entry.path().extension() != ".toml") continue;
+    ++presets;
+    HwConfig config = load_hw_config(entry.path().string());
+    std::string resolved = resolved_toml(config);
+    HwConfig again = load_hw_config(write_toml(resolved));
+    EXPECT_EQ(resolved_toml(again), resolved) << entry.path();
+    EXPECT_EQ(config.name, entry.path().stem().string()) << "name matches the file";
+  }
+  EXPECT_GE(presets, 4) << "mobile, desktop, cwbvh8 and treelet variants";
+}
+
+TEST(HwConfig, PresetsDifferWhereTheyShould) {
+  HwConfig mobile = load_hw_config(RTSIM_SOURCE_DIR "/configs/mobile.toml");
+  HwConfig desktop = load_hw_config(RTSIM_SOURCE_DIR "/configs/desktop.toml");
+  HwConfig cw = load_hw_config(RTSIM_SOURCE_DIR "/configs/desktop-cwbvh8.toml");
+  HwConfig tq = load_hw_config(RTSIM_SOURCE_DIR "/configs/desktop-treelet.toml");
+  EXPECT_LT(mobile.rt_units, desktop.rt_units);
+  EXPECT_LT(mobile.l2.size_bytes, desktop.l2.size_bytes);
+  EXPECT_EQ(cw.bvh.node_format, NodeFormat::Cwbvh8);
+  EXPECT_EQ(tq.rt.mode, TraversalMode::Treelet);
+  EXPECT_EQ(resolved_json(tq)["l2"], resolved_json(desktop)["l2"]) << "same caches";
+}
+
+TEST(HwConfig, EveryKeyIsDocumented) {
+  std::ifstream in(RTSIM_SOURCE_DIR "/model/SIM.md");
+  std::stringstream doc;
+  doc << in.rdbuf();
+  std::vector<HwConfigKey> keys = hw_config_keys();
+  EXPECT_GT(keys.size(), 40u);
+  for (const HwConfigKey& k : keys) {
+    EXPECT_FALSE(k.description.empty()) << k.key;
+    EXPECT_NE(doc.str().find("`" + k.key + "`"), std::string::npos) << k.key << " in SIM.md";
+  }
+}
+
+TEST(HwConfig, UnknownKeyNamesKeyAndLine) {
+  std::string path = write_toml("[rt]\ncount = 2\n\n[rt.l1]\nsize_bytes = 8192\nsize_byte = 1\n");
+  std::string e = error_of(path);
+  EXPECT_NE(e.find(path + ": line 6"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown key 'rt.l1.size_byte'"), std::string::npos) << e;
+  EXPECT_NE(e.find("size_bytes"), std::string::npos) << "lists the keys of [rt.l1]: " << e;
+  EXPECT_NE(error_of(write_toml("[gpu]\nx = 1\n")).find("unknown key 'gpu'"), std::string::npos);
+}
+
+TEST(HwConfig, WrongTypeRangeAndSyntaxAreClearErrors) {
+  std::string e = error_of(write_toml("[dram]\nlatency = \"fast\"\n"));
+  EXPECT_NE(e.find("line 2"), std::string::npos) << e;
+  EXPECT_NE(e.find("'dram.latency': expected an integer"), std::string::npos) << e;
+  e = error_of(write_toml("[rt]\nwarp_size = 0\n"));
+  EXPECT_NE(e.find("out of range"), std::string::npos) << e;
+  e = error_of(write_toml("[rt]\nmode = \"sideways\"\n"));
+  EXPECT_NE(e.find("'sideways' is not one of depth_first, treelet, packet"), std::string::npos);
+  e = error_of(write_toml("[rt\ncount = 1\n"));
+  EXPECT_NE(e.find("line 1"), std::string::npos) << e;
+  e = error_of(write_toml("[rt.l1]\nsize_bytes = 1000\n"));
+  EXPECT_NE(e.find("[rt.l1] size_bytes must be a positive multiple"), std::string::npos) << e;
+  EXPECT_NE(error_of("/nonexistent/hw.toml").find("cannot open"), std::string::npos);
+}
+
+TEST(HwConfig, SetOverridesAnyKey) {
+  HwConfig c = load_hw_config(RTSIM_SOURCE_DIR "/configs/mobile.toml",
+                              {"rt.l1.size_bytes=8192", "rt.mode=treelet", "clock.ghz=2",
+                               "dram.bytes_per_cycle=12.5", "sim.direct_l1=false"});
+  EXPECT_EQ(c.l1.size_bytes, 8192u);
+  EXPECT_EQ(c.rt.mode, TraversalMode::Treelet);
+  EXPECT_DOUBLE_EQ(c.clock_ghz, 2.0);
+  EXPECT_DOUBLE_EQ(c.dram.bytes_per_cycle, 12.5);
+  EXPECT_FALSE(c.sim.direct_l1);
+  std::string e = error_of("", {"rt.l1.sise=1"});
+  EXPECT_NE(e.find("--set rt.l1.sise"), std::string::npos) << e;
+  EXPECT_NE(e.find("unknown key"), std::string::npos) << e;
+  EXPECT_NE(error_of("", {"rt.count"}).find("expected KEY=VALUE"), std::string::npos);
+  EXPECT_NE(error_of("", {"rt.count=many"}).find("--set rt.count"), std::string::npos);
+}
+
+TEST(HwConfig, ImpossibleCombinationIsAnError) {
+  std::string e = error_of("", {"rt.mode=treelet", "treelet_queues.max_rays=16"});
+  EXPECT_NE(e.find("max_rays (16) must be at least the ray slots"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace rtsim

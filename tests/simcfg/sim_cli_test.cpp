@@ -1,0 +1,83 @@
+// rtsim sim as a user runs it: a stream in, stats.json, config.toml and pixel buffers out,
+// every ray verified; bad input ends with one line and exit code 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/run_rtsim.h"
+#include "traces/stream.h"
+#include "workloads/scene.h"
+#include "model/verify/ray_samples.h"
+
+namespace rtsim {
+namespace {
+
+std::string temp(const std::string& name) {
+  return ::testing::TempDir() + "rtsim-sim-cli-" + std::to_string(getpid()) + "-" + name;
+}
+
+// A small stream on the built-in pica scene with a 16 x 8 pixel grid.
+std::string write_stream() {
+  std::string path = temp("pica.rays");
+  Scene scene = load_scene("pica");
+  StreamHeader header;
+  header.scene_source = scene.source;
+  header.scene_fingerprint = scene.fingerprint;
+  header.width = 16;
+  header.height = 8;
+  RayStreamWriter writer(path, header);
+  for (Ray ray : sample_camera_rays(scene.mesh, 16, 8)) writer.write(ray);
+  for (Ray ray : sample_diffuse_rays(scene.mesh, 300, 4)) {
+    ray.pixel = ray.pixel % 128;
+    writer.write(ray);
+  }
+  writer.finish();
+  return path;
+}
+
+TEST(SimCli, WritesResultsAndVerifiesEveryRay) {
+  std::string stream = write_stream(), out = temp("out");
+  test::RunResult r = test::run_rtsim("sim " + stream + " --config " RTSIM_SOURCE_DIR
+                                      "/configs/mobile.toml --set rt.count=2 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("verify     428 rays against Embree: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" mismatches, 0 unexplained"), std::string::npos) << r.out;
+  nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
+  EXPECT_EQ(doc["summary"]["rays"], 428);
+  EXPECT_EQ(doc["config"]["rt"]["count"], 2) << "the override is in the resolved config";
+  EXPECT_EQ(doc["verify"]["unexplained"], 0);
+  EXPECT_TRUE(std::filesystem::exists(out + "/config.toml"));
+  EXPECT_EQ(std::filesystem::file_size(out + "/pixel_nodes.f32"), 16u * 8 * 4);
+  std::filesystem::remove_all(out);
+  std::filesystem::remove(stream);
+}
+
+TEST(SimCli, BadConfigIsOneLineAndExitCode2) {
+  std::string stream = write_stream(), config = temp("bad.toml");
+  { std::ofstream(config) << "[rt]\nwarps = 2\nwrap_size = 8\n"; }
+  test::RunResult r = test::run_rtsim("sim " + stream + " --config " + config + " -o " +
+                                      temp("never"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(config + ": line 3: unknown key 'rt.wrap_size'"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(temp("never"))) << "nothing written";
+  r = test::run_rtsim("sim " + stream + " --set rt.count=-1 -o " + temp("never"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  std::filesystem::remove(stream);
+  std::filesystem::remove(config);
+}
+
+TEST(SimCli, ListKeysPrintsEveryKey) {
+  test::RunResult r = test::run_rtsim("sim --list-keys");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* key : {"rt.l1.size_bytes", "treelet_queues.policy", "dram.bytes_per_cycle",
+                          "rt.box.issue_width", "bvh.node_format", "sim.stall_cycles"})
+    EXPECT_NE(r.out.find(key), std::string::npos) << key;
+}
+
+}  // namespace
+}  // namespace rtsim
