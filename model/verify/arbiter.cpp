@@ -51,6 +51,15 @@ ExactHit exact_intersect(const TriangleMesh& mesh, uint32_t prim, const Ray& ray
   double n_len = glm::length(n);
   ex.area_ratio = longest > 0.0 ? n_len / (longest * longest) : 0.0;
   ex.cosine = n_len > 0.0 ? std::fabs(glm::dot(n, d)) / (n_len * glm::length(d)) : 0.0;
+  if (ex.area_ratio > 0.0) {
+    constexpr double kUlps = 4.0, kFloatEpsilon = 0x1p-24;
+    double magnitude = std::max({std::fabs(o.x), std::fabs(o.y), std::fabs(o.z)});
+    for (int c = 0; c < 3; ++c)
+      magnitude = std::max({magnitude, std::fabs(v[c].x + o.x), std::fabs(v[c].y + o.y),
+                            std::fabs(v[c].z + o.z)});
+    ex.edge_error =
+        kUlps * kFloatEpsilon * (magnitude / (ex.area_ratio * longest) + 1.0 / ex.area_ratio);
+  }
   // Shear so the ray runs along +z, as the watertight test does, but in double.
   int kz = std::fabs(d.x) > std::fabs(d.y) ? (std::fabs(d.x) > std::fabs(d.z) ? 0 : 2)
                                            : (std::fabs(d.y) > std::fabs(d.z) ? 1 : 2);
@@ -90,7 +99,7 @@ Verdict Arbiter::classify(const Ray& ray, uint32_t prim, bool model_reported,
   Verdict out{false, MismatchClass::Unexplained, RightSide::Both, prim};
   ExactHit ex = exact_intersect(mesh_, prim, ray);
   double slack = t_slack(ray, ex.t);
-  bool near_edge = std::fabs(ex.min_barycentric) < config_.edge_epsilon;
+  bool near_edge = ex.near_edge(config_.edge_epsilon);
   bool at_tmin = std::fabs(ex.t - ray.tmin) <= config_.range_epsilon * std::fabs(ex.t) + slack;
   bool at_tmax = std::isfinite(ray.tmax) &&
                  std::fabs(ex.t - ray.tmax) <= config_.range_epsilon * std::fabs(ex.t) + slack;
@@ -121,7 +130,7 @@ uint32_t Arbiter::find_candidate(const Ray& ray) const {
   for (uint32_t p = 0; p < mesh_.triangle_count(); ++p) {
     ExactHit ex = exact_intersect(mesh_, p, ray);
     double slack = t_slack(ray, ex.t) + config_.range_epsilon * std::fabs(ex.t);
-    if (ex.min_barycentric > -config_.edge_epsilon && ex.t >= ray.tmin - slack &&
+    if ((ex.inside || ex.near_edge(config_.edge_epsilon)) && ex.t >= ray.tmin - slack &&
         ex.t <= ray.tmax + slack)
       return p;
   }
@@ -147,8 +156,8 @@ Verdict Arbiter::judge(const Ray& ray, const Hit& embree, uint32_t model_prim,
       // Two triangles at one distance: through their shared edge, a tie, or one is not hit.
       ExactHit a = exact_intersect(mesh_, model_prim, ray);
       ExactHit b = exact_intersect(mesh_, embree.prim, ray);
-      double eps = config_.edge_epsilon;
-      bool a_edge = std::fabs(a.min_barycentric) < eps, b_edge = std::fabs(b.min_barycentric) < eps;
+      bool a_edge = a.near_edge(config_.edge_epsilon);
+      bool b_edge = b.near_edge(config_.edge_epsilon);
       if (a_edge && b_edge)
         return {false, MismatchClass::EdgeOrVertex, RightSide::Both, model_prim};
       if ((a.inside || a_edge) && (b.inside || b_edge))

@@ -6,6 +6,8 @@
 // Not a hardware unit: a checking tool with no timing.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "traces/embree_scene.h"
@@ -50,7 +52,14 @@ struct ExactHit {
   double min_barycentric = 0.0;  // signed, normalized: < 0 outside, ~0 on an edge
   double cosine = 0.0;           // |cos| between the ray and the plane normal
   double area_ratio = 0.0;       // 2 * area / longest edge^2
+  // How far from an edge, in normalized barycentrics, an fp32 test can err: rounding of the
+  // vertices translated to the ray origin (ulps of the largest coordinate over the triangle's
+  // height) and of the edge functions (ulps over area_ratio).
+  double edge_error = 0.0;
   bool hit() const { return inside && in_range; }
+  bool near_edge(double edge_epsilon) const {
+    return std::fabs(min_barycentric) < std::max(edge_epsilon, edge_error);
+  }
 };
 
 ExactHit exact_intersect(const TriangleMesh& mesh, uint32_t prim, const Ray& ray);
