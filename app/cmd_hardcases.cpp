@@ -48,7 +48,8 @@ void write_hardcases(const HardcasesOptions& options) {
 
 void add_hardcases_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
-      "hardcases", "Write the numerical hard cases (edges, vertices, grazing, offsets) as a stream");
+      "hardcases",
+      "Write the numerical hard cases (edges, vertices, grazing, offsets) as a stream");
   auto options = std::make_shared<HardcasesOptions>();
   cmd->add_option("-o,--output", options->output, "Ray stream to write (.rays)")->required();
   cmd->add_option("--rays-per-case", options->rays_per_case,

@@ -31,9 +31,19 @@ struct RegressOptions {
 
 std::vector<std::string> case_argv(const reports::RegressCase& c, const std::string& trace,
                                    const std::string& dir, const RegressOptions& o) {
-  std::vector<std::string> argv{reports::self_executable(), "run", "--from-trace", trace, "-o",
-                                dir, "--report", "json", "-q", "--fidelity", c.fidelity,
-                                "--sample-rate", std::to_string(c.sampling.rate)};
+  std::vector<std::string> argv{reports::self_executable(),
+                                "run",
+                                "--from-trace",
+                                trace,
+                                "-o",
+                                dir,
+                                "--report",
+                                "json",
+                                "-q",
+                                "--fidelity",
+                                c.fidelity,
+                                "--sample-rate",
+                                std::to_string(c.sampling.rate)};
   if (!c.config.empty()) argv.insert(argv.end(), {"--config", c.config});
   for (const std::string& s : c.sets) argv.insert(argv.end(), {"--set", s});
   for (const std::string& s : o.sets) argv.insert(argv.end(), {"--set", s});
@@ -53,8 +63,8 @@ std::vector<reports::CaseOutcome> run_cases(const reports::RegressSuite& suite,
     std::string key = reports::read_file(c.trace.workload) + c.trace.workload + c.trace.resolution +
                       std::to_string(c.trace.frames) + c.trace.scene +
                       (c.trace.seed ? std::to_string(*c.trace.seed) : "");
-    std::string trace = o.output + "/traces/" +
-                        fmt::format("{:016x}", fnv1a64(key.data(), key.size()));
+    std::string trace =
+        o.output + "/traces/" + fmt::format("{:016x}", fnv1a64(key.data(), key.size()));
     reports::trace_into(c.trace, trace, o.quiet);
     std::string dir = o.output + "/cases/" + c.name;
     fs::remove(dir + "/report.json");
@@ -71,9 +81,11 @@ std::vector<reports::CaseOutcome> run_cases(const reports::RegressSuite& suite,
     c.ran = !text.empty();
     if (c.ran) c.metrics = reports::flat_metrics(Json::parse(text));
     if (!o.quiet)
-      fmt::print("case       {}: {}\n", c.name,
-                 c.ran ? fmt::format("{} cycles", reports::show(c.metrics["cycles"], reports::Style::Integer))
-                       : fmt::format("FAILED (exit {}, see {}/cases/{}/run.log)", code, o.output, c.name));
+      fmt::print(
+          "case       {}: {}\n", c.name,
+          c.ran ? fmt::format("{} cycles",
+                              reports::show(c.metrics["cycles"], reports::Style::Integer))
+                : fmt::format("FAILED (exit {}, see {}/cases/{}/run.log)", code, o.output, c.name));
   });
   return cases;
 }
@@ -120,9 +132,10 @@ int run_regress(const RegressOptions& o) {
   reports::RegressResult result = reports::compare_with_baseline(suite, cases, baseline);
   std::string junit = o.junit.empty() ? o.output + "/junit.xml" : o.junit;
   write_file_atomic(junit, reports::junit_xml(suite, result));
-  write_file_atomic(o.output + "/regress.json", reports::regress_json(suite, result).dump(2) + "\n");
-  write_file_atomic(o.output + "/deltas.md", "# rtsim regress: " + suite.name + "\n\n" +
-                                                 reports::delta_table(result, true));
+  write_file_atomic(o.output + "/regress.json",
+                    reports::regress_json(suite, result).dump(2) + "\n");
+  write_file_atomic(o.output + "/deltas.md",
+                    "# rtsim regress: " + suite.name + "\n\n" + reports::delta_table(result, true));
   if (!o.quiet) {
     fmt::print("\n{}", reports::delta_table(result, false));
     fmt::print("\nregress    {}: {}; JUnit XML in {}\n", suite.name,

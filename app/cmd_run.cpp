@@ -29,7 +29,8 @@ struct RunOptions {
 };
 
 std::string command_line(const RunOptions& o) {
-  std::string out = "rtsim run " + (o.from_trace.empty() ? o.workload.workload : "--from-trace " + o.from_trace);
+  std::string out =
+      "rtsim run " + (o.from_trace.empty() ? o.workload.workload : "--from-trace " + o.from_trace);
   if (!o.workload.resolution.empty()) out += " --resolution " + o.workload.resolution;
   if (o.workload.frames) out += " --frames " + std::to_string(o.workload.frames);
   if (!o.config.empty()) out += " --config " + o.config;
@@ -42,9 +43,9 @@ std::string command_line(const RunOptions& o) {
 void print_summary(const nlohmann::ordered_json& r) {
   using reports::Style;
   const auto& t = r["timing"];
-  fmt::print("run        {} on '{}', {} fidelity: {} rays\n", r["workload"]["name"].get<std::string>(),
-             r["hardware"]["name"].get<std::string>(), t["level"].get<std::string>(),
-             t["rays"].get<uint64_t>());
+  fmt::print("run        {} on '{}', {} fidelity: {} rays\n",
+             r["workload"]["name"].get<std::string>(), r["hardware"]["name"].get<std::string>(),
+             t["level"].get<std::string>(), t["rays"].get<uint64_t>());
   if (!t["cycles"].is_null())
     fmt::print("timing     {} cycles{}, {:.1f} MRays/s at {} GHz\n",
                reports::show(t["cycles"], Style::Integer),
@@ -53,7 +54,8 @@ void print_summary(const nlohmann::ordered_json& r) {
                    : "",
                t["mrays_per_second"].get<double>(), t["clock_ghz"].get<double>());
   const auto& b = r["bandwidth"];
-  fmt::print("memory     L1 {}  L2 {}  DRAM {} B/ray\n", reports::show(b["l1_hit_rate"], Style::Percent),
+  fmt::print("memory     L1 {}  L2 {}  DRAM {} B/ray\n",
+             reports::show(b["l1_hit_rate"], Style::Percent),
              reports::show(b["l2_hit_rate"], Style::Percent),
              reports::show(b["dram_bytes_per_ray"], Style::Real));
   const auto& v = r["verification"];
@@ -68,16 +70,17 @@ void print_summary(const nlohmann::ordered_json& r) {
 int run(const RunOptions& o) {
   if (o.output.empty()) throw InputError("run: -o DIR is required");
   auto level = fidelity_level_from_name(o.fidelity);
-  if (!level) throw InputError("run: --fidelity: unknown level '" + o.fidelity +
-                               "' (functional, cache, cycle, sampled)");
-  if (o.report != "full" && o.report != "json")
-    throw InputError("run: --report: 'full' or 'json'");
+  if (!level)
+    throw InputError("run: --fidelity: unknown level '" + o.fidelity +
+                     "' (functional, cache, cycle, sampled)");
+  if (o.report != "full" && o.report != "json") throw InputError("run: --report: 'full' or 'json'");
   HwConfig config = load_hw_config(o.config, o.sets);
   reports::TraceOutcome trace = o.from_trace.empty()
                                     ? reports::trace_into(o.workload, o.output + "/trace", o.quiet)
                                     : reports::read_trace_dir(o.from_trace);
-  reports::RunJob job{trace.stream, trace.summary["scene"].get<std::string>(), config,
-                      {*level, o.sampling}, !o.no_verify, o.output};
+  reports::RunJob job{trace.stream, trace.summary["scene"].get<std::string>(),
+                      config,       {*level, o.sampling},
+                      !o.no_verify, o.output};
   reports::RunResult result = reports::run_job(job);
   if (result.stalled) {
     fmt::print(stderr, "rtsim: stall: {}", result.stall_message);

@@ -11,7 +11,8 @@ void add_scene_info_command(CLI::App& app, int& exit_code) {
   auto spec = std::make_shared<std::string>();
   std::string builtins;
   for (const auto& name : builtin_scene_names()) builtins += (builtins.empty() ? "" : ", ") + name;
-  cmd->add_option("scene", *spec, "Scene file (OBJ, glTF, GLB, PLY, OFF, STL) or built-in: " + builtins)
+  cmd->add_option("scene", *spec,
+                  "Scene file (OBJ, glTF, GLB, PLY, OFF, STL) or built-in: " + builtins)
       ->required();
   cmd->callback([spec, &exit_code] {
     Scene scene = load_scene(*spec);

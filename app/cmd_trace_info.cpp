@@ -30,7 +30,8 @@ void add_trace_info_command(CLI::App& app, int& exit_code) {
     fmt::print("frames       {}\n", h.frame_count);
     fmt::print("resolution   {}x{}\n", h.width, h.height);
     fmt::print("chunk rays   {}\n", h.chunk_rays);
-    fmt::print("rays         {}{}\n", h.total_rays(), *header_only ? " (not checked)" : " (all chunks checked)");
+    fmt::print("rays         {}{}\n", h.total_rays(),
+               *header_only ? " (not checked)" : " (all chunks checked)");
     for (int t = 0; t < kRayTypeCount; ++t)
       fmt::print("  {:<17}{}\n", ray_type_name(RayType(t)), h.counts[t]);
     exit_code = 0;

@@ -16,7 +16,8 @@ std::string html_head(const std::string& title) {
          "</title>\n<style>\n"
          "body{font-family:system-ui,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;"
          "color:#222}\n"
-         "h1{font-size:1.6em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:1.6em}\n"
+         "h1{font-size:1.6em}h2{border-bottom:1px solid "
+         "#ccc;padding-bottom:.2em;margin-top:1.6em}\n"
          "table{border-collapse:collapse;margin:.6em 0}td,th{border:1px solid #ddd;"
          "padding:.25em .6em;text-align:right}th{background:#f4f4f4;text-align:left}\n"
          "td.na{color:#999}.meta{color:#666;font-size:.9em}nav a{margin-right:1em}\n"
@@ -27,7 +28,9 @@ std::string html_head(const std::string& title) {
          "</style>\n</head>\n<body>\n";
 }
 
-std::string html_tail() { return "</body>\n</html>\n"; }
+std::string html_tail() {
+  return "</body>\n</html>\n";
+}
 
 std::string html_type_table(const Json& doc, const std::string& prefix,
                             const std::vector<Column>& columns) {
@@ -39,8 +42,8 @@ std::string html_type_table(const Json& doc, const std::string& prefix,
   for (const auto& [name, row] : rows.items()) {
     out += "<tr><th>" + html_escape(name) + "</th>";
     for (const Column& c : columns)
-      out += html_cell(doc, prefix + "." + name + (c.key.empty() ? "" : "." + c.key),
-                       Style(c.style));
+      out +=
+          html_cell(doc, prefix + "." + name + (c.key.empty() ? "" : "." + c.key), Style(c.style));
     out += "</tr>\n";
   }
   return out + "</table>\n";
@@ -72,21 +75,22 @@ std::string html_figures(const Json& report, const std::string& run_dir,
     if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end()) continue;
     std::string id = image["id"].get<std::string>(), file = image["file"].get<std::string>();
     std::string title = html_escape(image["title"].get<std::string>());
-    std::string caption = fmt::format("<figcaption><b>{}</b> ({}): {}</figcaption>", title,
-                                      html_escape(file),
-                                      html_escape(image["caption"].get<std::string>()));
+    std::string caption =
+        fmt::format("<figcaption><b>{}</b> ({}): {}</figcaption>", title, html_escape(file),
+                    html_escape(image["caption"].get<std::string>()));
     std::string png = image["available"].get<bool>() ? read_file(run_dir + "/" + file) : "";
     if (png.empty()) {
       std::string reason = image["reason"].get<std::string>();
-      out += fmt::format("<figure id=\"img-{}\" data-image=\"{}\" class=\"missing\"><p>{}: not "
-                         "available ({})</p>{}</figure>\n",
-                         id, id, title, html_escape(reason.empty() ? "file missing" : reason),
-                         caption);
+      out += fmt::format(
+          "<figure id=\"img-{}\" data-image=\"{}\" class=\"missing\"><p>{}: not "
+          "available ({})</p>{}</figure>\n",
+          id, id, title, html_escape(reason.empty() ? "file missing" : reason), caption);
       continue;
     }
-    out += fmt::format("<figure id=\"img-{}\" data-image=\"{}\"><img alt=\"{}\" "
-                       "src=\"data:image/png;base64,{}\">{}</figure>\n",
-                       id, id, title, base64(png), caption);
+    out += fmt::format(
+        "<figure id=\"img-{}\" data-image=\"{}\"><img alt=\"{}\" "
+        "src=\"data:image/png;base64,{}\">{}</figure>\n",
+        id, id, title, base64(png), caption);
   }
   return out;
 }

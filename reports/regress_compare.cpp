@@ -35,7 +35,8 @@ std::vector<std::string> covered(const Tolerance& t, const Json& a, const Json& 
 MetricCheck check(const std::string& name, const Tolerance& t, const std::string& metric,
                   const Json& base, const Json& now) {
   MetricCheck c{name, metric, t.direction.empty() ? metric_direction(metric) : t.direction,
-                base, now, 0, "ok"};
+                base, now,    0,
+                "ok"};
   if (base.is_null() || now.is_null() || !base.is_number() || !now.is_number()) {
     c.status = base.is_null() && now.is_null() ? "ok" : "missing";
     return c;
@@ -59,7 +60,8 @@ bool RegressResult::failed() const {
 }
 
 Json baseline_json(const RegressSuite& suite, const std::vector<CaseOutcome>& cases) {
-  Json out = {{"schema", kBaselineSchema}, {"suite", suite.name}, {"generator", "rtsim " RTSIM_VERSION}};
+  Json out = {
+      {"schema", kBaselineSchema}, {"suite", suite.name}, {"generator", "rtsim " RTSIM_VERSION}};
   Json all = Json::object();
   for (const CaseOutcome& c : cases) all[c.name] = {{"metrics", c.metrics}};
   out["cases"] = all;
@@ -102,8 +104,9 @@ std::string delta_table(const RegressResult& r, bool markdown) {
       double b = c.baseline.get<double>(), n = c.current.get<double>();
       delta = b != 0 ? fmt::format("{:+.2f}%", 100 * (n / b - 1)) : fmt::format("{:+.4g}", n - b);
     }
-    rows.push_back({c.case_name, c.metric, show(c.baseline, Style::Real), show(c.current, Style::Real),
-                    delta, fmt::format("±{:.4g}", c.allowed), c.status});
+    rows.push_back({c.case_name, c.metric, show(c.baseline, Style::Real),
+                    show(c.current, Style::Real), delta, fmt::format("±{:.4g}", c.allowed),
+                    c.status});
   }
   std::vector<size_t> width(rows[0].size(), 0);
   for (const auto& row : rows)
@@ -115,7 +118,8 @@ std::string delta_table(const RegressResult& r, bool markdown) {
     out += markdown ? "|\n" : "\n";
     if (markdown && n == 0) out += "|---|---|---|---|---|---|---|\n";
   }
-  for (const std::string& f : r.case_failures) out += (markdown ? "\n- **FAILED** " : "FAILED  ") + f + "\n";
+  for (const std::string& f : r.case_failures)
+    out += (markdown ? "\n- **FAILED** " : "FAILED  ") + f + "\n";
   return out;
 }
 
@@ -128,39 +132,52 @@ std::string junit_xml(const RegressSuite& suite, const RegressResult& r) {
     for (const std::string& f : r.case_failures)
       if (f.rfind(c.name + ":", 0) == 0) failure += f + "\n";
     failures += !failure.empty();
-    body += fmt::format("    <testcase classname=\"{}.{}\" name=\"run and verification\" time=\"{:.3f}\">",
-                        html_escape(suite.name), html_escape(c.name), c.seconds);
+    body += fmt::format(
+        "    <testcase classname=\"{}.{}\" name=\"run and verification\" time=\"{:.3f}\">",
+        html_escape(suite.name), html_escape(c.name), c.seconds);
     if (!failure.empty())
-      body += fmt::format("<failure message=\"{}\">{}</failure>", html_escape(failure.substr(0, failure.find('\n'))),
-                          html_escape(failure));
+      body += fmt::format("<failure message=\"{}\">{}</failure>",
+                          html_escape(failure.substr(0, failure.find('\n'))), html_escape(failure));
     body += "</testcase>\n";
   }
   for (const MetricCheck& c : r.checks) {
     body += fmt::format("    <testcase classname=\"{}.{}\" name=\"{}\" time=\"0\">",
                         html_escape(suite.name), html_escape(c.case_name), html_escape(c.metric));
-    std::string detail = fmt::format("{}: baseline {}, now {}, allowed deviation {:.6g} ({} is better)",
-                                     c.status, c.baseline.dump(), c.current.dump(), c.allowed,
-                                     c.direction == "higher" ? "higher" : c.direction == "lower" ? "lower" : "neither");
+    std::string detail =
+        fmt::format("{}: baseline {}, now {}, allowed deviation {:.6g} ({} is better)", c.status,
+                    c.baseline.dump(), c.current.dump(), c.allowed,
+                    c.direction == "higher"  ? "higher"
+                    : c.direction == "lower" ? "lower"
+                                             : "neither");
     if (c.failed())
-      body += fmt::format("<failure message=\"{}\">{}</failure>", html_escape(detail), html_escape(detail));
+      body += fmt::format("<failure message=\"{}\">{}</failure>", html_escape(detail),
+                          html_escape(detail));
     else if (c.status == "improved")
       body += "<system-out>" + html_escape(detail + "; update the baseline") + "</system-out>";
     body += "</testcase>\n";
   }
-  return fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"{}\" "
-                     "failures=\"{}\">\n  <testsuite name=\"rtsim.regress.{}\" tests=\"{}\" "
-                     "failures=\"{}\" errors=\"0\" skipped=\"0\">\n{}  </testsuite>\n</testsuites>\n",
-                     tests, failures, html_escape(suite.name), tests, failures, body);
+  return fmt::format(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"{}\" "
+      "failures=\"{}\">\n  <testsuite name=\"rtsim.regress.{}\" tests=\"{}\" "
+      "failures=\"{}\" errors=\"0\" skipped=\"0\">\n{}  </testsuite>\n</testsuites>\n",
+      tests, failures, html_escape(suite.name), tests, failures, body);
 }
 
 Json regress_json(const RegressSuite& suite, const RegressResult& r) {
   Json checks = Json::array();
   for (const MetricCheck& c : r.checks)
-    checks.push_back({{"case", c.case_name}, {"metric", c.metric}, {"baseline", c.baseline},
-                      {"current", c.current}, {"allowed", c.allowed}, {"direction", c.direction},
+    checks.push_back({{"case", c.case_name},
+                      {"metric", c.metric},
+                      {"baseline", c.baseline},
+                      {"current", c.current},
+                      {"allowed", c.allowed},
+                      {"direction", c.direction},
                       {"status", c.status}});
-  return {{"schema", "rtsim.regress/1"}, {"suite", suite.name}, {"failed", r.failed()},
-          {"case_failures", r.case_failures}, {"checks", checks}};
+  return {{"schema", "rtsim.regress/1"},
+          {"suite", suite.name},
+          {"failed", r.failed()},
+          {"case_failures", r.case_failures},
+          {"checks", checks}};
 }
 
 }  // namespace rtsim::reports

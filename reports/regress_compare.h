@@ -16,8 +16,8 @@ constexpr const char* kBaselineSchema = "rtsim.regress.baseline/1";
 
 struct CaseOutcome {
   std::string name;
-  bool ran = false;          // its run left a report
-  int exit_code = 0;         // of its `rtsim run`
+  bool ran = false;                // its run left a report
+  int exit_code = 0;               // of its `rtsim run`
   nlohmann::ordered_json metrics;  // flat_metrics of its report
   double seconds = 0;
 };
@@ -25,9 +25,11 @@ struct CaseOutcome {
 struct MetricCheck {
   std::string case_name, metric, direction;
   nlohmann::ordered_json baseline, current;
-  double allowed = 0;   // deviation allowed, in the metric's unit
-  std::string status;   // ok, improved, regressed, changed, missing
-  bool failed() const { return status == "regressed" || status == "changed" || status == "missing"; }
+  double allowed = 0;  // deviation allowed, in the metric's unit
+  std::string status;  // ok, improved, regressed, changed, missing
+  bool failed() const {
+    return status == "regressed" || status == "changed" || status == "missing";
+  }
 };
 
 struct RegressResult {

@@ -9,6 +9,7 @@
 
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
+#include "reports/spec_reader.h"
 #include "traces/error.h"
 
 namespace rtsim::reports {
@@ -16,48 +17,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Reader {
-  std::string file;
-
-  [[noreturn]] void fail(const toml::node& node, const std::string& what) const {
-    throw_input_error(file, fmt::format("line {}", node.source().begin.line), what);
-  }
-  void only(const toml::table& t, const std::vector<std::string>& keys,
-            const std::string& where) const {
-    for (const auto& [key, node] : t)
-      if (std::find(keys.begin(), keys.end(), std::string(key.str())) == keys.end())
-        fail(node, fmt::format("unknown key '{}' in {}", key.str(), where));
-  }
-  std::string text(const toml::table& t, const char* key, const std::string& def) const {
-    const toml::node* n = t.get(key);
-    if (!n) return def;
-    if (!n->is_string()) fail(*n, fmt::format("'{}' must be a string", key));
-    return std::string(*n->value<std::string>());
-  }
-  int64_t integer(const toml::node& n, const char* key, int64_t lo, int64_t hi) const {
-    std::optional<int64_t> v = n.is_integer() ? n.value<int64_t>() : std::nullopt;
-    if (!v || *v < lo || *v > hi) fail(n, fmt::format("'{}' must be an integer {} to {}", key, lo, hi));
-    return *v;
-  }
-  bool boolean(const toml::node& n, const char* key) const {
-    if (!n.is_boolean()) fail(n, fmt::format("'{}' must be true or false", key));
-    return *n.value<bool>();
-  }
-  double number(const toml::node& n, const std::string& what) const {
-    auto v = n.value<double>();
-    if (!v || *v < 0) fail(n, what + " must be a number >= 0");
-    return *v;
-  }
-  std::string resolve(const std::string& path) const {
-    fs::path candidate = fs::path(file).parent_path() / path;
-    return !path.empty() && fs::exists(candidate) ? candidate.lexically_normal().string() : path;
-  }
-};
-
-RegressCase read_case(const Reader& r, const toml::table& t, const toml::table* defaults,
+RegressCase read_case(const SpecReader& r, const toml::table& t, const toml::table* defaults,
                       const std::string& config) {
-  std::vector<std::string> keys{"workload", "resolution", "frames", "seed",
-                                "scene", "config", "set", "fidelity", "sample_rate"};
+  std::vector<std::string> keys{"workload", "resolution", "frames",   "seed",       "scene",
+                                "config",   "set",        "fidelity", "sample_rate"};
   if (defaults) r.only(*defaults, keys, "[defaults]");
   keys.push_back("name");
   r.only(t, keys, "[[case]]");
@@ -76,8 +39,10 @@ RegressCase read_case(const Reader& r, const toml::table& t, const toml::table* 
   c.name = text("name", fs::path(c.trace.workload).stem().string());
   c.trace.resolution = text("resolution", "");
   c.trace.scene = text("scene", "");
-  if (const toml::node* n = pick("frames")) c.trace.frames = uint32_t(r.integer(*n, "frames", 0, 1 << 20));
-  if (const toml::node* n = pick("seed")) c.trace.seed = uint64_t(r.integer(*n, "seed", 0, INT64_MAX));
+  if (const toml::node* n = pick("frames"))
+    c.trace.frames = uint32_t(r.integer(*n, "frames", 0, 1 << 20));
+  if (const toml::node* n = pick("seed"))
+    c.trace.seed = uint64_t(r.integer(*n, "seed", 0, INT64_MAX));
   c.config = r.resolve(text("config", config));
   if (const toml::node* n = pick("set")) {
     if (!n->is_array()) r.fail(*n, "'set' must be a list of \"key=value\" strings");
@@ -92,16 +57,16 @@ RegressCase read_case(const Reader& r, const toml::table& t, const toml::table* 
   return c;
 }
 
-Tolerance read_tolerance(const Reader& r, const std::string& metric, const toml::node& n) {
+Tolerance read_tolerance(const SpecReader& r, const std::string& metric, const toml::node& n) {
   Tolerance t{metric, 0, 0, ""};
   if (!n.is_table()) {
-    t.relative = r.number(n, "tolerance '" + metric + "'");
+    t.relative = r.non_negative(n, "tolerance '" + metric + "'");
     return t;
   }
   const toml::table& table = *n.as_table();
   r.only(table, {"relative", "absolute", "direction"}, "tolerance '" + metric + "'");
-  if (const toml::node* v = table.get("relative")) t.relative = r.number(*v, "relative");
-  if (const toml::node* v = table.get("absolute")) t.absolute = r.number(*v, "absolute");
+  if (const toml::node* v = table.get("relative")) t.relative = r.non_negative(*v, "relative");
+  if (const toml::node* v = table.get("absolute")) t.absolute = r.non_negative(*v, "absolute");
   t.direction = r.text(table, "direction", "");
   if (!t.direction.empty() && t.direction != "lower" && t.direction != "higher" &&
       t.direction != "either")
@@ -112,14 +77,8 @@ Tolerance read_tolerance(const Reader& r, const std::string& metric, const toml:
 }  // namespace
 
 RegressSuite read_regress_suite(const std::string& path) {
-  Reader r{path};
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
-                      std::string(e.description()));
-  }
+  SpecReader r{path};
+  toml::table root = parse_spec_file(path);
   r.only(root, {"name", "description", "config", "verify", "defaults", "case", "tolerance"},
          "the suite");
   RegressSuite suite;

@@ -7,7 +7,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json estimate_value(const Estimate& e) { return e.known ? Json(e.value) : Json(); }
+Json estimate_value(const Estimate& e) {
+  return e.known ? Json(e.value) : Json();
+}
 
 double sum_units(const Json& counters, uint32_t units, const std::string& suffix) {
   double total = 0;
@@ -22,19 +24,21 @@ Json workload_json(const Json& trace, const FidelityResult& f) {
   Json per_type = Json::object();
   for (int t = 0; t < kRayTypeCount; ++t)
     if (f.types[t].rays) per_type[ray_type_name(RayType(t))] = f.types[t].rays;
-  return {{"name", trace["workload"]},   {"scene", trace["scene"]},
-          {"triangles", trace["triangles"]}, {"width", trace["width"]},
-          {"height", trace["height"]},   {"frames", trace["frames"]},
-          {"lights", trace["lights"]},   {"surfels", trace["surfels"]},
-          {"rays", f.rays},              {"rays_per_type", per_type},
-          {"passes", trace["passes"]}};
+  return {
+      {"name", trace["workload"]}, {"scene", trace["scene"]},     {"triangles", trace["triangles"]},
+      {"width", trace["width"]},   {"height", trace["height"]},   {"frames", trace["frames"]},
+      {"lights", trace["lights"]}, {"surfels", trace["surfels"]}, {"rays", f.rays},
+      {"rays_per_type", per_type}, {"passes", trace["passes"]}};
 }
 
 Json hardware_json(const ReportInputs& in) {
   const HwConfig& c = *in.config;
   auto cache = [](const CacheConfig& k) {
-    return Json{{"size_bytes", k.size_bytes}, {"line_bytes", k.line_bytes}, {"ways", k.ways},
-                {"hit_latency", k.hit_latency}, {"mshrs", k.mshrs}};
+    return Json{{"size_bytes", k.size_bytes},
+                {"line_bytes", k.line_bytes},
+                {"ways", k.ways},
+                {"hit_latency", k.hit_latency},
+                {"mshrs", k.mshrs}};
   };
   return {{"name", c.name},
           {"description", c.description},
@@ -80,7 +84,8 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
   for (int t = 0; t < kRayTypeCount; ++t) {
     const TypeEstimate& e = f.types[t];
     if (!e.rays) continue;
-    by_type[ray_type_name(RayType(t))] = {{"dram_bytes_per_ray", estimate_value(e.dram_bytes_per_ray)}};
+    by_type[ray_type_name(RayType(t))] = {
+        {"dram_bytes_per_ray", estimate_value(e.dram_bytes_per_ray)}};
   }
   if (!stats.is_null()) {
     const Json& counters = stats["stats"]["counters"];
@@ -90,10 +95,10 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
     b["dram_utilisation"] = stats["utilisation"]["dram"];
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
-      entry["l1_bytes_per_ray"] = counters["type." + name + ".l1_accesses"].get<double>() *
-                                  c.l1.line_bytes / n;
-      entry["l2_bytes_per_ray"] = counters["type." + name + ".l2_accesses"].get<double>() *
-                                  c.l2.line_bytes / n;
+      entry["l1_bytes_per_ray"] =
+          counters["type." + name + ".l1_accesses"].get<double>() * c.l1.line_bytes / n;
+      entry["l2_bytes_per_ray"] =
+          counters["type." + name + ".l2_accesses"].get<double>() * c.l2.line_bytes / n;
     }
   }
   b["by_type"] = by_type;
@@ -138,8 +143,10 @@ Json latency_json(const FidelityResult& f, const Json& stats, const Json& collec
   for (int t = 0; t < kRayTypeCount; ++t) {
     if (!f.types[t].rays) continue;
     std::string name = ray_type_name(RayType(t));
-    if (!stats.is_null()) l[name] = stats["ray_types"][name]["latency_cycles"];
-    else if (f.types[t].latency_mean.known) l[name] = {{"mean", f.types[t].latency_mean.value}};
+    if (!stats.is_null())
+      l[name] = stats["ray_types"][name]["latency_cycles"];
+    else if (f.types[t].latency_mean.known)
+      l[name] = {{"mean", f.types[t].latency_mean.value}};
   }
   Json out = {{"by_type", l}};
   out["histogram"] = collected.is_null() ? Json() : collected["latency_histogram"];
@@ -153,8 +160,8 @@ Json hit_rates_json(const FidelityResult& f) {
     if (!e.rays || !e.l1_hit_rate.known) continue;
     h[ray_type_name(RayType(t))] = {{"l1", e.l1_hit_rate.value}, {"l2", e.l2_hit_rate.value}};
   }
-  return {{"l1", estimate_value(f.l1_hit_rate)}, {"l2", estimate_value(f.l2_hit_rate)},
-          {"by_type", h}};
+  return {
+      {"l1", estimate_value(f.l1_hit_rate)}, {"l2", estimate_value(f.l2_hit_rate)}, {"by_type", h}};
 }
 
 Json time_json(const FidelityResult& f, const Json& stats, const Json& collected) {

@@ -37,9 +37,11 @@ std::string workload(const Json& r) {
                                   {"frames", "workload.frames", Style::Integer},
                                   {"lights", "workload.lights", Style::Integer},
                                   {"rays", "workload.rays", Style::Integer}});
-  out += "<h3>Rays per type</h3>\n" + html_type_table(r, "workload.rays_per_type", {{"rays", "", kInt}});
-  out += "<h3>Passes of the hybrid pipeline</h3>\n<table>\n<tr><th>pass</th><th>ray type</th>"
-         "<th>rays</th><th>budget per frame</th><th>skipped</th><th>why</th></tr>\n";
+  out += "<h3>Rays per type</h3>\n" +
+         html_type_table(r, "workload.rays_per_type", {{"rays", "", kInt}});
+  out +=
+      "<h3>Passes of the hybrid pipeline</h3>\n<table>\n<tr><th>pass</th><th>ray type</th>"
+      "<th>rays</th><th>budget per frame</th><th>skipped</th><th>why</th></tr>\n";
   const Json& passes = r["workload"]["passes"];
   for (size_t i = 0; i < passes.size(); ++i) {
     std::string p = "workload.passes." + std::to_string(i);
@@ -53,21 +55,22 @@ std::string workload(const Json& r) {
 }
 
 std::string hardware(const Json& r) {
-  std::string out = html_rows(r, {{"preset", "hardware.name", Style::Text},
-                                  {"description", "hardware.description", Style::Text},
-                                  {"config file", "hardware.config_file", Style::Text},
-                                  {"clock (GHz)", "hardware.clock_ghz", Style::Real},
-                                  {"RT units", "hardware.rt_units", Style::Integer},
-                                  {"traversal", "hardware.mode", Style::Text},
-                                  {"ray slots", "hardware.ray_slots", Style::Integer},
-                                  {"L1 bytes (per unit)", "hardware.l1.size_bytes", Style::Integer},
-                                  {"L1 hit latency", "hardware.l1.hit_latency", Style::Integer},
-                                  {"L2 bytes", "hardware.l2.size_bytes", Style::Integer},
-                                  {"L2 hit latency", "hardware.l2.hit_latency", Style::Integer},
-                                  {"DRAM bytes/cycle", "hardware.dram.bytes_per_cycle", Style::Real},
-                                  {"DRAM latency", "hardware.dram.latency", Style::Integer},
-                                  {"BVH", "hardware.bvh", Style::Text},
-                                  {"on-chip bytes", "hardware.on_chip_bytes", Style::Integer}});
+  std::string out =
+      html_rows(r, {{"preset", "hardware.name", Style::Text},
+                    {"description", "hardware.description", Style::Text},
+                    {"config file", "hardware.config_file", Style::Text},
+                    {"clock (GHz)", "hardware.clock_ghz", Style::Real},
+                    {"RT units", "hardware.rt_units", Style::Integer},
+                    {"traversal", "hardware.mode", Style::Text},
+                    {"ray slots", "hardware.ray_slots", Style::Integer},
+                    {"L1 bytes (per unit)", "hardware.l1.size_bytes", Style::Integer},
+                    {"L1 hit latency", "hardware.l1.hit_latency", Style::Integer},
+                    {"L2 bytes", "hardware.l2.size_bytes", Style::Integer},
+                    {"L2 hit latency", "hardware.l2.hit_latency", Style::Integer},
+                    {"DRAM bytes/cycle", "hardware.dram.bytes_per_cycle", Style::Real},
+                    {"DRAM latency", "hardware.dram.latency", Style::Integer},
+                    {"BVH", "hardware.bvh", Style::Text},
+                    {"on-chip bytes", "hardware.on_chip_bytes", Style::Integer}});
   const Json& sets = r["hardware"]["sets"];
   if (!sets.empty()) out += "<p>Overrides: <code>" + html_escape(sets.dump()) + "</code></p>\n";
   return out + "<details><summary>Every key, resolved</summary><pre>" +
@@ -86,32 +89,37 @@ std::string timing(const Json& r) {
 }
 
 std::string bandwidth(const Json& r) {
-  std::string out = "<h3>Bytes per ray at each level</h3>\n" +
-                    html_rows(r, {{"L1 (requested by the units)", "bandwidth.l1_bytes_per_ray", Style::Real},
-                                  {"L2 (L1 misses)", "bandwidth.l2_bytes_per_ray", Style::Real},
-                                  {"DRAM (L2 misses and stack spills)", "bandwidth.dram_bytes_per_ray", Style::Real},
-                                  {"L1 hit rate", "bandwidth.l1_hit_rate", Style::Percent},
-                                  {"L2 hit rate", "bandwidth.l2_hit_rate", Style::Percent},
-                                  {"DRAM bytes", "bandwidth.dram_bytes", Style::Integer},
-                                  {"DRAM bytes per cycle", "bandwidth.dram_bytes_per_cycle", Style::Real},
-                                  {"DRAM utilisation", "bandwidth.dram_utilisation", Style::Percent}});
+  std::string out =
+      "<h3>Bytes per ray at each level</h3>\n" +
+      html_rows(r,
+                {{"L1 (requested by the units)", "bandwidth.l1_bytes_per_ray", Style::Real},
+                 {"L2 (L1 misses)", "bandwidth.l2_bytes_per_ray", Style::Real},
+                 {"DRAM (L2 misses and stack spills)", "bandwidth.dram_bytes_per_ray", Style::Real},
+                 {"L1 hit rate", "bandwidth.l1_hit_rate", Style::Percent},
+                 {"L2 hit rate", "bandwidth.l2_hit_rate", Style::Percent},
+                 {"DRAM bytes", "bandwidth.dram_bytes", Style::Integer},
+                 {"DRAM bytes per cycle", "bandwidth.dram_bytes_per_cycle", Style::Real},
+                 {"DRAM utilisation", "bandwidth.dram_utilisation", Style::Percent}});
   return out + "<h3>Per ray type</h3>\n" +
-         html_type_table(r, "bandwidth.by_type", {{"L1 line bytes/ray", "l1_bytes_per_ray", kReal},
-                                                  {"L2 line bytes/ray", "l2_bytes_per_ray", kReal},
-                                                  {"DRAM bytes/ray", "dram_bytes_per_ray", kReal}});
+         html_type_table(r, "bandwidth.by_type",
+                         {{"L1 line bytes/ray", "l1_bytes_per_ray", kReal},
+                          {"L2 line bytes/ray", "l2_bytes_per_ray", kReal},
+                          {"DRAM bytes/ray", "dram_bytes_per_ray", kReal}});
 }
 
 std::string coherence(const Json& r) {
-  std::string out = html_rows(r, {{"nodes per ray", "coherence.nodes_per_ray", Style::Real},
-                                  {"triangles per ray", "coherence.triangles_per_ray", Style::Real},
-                                  {"stack spills per ray", "coherence.stack_spills_per_ray", Style::Real},
-                                  {"SIMD efficiency (packets)", "coherence.simd_efficiency", Style::Percent},
-                                  {"distinct nodes per warp step", "coherence.distinct_nodes_per_warp_step", Style::Real},
-                                  {"rays per treelet visit", "coherence.rays_per_treelet_visit", Style::Real},
-                                  {"mean rays queued (treelets)", "coherence.treelet_queue_mean_rays", Style::Real}});
-  return out + html_type_table(r, "coherence.by_type", {{"nodes/ray", "nodes_per_ray", kReal},
-                                                        {"triangles/ray", "triangles_per_ray", kReal},
-                                                        {"stack spills/ray", "stack_spills_per_ray", kReal}});
+  std::string out = html_rows(
+      r, {{"nodes per ray", "coherence.nodes_per_ray", Style::Real},
+          {"triangles per ray", "coherence.triangles_per_ray", Style::Real},
+          {"stack spills per ray", "coherence.stack_spills_per_ray", Style::Real},
+          {"SIMD efficiency (packets)", "coherence.simd_efficiency", Style::Percent},
+          {"distinct nodes per warp step", "coherence.distinct_nodes_per_warp_step", Style::Real},
+          {"rays per treelet visit", "coherence.rays_per_treelet_visit", Style::Real},
+          {"mean rays queued (treelets)", "coherence.treelet_queue_mean_rays", Style::Real}});
+  return out + html_type_table(r, "coherence.by_type",
+                               {{"nodes/ray", "nodes_per_ray", kReal},
+                                {"triangles/ray", "triangles_per_ray", kReal},
+                                {"stack spills/ray", "stack_spills_per_ray", kReal}});
 }
 
 std::string verification(const Json& r) {
@@ -119,9 +127,10 @@ std::string verification(const Json& r) {
   if (v["skipped"].get<bool>())
     return "<p>Skipped: " + html_escape(v["reason"].get<std::string>()) + ".</p>\n";
   bool passed = v["passed"].get<bool>();
-  std::string out = fmt::format("<p class=\"{}\">{}: every ray checked against Embree "
-                                "(robust mode); unexplained mismatches must be zero.</p>\n",
-                                passed ? "pass" : "fail", passed ? "PASSED" : "FAILED");
+  std::string out = fmt::format(
+      "<p class=\"{}\">{}: every ray checked against Embree "
+      "(robust mode); unexplained mismatches must be zero.</p>\n",
+      passed ? "pass" : "fail", passed ? "PASSED" : "FAILED");
   out += html_rows(r, {{"rays checked", "verification.rays", Style::Integer},
                        {"agree", "verification.agree", Style::Integer},
                        {"mismatches", "verification.mismatches", Style::Integer},
@@ -133,29 +142,35 @@ std::string verification(const Json& r) {
 }
 
 std::string latency(const Json& r) {
-  return html_type_table(r, "latency.by_type", {{"p50", "p50", kInt}, {"p95", "p95", kInt},
-                                                {"p99", "p99", kInt}, {"mean", "mean", kReal},
-                                                {"max", "max", kInt}});
+  return html_type_table(r, "latency.by_type",
+                         {{"p50", "p50", kInt},
+                          {"p95", "p95", kInt},
+                          {"p99", "p99", kInt},
+                          {"mean", "mean", kReal},
+                          {"max", "max", kInt}});
 }
 
 }  // namespace
 
 std::string report_html(const Json& r, const std::string& run_dir) {
-  std::string title = fmt::format("rtsim report: {} on {}", r["workload"]["name"].get<std::string>(),
-                                  r["hardware"]["name"].get<std::string>());
+  std::string title =
+      fmt::format("rtsim report: {} on {}", r["workload"]["name"].get<std::string>(),
+                  r["hardware"]["name"].get<std::string>());
   std::string out = html_head(title);
   out += "<h1>" + html_escape(title) + "</h1>\n<p class=\"meta\">" +
          html_escape(r["generator"].get<std::string>()) + " &middot; <code>" +
          html_escape(r["command"].get<std::string>()) + "</code> &middot; data: report.json</p>\n";
-  out += "<nav><a href=\"#summary\">Summary</a><a href=\"#workload\">Workload</a><a "
-         "href=\"#hardware\">Hardware</a><a href=\"#timing\">Timing</a><a "
-         "href=\"#bandwidth\">Bandwidth</a><a href=\"#coherence\">Coherence</a><a "
-         "href=\"#verification\">Verification</a><a href=\"#pictures\">Pictures</a><a "
-         "href=\"#charts\">Charts</a></nav>\n";
+  out +=
+      "<nav><a href=\"#summary\">Summary</a><a href=\"#workload\">Workload</a><a "
+      "href=\"#hardware\">Hardware</a><a href=\"#timing\">Timing</a><a "
+      "href=\"#bandwidth\">Bandwidth</a><a href=\"#coherence\">Coherence</a><a "
+      "href=\"#verification\">Verification</a><a href=\"#pictures\">Pictures</a><a "
+      "href=\"#charts\">Charts</a></nav>\n";
   out += section("summary", "Summary", summary(r));
   out += section("workload", "Workload", workload(r));
   out += section("hardware", "Hardware config", hardware(r));
-  out += section("timing", "Timing", timing(r) + "<h3>Latency per ray type (cycles)</h3>\n" + latency(r));
+  out += section("timing", "Timing",
+                 timing(r) + "<h3>Latency per ray type (cycles)</h3>\n" + latency(r));
   out += section("bandwidth", "Bandwidth", bandwidth(r));
   out += section("coherence", "Coherence", coherence(r));
   out += section("verification", "Verification", verification(r));

@@ -50,8 +50,8 @@ ReportOutcome finish(Json& report, const std::string& run_dir, const ReportOptio
 
 }  // namespace
 
-ReportOutcome write_report(Json& report, const std::string& run_dir,
-                           const std::string& trace_dir, const ReportOptions& options) {
+ReportOutcome write_report(Json& report, const std::string& run_dir, const std::string& trace_dir,
+                           const ReportOptions& options) {
   fs::create_directories(run_dir + "/images");
   if (!trace_dir.empty() && options.pages) {
     copy_picture(trace_dir + "/preview.png", run_dir + "/images/preview.png");
@@ -72,8 +72,9 @@ ReportOutcome rewrite_report(const std::string& run_dir, const ReportOptions& op
   }
   if (report.value("schema", "") != kReportSchema)
     throw_input_error(path, "schema", std::string("expected ") + kReportSchema);
-  bool pixels = !report["pixel_buffers"].is_null() &&
-                fs::exists(run_dir + "/" + report["pixel_buffers"]["files"]["cycles"].get<std::string>());
+  bool pixels =
+      !report["pixel_buffers"].is_null() &&
+      fs::exists(run_dir + "/" + report["pixel_buffers"]["files"]["cycles"].get<std::string>());
   report["images"] = report_images(report, fs::exists(run_dir + "/images/preview.png"), pixels);
   return finish(report, run_dir, options);
 }

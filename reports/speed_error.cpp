@@ -52,19 +52,21 @@ Json row(const LevelRun& run, const LevelRun& ref) {
   const FidelityResult& r = run.result;
   const FidelityResult& f = ref.result;
   double speedup = r.cpu_seconds > 0 ? f.cpu_seconds / r.cpu_seconds : 0;
-  Json out = {{"label", run.label},
-              {"level", fidelity_level_name(r.level)},
-              {"sample_rate", r.sample_rate},
-              {"simulated_fraction", double(r.simulated_rays) / double(std::max<uint64_t>(r.rays, 1))},
-              {"strata", r.strata},
-              {"host_seconds", r.host_seconds},
-              {"cpu_seconds", r.cpu_seconds},
-              {"speedup", speedup},
-              {"cycles", metric(r.cycles, f.cycles, false)},
-              {"dram_bytes", metric(r.dram_bytes, f.dram_bytes, false)},
-              {"l1_hit_rate", metric(r.l1_hit_rate, f.l1_hit_rate, true)},
-              {"l2_hit_rate", metric(r.l2_hit_rate, f.l2_hit_rate, true)}};
-  bool meets = r.cycles.known && std::abs(out["cycles"]["error"].get<double>()) <= kGoalCycleError &&
+  Json out = {
+      {"label", run.label},
+      {"level", fidelity_level_name(r.level)},
+      {"sample_rate", r.sample_rate},
+      {"simulated_fraction", double(r.simulated_rays) / double(std::max<uint64_t>(r.rays, 1))},
+      {"strata", r.strata},
+      {"host_seconds", r.host_seconds},
+      {"cpu_seconds", r.cpu_seconds},
+      {"speedup", speedup},
+      {"cycles", metric(r.cycles, f.cycles, false)},
+      {"dram_bytes", metric(r.dram_bytes, f.dram_bytes, false)},
+      {"l1_hit_rate", metric(r.l1_hit_rate, f.l1_hit_rate, true)},
+      {"l2_hit_rate", metric(r.l2_hit_rate, f.l2_hit_rate, true)}};
+  bool meets = r.cycles.known &&
+               std::abs(out["cycles"]["error"].get<double>()) <= kGoalCycleError &&
                speedup >= kGoalSpeedup;
   out["seeds"] = over_seeds(run, f);
   if (!out["seeds"].is_null()) {
@@ -116,9 +118,16 @@ Json speed_error_json(const LevelRun& reference, const std::vector<LevelRun>& ru
 }
 
 std::string speed_error_table(const Json& doc, bool markdown) {
-  const char* head[] = {"level", "CPU s", "speed-up", "simulated", "cycles (error)",
-                        "DRAM bytes (error)", "L1 hit rate (error)", "L2 hit rate (error)",
-                        "rms error over seeds", "goal"};
+  const char* head[] = {"level",
+                        "CPU s",
+                        "speed-up",
+                        "simulated",
+                        "cycles (error)",
+                        "DRAM bytes (error)",
+                        "L1 hit rate (error)",
+                        "L2 hit rate (error)",
+                        "rms error over seeds",
+                        "goal"};
   std::vector<std::vector<std::string>> table;
   table.emplace_back(std::begin(head), std::end(head));
   for (const Json& r : doc["rows"]) {
@@ -138,8 +147,7 @@ std::string speed_error_table(const Json& doc, bool markdown) {
   std::string out;
   for (size_t n = 0; n < table.size(); ++n) {
     for (size_t i = 0; i < table[n].size(); ++i)
-      out += markdown ? "| " + table[n][i] + " "
-                      : fmt::format("{:<{}}  ", table[n][i], width[i]);
+      out += markdown ? "| " + table[n][i] + " " : fmt::format("{:<{}}  ", table[n][i], width[i]);
     out += markdown ? "|\n" : "\n";
     if (markdown && n == 0) {
       for (size_t i = 0; i < table[n].size(); ++i) out += "|---";
@@ -156,31 +164,32 @@ std::string speed_error_markdown(const Json& doc) {
       "Stream: {} rays ({}x{}), scene {} ({} triangles). Reference: the full cycle-approximate "
       "model. Times are CPU seconds of each level's run (scene and BVH excluded); with several "
       "seeds, the sampled rows give the first seed's estimate, the mean time and the root mean "
-      "square error over all seeds, and the goal is judged on those. Errors are relative (cycles, DRAM bytes) or in percentage points (hit rates); "
+      "square error over all seeds, and the goal is judged on those. Errors are relative (cycles, "
+      "DRAM bytes) or in percentage points (hit rates); "
       "± is the sampled level's 95% confidence interval. Goal: cycle error <= {:.0f}% at a "
       "speed-up >= {:.0f}x.\n\n",
-      c["workload"].get<std::string>(), c["config"].get<std::string>(),
-      c["rays"].get<uint64_t>(), c["width"].get<uint32_t>(), c["height"].get<uint32_t>(),
-      c["scene"].get<std::string>(), c["triangles"].get<uint64_t>(),
-      100 * doc["goal"]["max_cycle_error"].get<double>(),
+      c["workload"].get<std::string>(), c["config"].get<std::string>(), c["rays"].get<uint64_t>(),
+      c["width"].get<uint32_t>(), c["height"].get<uint32_t>(), c["scene"].get<std::string>(),
+      c["triangles"].get<uint64_t>(), 100 * doc["goal"]["max_cycle_error"].get<double>(),
       doc["goal"]["min_speedup"].get<double>());
   return out + speed_error_table(doc, true) + "\n![speed against error](speed_vs_error.png)\n";
 }
 
 std::string speed_error_csv(const Json& doc) {
   std::string out =
-      "label,level,sample_rate,host_seconds,cpu_seconds,speedup,simulated_fraction,cycles,cycles_ci95,"
+      "label,level,sample_rate,host_seconds,cpu_seconds,speedup,simulated_fraction,cycles,cycles_"
+      "ci95,"
       "cycles_error,dram_bytes,dram_bytes_ci95,dram_bytes_error,l1_hit_rate,l1_hit_rate_ci95,"
       "l1_hit_rate_error,l2_hit_rate,l2_hit_rate_ci95,l2_hit_rate_error,meets_goal\n";
   for (const Json& r : doc["rows"]) {
     out += fmt::format("{},{},{},{:.6f},{:.6f},{:.4f},{:.6f}", r["label"].get<std::string>(),
                        r["level"].get<std::string>(), r["sample_rate"].get<uint32_t>(),
                        r["host_seconds"].get<double>(), r["cpu_seconds"].get<double>(),
-                       r["speedup"].get<double>(),
-                       r["simulated_fraction"].get<double>());
+                       r["speedup"].get<double>(), r["simulated_fraction"].get<double>());
     for (const char* m : {"cycles", "dram_bytes", "l1_hit_rate", "l2_hit_rate"}) {
       const Json& x = r[m];
-      if (x.is_null()) out += ",,,";
+      if (x.is_null())
+        out += ",,,";
       else
         out += fmt::format(",{:.10g},{:.6g},{:.6g}", x["value"].get<double>(),
                            x["ci95"].get<double>(), x["error"].get<double>());

@@ -31,17 +31,19 @@ std::string title_of(const Json& doc) {
 Json figures_doc(const Json& doc) {
   Json images = Json::array();
   for (const Json& c : doc["charts"])
-    images.push_back({{"id", c["id"]}, {"file", c["file"]}, {"kind", "chart"},
-                      {"title", c["title"]},
-                      {"caption", c["kind"] == "pareto"
-                                      ? "Each point's cycles against its on-chip memory (caches "
-                                        "and ray stacks); the line joins the Pareto-optimal "
-                                        "points of each workload."
-                                      : fmt::format("{} against {}, one line per {}.",
-                                                    c["y"].get<std::string>(),
-                                                    c["x"].get<std::string>(),
-                                                    c["series"].get<std::string>())},
-                      {"available", c["available"]}, {"reason", c["reason"]}});
+    images.push_back(
+        {{"id", c["id"]},
+         {"file", c["file"]},
+         {"kind", "chart"},
+         {"title", c["title"]},
+         {"caption", c["kind"] == "pareto"
+                         ? "Each point's cycles against its on-chip memory (caches "
+                           "and ray stacks); the line joins the Pareto-optimal "
+                           "points of each workload."
+                         : fmt::format("{} against {}, one line per {}.", c["y"].get<std::string>(),
+                                       c["x"].get<std::string>(), c["series"].get<std::string>())},
+         {"available", c["available"]},
+         {"reason", c["reason"]}});
   return {{"images", images}};
 }
 
@@ -51,7 +53,8 @@ std::string sweep_html(const Json& doc, const std::string& dir) {
   std::string out = html_head(title_of(doc)) + "<h1>" + html_escape(title_of(doc)) + "</h1>\n";
   const Json& spec = doc["spec"];
   out += "<p class=\"meta\">" + html_escape(doc["generator"].get<std::string>()) + " &middot; " +
-         html_escape(spec["file"].get<std::string>()) + " &middot; data: sweep.json, sweep.csv</p>\n";
+         html_escape(spec["file"].get<std::string>()) +
+         " &middot; data: sweep.json, sweep.csv</p>\n";
   if (!spec["description"].get<std::string>().empty())
     out += "<p>" + html_escape(spec["description"].get<std::string>()) + "</p>\n";
   out += "<section id=\"spec\">\n<h2>Spec</h2>\n" +
@@ -86,7 +89,8 @@ std::string sweep_markdown(const Json& doc) {
   const Json& spec = doc["spec"];
   std::string out = "# " + title_of(doc) + "\n\n" + spec["description"].get<std::string>() +
                     "\n\nBase config: " + spec["config"].get<std::string>() + ", fidelity " +
-                    spec["fidelity"].get<std::string>() + ". Data: sweep.json, sweep.csv; full "
+                    spec["fidelity"].get<std::string>() +
+                    ". Data: sweep.json, sweep.csv; full "
                     "page: sweep.html.\n\n| workload |";
   for (const Json& k : spec["keys"]) out += " " + k.get<std::string>() + " |";
   out += " status |";

@@ -50,9 +50,19 @@ Json finished_report(const std::string& dir, const Json& request) {
 
 std::vector<std::string> run_argv(const SweepSpec& spec, const std::string& trace_dir,
                                   const Json& request, const std::string& dir) {
-  std::vector<std::string> argv{self_executable(), "run", "--from-trace", trace_dir, "-o", dir,
-                                "--report", "json", "-q", "--fidelity", spec.fidelity,
-                                "--sample-rate", std::to_string(spec.sampling.rate)};
+  std::vector<std::string> argv{self_executable(),
+                                "run",
+                                "--from-trace",
+                                trace_dir,
+                                "-o",
+                                dir,
+                                "--report",
+                                "json",
+                                "-q",
+                                "--fidelity",
+                                spec.fidelity,
+                                "--sample-rate",
+                                std::to_string(spec.sampling.rate)};
   if (!spec.config.empty()) argv.insert(argv.end(), {"--config", spec.config});
   for (const Json& s : request["sets"]) argv.insert(argv.end(), {"--set", s.get<std::string>()});
   if (!spec.verify) argv.push_back("--no-verify");
@@ -109,14 +119,15 @@ std::vector<PointRun> run_sweep(const SweepSpec& spec, const SweepRunOptions& o)
     if (p.ok) p.metrics = flat_metrics(report);
     ++finished;
     if (o.quiet) return;
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     double eta = elapsed / double(finished) * double(jobs.size() - finished);
     std::string result = p.ok && !p.metrics["cycles"].is_null()
                              ? fmt::format("{} cycles", show(p.metrics["cycles"], Style::Integer))
-                             : p.ok ? "done" : fmt::format("FAILED (exit {}, see {}/run.log)", code, p.dir);
+                         : p.ok ? "done"
+                                : fmt::format("FAILED (exit {}, see {}/run.log)", code, p.dir);
     fmt::print("[{:>3}/{}] {}: {}{}  ({:.0f} s, about {:.0f} s left)\n", finished, jobs.size(),
-               describe(p), result, p.ok && code == 1 ? ", verification FAILED" : "", elapsed,
-               eta);
+               describe(p), result, p.ok && code == 1 ? ", verification FAILED" : "", elapsed, eta);
     std::fflush(stdout);
   });
   return points;

@@ -8,6 +8,7 @@
 
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
+#include "reports/spec_reader.h"
 #include "traces/error.h"
 
 namespace rtsim::reports {
@@ -16,42 +17,8 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-struct Reader {
-  std::string file;
-
-  [[noreturn]] void fail(const toml::node& node, const std::string& what) const {
-    throw_input_error(file, fmt::format("line {}", node.source().begin.line), what);
-  }
-  void only(const toml::table& table, const std::vector<std::string>& keys,
-            const std::string& where) const {
-    for (const auto& [key, node] : table)
-      if (std::find(keys.begin(), keys.end(), std::string(key.str())) == keys.end())
-        fail(node, fmt::format("unknown key '{}' in {}", key.str(), where));
-  }
-  std::string text(const toml::table& t, const char* key, const std::string& def = "") const {
-    const toml::node* n = t.get(key);
-    if (!n) return def;
-    if (!n->is_string()) fail(*n, fmt::format("'{}' must be a string", key));
-    return std::string(*n->value<std::string>());
-  }
-  int64_t integer(const toml::table& t, const char* key, int64_t def, int64_t lo,
-                  int64_t hi) const {
-    const toml::node* n = t.get(key);
-    if (!n) return def;
-    if (!n->is_integer()) fail(*n, fmt::format("'{}' must be an integer", key));
-    int64_t v = *n->value<int64_t>();
-    if (v < lo || v > hi) fail(*n, fmt::format("'{}' must be {} to {}", key, lo, hi));
-    return v;
-  }
-  // A path relative to the spec's folder, if such a file exists; else as written.
-  std::string resolve(const std::string& path) const {
-    fs::path candidate = fs::path(file).parent_path() / path;
-    return !path.empty() && fs::exists(candidate) ? candidate.lexically_normal().string() : path;
-  }
-};
-
 // A TOML value as the text of --set KEY=VALUE, and as JSON.
-std::pair<std::string, Json> scalar(const Reader& r, const toml::node& n) {
+std::pair<std::string, Json> scalar(const SpecReader& r, const toml::node& n) {
   if (auto v = n.value_exact<int64_t>()) return {std::to_string(*v), *v};
   if (auto v = n.value_exact<double>()) return {fmt::format("{}", *v), *v};
   if (auto v = n.value_exact<bool>()) return {*v ? "true" : "false", *v};
@@ -64,12 +31,14 @@ void flatten(const toml::table& t, const std::string& prefix,
              std::vector<std::pair<std::string, const toml::node*>>& out) {
   for (const auto& [key, node] : t) {
     std::string name = prefix + std::string(key.str());
-    if (node.is_table()) flatten(*node.as_table(), name + ".", out);
-    else out.emplace_back(name, &node);
+    if (node.is_table())
+      flatten(*node.as_table(), name + ".", out);
+    else
+      out.emplace_back(name, &node);
   }
 }
 
-void add_grid(const Reader& r, const toml::table& grid, SweepSpec& spec) {
+void add_grid(const SpecReader& r, const toml::table& grid, SweepSpec& spec) {
   std::vector<std::pair<std::string, const toml::node*>> axes;
   flatten(grid, "", axes);
   spec.points.push_back({Json::object(), {}});
@@ -90,7 +59,7 @@ void add_grid(const Reader& r, const toml::table& grid, SweepSpec& spec) {
   }
 }
 
-void add_point(const Reader& r, const toml::table& table, SweepSpec& spec) {
+void add_point(const SpecReader& r, const toml::table& table, SweepSpec& spec) {
   std::vector<std::pair<std::string, const toml::node*>> keys;
   flatten(table, "", keys);
   SweepPoint p{Json::object(), {}};
@@ -104,7 +73,7 @@ void add_point(const Reader& r, const toml::table& table, SweepSpec& spec) {
   spec.points.push_back(p);
 }
 
-void read_workloads(const Reader& r, const toml::table& root, SweepSpec& spec) {
+void read_workloads(const SpecReader& r, const toml::table& root, SweepSpec& spec) {
   const toml::array* list = root["workload"].as_array();
   if (!list || list->empty()) throw_input_error(r.file, "", "no [[workload]]");
   for (const toml::node& n : *list) {
@@ -125,7 +94,7 @@ void read_workloads(const Reader& r, const toml::table& root, SweepSpec& spec) {
   }
 }
 
-void read_run(const Reader& r, const toml::table& run, SweepSpec& spec) {
+void read_run(const SpecReader& r, const toml::table& run, SweepSpec& spec) {
   r.only(run, {"fidelity", "sample_rate", "verify", "jobs"}, "[run]");
   spec.fidelity = r.text(run, "fidelity", "cycle");
   if (!fidelity_level_from_name(spec.fidelity))
@@ -138,7 +107,7 @@ void read_run(const Reader& r, const toml::table& run, SweepSpec& spec) {
   }
 }
 
-void read_charts(const Reader& r, const toml::table& root, SweepSpec& spec) {
+void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) {
   const toml::array* list = root["chart"].as_array();
   if (!list) return;
   for (const toml::node& n : *list) {
@@ -155,15 +124,10 @@ void read_charts(const Reader& r, const toml::table& root, SweepSpec& spec) {
 }  // namespace
 
 SweepSpec read_sweep_spec(const std::string& path) {
-  Reader r{path};
-  toml::table root;
-  try {
-    root = toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
-                      std::string(e.description()));
-  }
-  r.only(root, {"name", "description", "config", "set", "workload", "grid", "point", "run", "chart"},
+  SpecReader r{path};
+  toml::table root = parse_spec_file(path);
+  r.only(root,
+         {"name", "description", "config", "set", "workload", "grid", "point", "run", "chart"},
          "the sweep spec");
   SweepSpec spec;
   spec.file = path;

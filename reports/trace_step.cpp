@@ -64,8 +64,8 @@ Json summary_json(const pipeline::RunSummary& s) {
           {"surfels", s.surfels},
           {"rays", s.total_rays()},
           {"passes", passes},
-          {"seconds", {{"load", s.load_seconds}, {"build", s.build_seconds},
-                       {"trace", s.trace_seconds}}}};
+          {"seconds",
+           {{"load", s.load_seconds}, {"build", s.build_seconds}, {"trace", s.trace_seconds}}}};
 }
 
 }  // namespace
@@ -94,7 +94,8 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   if (fs::exists(dir + "/trace.json") && fs::exists(dir + "/rays.rays")) {
     TraceOutcome old = read_trace_dir(dir);
     if (old.summary["request"] == wanted) {
-      if (!quiet) fmt::print("trace      reusing {} ({} rays)\n", dir, old.summary["rays"].get<uint64_t>());
+      if (!quiet)
+        fmt::print("trace      reusing {} ({} rays)\n", dir, old.summary["rays"].get<uint64_t>());
       return old;
     }
   }

@@ -51,7 +51,8 @@ void RayStreamReader::read_header() {
   header_.scene_source = in.get_string();
   header_.workload = in.get_string();
   header_.generator = in.get_string();
-  if (!in.ok() || in.pos() != header_bytes - 20) fail(16, "header fields do not fit the header size");
+  if (!in.ok() || in.pos() != header_bytes - 20)
+    fail(16, "header fields do not fit the header size");
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
     fail(44, "chunk size " + std::to_string(header_.chunk_rays) + " is out of range");
   chunk_.resize(4 + size_t(header_.chunk_rays) * kRayRecordBytes + 4);
@@ -81,8 +82,7 @@ bool RayStreamReader::load_chunk() {
   read_exact(chunk_.data() + 4, body + 4, chunk_offset_, count ? "chunk" : "end marker");
   uint32_t stored_crc;
   std::memcpy(&stored_crc, chunk_.data() + 4 + body, 4);
-  if (crc32(chunk_.data(), 4 + body) != stored_crc)
-    fail(chunk_offset_, "chunk checksum mismatch");
+  if (crc32(chunk_.data(), 4 + body) != stored_crc) fail(chunk_offset_, "chunk checksum mismatch");
   chunk_size_ = count;
   chunk_pos_ = 0;
   if (count > 0) return true;

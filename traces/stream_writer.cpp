@@ -14,7 +14,9 @@
 namespace rtsim {
 
 RayStreamWriter::RayStreamWriter(const std::string& path, StreamHeader header)
-    : path_(path), tmp_path_(path + ".tmp-" + std::to_string(getpid())), header_(std::move(header)) {
+    : path_(path),
+      tmp_path_(path + ".tmp-" + std::to_string(getpid())),
+      header_(std::move(header)) {
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
     throw std::invalid_argument("chunk_rays must be in [1, " + std::to_string(kMaxChunkRays) + "]");
   header_.counts = {};

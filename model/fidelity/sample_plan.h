@@ -20,16 +20,17 @@
 namespace rtsim {
 
 struct SamplingConfig {
-  uint32_t rate = 16;         // 1 in `rate` rays measured (the range: 4 to 64)
-  uint32_t window_rays = 0;   // rays measured per window; 0: auto (4 x ray slots, >= 1024)
-  int64_t warmup_rays = -1;   // rays simulated before each window; -1: auto (the ray slots)
-  uint64_t seed = 1;          // seed of the window offsets
-  bool warm_pass = true;      // simulate every window once, unmeasured, before measuring
+  uint32_t rate = 16;        // 1 in `rate` rays measured (the range: 4 to 64)
+  uint32_t window_rays = 0;  // rays measured per window; 0: auto (4 x ray slots, >= 1024)
+  int64_t warmup_rays = -1;  // rays simulated before each window; -1: auto (the ray slots)
+  uint64_t seed = 1;         // seed of the window offsets
+  bool warm_pass = true;     // simulate every window once, unmeasured, before measuring
 };
 
 struct SampleWindow {
   uint64_t stratum_begin = 0, stratum_end = 0;  // the stratum, as stream positions
-  uint64_t warm_begin = 0, begin = 0, end = 0;  // simulated [warm_begin, end), measured [begin, end)
+  uint64_t warm_begin = 0, begin = 0,
+           end = 0;  // simulated [warm_begin, end), measured [begin, end)
 };
 
 struct SamplePlan {

@@ -26,7 +26,8 @@ TEST(Dram, LoneRequestIsReadyAfterTransferPlusLatency) {
 
 TEST(Dram, BackToBackRequestsShareTheBusAtPeakBandwidth) {
   Dram dram(config(16, 100, 1000));
-  for (int k = 0; k < 50; ++k) EXPECT_EQ(dram.read(uint64_t(k) * 64, 64, 0), Cycle(4 * (k + 1) + 100));
+  for (int k = 0; k < 50; ++k)
+    EXPECT_EQ(dram.read(uint64_t(k) * 64, 64, 0), Cycle(4 * (k + 1) + 100));
   EXPECT_DOUBLE_EQ(dram.stats().busy_cycles, 200.0);
 }
 
@@ -46,7 +47,8 @@ TEST(Dram, BandwidthIsNeverExceededOnRandomArrivals) {
   uint64_t delivered = 0;
   for (const auto& [ready, bytes] : done) {
     delivered += bytes;
-    ASSERT_LE(double(delivered), 8.0 * double(ready - 50)) << "bandwidth exceeded by cycle " << ready;
+    ASSERT_LE(double(delivered), 8.0 * double(ready - 50))
+        << "bandwidth exceeded by cycle " << ready;
   }
   EXPECT_GT(dram.stats().queue_stall_cycles, 0u) << "the stream should fill the queue";
 }

@@ -9,7 +9,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-TEST(Pages, EscapesHtml) { EXPECT_EQ(html_escape("<a href=\"x\">&</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&lt;/a&gt;"); }
+TEST(Pages, EscapesHtml) {
+  EXPECT_EQ(html_escape("<a href=\"x\">&</a>"), "&lt;a href=&quot;x&quot;&gt;&amp;&lt;/a&gt;");
+}
 
 TEST(Pages, Base64OfTheRfc4648Vectors) {
   EXPECT_EQ(base64(""), "");

@@ -64,8 +64,10 @@ struct Cell {
 // Every <td data-key=... data-value=...>shown</td> of a page, HTML entities undone.
 inline std::vector<Cell> number_cells(const std::string& html) {
   auto unescape = [](std::string s) {
-    for (auto [from, to] : {std::pair<std::string, std::string>{"&quot;", "\""}, {"&lt;", "<"},
-                            {"&gt;", ">"}, {"&amp;", "&"}}) {
+    for (auto [from, to] : {std::pair<std::string, std::string>{"&quot;", "\""},
+                            {"&lt;", "<"},
+                            {"&gt;", ">"},
+                            {"&amp;", "&"}}) {
       for (size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
         s.replace(at, from.size(), to);
     }
@@ -96,7 +98,8 @@ inline std::vector<Figure> figures(const std::string& html) {
   auto between = [&](size_t from, const std::string& open, const std::string& close) {
     size_t a = html.find(open, from);
     size_t b = a == std::string::npos ? a : html.find(close, a + open.size());
-    return b == std::string::npos ? std::string() : html.substr(a + open.size(), b - a - open.size());
+    return b == std::string::npos ? std::string()
+                                  : html.substr(a + open.size(), b - a - open.size());
   };
   for (size_t at = html.find("<figure "); at != std::string::npos;
        at = html.find("<figure ", at + 1)) {

@@ -65,29 +65,38 @@ workload = "pica"
 }
 
 TEST(SweepSpec, MistakesNameTheFileAndLine) {
-  EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\nworkload = \"pica\"\n"
-                                                          "[grid]\n\"rt.count\" = [1]\nbogus = 1\n")); })
-                .find("line 5"),
+  EXPECT_NE(error_of([] {
+              read_sweep_spec(write("s.toml",
+                                    "[[workload]]\nworkload = \"pica\"\n"
+                                    "[grid]\n\"rt.count\" = [1]\nbogus = 1\n"));
+            }).find("line 5"),
             std::string::npos);
-  EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\n[grid]\n\"rt.nope\" = [1]\n")); })
-                .find("rt.nope"),
-            std::string::npos) << "config keys are checked before anything runs";
-  EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\n[grid]\n\"rt.count\" = [1]\n"
-                                                          "[[point]]\n\"rt.count\" = 2\n")); })
-                .find("not both"),
+  EXPECT_NE(error_of([] {
+              read_sweep_spec(write("s.toml", "[[workload]]\n[grid]\n\"rt.nope\" = [1]\n"));
+            }).find("rt.nope"),
+            std::string::npos)
+      << "config keys are checked before anything runs";
+  EXPECT_NE(error_of([] {
+              read_sweep_spec(write("s.toml",
+                                    "[[workload]]\n[grid]\n\"rt.count\" = [1]\n"
+                                    "[[point]]\n\"rt.count\" = 2\n"));
+            }).find("not both"),
             std::string::npos);
   EXPECT_NE(error_of([] { read_sweep_spec(write("s.toml", "[[workload]]\n")); }).find("no [grid]"),
             std::string::npos);
   EXPECT_NE(error_of([] {
-              read_sweep_spec(write("s.toml", "[[workload]]\n[[workload]]\n[grid]\n"
-                                              "\"rt.count\" = [1]\n"));
+              read_sweep_spec(write("s.toml",
+                                    "[[workload]]\n[[workload]]\n[grid]\n"
+                                    "\"rt.count\" = [1]\n"));
             }).find("line 2: two workloads are named 'pica'"),
             std::string::npos);
   EXPECT_NE(error_of([] {
-              read_sweep_spec(write("s.toml", "[[workload]]\n[grid]\n\"rt.count\" = [1]\n"
-                                              "[run]\nfidelity = \"fast\"\n"));
+              read_sweep_spec(write("s.toml",
+                                    "[[workload]]\n[grid]\n\"rt.count\" = [1]\n"
+                                    "[run]\nfidelity = \"fast\"\n"));
             }).find("line 5: 'fidelity' must be"),
-            std::string::npos) << "checked when read, not point by point";
+            std::string::npos)
+      << "checked when read, not point by point";
 }
 
 TEST(RegressSuite, ReadsCasesDefaultsAndTolerances) {
@@ -111,13 +120,15 @@ l1_hit_rate = { absolute = 0.01, direction = "higher" }
   EXPECT_DOUBLE_EQ(s.tolerances[0].relative, 0.02);
   EXPECT_DOUBLE_EQ(s.tolerances[1].absolute, 0.01);
   EXPECT_EQ(s.tolerances[1].direction, "higher");
-  EXPECT_NE(error_of([] { read_regress_suite(write("r.toml", "[[case]]\nname = \"a\"\n")); })
-                .find("tolerance"),
-            std::string::npos) << "a suite must say what it compares";
+  EXPECT_NE(error_of([] {
+              read_regress_suite(write("r.toml", "[[case]]\nname = \"a\"\n"));
+            }).find("tolerance"),
+            std::string::npos)
+      << "a suite must say what it compares";
   const std::string tolerance = "[tolerance]\ncycles = 0.02\n";
   EXPECT_NE(error_of([&] {
-              read_regress_suite(write("r.toml", "[defaults]\nresolutoin = \"8x8\"\n[[case]]\n" +
-                                                     tolerance));
+              read_regress_suite(
+                  write("r.toml", "[defaults]\nresolutoin = \"8x8\"\n[[case]]\n" + tolerance));
             }).find("line 2: unknown key 'resolutoin' in [defaults]"),
             std::string::npos);
   EXPECT_NE(error_of([&] {

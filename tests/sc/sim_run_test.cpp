@@ -70,7 +70,8 @@ TEST(SimQuantum, DecouplingChangesCyclesOnlySlightly) {
   nlohmann::json exact = test::simulate(config, s.scene, rays);
   config.sim.quantum_cycles = 32;
   nlohmann::json fast = test::simulate(config, s.scene, rays);
-  double c1 = exact["summary"]["cycles"].get<double>(), c32 = fast["summary"]["cycles"].get<double>();
+  double c1 = exact["summary"]["cycles"].get<double>(),
+         c32 = fast["summary"]["cycles"].get<double>();
   EXPECT_NEAR(c32 / c1, 1.0, 0.03) << "quantum 32 vs exact order";
   EXPECT_NEAR(counter(fast, "dram.bytes") / counter(exact, "dram.bytes"), 1.0, 0.03);
 }

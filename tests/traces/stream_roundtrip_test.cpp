@@ -22,7 +22,8 @@ TEST(StreamRoundTrip, EveryRayTypeBitForBit) {
   auto back = read_all_rays(path, &header);
   ASSERT_EQ(back.size(), rays.size());
   for (size_t i = 0; i < rays.size(); ++i) EXPECT_TRUE(back[i] == rays[i]) << "ray " << i;
-  for (int t = 0; t < kRayTypeCount; ++t) EXPECT_EQ(header.counts[t], 125u) << ray_type_name(RayType(t));
+  for (int t = 0; t < kRayTypeCount; ++t)
+    EXPECT_EQ(header.counts[t], 125u) << ray_type_name(RayType(t));
   EXPECT_EQ(header.scene_source, "builtin:cornell");
   EXPECT_EQ(header.scene_fingerprint, 0x0123456789abcdefull);
   EXPECT_EQ(header.workload, "test");

@@ -8,19 +8,21 @@ namespace rtsim {
 namespace {
 
 class StampPolicy : public ReplacementPolicy {
-public:
+ public:
   StampPolicy(uint32_t sets, uint32_t ways, bool stamp_on_touch)
       : ways_(ways), stamps_(size_t(sets) * ways, 0), stamp_on_touch_(stamp_on_touch) {}
   void touch(uint32_t set, uint32_t way) override {
     if (stamp_on_touch_) stamps_[size_t(set) * ways_ + way] = ++clock_;
   }
-  void insert(uint32_t set, uint32_t way) override { stamps_[size_t(set) * ways_ + way] = ++clock_; }
+  void insert(uint32_t set, uint32_t way) override {
+    stamps_[size_t(set) * ways_ + way] = ++clock_;
+  }
   uint32_t victim(uint32_t set) override {
     auto first = stamps_.begin() + long(size_t(set) * ways_);
     return uint32_t(std::min_element(first, first + ways_) - first);
   }
 
-private:
+ private:
   uint32_t ways_;
   std::vector<uint64_t> stamps_;
   uint64_t clock_ = 0;
@@ -28,7 +30,7 @@ private:
 };
 
 class RandomPolicy : public ReplacementPolicy {
-public:
+ public:
   RandomPolicy(uint32_t ways, uint64_t seed) : ways_(ways), state_(seed | 1) {}
   void touch(uint32_t, uint32_t) override {}
   void insert(uint32_t, uint32_t) override {}
@@ -39,7 +41,7 @@ public:
     return uint32_t(state_ % ways_);
   }
 
-private:
+ private:
   uint32_t ways_;
   uint64_t state_;
 };
@@ -54,6 +56,8 @@ std::unique_ptr<ReplacementPolicy> make_replacement_policy(const std::string& na
   return nullptr;
 }
 
-std::vector<std::string> replacement_policy_names() { return {"lru", "fifo", "random"}; }
+std::vector<std::string> replacement_policy_names() {
+  return {"lru", "fifo", "random"};
+}
 
 }  // namespace rtsim

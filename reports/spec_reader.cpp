@@ -1,0 +1,70 @@
+#include "reports/spec_reader.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+
+#include <fmt/core.h>
+
+#include "traces/error.h"
+
+namespace rtsim::reports {
+namespace fs = std::filesystem;
+
+toml::table parse_spec_file(const std::string& path) {
+  try {
+    return toml::parse_file(path);
+  } catch (const toml::parse_error& e) {
+    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
+                      std::string(e.description()));
+  }
+}
+
+void SpecReader::fail(const toml::node& node, const std::string& what) const {
+  throw_input_error(file, fmt::format("line {}", node.source().begin.line), what);
+}
+
+void SpecReader::only(const toml::table& table, const std::vector<std::string>& keys,
+                      const std::string& where) const {
+  for (const auto& [key, node] : table)
+    if (std::find(keys.begin(), keys.end(), std::string(key.str())) == keys.end())
+      fail(node, fmt::format("unknown key '{}' in {}", key.str(), where));
+}
+
+std::string SpecReader::text(const toml::table& t, const char* key, const std::string& def) const {
+  const toml::node* n = t.get(key);
+  if (!n) return def;
+  if (!n->is_string()) fail(*n, fmt::format("'{}' must be a string", key));
+  return std::string(*n->value<std::string>());
+}
+
+int64_t SpecReader::integer(const toml::node& n, const char* key, int64_t lo, int64_t hi) const {
+  std::optional<int64_t> v = n.is_integer() ? n.value<int64_t>() : std::nullopt;
+  if (!v || *v < lo || *v > hi)
+    fail(n, fmt::format("'{}' must be an integer {} to {}", key, lo, hi));
+  return *v;
+}
+
+int64_t SpecReader::integer(const toml::table& t, const char* key, int64_t def, int64_t lo,
+                            int64_t hi) const {
+  const toml::node* n = t.get(key);
+  return n ? integer(*n, key, lo, hi) : def;
+}
+
+bool SpecReader::boolean(const toml::node& n, const char* key) const {
+  if (!n.is_boolean()) fail(n, fmt::format("'{}' must be true or false", key));
+  return *n.value<bool>();
+}
+
+double SpecReader::non_negative(const toml::node& n, const std::string& what) const {
+  std::optional<double> v = n.value<double>();
+  if (!v || *v < 0) fail(n, what + " must be a number >= 0");
+  return *v;
+}
+
+std::string SpecReader::resolve(const std::string& path) const {
+  fs::path candidate = fs::path(file).parent_path() / path;
+  return !path.empty() && fs::exists(candidate) ? candidate.lexically_normal().string() : path;
+}
+
+}  // namespace rtsim::reports

@@ -1,0 +1,35 @@
+// Reading sweep specs and regression suites (TOML): every mistake is an InputError naming the
+// file and the line, and relative paths resolve next to the file.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+namespace rtsim::reports {
+
+// Parses the file; a syntax error names its line.
+toml::table parse_spec_file(const std::string& path);
+
+struct SpecReader {
+  std::string file;
+
+  [[noreturn]] void fail(const toml::node& node, const std::string& what) const;
+  // Fails on the first key of the table that is not in keys ("unknown key 'K' in WHERE").
+  void only(const toml::table& table, const std::vector<std::string>& keys,
+            const std::string& where) const;
+  // t[key] as a string; def when absent.
+  std::string text(const toml::table& t, const char* key, const std::string& def = "") const;
+  // The node as an integer in [lo, hi].
+  int64_t integer(const toml::node& n, const char* key, int64_t lo, int64_t hi) const;
+  // t[key] as an integer in [lo, hi]; def when absent.
+  int64_t integer(const toml::table& t, const char* key, int64_t def, int64_t lo, int64_t hi) const;
+  bool boolean(const toml::node& n, const char* key) const;
+  double non_negative(const toml::node& n, const std::string& what) const;
+  // A path relative to the file's folder, if such a file exists; else as written.
+  std::string resolve(const std::string& path) const;
+};
+
+}  // namespace rtsim::reports
