@@ -31,20 +31,8 @@ struct RegressOptions {
 
 std::vector<std::string> case_argv(const reports::RegressCase& c, const std::string& trace,
                                    const std::string& dir, const RegressOptions& o) {
-  std::vector<std::string> argv{reports::self_executable(),
-                                "run",
-                                "--from-trace",
-                                trace,
-                                "-o",
-                                dir,
-                                "--report",
-                                "json",
-                                "-q",
-                                "--fidelity",
-                                c.fidelity,
-                                "--sample-rate",
-                                std::to_string(c.sampling.rate)};
-  if (!c.config.empty()) argv.insert(argv.end(), {"--config", c.config});
+  std::vector<std::string> argv =
+      reports::run_child_argv(trace, dir, c.fidelity, c.sampling.rate, c.config);
   for (const std::string& s : c.sets) argv.insert(argv.end(), {"--set", s});
   for (const std::string& s : o.sets) argv.insert(argv.end(), {"--set", s});
   return argv;

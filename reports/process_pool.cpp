@@ -35,6 +35,16 @@ pid_t start(const ProcessJob& job) {
 
 std::string self_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }
 
+std::vector<std::string> run_child_argv(const std::string& trace_dir, const std::string& out_dir,
+                                        const std::string& fidelity, uint32_t sample_rate,
+                                        const std::string& config) {
+  std::vector<std::string> argv{self_executable(), "run", "--from-trace", trace_dir, "-o", out_dir,
+                                "--report", "json", "-q", "--fidelity", fidelity,
+                                "--sample-rate", std::to_string(sample_rate)};
+  if (!config.empty()) argv.insert(argv.end(), {"--config", config});
+  return argv;
+}
+
 uint32_t local_cores() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 void run_processes(const std::vector<ProcessJob>& jobs, uint32_t parallel,

@@ -19,6 +19,12 @@ struct ProcessJob {
 // The path of this executable (to run `rtsim run` children).
 std::string self_executable();
 
+// The argv of a quiet `rtsim run` child of this executable on a trace folder, writing only
+// report.json into out_dir; the config is left out when empty.
+std::vector<std::string> run_child_argv(const std::string& trace_dir, const std::string& out_dir,
+                                        const std::string& fidelity, uint32_t sample_rate,
+                                        const std::string& config);
+
 // Local cores (at least 1).
 uint32_t local_cores();
 

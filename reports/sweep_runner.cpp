@@ -50,20 +50,8 @@ Json finished_report(const std::string& dir, const Json& request) {
 
 std::vector<std::string> run_argv(const SweepSpec& spec, const std::string& trace_dir,
                                   const Json& request, const std::string& dir) {
-  std::vector<std::string> argv{self_executable(),
-                                "run",
-                                "--from-trace",
-                                trace_dir,
-                                "-o",
-                                dir,
-                                "--report",
-                                "json",
-                                "-q",
-                                "--fidelity",
-                                spec.fidelity,
-                                "--sample-rate",
-                                std::to_string(spec.sampling.rate)};
-  if (!spec.config.empty()) argv.insert(argv.end(), {"--config", spec.config});
+  std::vector<std::string> argv =
+      run_child_argv(trace_dir, dir, spec.fidelity, spec.sampling.rate, spec.config);
   for (const Json& s : request["sets"]) argv.insert(argv.end(), {"--set", s.get<std::string>()});
   if (!spec.verify) argv.push_back("--no-verify");
   return argv;
