@@ -26,6 +26,7 @@ void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPoo
   r.counter(p + ".tests", s.tests);
   r.counter(p + ".issues", s.issues);
   r.counter(p + ".stall_cycles", s.stall_cycles);
+  r.counter(p + ".calendar_conflicts", s.calendar_conflicts);
   r.ratio(p + ".utilisation", p + ".issues", "cycles", 1.0 / pool.config().count);
 }
 
@@ -49,6 +50,7 @@ void RtSimulator::report(StatsRegistry& r) const {
   r.counter("dispatch.takes", d.takes);
   r.real("dispatch.busy_cycles", d.busy_cycles);
   r.counter("dispatch.wait_cycles", d.wait_cycles);
+  r.counter("dispatch.pool_empty", d.pool_empty);
   r.ratio("dispatch.utilisation", "dispatch.busy_cycles", "cycles");
 
   if (treelets_) {
