@@ -78,9 +78,14 @@ int run(const RunOptions& o) {
   reports::TraceOutcome trace = o.from_trace.empty()
                                     ? reports::trace_into(o.workload, o.output + "/trace", o.quiet)
                                     : reports::read_trace_dir(o.from_trace);
-  reports::RunJob job{trace.stream, trace.summary["scene"].get<std::string>(),
-                      config,       {*level, o.sampling},
-                      !o.no_verify, o.output};
+  reports::RunJob job;
+  job.stream = trace.stream;
+  job.scene = trace.summary["scene"].get<std::string>();
+  job.config = config;
+  job.level = {*level, o.sampling};
+  job.verify = !o.no_verify;
+  job.output = o.output;
+  job.progress = !o.quiet;
   reports::RunResult result = reports::run_job(job);
   if (result.stalled) {
     fmt::print(stderr, "rtsim: stall: {}", result.stall_message);

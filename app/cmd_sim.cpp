@@ -3,6 +3,7 @@
 // DIR/config.toml (the resolved config) and per-pixel buffers. Every ray's answer is checked
 // against Embree unless --no-verify; exit 1 if a mismatch is unexplained or the model stalls.
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 
@@ -10,13 +11,17 @@
 
 #include "app/commands.h"
 #include "model/config/hw_config.h"
+#include "model/sc/sim_progress.h"
 #include "model/sc/sim_report.h"
+#include "model/sched/sim_stats.h"
 #include "model/sched/sim_verifier.h"
 #include "traces/embree_scene.h"
 #include "traces/error.h"
 #include "workloads/scene.h"
 
-int sc_main(int, char**) { return 0; }  // SystemC's library needs the symbol; main() is ours
+int sc_main(int, char**) {
+  return 0;
+}  // SystemC's library needs the symbol; main() is ours
 
 namespace rtsim::app {
 namespace {
@@ -103,14 +108,21 @@ int run_sim(const SimOptions& o) {
     verifier = std::make_unique<SimVerifier>(scene.mesh, *model, *embree);
   }
   StreamRaySource source(reader);
-  RtSimulator sim(config, image, source, header.width, header.height, verifier.get());
+  SimProgress progress(o.quiet ? 0 : header.total_rays());
+  RetireFanout listeners;
+  listeners.add(&progress);
+  if (verifier) listeners.add(verifier.get());
+  RtSimulator sim(config, image, source, header.width, header.height, &listeners);
+  std::fflush(stdout);  // the header before the progress lines, also in a pipe
   auto start = std::chrono::steady_clock::now();
   try {
     sim.run();
   } catch (const SimStallError& e) {
+    progress.finish();
     fmt::print(stderr, "rtsim: stall: {}", e.what());
     return 1;
   }
+  progress.finish();
   SimRunInfo info{o.stream, header, &image, verifier ? &verifier->report() : nullptr,
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
   nlohmann::ordered_json doc = write_sim_results(o.output, sim, info);

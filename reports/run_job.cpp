@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "model/fidelity/cycle_level.h"
+#include "model/sc/sim_progress.h"
 #include "model/sc/sim_report.h"
 #include "model/sched/ray_source.h"
 #include "model/sched/sim_stats.h"
@@ -30,8 +31,10 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
   std::unique_ptr<TraversalUnit> model;
   std::unique_ptr<SimVerifier> verifier;
   RunCollector collector;
+  SimProgress progress(job.progress ? reader.header().total_rays() : 0);
   RetireFanout listeners;
   listeners.add(&collector);
+  listeners.add(&progress);
   if (job.verify) {
     embree = std::make_unique<EmbreeScene>(scene.mesh);
     model = std::make_unique<TraversalUnit>(image);
@@ -44,7 +47,9 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
   RunResult result;
   try {
     sim.run();
+    progress.finish();
   } catch (const SimStallError& e) {
+    progress.finish();
     result.stalled = true;
     result.stall_message = e.what();
     return result;

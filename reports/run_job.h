@@ -19,16 +19,17 @@ struct RunJob {
   std::string stream;  // the ray stream
   std::string scene;   // scene spec (from the trace)
   HwConfig config;
-  LevelRequest level;  // Cycle: the full model
-  bool verify = true;  // cycle level only
-  std::string output;  // run folder (created)
+  LevelRequest level;     // Cycle: the full model
+  bool verify = true;     // cycle level only
+  std::string output;     // run folder (created)
+  bool progress = false;  // cycle level: progress on stderr (model/sc/sim_progress.h)
 };
 
 struct RunResult {
-  FidelityResult fidelity;            // every level
-  nlohmann::ordered_json stats;       // cycle level: the stats document; null otherwise
-  nlohmann::ordered_json collected;   // cycle level: RunCollector::to_json(); null otherwise
-  bool stalled = false;               // the model stopped making progress
+  FidelityResult fidelity;           // every level
+  nlohmann::ordered_json stats;      // cycle level: the stats document; null otherwise
+  nlohmann::ordered_json collected;  // cycle level: RunCollector::to_json(); null otherwise
+  bool stalled = false;              // the model stopped making progress
   std::string stall_message;
 };
 
