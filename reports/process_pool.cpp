@@ -7,8 +7,13 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <thread>
+
+#include <fmt/core.h>
+
+#include "traces/hash.h"
 
 namespace rtsim::reports {
 namespace {
@@ -34,6 +39,18 @@ pid_t start(const ProcessJob& job) {
 }  // namespace
 
 std::string self_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }
+
+std::string executable_fingerprint() {
+  static const std::string fingerprint = [] {
+    std::ifstream in(self_executable(), std::ios::binary);
+    std::vector<char> buffer(1 << 20);
+    uint64_t hash = fnv1a64(nullptr, 0);  // the offset basis
+    while (in.read(buffer.data(), std::streamsize(buffer.size())) || in.gcount() > 0)
+      hash = fnv1a64(buffer.data(), size_t(in.gcount()), hash);
+    return fmt::format("{:016x}", hash);
+  }();
+  return fingerprint;
+}
 
 std::vector<std::string> run_child_argv(const std::string& trace_dir, const std::string& out_dir,
                                         const std::string& fidelity, uint32_t sample_rate,

@@ -25,6 +25,10 @@ std::vector<std::string> run_child_argv(const std::string& trace_dir, const std:
                                         const std::string& fidelity, uint32_t sample_rate,
                                         const std::string& config);
 
+// The FNV-1a hash of this executable's bytes, in hex: results computed by another build of
+// rtsim are not reused (sweep points).
+std::string executable_fingerprint();
+
 // Local cores (at least 1).
 uint32_t local_cores();
 

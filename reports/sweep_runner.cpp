@@ -31,7 +31,8 @@ Json request_of(const SweepSpec& spec, const Json& trace_request, const SweepPoi
           {"sets", sets},
           {"fidelity", spec.fidelity},
           {"sample_rate", spec.sampling.rate},
-          {"verify", spec.verify}};
+          {"verify", spec.verify},
+          {"rtsim", executable_fingerprint()}};
 }
 
 // The report of a finished point, or null.
