@@ -77,18 +77,22 @@ int run_speed_error(const SpeedErrorOptions& o) {
     if (rate < 2 || rate > 1024) throw InputError("speed-vs-error: --rates: 2 to 1024");
   HwConfig config = load_hw_config(o.config, o.sets);
   std::vector<LevelRequest> runs = requests(o);
-  std::string work = o.output.empty()
-                         ? (std::filesystem::temp_directory_path() /
-                            ("rtsim-speed-vs-error-" + std::to_string(getpid())))
-                               .string()
-                         : o.output;
-  reports::TraceOutcome trace =
-      o.from_trace.empty() ? reports::trace_into(o.workload, work + "/trace", false)
-                           : reports::read_trace_dir(o.from_trace);
+  std::string work = o.output.empty() ? (std::filesystem::temp_directory_path() /
+                                         ("rtsim-speed-vs-error-" + std::to_string(getpid())))
+                                            .string()
+                                      : o.output;
+  reports::TraceOutcome trace = o.from_trace.empty()
+                                    ? reports::trace_into(o.workload, work + "/trace", false)
+                                    : reports::read_trace_dir(o.from_trace);
+  uint64_t rays = trace.summary["rays"].get<uint64_t>();
+  for (const LevelRequest& r : runs)
+    if (r.level == FidelityLevel::Sampled && rays < 2ull * r.sampling.rate)
+      throw_input_error(trace.stream, "",
+                        fmt::format("{} rays, too few to sample 1 in {} (at least {} needed)", rays,
+                                    r.sampling.rate, 2 * r.sampling.rate));
   Scene scene = load_scene(trace.summary["scene"].get<std::string>());
   BvhImage image = build_bvh_image(scene.mesh, config.bvh);
-  fmt::print("reference  full cycle-approximate model, {} rays, '{}'\n",
-             trace.summary["rays"].get<uint64_t>(), config.name);
+  fmt::print("reference  full cycle-approximate model, {} rays, '{}'\n", rays, config.name);
   reports::LevelRun reference{
       "cycle", best_of(o, {FidelityLevel::Cycle, {}}, config, image, trace.stream), {}};
   std::vector<reports::LevelRun> results;
@@ -144,7 +148,8 @@ void add_speed_vs_error_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--from-trace", o->from_trace, "Use this trace folder (of rtsim run)");
   cmd->add_option("--config", o->config, "Hardware config (.toml; see configs/)");
   cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
-  cmd->add_option("--rates", o->rates, "Sample rates: 1 in N rays")->delimiter(',')
+  cmd->add_option("--rates", o->rates, "Sample rates: 1 in N rays")
+      ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--levels", o->levels, "Levels to compare with the full model")
       ->delimiter(',')

@@ -13,9 +13,9 @@ using Json = nlohmann::ordered_json;
 
 TEST(SpeedVsError, ComparesEveryLevelWithTheFullModel) {
   std::string dir = test::fresh_dir("speed");
-  test::RunResult r = test::run_rtsim("speed-vs-error pica --resolution 96x54 --config " +
-                                      test::source_path("configs/mobile.toml") +
-                                      " --rates 4,8 -o " + dir);
+  test::RunResult r =
+      test::run_rtsim("speed-vs-error pica --resolution 96x54 --config " +
+                      test::source_path("configs/mobile.toml") + " --rates 4,8 -o " + dir);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   Json doc = test::read_json(dir + "/speed_vs_error.json");
   std::vector<std::string> labels;
@@ -38,6 +38,17 @@ TEST(SpeedVsError, ComparesEveryLevelWithTheFullModel) {
   EXPECT_EQ(test::count_lines(test::slurp(dir + "/speed_vs_error.csv")), 6);
   EXPECT_NE(test::slurp(dir + "/speed_vs_error.md").find("| sampled 1/4 |"), std::string::npos);
   EXPECT_EQ(test::slurp(dir + "/speed_vs_error.png").substr(1, 3), "PNG");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SpeedVsError, AStreamTooShortForTheRateIsBadInput) {
+  std::string dir = test::fresh_dir("speed-short");
+  test::RunResult r = test::run_rtsim("speed-vs-error cornell --resolution 2x2 --config " +
+                                      test::source_path("configs/mobile.toml") +
+                                      " --rates 64 --no-charts -o " + dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("rays.rays: 9 rays, too few to sample 1 in 64"), std::string::npos) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   std::filesystem::remove_all(dir);
 }
 
