@@ -96,14 +96,6 @@ multi::DeviceSet device_set(const MultiOptions& o) {
   return set;
 }
 
-void check_scene(const std::string& stream, const StreamHeader& header, const Scene& scene) {
-  if (scene.fingerprint != header.scene_fingerprint)
-    throw_input_error(stream, "header",
-                      fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
-                                  header.scene_fingerprint, header.scene_source,
-                                  scene.fingerprint));
-}
-
 int run_multi(const MultiOptions& o) {
   if (o.list_keys) {
     print_keys();
@@ -120,8 +112,7 @@ int run_multi(const MultiOptions& o) {
   std::string stream = stream_input ? o.input : trace_input(o);
   RayStreamReader reader(stream);
   StreamHeader header = reader.header();
-  Scene scene = load_scene(header.scene_source);
-  check_scene(stream, header, scene);
+  Scene scene = load_stream_scene(stream, header);
   unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
   multi::SystemCBackend backend(scene.mesh, jobs);
   multi::MultiRunOptions options;

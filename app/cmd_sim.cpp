@@ -87,13 +87,7 @@ int run_sim(const SimOptions& o) {
   HwConfig config = load_hw_config(o.config, o.sets);
   RayStreamReader reader(o.stream);
   StreamHeader header = reader.header();
-  std::string spec = o.scene.empty() ? header.scene_source : o.scene;
-  if (spec.empty()) throw_input_error(o.stream, "header", "no scene named; pass --scene");
-  Scene scene = load_scene(spec);
-  if (scene.fingerprint != header.scene_fingerprint)
-    throw_input_error(o.stream, "header",
-                      fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
-                                  header.scene_fingerprint, spec, scene.fingerprint));
+  Scene scene = load_stream_scene(o.stream, header, o.scene);
   BvhImage image = build_bvh_image(scene.mesh, config.bvh);
   if (!o.quiet)
     fmt::print("sim        {} rays of {} on '{}' ({}, {} RT units, {})\n", header.total_rays(),

@@ -94,13 +94,7 @@ int run_verify(const VerifyOptions& o) {
   if (!problem.empty()) throw_input_error("bvh config", "", problem);
   RayStreamReader reader(o.stream);
   const StreamHeader& header = reader.header();
-  std::string spec = o.scene.empty() ? header.scene_source : o.scene;
-  if (spec.empty()) throw_input_error(o.stream, "header", "no scene named; pass --scene");
-  Scene scene = load_scene(spec);
-  if (scene.fingerprint != header.scene_fingerprint)
-    throw_input_error(o.stream, "header",
-                      fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
-                                  header.scene_fingerprint, spec, scene.fingerprint));
+  Scene scene = load_stream_scene(o.stream, header, o.scene);
   fmt::print("stream     {} ({} rays, workload '{}')\n", o.stream, header.total_rays(),
              header.workload);
   fmt::print("scene      {} ({} triangles, fingerprint {:016x})\n", scene.source,

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include <fmt/core.h>
+
 #include "traces/error.h"
 #include "workloads/builtin_scenes.h"
 #include "workloads/scene_import.h"
@@ -73,6 +75,18 @@ void finalize_scene(Scene& scene) {
   check_ids(scene, scene.object_ids, scene.object_names.size(), "object");
   scene.bounds = mesh_bounds(mesh);
   scene.fingerprint = mesh_fingerprint(mesh);
+}
+
+Scene load_stream_scene(const std::string& stream, const StreamHeader& header,
+                        const std::string& scene_override) {
+  std::string spec = scene_override.empty() ? header.scene_source : scene_override;
+  if (spec.empty()) throw_input_error(stream, "header", "no scene named; pass --scene");
+  Scene scene = load_scene(spec);
+  if (scene.fingerprint != header.scene_fingerprint)
+    throw_input_error(stream, "header",
+                      fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
+                                  header.scene_fingerprint, spec, scene.fingerprint));
+  return scene;
 }
 
 }  // namespace rtsim

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include "traces/ray.h"
+#include "traces/stream.h"
 
 namespace rtsim {
 
@@ -42,6 +43,11 @@ struct Scene {
 // file (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, OFF, STL). Throws InputError naming the file for a
 // missing or unsupported file, NaN/Inf vertices, or zero triangles.
 Scene load_scene(const std::string& spec);
+
+// The scene a ray stream was traced on: the one its header names, or scene_override if not
+// empty, checked against the header's fingerprint. InputError naming the stream otherwise.
+Scene load_stream_scene(const std::string& stream, const StreamHeader& header,
+                        const std::string& scene_override = "");
 
 // True if spec names a built-in scene rather than a file.
 bool is_builtin_scene(const std::string& spec);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -133,6 +134,20 @@ std::string ConfigReader::text(const std::string& key, const std::string& def, c
   }
   record(key, value);
   return value;
+}
+
+toml::table parse_config_file(const std::string& path, const std::string& what) {
+  if (path.empty()) return {};
+  std::ifstream in(path);
+  if (!in) throw_input_error(path, "", "cannot open the " + what);
+  std::stringstream text;
+  text << in.rdbuf();
+  try {
+    return toml::parse(text.str(), path);
+  } catch (const toml::parse_error& e) {
+    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
+                      std::string(e.description()));
+  }
 }
 
 void apply_override(toml::table& root, const std::string& assignment,

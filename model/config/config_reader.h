@@ -61,6 +61,10 @@ private:
   ConfigReadContext& ctx_;
 };
 
+// The TOML document of a config file; an empty table when path is empty (built-in defaults).
+// InputError names the file ("cannot open the WHAT") or the line of a syntax error.
+toml::table parse_config_file(const std::string& path, const std::string& what);
+
 // Applies "key=value" (value in TOML syntax; a bare word is a string) to the document,
 // creating sections as needed; throws InputError naming the --set for a malformed one.
 void apply_override(toml::table& root, const std::string& assignment,

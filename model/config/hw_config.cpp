@@ -1,6 +1,5 @@
 #include "model/config/hw_config.h"
 
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -191,20 +190,8 @@ std::string hw_config_problem(const HwConfig& c) {
 }
 
 HwConfig load_hw_config(const std::string& path, const std::vector<std::string>& overrides) {
-  toml::table root;
+  toml::table root = parse_config_file(path, "hardware config");
   std::string file = path.empty() ? "(defaults)" : path;
-  if (!path.empty()) {
-    std::ifstream in(path);
-    if (!in) throw_input_error(path, "", "cannot open the hardware config");
-    std::stringstream text;
-    text << in.rdbuf();
-    try {
-      root = toml::parse(text.str(), path);
-    } catch (const toml::parse_error& e) {
-      throw_input_error(path, fmt::format("line {}", e.source().begin.line),
-                        std::string(e.description()));
-    }
-  }
   ConfigReadContext ctx;
   ctx.file = file;
   for (const std::string& assignment : overrides) apply_override(root, assignment, ctx.set_keys);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -204,19 +203,7 @@ DeviceSet read_set(const toml::table* root, ConfigReadContext& ctx) {
 }  // namespace
 
 DeviceSet load_device_set(const std::string& path, const std::vector<std::string>& overrides) {
-  toml::table root;
-  if (!path.empty()) {
-    std::ifstream in(path);
-    if (!in) throw_input_error(path, "", "cannot open the device set");
-    std::stringstream text;
-    text << in.rdbuf();
-    try {
-      root = toml::parse(text.str(), path);
-    } catch (const toml::parse_error& e) {
-      throw_input_error(path, fmt::format("line {}", e.source().begin.line),
-                        std::string(e.description()));
-    }
-  }
+  toml::table root = parse_config_file(path, "device set");
   ConfigReadContext ctx;
   ctx.file = path.empty() ? "(defaults)" : path;
   for (const std::string& assignment : overrides) apply_override(root, assignment, ctx.set_keys);

@@ -128,8 +128,9 @@ TEST(MultiRun, EmptyFrameLeavesAValidSplit) {
       for (const DeviceFrame& d : f.devices) split.push_back(d.region);
       EXPECT_EQ(split_problem(split, s.width * s.height), "") << "frame " << f.frame;
     }
-    if (run.strategy != SplitStrategy::Static)
+    if (run.strategy != SplitStrategy::Static) {
       EXPECT_LT(run.frames[3].max_deviation_pct, 10.0) << strategy_name(run.strategy);
+    }
   }
 }
 
