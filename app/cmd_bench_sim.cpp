@@ -92,7 +92,6 @@ Timing time_embree(const BenchSimOptions& o, const Scene& scene, const std::vect
 nlohmann::json simulate(const BenchSimOptions& o, const HwConfig& config, const BvhImage& image,
                         const std::vector<Ray>& rays) {
   std::string text = run_in_child([&] {
-    setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
     std::unique_ptr<RayStreamReader> reader;
     auto source = open_source(o, rays, reader);
     RtSimulator sim(config, image, *source);

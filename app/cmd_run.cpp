@@ -80,7 +80,6 @@ int run(const RunOptions& o) {
                                     : reports::read_trace_dir(o.from_trace);
   reports::RunJob job;
   job.stream = trace.stream;
-  job.scene = trace.summary["scene"].get<std::string>();
   job.config = config;
   job.level = {*level, o.sampling};
   job.verify = !o.no_verify;

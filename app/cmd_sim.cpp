@@ -83,7 +83,6 @@ int run_sim(const SimOptions& o) {
   }
   if (o.stream.empty() || o.output.empty())
     throw InputError("sim: STREAM and -o DIR are required (or --list-keys)");
-  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   HwConfig config = load_hw_config(o.config, o.sets);
   RayStreamReader reader(o.stream);
   StreamHeader header = reader.header();
@@ -102,9 +101,9 @@ int run_sim(const SimOptions& o) {
     verifier = std::make_unique<SimVerifier>(scene.mesh, *model, *embree);
   }
   StreamRaySource source(reader);
-  SimProgress progress(o.quiet ? 0 : header.total_rays());
+  SimProgress progress(header.total_rays());
   RetireFanout listeners;
-  listeners.add(&progress);
+  if (!o.quiet) listeners.add(&progress);
   if (verifier) listeners.add(verifier.get());
   RtSimulator sim(config, image, source, header.width, header.height, &listeners);
   std::fflush(stdout);  // the header before the progress lines, also in a pipe
@@ -112,11 +111,11 @@ int run_sim(const SimOptions& o) {
   try {
     sim.run();
   } catch (const SimStallError& e) {
-    progress.finish();
+    if (!o.quiet) progress.finish();
     fmt::print(stderr, "rtsim: stall: {}", e.what());
     return 1;
   }
-  progress.finish();
+  if (!o.quiet) progress.finish();
   SimRunInfo info{o.stream, header, &image, verifier ? &verifier->report() : nullptr,
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
   nlohmann::ordered_json doc = write_sim_results(o.output, sim, info);

@@ -72,7 +72,6 @@ std::string label(const FidelityResult& r) {
 }
 
 int run_speed_error(const SpeedErrorOptions& o) {
-  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   for (uint32_t rate : o.rates)
     if (rate < 2 || rate > 1024) throw InputError("speed-vs-error: --rates: 2 to 1024");
   HwConfig config = load_hw_config(o.config, o.sets);
@@ -90,7 +89,7 @@ int run_speed_error(const SpeedErrorOptions& o) {
       throw_input_error(trace.stream, "",
                         fmt::format("{} rays, too few to sample 1 in {} (at least {} needed)", rays,
                                     r.sampling.rate, 2 * r.sampling.rate));
-  Scene scene = load_scene(trace.summary["scene"].get<std::string>());
+  Scene scene = load_stream_scene(trace.stream, RayStreamReader(trace.stream).header());
   BvhImage image = build_bvh_image(scene.mesh, config.bvh);
   fmt::print("reference  full cycle-approximate model, {} rays, '{}'\n", rays, config.name);
   reports::LevelRun reference{

@@ -1,5 +1,6 @@
 // rtsim: the command line. Thin: it parses, calls the parts, prints.
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 
 #include <CLI/CLI.hpp>
@@ -9,6 +10,8 @@
 #include "traces/error.h"
 
 int main(int argc, char** argv) {
+  // SystemC's banner would precede every simulation's output; children inherit this.
+  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   CLI::App app{"rtsim " RTSIM_VERSION ": cycle-approximate simulator of ray-tracing hardware"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rtsim " RTSIM_VERSION);

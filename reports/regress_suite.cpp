@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 #include <toml++/toml.h>
 
+#include "model/config/config_reader.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
 #include "reports/spec_reader.h"
@@ -28,12 +29,7 @@ RegressCase read_case(const SpecReader& r, const toml::table& t, const toml::tab
     if (const toml::node* n = t.get(key)) return n;
     return defaults ? defaults->get(key) : nullptr;
   };
-  auto text = [&](const char* key, const std::string& def) {
-    const toml::node* n = pick(key);
-    if (!n) return def;
-    if (!n->is_string()) r.fail(*n, fmt::format("'{}' must be a string", key));
-    return std::string(*n->value<std::string>());
-  };
+  auto text = [&](const char* key, const std::string& def) { return r.text(pick(key), key, def); };
   RegressCase c;
   c.trace.workload = r.resolve(text("workload", "pica"));
   c.name = text("name", fs::path(c.trace.workload).stem().string());
@@ -44,10 +40,7 @@ RegressCase read_case(const SpecReader& r, const toml::table& t, const toml::tab
   if (const toml::node* n = pick("seed"))
     c.trace.seed = uint64_t(r.integer(*n, "seed", 0, INT64_MAX));
   c.config = r.resolve(text("config", config));
-  if (const toml::node* n = pick("set")) {
-    if (!n->is_array()) r.fail(*n, "'set' must be a list of \"key=value\" strings");
-    for (const toml::node& s : *n->as_array()) c.sets.push_back(s.value_or(std::string()));
-  }
+  if (const toml::node* n = pick("set")) c.sets = r.strings(*n, "set");
   c.fidelity = text("fidelity", "cycle");
   if (!fidelity_level_from_name(c.fidelity))
     r.fail(*pick("fidelity"), "'fidelity' must be functional, cache, cycle or sampled");
@@ -78,7 +71,7 @@ Tolerance read_tolerance(const SpecReader& r, const std::string& metric, const t
 
 RegressSuite read_regress_suite(const std::string& path) {
   SpecReader r{path};
-  toml::table root = parse_spec_file(path);
+  toml::table root = parse_config_file(path, "regression suite");
   r.only(root, {"name", "description", "config", "verify", "defaults", "case", "tolerance"},
          "the suite");
   RegressSuite suite;

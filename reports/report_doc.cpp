@@ -1,6 +1,7 @@
 #include "reports/report_doc.h"
 
 #include "model/fidelity/sampled_level.h"
+#include "model/sc/rt_simulator.h"
 
 namespace rtsim::reports {
 namespace {

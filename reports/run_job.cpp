@@ -34,7 +34,7 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
   SimProgress progress(job.progress ? reader.header().total_rays() : 0);
   RetireFanout listeners;
   listeners.add(&collector);
-  listeners.add(&progress);
+  if (job.progress) listeners.add(&progress);
   if (job.verify) {
     embree = std::make_unique<EmbreeScene>(scene.mesh);
     model = std::make_unique<TraversalUnit>(image);
@@ -67,9 +67,8 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
 }  // namespace
 
 RunResult run_job(const RunJob& job) {
-  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   create_folder(job.output);
-  Scene scene = load_scene(job.scene);
+  Scene scene = load_stream_scene(job.stream, RayStreamReader(job.stream).header());
   BvhImage image = build_bvh_image(scene.mesh, job.config.bvh);
   if (job.level.level == FidelityLevel::Cycle) return run_cycle(job, scene, image);
   RunResult result;

@@ -17,7 +17,6 @@ namespace rtsim::reports {
 
 struct RunJob {
   std::string stream;  // the ray stream
-  std::string scene;   // scene spec (from the trace)
   HwConfig config;
   LevelRequest level;     // Cycle: the full model
   bool verify = true;     // cycle level only

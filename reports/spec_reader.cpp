@@ -11,15 +11,6 @@
 namespace rtsim::reports {
 namespace fs = std::filesystem;
 
-toml::table parse_spec_file(const std::string& path) {
-  try {
-    return toml::parse_file(path);
-  } catch (const toml::parse_error& e) {
-    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
-                      std::string(e.description()));
-  }
-}
-
 void SpecReader::fail(const toml::node& node, const std::string& what) const {
   throw_input_error(file, fmt::format("line {}", node.source().begin.line), what);
 }
@@ -32,10 +23,21 @@ void SpecReader::only(const toml::table& table, const std::vector<std::string>& 
 }
 
 std::string SpecReader::text(const toml::table& t, const char* key, const std::string& def) const {
-  const toml::node* n = t.get(key);
+  return text(t.get(key), key, def);
+}
+
+std::string SpecReader::text(const toml::node* n, const char* key, const std::string& def) const {
   if (!n) return def;
   if (!n->is_string()) fail(*n, fmt::format("'{}' must be a string", key));
   return std::string(*n->value<std::string>());
+}
+
+std::vector<std::string> SpecReader::strings(const toml::node& n, const char* key) const {
+  std::vector<std::string> out;
+  const toml::array* list = n.as_array();
+  if (!list) fail(n, fmt::format("'{}' must be a list of \"key=value\" strings", key));
+  for (const toml::node& item : *list) out.push_back(text(&item, key));
+  return out;
 }
 
 int64_t SpecReader::integer(const toml::node& n, const char* key, int64_t lo, int64_t hi) const {

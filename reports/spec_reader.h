@@ -1,5 +1,6 @@
-// Reading sweep specs and regression suites (TOML): every mistake is an InputError naming the
-// file and the line, and relative paths resolve next to the file.
+// Reading sweep specs and regression suites (TOML, parsed by parse_config_file in
+// model/config/config_reader.h): every mistake is an InputError naming the file and the line,
+// and relative paths resolve next to the file.
 #pragma once
 
 #include <cstdint>
@@ -10,9 +11,6 @@
 
 namespace rtsim::reports {
 
-// Parses the file; a syntax error names its line.
-toml::table parse_spec_file(const std::string& path);
-
 struct SpecReader {
   std::string file;
 
@@ -20,8 +18,11 @@ struct SpecReader {
   // Fails on the first key of the table that is not in keys ("unknown key 'K' in WHERE").
   void only(const toml::table& table, const std::vector<std::string>& keys,
             const std::string& where) const;
-  // t[key] as a string; def when absent.
+  // t[key] (or the node n) as a string; def when absent.
   std::string text(const toml::table& t, const char* key, const std::string& def = "") const;
+  std::string text(const toml::node* n, const char* key, const std::string& def = "") const;
+  // The node as a list of strings ("key=value" overrides).
+  std::vector<std::string> strings(const toml::node& n, const char* key) const;
   // The node as an integer in [lo, hi].
   int64_t integer(const toml::node& n, const char* key, int64_t lo, int64_t hi) const;
   // t[key] as an integer in [lo, hi]; def when absent.

@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 #include <toml++/toml.h>
 
+#include "model/config/config_reader.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
 #include "reports/spec_reader.h"
@@ -101,10 +102,7 @@ void read_run(const SpecReader& r, const toml::table& run, SweepSpec& spec) {
     r.fail(*run.get("fidelity"), "'fidelity' must be functional, cache, cycle or sampled");
   spec.sampling.rate = uint32_t(r.integer(run, "sample_rate", 16, 2, 1024));
   spec.jobs = uint32_t(r.integer(run, "jobs", 0, 0, 1024));
-  if (const toml::node* v = run.get("verify")) {
-    if (!v->is_boolean()) r.fail(*v, "'verify' must be true or false");
-    spec.verify = *v->value<bool>();
-  }
+  if (const toml::node* v = run.get("verify")) spec.verify = r.boolean(*v, "verify");
 }
 
 void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) {
@@ -125,7 +123,7 @@ void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) 
 
 SweepSpec read_sweep_spec(const std::string& path) {
   SpecReader r{path};
-  toml::table root = parse_spec_file(path);
+  toml::table root = parse_config_file(path, "sweep spec");
   r.only(root,
          {"name", "description", "config", "set", "workload", "grid", "point", "run", "chart"},
          "the sweep spec");
@@ -134,8 +132,7 @@ SweepSpec read_sweep_spec(const std::string& path) {
   spec.name = r.text(root, "name", fs::path(path).stem().string());
   spec.description = r.text(root, "description");
   spec.config = r.resolve(r.text(root, "config"));
-  if (const toml::array* sets = root["set"].as_array())
-    for (const toml::node& s : *sets) spec.sets.push_back(std::string(s.value_or(std::string())));
+  if (const toml::node* sets = root.get("set")) spec.sets = r.strings(*sets, "set");
   read_workloads(r, root, spec);
   bool grid = root["grid"].is_table(), list = root["point"].is_array();
   if (grid && list) throw_input_error(path, "", "give either [grid] or [[point]] lists, not both");

@@ -4,31 +4,16 @@
 #include <cstring>
 
 #include "traces/error.h"
+#include "traces/stream_codec.h"
 
 namespace rtsim {
 namespace {
-
-constexpr uint64_t kRecordBytes = 44;
 
 template <typename T>
 T load(const uint8_t* p) {
   T value;
   std::memcpy(&value, p, sizeof value);
   return value;
-}
-
-Ray decode(const uint8_t* p) {
-  Ray ray;
-  ray.org = {load<float>(p), load<float>(p + 4), load<float>(p + 8)};
-  ray.dir = {load<float>(p + 12), load<float>(p + 16), load<float>(p + 20)};
-  ray.tmin = load<float>(p + 24);
-  ray.tmax = load<float>(p + 28);
-  ray.pixel = load<uint32_t>(p + 32);
-  ray.frame = load<uint32_t>(p + 36);
-  ray.sample = load<uint16_t>(p + 40);
-  ray.type = RayType(p[42]);
-  ray.query = Query(p[43]);
-  return ray;
 }
 
 }  // namespace
@@ -52,7 +37,7 @@ RayRangeReader::RayRangeReader(const std::string& path) : path_(path) {
                         "chunk of " + std::to_string(count) + " rays exceeds chunk_rays");
     chunks_.push_back({rays_, offset + 4, count});
     rays_ += count;
-    offset += 4 + kRecordBytes * count + 4;
+    offset += 4 + kRayRecordBytes * count + 4;
   }
   if (rays_ != header_.total_rays())
     throw_input_error(path, "end marker", "the chunks hold " + std::to_string(rays_) +
@@ -67,19 +52,17 @@ void RayRangeReader::read(uint64_t begin, uint64_t end, std::vector<Ray>& out) {
   for (--it; begin < end; ++it) {
     uint64_t first = begin - it->first_ray;
     uint64_t count = std::min(end - begin, it->count - first);
-    uint64_t offset = it->offset + first * kRecordBytes;
-    buffer_.resize(count * kRecordBytes);
+    uint64_t offset = it->offset + first * kRayRecordBytes;
+    buffer_.resize(count * kRayRecordBytes);
     if (std::fseek(file_.get(), long(offset), SEEK_SET) != 0 ||
         std::fread(buffer_.data(), buffer_.size(), 1, file_.get()) != 1)
       throw_input_error(path_, "offset " + std::to_string(offset), "truncated");
     for (uint64_t i = 0; i < count; ++i) {
-      const uint8_t* record = buffer_.data() + i * kRecordBytes;
-      Ray ray = decode(record);
+      const uint8_t* record = buffer_.data() + i * kRayRecordBytes;
+      Ray ray = decode_ray(record);
       std::string problem = ray_problem(ray);
-      if (record[42] >= kRayTypeCount) problem = "unknown ray type";
-      if (record[43] > 1) problem = "unknown query";
       if (!problem.empty())
-        throw_input_error(path_, "offset " + std::to_string(offset + i * kRecordBytes), problem);
+        throw_input_error(path_, "offset " + std::to_string(offset + i * kRayRecordBytes), problem);
       out.push_back(ray);
     }
     begin += count;

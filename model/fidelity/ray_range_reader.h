@@ -4,8 +4,8 @@
 // chunk, and only the records asked for are read and decoded. Each ray read is checked as the
 // stream reader checks it (ray_problem, known type and query); chunk CRCs are not, since that
 // would mean reading every byte (`rtsim trace-info` checks a whole file).
-// This duplicates the record decoding of traces/stream_codec.cpp, which is internal to traces/;
-// a RayStreamReader::seek(ray) would replace it.
+// Records are decoded by traces/stream_codec.h; a RayStreamReader::seek(ray) that walks the
+// chunk headers would replace the chunk index kept here.
 #pragma once
 
 #include <cstdint>

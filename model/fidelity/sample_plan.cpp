@@ -9,12 +9,6 @@
 
 namespace rtsim {
 
-uint64_t SamplePlan::simulated_rays() const {
-  uint64_t n = 0;
-  for (const SampleWindow& w : windows) n += w.end - w.warm_begin;
-  return n;
-}
-
 uint64_t SamplePlan::measured_rays() const {
   uint64_t n = 0;
   for (const SampleWindow& w : windows) n += w.end - w.begin;

@@ -36,7 +36,6 @@ struct SampleWindow {
 struct SamplePlan {
   std::vector<SampleWindow> windows;  // in stream order, not overlapping
   uint32_t window_rays = 0, warmup_rays = 0;
-  uint64_t simulated_rays() const;
   uint64_t measured_rays() const;
 };
 

@@ -168,11 +168,6 @@ void estimate(FidelityResult& r, const SamplePlan& plan, const SampledSequence& 
 
 }  // namespace
 
-uint32_t ray_slots(const HwConfig& c) {
-  if (c.rt.mode == TraversalMode::Treelet) return c.treelet_queues.max_rays;
-  return c.rt_units * c.rt.warps * c.rt.warp_size;
-}
-
 FidelityResult run_sampled_level(const HwConfig& config, const BvhImage& image,
                                  const std::string& stream, const SamplingConfig& sampling) {
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);

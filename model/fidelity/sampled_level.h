@@ -18,9 +18,6 @@
 
 namespace rtsim {
 
-// Ray slots of the machine (rays it can hold in flight): sizes the auto window and warm-up.
-uint32_t ray_slots(const HwConfig& config);
-
 // Runs the model on the sampled windows of the stream in this process (SystemC: once per
 // process). Throws InputError if the stream is too short for the rate.
 FidelityResult run_sampled_level(const HwConfig& config, const BvhImage& image,

@@ -50,7 +50,7 @@ std::string simulate(const HwConfig& config, const BvhImage& image, const Device
                      const ScreenLayout& layout) {
   VectorRaySource source(task.rays);
   SlotCostListener slots(config, layout.pixels());
-  RtSimulator sim(config, image, source, layout.width, layout.height, &slots);
+  RtSimulator sim(config, image, source, 0, 0, &slots);  // no pixel buffers: slots has the cost
   sim.run();
   slots.finish();
   DeviceResult r;

@@ -4,12 +4,13 @@
 #include <sstream>
 
 namespace rtsim {
-namespace {
 
-uint32_t pool_size(const HwConfig& c) {
+uint32_t ray_slots(const HwConfig& c) {
   if (c.rt.mode == TraversalMode::Treelet) return c.treelet_queues.max_rays;
   return c.rt_units * c.rt.warps * c.rt.warp_size;
 }
+
+namespace {
 
 Clock clock_of(const HwConfig& c) {
   Clock clock;
@@ -25,7 +26,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     : config_(config),
       clock_(clock_of(config)),
       traversal_(image),
-      pool_(pool_size(config)),
+      pool_(ray_slots(config)),
       collector_(width, height) {
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);

@@ -29,6 +29,10 @@ public:
   using std::runtime_error::runtime_error;
 };
 
+// Ray slots of the machine: the rays it holds in flight (ray contexts; the treelet buffer in
+// treelet mode). Sizes the sampled level's windows too.
+uint32_t ray_slots(const HwConfig& config);
+
 class RtSimulator {
 public:
   using MemoryBinder = std::function<void(tlm_utils::simple_initiator_socket<CacheModule>&)>;

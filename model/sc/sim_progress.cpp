@@ -16,9 +16,9 @@ SimProgress::SimProgress(uint64_t total, std::FILE* out)
 
 void SimProgress::retired(const RayContext&, Cycle now) {
   if (total_ == 0 || ++retired_ < next_) return;
-  step_ = uint32_t(retired_ * steps_ / total_);
+  uint64_t step = retired_ * steps_ / total_;
   show(now);
-  next_ = step_ >= steps_ ? UINT64_MAX : ((step_ + 1) * total_ + steps_ - 1) / steps_;
+  next_ = step >= steps_ ? UINT64_MAX : ((step + 1) * total_ + steps_ - 1) / steps_;
 }
 
 void SimProgress::show(Cycle now) {

@@ -25,7 +25,6 @@ class SimProgress : public RayRetireListener {
   std::FILE* out_;
   bool tty_;
   uint32_t steps_;  // updates over the whole stream
-  uint32_t step_ = 0;
 };
 
 }  // namespace rtsim

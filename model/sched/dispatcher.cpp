@@ -46,7 +46,7 @@ size_t RayDispatcher::take(uint32_t unit, Cycle now, size_t max, std::vector<Ray
     double length = double(given) / config_.rays_per_cycle;
     stats_.takes++;
     stats_.busy_cycles += length;
-    stats_.wait_cycles += Cycle(std::ceil(start)) - now;
+    stats_.wait_cycles += out[out.size() - given]->dispatched - now;  // the first delivery
     port_free_ = start + length;
   }
   return given;

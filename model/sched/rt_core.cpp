@@ -209,6 +209,7 @@ std::string RtCore::dump() const {
   std::ostringstream out;
   out << "rt" << id_ << ": " << in_flight_ << " of " << slots_.size() << " ray slots busy, "
       << events_.size() << " events pending";
+  if (!events_.empty()) out << " (next at cycle " << events_.next_cycle() << ")";
   out << ", local cycle " << now_ << (waiting_ ? ", waiting for rays" : "") << "\n";
   const int max_shown = 4;
   int busy = 0;

@@ -32,19 +32,20 @@ TestUnitPool::Slot* TestUnitPool::slot_at(Cycle cycle) {
 
 Cycle TestUnitPool::find_free(Cycle cycle) {
   constexpr int kPath = 32;
-  Cycle path[kPath];
+  struct Passed {
+    Slot* slot;
+    Cycle cycle;
+  } path[kPath];
   int length = 0;
   for (;;) {
     Slot* slot = slot_at(cycle);
     if (slot && slot->used < config_.count) break;
-    if (length < kPath) path[length++] = cycle;
+    if (slot && length < kPath) path[length++] = {slot, cycle};
     cycle += slot && slot->skip > 0 ? slot->skip : 1;
   }
   // Every booked cycle passed on the way now points (close to) here.
-  for (int i = 0; i < length; ++i) {
-    Slot* slot = slot_at(path[i]);
-    if (slot) slot->skip = uint16_t(std::min<Cycle>(cycle - path[i], kCalendarCycles - 1));
-  }
+  for (int i = 0; i < length; ++i)
+    path[i].slot->skip = uint16_t(std::min<Cycle>(cycle - path[i].cycle, kCalendarCycles - 1));
   return cycle;
 }
 
@@ -58,7 +59,6 @@ Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
     Slot* slot = slot_at(cycle);
     uint32_t take = std::min<uint32_t>(config_.count - slot->used, issues);
     slot->used = uint16_t(slot->used + take);
-    if (slot->used == config_.count) slot->skip = 1;
     issues -= take;
     last = cycle;
     if (issues == 0) break;

@@ -7,6 +7,8 @@
 namespace rtsim {
 namespace {
 
+constexpr double kFloatEpsilon = 0x1p-24;  // half an fp32 ulp at 1
+
 double max_abs(const glm::dvec3& v) {
   return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)});
 }
@@ -15,7 +17,7 @@ double max_abs(const glm::dvec3& v) {
 double t_slack(const Ray& ray, double t) {
   glm::dvec3 o(ray.org), d(ray.dir);
   double scale = std::max(max_abs(o), std::isfinite(t) ? max_abs(o + t * d) : 0.0);
-  return 32.0 * 0x1p-24 * scale / max_abs(d);
+  return 32.0 * kFloatEpsilon * scale / max_abs(d);
 }
 
 }  // namespace
@@ -52,11 +54,9 @@ ExactHit exact_intersect(const TriangleMesh& mesh, uint32_t prim, const Ray& ray
   ex.area_ratio = longest > 0.0 ? n_len / (longest * longest) : 0.0;
   ex.cosine = n_len > 0.0 ? std::fabs(glm::dot(n, d)) / (n_len * glm::length(d)) : 0.0;
   if (ex.area_ratio > 0.0) {
-    constexpr double kUlps = 4.0, kFloatEpsilon = 0x1p-24;
-    double magnitude = std::max({std::fabs(o.x), std::fabs(o.y), std::fabs(o.z)});
-    for (int c = 0; c < 3; ++c)
-      magnitude = std::max({magnitude, std::fabs(v[c].x + o.x), std::fabs(v[c].y + o.y),
-                            std::fabs(v[c].z + o.z)});
+    constexpr double kUlps = 4.0;
+    double magnitude = max_abs(o);
+    for (int c = 0; c < 3; ++c) magnitude = std::max(magnitude, max_abs(v[c] + o));
     ex.edge_error =
         kUlps * kFloatEpsilon * (magnitude / (ex.area_ratio * longest) + 1.0 / ex.area_ratio);
   }

@@ -4,6 +4,8 @@ Agg backend; PNGs carry no Software tag and no timestamp, so the same data gives
 bytes. Files are written to a temporary name and renamed.
 """
 import os
+import sys
+import traceback
 
 import matplotlib
 
@@ -39,3 +41,21 @@ def save(fig, path):
 def new(width=7.0, height=3.6, **kwargs):
     setup()
     return plt.subplots(figsize=(width, height), **kwargs)
+
+
+def draw_all(items, draw, outdir):
+    """Draws each item (a dict with "id" and "file") with draw(item) and saves it under outdir.
+
+    A chart that fails is reported with its traceback and the others are still drawn; the
+    script then exits non-zero naming the failed ones.
+    """
+    os.makedirs(os.path.join(outdir, "images"), exist_ok=True)
+    failed = []
+    for item in items:
+        try:
+            save(draw(item), os.path.join(outdir, item["file"]))
+        except Exception:
+            traceback.print_exc()
+            failed.append(item["id"])
+    if failed:
+        sys.exit("failed: " + ", ".join(failed))

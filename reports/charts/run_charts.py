@@ -8,7 +8,6 @@ REPORT.json's "images" into RUN_DIR (their "file" paths). Heatmaps read the per-
 import json
 import os
 import sys
-import traceback
 
 import numpy as np
 from matplotlib.colors import LogNorm
@@ -129,19 +128,8 @@ DRAW = {"heatmap_cycles": heatmap, "heatmap_nodes": heatmap, "heatmap_dram_bytes
 
 def main(report_path, run_dir):
     report = json.load(open(report_path))
-    failed = []
-    os.makedirs(os.path.join(run_dir, "images"), exist_ok=True)
-    for image in report["images"]:
-        if not image["available"] or image["id"] not in DRAW:
-            continue
-        try:
-            fig = DRAW[image["id"]](report, run_dir, image)
-            chart_style.save(fig, os.path.join(run_dir, image["file"]))
-        except Exception:
-            traceback.print_exc()
-            failed.append(image["id"])
-    if failed:
-        sys.exit("failed: " + ", ".join(failed))
+    images = [i for i in report["images"] if i["available"] and i["id"] in DRAW]
+    chart_style.draw_all(images, lambda image: DRAW[image["id"]](report, run_dir, image), run_dir)
 
 
 if __name__ == "__main__":

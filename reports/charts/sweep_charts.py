@@ -9,9 +9,7 @@ Usage: sweep_charts.py SWEEP.json OUTDIR  -- draws every chart listed in SWEEP.j
 Exits 1 if any chart failed, after drawing the others.
 """
 import json
-import os
 import sys
-import traceback
 
 from matplotlib.lines import Line2D
 
@@ -117,17 +115,10 @@ def pareto(doc, chart):
 
 def main(path, outdir):
     doc = json.load(open(path))
-    os.makedirs(os.path.join(outdir, "images"), exist_ok=True)
-    failed = []
-    for chart in doc["charts"]:
-        try:
-            fig = pareto(doc, chart) if chart["kind"] == "pareto" else curve(doc, chart)
-            chart_style.save(fig, os.path.join(outdir, chart["file"]))
-        except Exception:
-            traceback.print_exc()
-            failed.append(chart["id"])
-    if failed:
-        sys.exit("failed: " + ", ".join(failed))
+    chart_style.draw_all(
+        doc["charts"],
+        lambda chart: pareto(doc, chart) if chart["kind"] == "pareto" else curve(doc, chart),
+        outdir)
 
 
 if __name__ == "__main__":
