@@ -22,6 +22,7 @@
 #include "model/multi/multi_run.h"
 #include "model/multi/multi_summary.h"
 #include "model/multi/systemc_backend.h"
+#include "reports/charts.h"
 #include "traces/error.h"
 #include "workloads/pipeline/trace.h"
 #include "workloads/scene.h"
@@ -53,9 +54,9 @@ bool is_stream(const std::string& input) {
 std::string trace_input(const MultiOptions& o) {
   pipeline::WorkloadSpec spec = pipeline::load_workload(o.input);
   pipeline::apply_overrides(
-      spec, pipeline::make_overrides(o.resolution, o.frames,
-                                     o.seed_set ? std::optional<uint64_t>(o.seed) : std::nullopt,
-                                     ""));
+      spec,
+      pipeline::make_overrides(o.resolution, o.frames,
+                               o.seed_set ? std::optional<uint64_t>(o.seed) : std::nullopt, ""));
   if (o.importance) spec.samples.placement = pipeline::Placement::Importance;
   if (o.orbit_set) spec.camera.orbit = o.orbit;
   std::filesystem::create_directories(o.output);
@@ -72,8 +73,9 @@ std::string trace_input(const MultiOptions& o) {
 multi::DeviceSet device_set(const MultiOptions& o) {
   multi::DeviceSet set = multi::load_device_set(o.devices_file, o.sets);
   if (!o.devices_file.empty() && (!o.config.empty() || !o.device_configs.empty()))
-    throw InputError("multi-device: give devices by --devices-file or by --config/--device-config"
-                     ", not both");
+    throw InputError(
+        "multi-device: give devices by --devices-file or by --config/--device-config"
+        ", not both");
   if (!o.device_configs.empty()) {
     if (o.devices && o.devices != o.device_configs.size())
       throw InputError(fmt::format("multi-device: --devices {} but {} --device-config", o.devices,
@@ -107,8 +109,9 @@ int run_multi(const MultiOptions& o) {
   multi::DeviceConfigs configs(set, o.hw_sets);
   bool stream_input = is_stream(o.input);
   if (stream_input && (!o.resolution.empty() || o.seed_set || o.importance || o.orbit_set))
-    throw InputError("multi-device: --resolution, --seed, --importance and --orbit apply to a "
-                     "workload, not to a stream");
+    throw InputError(
+        "multi-device: --resolution, --seed, --importance and --orbit apply to a "
+        "workload, not to a stream");
   std::string stream = stream_input ? o.input : trace_input(o);
   RayStreamReader reader(stream);
   StreamHeader header = reader.header();
@@ -137,15 +140,15 @@ int run_multi(const MultiOptions& o) {
   std::vector<uint32_t> changes = multi::change_frames(result);
   for (const multi::StrategyRun& run : result.runs)
     in.summaries.push_back(multi::summarize(run, result.devices, changes, set.settle_pct));
-  in.host_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  in.host_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   multi::write_multi_report(o.output, in, !o.no_chart);
-  std::string chart_problem = o.no_chart ? "" : multi::draw_multi_chart(o.output);
+  reports::ChartRun chart = o.no_chart ? reports::ChartRun{true, ""}
+                                       : reports::run_chart_script("multi_chart.py", {o.output});
   if (!o.quiet) {
     fmt::print("{}", multi::format_multi_summary(in));
     fmt::print("host       {:.1f} s; results in {}\n", in.host_seconds, o.output);
   }
-  if (!chart_problem.empty()) fmt::print(stderr, "rtsim: warning: no chart: {}\n", chart_problem);
+  if (!chart.ok) fmt::print(stderr, "rtsim: warning: no chart: {}\n", chart.message);
   return 0;
 }
 

@@ -1,16 +1,10 @@
 #include "model/multi/multi_report.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-
-#include <cstdio>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "model/sc/sim_report.h"
-
-extern char** environ;
 
 namespace rtsim::multi {
 namespace {
@@ -135,21 +129,6 @@ void write_multi_report(const std::string& dir, const ReportInput& in, bool with
   write_file_atomic(dir + "/frames.csv", frames_csv(*in.result));
   write_file_atomic(dir + "/devices.csv", devices_csv(*in.result));
   write_file_atomic(dir + "/report.md", multi_report_markdown(in, with_chart));
-}
-
-std::string draw_multi_chart(const std::string& dir) {
-  std::string python = "/usr/bin/python3", script = RTSIM_MULTI_CHART_SCRIPT;
-  if (!std::filesystem::exists(script)) return "chart script not found: " + script;
-  std::vector<char*> argv{python.data(), script.data(), const_cast<char*>(dir.c_str()), nullptr};
-  std::fflush(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-    return "cannot start " + python;
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return fmt::format("{} {} {} failed", python, script, dir);
-  return "";
 }
 
 }  // namespace rtsim::multi

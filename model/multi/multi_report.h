@@ -3,7 +3,7 @@
 //   report.json   everything: inputs, the device set, hardware, summaries, every frame
 //   frames.csv    one row per strategy and frame; devices.csv one row per device too
 //   report.md     the strategies side by side (summary and per-frame tables), the chart
-//   chart.png     by reports/multi/multi_chart.py (matplotlib through /usr/bin/python3)
+//   chart.png     drawn by `rtsim multi-device` with reports/charts/multi_chart.py
 #pragma once
 
 #include <string>
@@ -39,8 +39,5 @@ std::string format_multi_summary(const ReportInput& in);
 // Writes report.json, frames.csv, devices.csv and report.md into dir (created if needed), each
 // through a temporary name and a rename.
 void write_multi_report(const std::string& dir, const ReportInput& in, bool with_chart);
-
-// Draws dir/chart.png from dir's CSV files; returns an empty string, or why it failed.
-std::string draw_multi_chart(const std::string& dir);
 
 }  // namespace rtsim::multi

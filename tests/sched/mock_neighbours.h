@@ -10,8 +10,8 @@
 
 namespace rtsim::test {
 
-struct MockMemory : RayMemory {
-  explicit MockMemory(Cycle latency) : latency(latency) {}
+struct MockRayMemory : RayMemory {
+  explicit MockRayMemory(Cycle latency) : latency(latency) {}
   Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override {
     reads.push_back({addr, bytes, now});
     return now + latency;

@@ -47,7 +47,7 @@ std::vector<test::Retired> run_mode(const Scene& scene, TraversalMode mode,
                                     RtCoreStats* stats = nullptr,
                                     PacketPolicy policy = PacketPolicy::NodeFirst) {
   TraversalUnit unit(scene.image);
-  test::MockMemory memory0(40), memory1(60);
+  test::MockRayMemory memory0(40), memory1(60);
   bool treelets = mode == TraversalMode::Treelet;
   test::MockSupply supply(scene.rays, unit, treelets ? 64 : 32);
   TreeletQueueConfig tq;
@@ -124,7 +124,7 @@ TEST(RtCoreModes, IdenticalRaysInAWarpAreFullyCoherent) {
   Scene scene;
   std::vector<Ray> same(16, scene.rays[1500]);  // a diffuse ray, copied
   TraversalUnit unit(scene.image);
-  test::MockMemory memory(30);
+  test::MockRayMemory memory(30);
   test::MockSupply supply(same, unit, 16);
   RtCore core(0, small_config(TraversalMode::Packet), unit, memory);
   core.set_supply(&supply.dispatcher);
@@ -141,7 +141,7 @@ TEST(RtCoreModes, DivergentRaysLowerSimdEfficiency) {
   RtCoreStats stats;
   std::vector<Ray> random(scene.rays.begin(), scene.rays.begin() + 400);
   TraversalUnit unit(scene.image);
-  test::MockMemory memory(30);
+  test::MockRayMemory memory(30);
   test::MockSupply supply(random, unit, 16);
   RtCore core(0, small_config(TraversalMode::Packet), unit, memory);
   core.set_supply(&supply.dispatcher);

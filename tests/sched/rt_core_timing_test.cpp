@@ -37,7 +37,7 @@ RtCoreConfig timing_config() {
 TEST(RtCoreTiming, EveryStageTakesExactlyItsLatency) {
   OneTriangle scene;
   TraversalUnit unit(scene.image);
-  test::MockMemory memory(50);
+  test::MockRayMemory memory(50);
   test::MockSupply supply({scene.ray}, unit, 1, {1.0, 10});
   RtCore core(0, timing_config(), unit, memory);
   core.set_supply(&supply.dispatcher);
@@ -64,7 +64,7 @@ TEST(RtCoreTiming, EveryStageTakesExactlyItsLatency) {
 TEST(RtCoreTiming, IssueWidthDefersTheFourthRay) {
   OneTriangle scene;
   TraversalUnit unit(scene.image);
-  test::MockMemory memory(50);
+  test::MockRayMemory memory(50);
   std::vector<Ray> rays(4, scene.ray);
   test::MockSupply supply(rays, unit, 4);  // all four arrive at cycle 0
   RtCoreConfig c = timing_config();
@@ -83,7 +83,7 @@ TEST(RtCoreTiming, IssueWidthDefersTheFourthRay) {
 TEST(RtCoreTiming, NoProgressWhileMemoryNeverAnswers) {
   OneTriangle scene;
   TraversalUnit unit(scene.image);
-  test::MockMemory memory(Cycle(1) << 40);
+  test::MockRayMemory memory(Cycle(1) << 40);
   test::MockSupply supply({scene.ray}, unit, 1);
   RtCore core(0, timing_config(), unit, memory);
   core.set_supply(&supply.dispatcher);

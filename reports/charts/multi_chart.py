@@ -9,10 +9,7 @@ import csv
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+import chart_style
 
 
 def read_csv(path):
@@ -32,7 +29,7 @@ def main(folder):
     devices = by_strategy(read_csv(os.path.join(folder, "devices.csv")))
     names = list(frames)
     columns = max(len(names), 3)
-    fig, axes = plt.subplots(2, columns, figsize=(4.6 * columns, 7.5), squeeze=False)
+    fig, axes = chart_style.new(4.6 * columns, 7.5, nrows=2, ncols=columns, squeeze=False)
     top = None
     for i, name in enumerate(names):
         ax = axes[0][i]
@@ -69,9 +66,7 @@ def main(folder):
     for i in range(len(panels), columns):
         axes[1][i].axis("off")
     fig.tight_layout()
-    tmp = os.path.join(folder, f"chart.png.tmp-{os.getpid()}.png")
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, os.path.join(folder, "chart.png"))
+    chart_style.save(fig, os.path.join(folder, "chart.png"))
 
 
 if __name__ == "__main__":
