@@ -66,7 +66,9 @@ std::vector<test::Retired> run_mode(const Scene& scene, TraversalMode mode,
     stats->spill_entries += core1.stats().spill_entries;
     stats->refill_entries += core1.stats().refill_entries;
   }
-  if (treelets) EXPECT_GT(queues.stats().postponed, 0u) << "rays did wait in treelet queues";
+  if (treelets) {
+    EXPECT_GT(queues.stats().postponed, 0u) << "rays did wait in treelet queues";
+  }
   return supply.listener.done;
 }
 
