@@ -25,6 +25,7 @@ struct RunOptions {
   std::string from_trace, config, output, fidelity = "cycle", report = "full";
   std::vector<std::string> sets;
   SamplingConfig sampling;
+  std::vector<std::string> sample_methods{"scale-model"};
   bool no_verify = false, no_charts = false, quiet = false;
 };
 
@@ -36,7 +37,9 @@ std::string command_line(const RunOptions& o) {
   if (!o.config.empty()) out += " --config " + o.config;
   for (const std::string& s : o.sets) out += " --set " + s;
   if (o.fidelity != "cycle") out += " --fidelity " + o.fidelity;
-  if (o.fidelity == "sampled") out += " --sample-rate " + std::to_string(o.sampling.rate);
+  if (o.fidelity == "sampled")
+    out += " --sample-rate " + std::to_string(o.sampling.rate) + " --sample-method " +
+           sample_method_name(o.sampling.method);
   return out + " -o " + o.output;
 }
 
@@ -123,13 +126,16 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--sample-rate", o->sampling.rate, "Sampled fidelity: 1 in N rays measured")
       ->check(CLI::Range(2, 1024))
       ->capture_default_str();
-  reports::add_sampling_options(*cmd, o->sampling);
+  reports::add_sampling_options(*cmd, o->sampling, o->sample_methods);
   cmd->add_option("--report", o->report, "full (pages and charts) or json (report.json only)")
       ->capture_default_str();
   cmd->add_flag("--no-verify", o->no_verify, "Skip the check of every ray against Embree");
   cmd->add_flag("--no-charts", o->no_charts, "Write the pages without running Python");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");
-  cmd->callback([o, &exit_code] { exit_code = run(*o); });
+  cmd->callback([o, cmd, &exit_code] {
+    o->sampling.method = reports::sampling_methods(*cmd, o->sample_methods).front();
+    exit_code = run(*o);
+  });
 }
 
 }  // namespace rtsim::app

@@ -30,6 +30,8 @@ struct SpeedErrorOptions {
   std::vector<uint32_t> rates{4, 8, 16, 32, 64};
   std::vector<std::string> levels{"functional", "cache", "sampled"};
   SamplingConfig sampling;
+  std::vector<std::string> sample_methods{"scale-model"};
+  std::vector<SampleMethod> methods;
   int repeat = 1;
   uint32_t seeds = 1;
   bool no_charts = false;
@@ -57,18 +59,21 @@ std::vector<LevelRequest> requests(const SpeedErrorOptions& o) {
       out.push_back({*level, o.sampling});
       continue;
     }
-    for (uint32_t rate : o.rates) {
-      LevelRequest r{FidelityLevel::Sampled, o.sampling};
-      r.sampling.rate = rate;
-      out.push_back(r);
-    }
+    for (SampleMethod method : o.methods)
+      for (uint32_t rate : o.rates) {
+        LevelRequest r{FidelityLevel::Sampled, o.sampling};
+        r.sampling.method = method;
+        r.sampling.rate = rate;
+        out.push_back(r);
+      }
   }
   return out;
 }
 
 std::string label(const FidelityResult& r) {
-  if (r.level == FidelityLevel::Sampled) return fmt::format("sampled 1/{}", r.sample_rate);
-  return fidelity_level_name(r.level);
+  if (r.level != FidelityLevel::Sampled) return fidelity_level_name(r.level);
+  bool windows = r.sample_method == sample_method_name(SampleMethod::Windows);
+  return fmt::format("{} 1/{}", windows ? "windows" : "sampled", r.sample_rate);
 }
 
 int run_speed_error(const SpeedErrorOptions& o) {
@@ -153,7 +158,7 @@ void add_speed_vs_error_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--levels", o->levels, "Levels to compare with the full model")
       ->delimiter(',')
       ->capture_default_str();
-  reports::add_sampling_options(*cmd, o->sampling);
+  reports::add_sampling_options(*cmd, o->sampling, o->sample_methods, true);
   cmd->add_option("--repeat", o->repeat, "Runs per level; the one with the least CPU time counts")
       ->check(CLI::Range(1, 20))
       ->capture_default_str();
@@ -162,9 +167,10 @@ void add_speed_vs_error_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("-o,--output", o->output, "Folder for the trace, JSON, CSV, Markdown, chart");
   cmd->add_flag("--no-charts", o->no_charts, "Skip the chart");
-  cmd->callback([o, &exit_code] {
+  cmd->callback([o, cmd, &exit_code] {
     if (o->workload.workload.empty() && o->from_trace.empty())
       throw InputError("speed-vs-error: a workload (spec or built-in scene) or --from-trace");
+    o->methods = reports::sampling_methods(*cmd, o->sample_methods);
     exit_code = run_speed_error(*o);
   });
 }

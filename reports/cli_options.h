@@ -2,10 +2,15 @@
 // speed-vs-error): the workload overrides of `rtsim trace`, and the sampling options.
 #pragma once
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
 #include "model/fidelity/sample_plan.h"
 #include "reports/trace_step.h"
+#include "traces/error.h"
 
 namespace rtsim::reports {
 
@@ -19,17 +24,44 @@ inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
   cmd.add_option("--scene", request.scene, "Scene file or built-in (replaces the spec's scene)");
 }
 
-inline void add_sampling_options(CLI::App& cmd, SamplingConfig& sampling) {
+// --sample-method takes one method, or with `several` a comma-separated list of them.
+inline void add_sampling_options(CLI::App& cmd, SamplingConfig& sampling,
+                                 std::vector<std::string>& methods, bool several = false) {
+  cmd.add_option("--sample-method", methods,
+                 several ? "Sampled level: scale-model, windows, or both (comma-separated)"
+                         : "Sampled level: scale-model (one run on a scaled machine) or windows")
+      ->delimiter(several ? ',' : '\0')
+      ->expected(1, several ? 2 : 1)
+      ->capture_default_str();
   cmd.add_option("--window", sampling.window_rays,
                  "Sampled level: rays measured per window (0: 4 x ray slots, >= 1024)")
       ->capture_default_str();
   cmd.add_option("--warmup", sampling.warmup_rays,
                  "Sampled level: rays simulated before each window (-1: the ray slots)")
       ->capture_default_str();
-  cmd.add_option("--sample-seed", sampling.seed, "Sampled level: seed of the window offsets")
+  cmd.add_option("--sample-seed", sampling.seed,
+                 "Sampled level: seed of the warps' phase or of the window offsets")
       ->capture_default_str();
   cmd.add_flag("!--no-warm-pass", sampling.warm_pass,
                "Sampled level: measure without simulating the windows once first");
+}
+
+// The methods named by --sample-method; InputError for an unknown one, or for the window
+// options without the windows method (the scale model has no windows, warm-up or warm pass).
+inline std::vector<SampleMethod> sampling_methods(const CLI::App& cmd,
+                                                  const std::vector<std::string>& names) {
+  std::vector<SampleMethod> methods;
+  for (const std::string& name : names) {
+    auto method = sample_method_from_name(name);
+    if (!method)
+      throw InputError("--sample-method: unknown method '" + name + "' (scale-model, windows)");
+    methods.push_back(*method);
+  }
+  bool windows = std::count(methods.begin(), methods.end(), SampleMethod::Windows) > 0;
+  for (const char* option : {"--window", "--warmup", "--no-warm-pass"})
+    if (!windows && cmd.count(option) > 0)
+      throw InputError(std::string(option) + " applies to --sample-method windows only");
+  return methods;
 }
 
 }  // namespace rtsim::reports

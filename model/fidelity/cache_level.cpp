@@ -32,7 +32,7 @@ struct Warp {
 };
 
 class CacheWalk {
-public:
+ public:
   CacheWalk(const HwConfig& config, const BvhImage& image)
       : c_(config), traversal_(image), dram_(config.dram), l2_(config.l2, &dram_) {
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
@@ -65,7 +65,7 @@ public:
   const std::vector<UnitWork>& work() const { return work_; }
   uint64_t dram_bytes() const { return dram_bytes_; }
 
-private:
+ private:
   void fill(Warp& warp, RayStreamReader& reader) {
     for (Lane& lane : warp.lanes) {
       if (!reader.next(lane.ray)) break;
@@ -104,13 +104,11 @@ private:
   void step(uint32_t unit, Warp& warp, Lane& lane, uint32_t slot) {
     TraversalState& s = lane.state;
     const StackConfig& stack = c_.rt.stack;
-    uint64_t spill_region = HardwareStack::kSpillBase +
-                            uint64_t(unit * c_.rt.warps * c_.rt.warp_size + slot) *
-                                HardwareStack::kRegionBytes;
+    uint64_t spill_region = HardwareStack::region(unit * c_.rt.warps * c_.rt.warp_size + slot);
     if (s.stack.size() == lane.spilled && lane.spilled > 0) {
       lane.spilled--;
-      lane.latency += read(unit, lane, spill_region + lane.spilled * stack.entry_bytes,
-                           stack.entry_bytes);
+      lane.latency +=
+          read(unit, lane, spill_region + lane.spilled * stack.entry_bytes, stack.entry_bytes);
     }
     s.accesses.clear();
     StepResult r = traversal_.step(s);
@@ -122,8 +120,8 @@ private:
     if (r.access_count > 0) {
       const MemoryAccess& first = s.accesses[r.first_access];
       const MemoryAccess& last = s.accesses[r.first_access + r.access_count - 1];
-      lane.latency += read(unit, lane, first.address,
-                           uint32_t(last.address + last.bytes - first.address));
+      lane.latency +=
+          read(unit, lane, first.address, uint32_t(last.address + last.bytes - first.address));
     }
     bool node = r.kind == StepKind::Node;
     const TestUnitConfig& tests = node ? c_.rt.box : c_.rt.triangle;

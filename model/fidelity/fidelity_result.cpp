@@ -15,7 +15,9 @@ double clock_seconds(clockid_t clock) {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-double ratio(double num, double den) { return den > 0 ? num / den : 0.0; }
+double ratio(double num, double den) {
+  return den > 0 ? num / den : 0.0;
+}
 
 Json estimate_json(const Estimate& e) {
   if (!e.known) return Json();
@@ -37,7 +39,9 @@ void HostTimer::stop(FidelityResult& result) const {
   result.cpu_seconds = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu_;
 }
 
-const char* fidelity_level_name(FidelityLevel level) { return kLevelNames[int(level)]; }
+const char* fidelity_level_name(FidelityLevel level) {
+  return kLevelNames[int(level)];
+}
 
 std::optional<FidelityLevel> fidelity_level_from_name(const std::string& name) {
   for (int i = 0; i < 4; ++i)
@@ -109,6 +113,7 @@ Json FidelityResult::to_json() const {
   }
   return {{"level", fidelity_level_name(level)},
           {"sample_rate", sample_rate},
+          {"sample_method", sample_method},
           {"rays", rays},
           {"simulated_rays", simulated_rays},
           {"measured_rays", measured_rays},
@@ -131,6 +136,7 @@ FidelityResult FidelityResult::from_json(const nlohmann::json& doc) {
   FidelityResult r;
   r.level = fidelity_level_from_name(doc.at("level").get<std::string>()).value();
   r.sample_rate = doc.at("sample_rate").get<uint32_t>();
+  r.sample_method = doc.at("sample_method").get<std::string>();
   r.rays = doc.at("rays").get<uint64_t>();
   r.simulated_rays = doc.at("simulated_rays").get<uint64_t>();
   r.measured_rays = doc.at("measured_rays").get<uint64_t>();

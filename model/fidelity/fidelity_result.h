@@ -26,7 +26,7 @@ std::optional<FidelityLevel> fidelity_level_from_name(const std::string& name);
 struct Estimate {
   bool known = false;  // false: the level does not model this quantity
   double value = 0;
-  double ci95 = 0;     // half-width of the 95% confidence interval; 0 for exact levels
+  double ci95 = 0;  // half-width of the 95% confidence interval; 0 for exact levels
 
   static Estimate exact(double v) { return {true, v, 0.0}; }
 };
@@ -48,17 +48,18 @@ struct TypeEstimate {
 
 struct FidelityResult {
   FidelityLevel level = FidelityLevel::Cycle;
-  uint32_t sample_rate = 1;  // sampled level: 1 in sample_rate rays measured
+  uint32_t sample_rate = 1;     // sampled level: 1 in sample_rate rays measured
+  std::string sample_method;    // sampled level: scale-model or windows; empty otherwise
   uint64_t rays = 0;            // rays in the stream
   uint64_t simulated_rays = 0;  // rays the level processed, warm-up included
   uint64_t measured_rays = 0;   // rays whose costs went into the estimates
-  uint32_t strata = 0;          // sampled level: strata (one measured window each)
+  uint32_t strata = 0;          // sampled level: strata (one measured window or warp each)
   double clock_ghz = 1.0;
-  std::string time_model;       // how cycles were obtained (cache level: the binding bound)
+  std::string time_model;  // how cycles were obtained (cache level: the binding bound)
   Estimate cycles, dram_bytes, l1_hit_rate, l2_hit_rate, nodes_per_ray, triangles_per_ray;
   std::array<TypeEstimate, kRayTypeCount> types;
-  double host_seconds = 0;      // wall time of the level's run, scene and BVH excluded
-  double cpu_seconds = 0;       // CPU time of the same (steadier on a busy machine)
+  double host_seconds = 0;  // wall time of the level's run, scene and BVH excluded
+  double cpu_seconds = 0;   // CPU time of the same (steadier on a busy machine)
 
   double mrays_per_second() const;
   nlohmann::ordered_json to_json() const;
@@ -67,11 +68,11 @@ struct FidelityResult {
 
 // Wall and CPU time of this process since construction.
 class HostTimer {
-public:
+ public:
   HostTimer();
   void stop(FidelityResult& result) const;  // sets host_seconds and cpu_seconds
 
-private:
+ private:
   double wall_, cpu_;
 };
 

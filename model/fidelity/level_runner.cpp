@@ -4,6 +4,7 @@
 #include "model/fidelity/cycle_level.h"
 #include "model/fidelity/functional_level.h"
 #include "model/fidelity/sampled_level.h"
+#include "model/fidelity/scaled_level.h"
 #include "model/sc/fork_run.h"
 
 namespace rtsim {
@@ -16,6 +17,8 @@ FidelityResult run_level(const LevelRequest& request, const HwConfig& config,
     case FidelityLevel::Cycle: return run_cycle_level(config, image, stream);
     case FidelityLevel::Sampled: break;
   }
+  if (request.sampling.method == SampleMethod::ScaleModel)
+    return run_scaled_level(config, image, stream, request.sampling);
   return run_sampled_level(config, image, stream, request.sampling);
 }
 

@@ -15,14 +15,28 @@ uint64_t SamplePlan::measured_rays() const {
   return n;
 }
 
-SamplePlan plan_samples(uint64_t rays, const SamplingConfig& config, uint32_t ray_slots) {
-  uint64_t rate = std::max<uint32_t>(config.rate, 1);
-  if (rays < 2 * rate)
+const char* sample_method_name(SampleMethod method) {
+  return method == SampleMethod::Windows ? "windows" : "scale-model";
+}
+
+std::optional<SampleMethod> sample_method_from_name(const std::string& name) {
+  for (SampleMethod m : {SampleMethod::ScaleModel, SampleMethod::Windows})
+    if (name == sample_method_name(m)) return m;
+  return std::nullopt;
+}
+
+void check_sample_rate(uint64_t rays, uint32_t rate) {
+  if (rays < 2ull * std::max<uint32_t>(rate, 1))
     throw InputError("sampling: the stream has " + std::to_string(rays) +
                      " rays, too few to sample 1 in " + std::to_string(rate));
+}
+
+SamplePlan plan_samples(uint64_t rays, const SamplingConfig& config, uint32_t ray_slots) {
+  check_sample_rate(rays, config.rate);
+  uint64_t rate = std::max<uint32_t>(config.rate, 1);
   SamplePlan plan;
-  plan.window_rays = config.window_rays ? config.window_rays
-                                        : std::max<uint32_t>(1024, 4 * ray_slots);
+  plan.window_rays =
+      config.window_rays ? config.window_rays : std::max<uint32_t>(1024, 4 * ray_slots);
   plan.warmup_rays = config.warmup_rays >= 0 ? uint32_t(config.warmup_rays) : ray_slots;
   uint64_t strata = rays / (rate * plan.window_rays);
   if (strata < 2) {

@@ -15,16 +15,26 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace rtsim {
 
+// How the sampled level picks and times its sample: a scale model of the machine running 1 in
+// `rate` warps (scaled_level.h, the default), or windows of consecutive rays on the full
+// machine (this file, sampled_level.h).
+enum class SampleMethod : uint8_t { ScaleModel, Windows };
+const char* sample_method_name(SampleMethod method);  // scale-model, windows
+std::optional<SampleMethod> sample_method_from_name(const std::string& name);
+
 struct SamplingConfig {
+  SampleMethod method = SampleMethod::ScaleModel;
   uint32_t rate = 16;        // 1 in `rate` rays measured (the range: 4 to 64)
   uint32_t window_rays = 0;  // rays measured per window; 0: auto (4 x ray slots, >= 1024)
   int64_t warmup_rays = -1;  // rays simulated before each window; -1: auto (the ray slots)
-  uint64_t seed = 1;         // seed of the window offsets
-  bool warm_pass = true;     // simulate every window once, unmeasured, before measuring
+  uint64_t seed = 1;      // seed of the window offsets; scale model: warps seed % rate + i x rate
+  bool warm_pass = true;  // simulate every window once, unmeasured, before measuring
 };
 
 struct SampleWindow {
@@ -40,6 +50,9 @@ struct SamplePlan {
 };
 
 // Throws InputError if the stream has fewer than 2 x rate rays (no two strata to sample).
+void check_sample_rate(uint64_t rays, uint32_t rate);
+
+// Throws as check_sample_rate does.
 SamplePlan plan_samples(uint64_t rays, const SamplingConfig& config, uint32_t ray_slots);
 
 }  // namespace rtsim

@@ -183,6 +183,7 @@ FidelityResult run_sampled_level(const HwConfig& config, const BvhImage& image,
   FidelityResult r;
   r.level = FidelityLevel::Sampled;
   r.sample_rate = sampling.rate;
+  r.sample_method = sample_method_name(SampleMethod::Windows);
   r.rays = header.total_rays();
   r.simulated_rays = sequence.rays.size();
   r.measured_rays = plan.measured_rays();

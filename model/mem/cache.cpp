@@ -6,7 +6,19 @@
 namespace rtsim {
 namespace {
 
-bool power_of_two(uint64_t x) { return x && !(x & (x - 1)); }
+bool power_of_two(uint64_t x) {
+  return x && !(x & (x - 1));
+}
+
+// Whether the first reference to a line is this cache's own fetch, for a given share: a
+// splitmix64 hash of the line, as a fraction of 2^64, below the share.
+bool fetched_here(uint64_t line, double share) {
+  uint64_t z = line + 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return double(z) < share * 18446744073709551616.0;
+}
 
 }  // namespace
 
@@ -62,12 +74,24 @@ Cycle Cache::access_line(uint64_t line, Cycle now) {
     return hit_ready;
   }
 
+  bool first = held_lines_.insert(line).second;
+  if (first && own_share_ < 1.0 && !fetched_here(line, own_share_)) {
+    stats_.hits++;
+    stats_.absent_fills++;
+    install(set, ways, Line{tag, hit_ready, true});
+    return hit_ready;
+  }
   stats_.misses++;
+  if (first) stats_.cold_misses++;
   Cycle issue = reserve_mshr(now) + config_.hit_latency;
   stats_.bytes_below += config_.line_bytes;
   Cycle ready = below_->read(line * config_.line_bytes, config_.line_bytes, issue);
   in_flight_.push(ready);
+  install(set, ways, Line{tag, ready, true});
+  return ready;
+}
 
+void Cache::install(uint32_t set, Line* ways, const Line& line) {
   uint32_t victim = config_.ways;
   for (uint32_t w = 0; w < config_.ways && victim == config_.ways; ++w)
     if (!ways[w].valid) victim = w;
@@ -75,9 +99,8 @@ Cycle Cache::access_line(uint64_t line, Cycle now) {
     victim = policy_->victim(set);
     stats_.evictions++;
   }
-  ways[victim] = Line{tag, ready, true};
+  ways[victim] = line;
   policy_->insert(set, victim);
-  return ready;
 }
 
 // The cycle a new miss can start: now, or when the earliest in-flight miss frees its MSHR.

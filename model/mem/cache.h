@@ -13,6 +13,7 @@
 #include <memory>
 #include <queue>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "model/mem/memory_level.h"
@@ -36,6 +37,8 @@ struct CacheStats {
   uint64_t accesses = 0;           // line accesses (a request spanning 2 lines counts 2)
   uint64_t hits = 0;               // line present and ready
   uint64_t misses = 0;             // line absent: a request went below
+  uint64_t cold_misses = 0;        // misses of lines this cache never held (compulsory)
+  uint64_t absent_fills = 0;       // first references served by an absent sharer (counted as hits)
   uint64_t mshr_merges = 0;        // line in flight: merged into its MSHR
   uint64_t mshr_stall_cycles = 0;  // cycles misses waited for a free MSHR
   uint64_t evictions = 0;          // valid lines replaced
@@ -43,23 +46,29 @@ struct CacheStats {
 };
 
 class Cache : public MemoryLevel {
-public:
+ public:
   // Throws std::invalid_argument for an impossible config (see cache_config_problem).
   Cache(const CacheConfig& config, MemoryLevel* below);
 
   Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
   // Whether the line holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
+  // For a scale model (model/fidelity/scaled_level.h): this cache stands in for a shared cache
+  // of which the simulation drives only `own_share` of the clients. The first reference to a
+  // line then goes below with probability own_share (decided by a hash of the line address);
+  // otherwise one of the absent clients fetched it earlier, and it is a hit (absent_fills).
+  void share_first_references(double own_share) { own_share_ = own_share; }
   const CacheStats& stats() const { return stats_; }
   const CacheConfig& config() const { return config_; }
 
-private:
+ private:
   struct Line {
     uint64_t tag = 0;
     Cycle ready = 0;
     bool valid = false;
   };
   Cycle access_line(uint64_t line, Cycle now);
+  void install(uint32_t set, Line* ways, const Line& line);  // evicting a victim if needed
   Cycle reserve_mshr(Cycle now);
 
   CacheConfig config_;
@@ -68,6 +77,8 @@ private:
   std::vector<Line> lines_;  // sets_ x ways, set-major
   std::unique_ptr<ReplacementPolicy> policy_;
   std::priority_queue<Cycle, std::vector<Cycle>, std::greater<Cycle>> in_flight_;
+  std::unordered_set<uint64_t> held_lines_;  // every line ever referenced: tells cold misses
+  double own_share_ = 1.0;
   CacheStats stats_;
 };
 

@@ -74,6 +74,14 @@ void RtSimulator::run() {
         " units unfinished (a unit slept with nothing to wake it); state:\n" + dump());
 }
 
+const CacheStats& RtSimulator::l2_stats() const {
+  return l2_->cache().stats();
+}
+
+void RtSimulator::share_l2_first_references(double own_share) {
+  l2_->cache().share_first_references(own_share);
+}
+
 Cycle RtSimulator::cycles() const {
   Cycle last = collector_.last_retire();
   for (const auto& unit : units_) last = std::max(last, unit->core().stats().last_cycle);

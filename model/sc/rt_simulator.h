@@ -25,7 +25,7 @@ namespace rtsim {
 
 // A run that stopped making progress, or ran out of events with rays unfinished.
 class SimStallError : public std::runtime_error {
-public:
+ public:
   using std::runtime_error::runtime_error;
 };
 
@@ -34,7 +34,7 @@ public:
 uint32_t ray_slots(const HwConfig& config);
 
 class RtSimulator {
-public:
+ public:
   using MemoryBinder = std::function<void(tlm_utils::simple_initiator_socket<CacheModule>&)>;
 
   // width x height: the pixel grid of the rays (0 x 0: no pixel buffers). listener (optional)
@@ -52,11 +52,15 @@ public:
   uint64_t rays() const { return collector_.rays(); }
   const SimStatsCollector& collected() const { return collector_; }
   const HwConfig& config() const { return config_; }
+  const CacheStats& l2_stats() const;
+  // Before run(): the L2 stands in for that of a machine of which this one has own_share of the
+  // RT units (Cache::share_first_references).
+  void share_l2_first_references(double own_share);
   // Every counter under its dotted name, and the derived ratios.
   void report(StatsRegistry& stats) const;
   std::string dump() const;  // every module's state
 
-private:
+ private:
   HwConfig config_;
   Clock clock_;
   TraversalUnit traversal_;

@@ -29,13 +29,13 @@ namespace rtsim {
 // A MemoryLevel that sends its reads as TLM transactions through `transport` (a socket's
 // b_transport, looked up at call time because sockets bind after construction).
 class TlmReadPort : public MemoryLevel {
-public:
+ public:
   using Transport = std::function<void(tlm::tlm_generic_payload&, sc_core::sc_time&)>;
   TlmReadPort(Transport transport, const Clock& clock)
       : transport_(std::move(transport)), clock_(clock) {}
   Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
 
-private:
+ private:
   Transport transport_;
   Clock clock_;
   tlm::tlm_generic_payload trans_;  // reused: a level has one read in flight in the call chain
@@ -44,19 +44,20 @@ private:
 
 // A cache level: any number of initiators bind to `in`; misses go out through `out`.
 class CacheModule : public sc_core::sc_module {
-public:
+ public:
   tlm_utils::multi_passthrough_target_socket<CacheModule> in;
   tlm_utils::simple_initiator_socket<CacheModule> out;
 
   CacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock);
   const Cache& cache() const { return cache_; }
+  Cache& cache() { return cache_; }
   // The cache level itself, for the initiator that owns this cache (an RT unit and its L1):
   // reads without a transaction, the timing analogue of a TLM DMI pointer. Same answers as
   // the `in` socket; misses still go out through `out`.
   MemoryLevel& direct() { return cache_; }
   uint64_t write_bytes() const { return write_bytes_; }  // bytes written around this level
 
-private:
+ private:
   void b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
 
   Clock clock_;
@@ -66,14 +67,14 @@ private:
 };
 
 class DramModule : public sc_core::sc_module {
-public:
+ public:
   tlm_utils::simple_target_socket<DramModule> in;
 
   DramModule(sc_core::sc_module_name name, const DramConfig& config, const Clock& clock);
   const Dram& dram() const { return dram_; }
   uint64_t write_bytes() const { return write_bytes_; }  // of dram().stats().bytes
 
-private:
+ private:
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
 
   Clock clock_;

@@ -29,10 +29,15 @@ struct StackTransfer {
 };
 
 class HardwareStack {
-public:
-  // Spill regions: one per ray context, region_bytes apart from base.
+ public:
+  // Spill regions: one per ray context, kRegionBytes each (entries wrap around within it).
+  // Regions are one 64-byte line more than that apart: with a stride of exactly 4 KB the same
+  // depth of every ray fell into the same few cache sets (1/64 of them with 64-byte lines),
+  // and those sets thrashed.
   static constexpr uint64_t kSpillBase = 0x7000'0000'0000ull;
   static constexpr uint64_t kRegionBytes = 4096;
+  static constexpr uint64_t kRegionStride = kRegionBytes + 64;
+  static uint64_t region(uint32_t context) { return kSpillBase + context * kRegionStride; }
 
   explicit HardwareStack(const StackConfig& config) : config_(config) {}
 
@@ -49,10 +54,9 @@ public:
   StackTransfer settle(RayContext& ray, uint32_t kept, uint32_t total) const;
   const StackConfig& config() const { return config_; }
 
-private:
+ private:
   uint64_t address(const RayContext& ray, uint32_t entry) const {
-    return kSpillBase + ray.id * kRegionBytes +
-           (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
+    return region(ray.id) + (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
   }
   StackConfig config_;
 };

@@ -9,6 +9,7 @@
 #include "model/fidelity/cache_level.h"
 #include "model/fidelity/functional_level.h"
 #include "model/fidelity/level_runner.h"
+#include "model/fidelity/scaled_level.h"
 #include "model/units/traversal.h"
 #include "tests/fidelity/fidelity_test_util.h"
 
@@ -16,7 +17,7 @@ namespace rtsim {
 namespace {
 
 class FidelityLevels : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() {
     stream_ = new std::string(test::small_stream("grid:2000", 40000));
     scene_ = new Scene(load_scene("grid:2000"));
@@ -69,9 +70,10 @@ TEST_F(FidelityLevels, CacheLevelHasMemoryFiguresAndARooflineTime) {
   EXPECT_NE(r.time_model.find(bounds.bound), std::string::npos) << r.time_model;
 }
 
-TEST_F(FidelityLevels, SampledLandsNearTheFullModel) {
+TEST_F(FidelityLevels, WindowsLandNearTheFullModel) {
   FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, *config_, *image_, *stream_);
   LevelRequest sampled{FidelityLevel::Sampled, {}};
+  sampled.sampling.method = SampleMethod::Windows;
   sampled.sampling.rate = 4;
   sampled.sampling.window_rays = 1024;
   FidelityResult s = run_level_in_child(sampled, *config_, *image_, *stream_);
@@ -81,6 +83,67 @@ TEST_F(FidelityLevels, SampledLandsNearTheFullModel) {
   EXPECT_NEAR(s.cycles.value / full.cycles.value, 1.0, 0.15) << "cycles within 15%";
   EXPECT_NEAR(s.l1_hit_rate.value, full.l1_hit_rate.value, 0.05) << "L1 hit rate within 5 pp";
   EXPECT_NEAR(s.nodes_per_ray.value / full.nodes_per_ray.value, 1.0, 0.1);
+  EXPECT_EQ(s.sample_method, "windows");
+}
+
+TEST(ScaleModel, SharesTheMachineByTheRate) {
+  HwConfig full = load_hw_config("", {"rt.count=32", "dispatch.rays_per_cycle=32",
+                                      "dram.bytes_per_cycle=448", "dram.queue_depth=512"});
+  ScaleModel m = scale_model(full, 8);
+  EXPECT_EQ(m.config.rt_units, 4u);
+  EXPECT_DOUBLE_EQ(m.machine_share, 0.125);
+  EXPECT_DOUBLE_EQ(m.time_factor, 1.0) << "1/8 of the warps on 1/8 of the machine";
+  EXPECT_DOUBLE_EQ(m.config.dispatch.rays_per_cycle, 4.0);
+  EXPECT_DOUBLE_EQ(m.config.dram.bytes_per_cycle, 56.0);
+  EXPECT_EQ(m.config.dram.queue_depth, 64u);
+  EXPECT_EQ(m.config.l2.mshrs, full.l2.mshrs / 8);
+  EXPECT_EQ(m.config.l2.size_bytes, full.l2.size_bytes) << "the L2 keeps its size";
+  EXPECT_EQ(m.config.l1.size_bytes, full.l1.size_bytes);
+  ScaleModel one = scale_model(full, 64);
+  EXPECT_EQ(one.config.rt_units, 1u);
+  EXPECT_DOUBLE_EQ(one.time_factor, 2.0) << "one unit doing half a unit's share of the warps";
+}
+
+TEST(ScaleModel, WarpsKeepTheUnitsSpacing) {
+  std::vector<uint64_t> every4 = scale_model_warps(1000, 4, 32, 7);
+  ASSERT_EQ(every4.size(), 250u);
+  EXPECT_EQ(every4[0], 3u) << "phase: seed mod rate";
+  EXPECT_EQ(every4[1], 7u);
+  // 64 on 4 units: every 4th warp, as a unit of the full machine gets them, in 1 block of
+  // kBlockWarps of those in 16.
+  std::vector<uint64_t> blocks = scale_model_warps(64 * 4 * 16 * 3, 64, 4, 0);
+  ASSERT_EQ(blocks.size(), 3 * kBlockWarps);
+  EXPECT_EQ(blocks[1] - blocks[0], 4u);
+  EXPECT_EQ(blocks[kBlockWarps - 1], 4 * (kBlockWarps - 1));
+  EXPECT_EQ(blocks[kBlockWarps], 4 * 16 * kBlockWarps) << "the next block, 16 blocks on";
+  std::vector<uint64_t> other = scale_model_warps(64 * 4 * 16 * 3, 64, 4, 45);
+  EXPECT_EQ(other[0], 1 + 4 * 5 * kBlockWarps) << "the seed picks the phase and the block";
+}
+
+TEST_F(FidelityLevels, ScaleModelLandsNearTheFullModel) {
+  FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, *config_, *image_, *stream_);
+  LevelRequest scaled{FidelityLevel::Sampled, {}};
+  scaled.sampling.rate = 4;
+  FidelityResult s = run_level_in_child(scaled, *config_, *image_, *stream_);
+  EXPECT_EQ(s.sample_method, "scale-model");
+  EXPECT_EQ(s.rays, full.rays) << "estimates are for the whole stream";
+  uint32_t warp = config_->rt.warp_size;
+  EXPECT_NEAR(double(s.simulated_rays), full.rays / 4.0, warp) << "1 warp in 4, nothing else";
+  EXPECT_EQ(s.strata, (s.simulated_rays + warp - 1) / warp) << "one unit per warp";
+  EXPECT_GT(s.cycles.ci95, 0.0);
+  EXPECT_NEAR(s.cycles.value / full.cycles.value, 1.0, 0.03) << "cycles within 3%";
+  EXPECT_NEAR(s.l1_hit_rate.value, full.l1_hit_rate.value, 0.02) << "L1 hit rate within 2 pp";
+  EXPECT_NEAR(s.nodes_per_ray.value / full.nodes_per_ray.value, 1.0, 0.02);
+  // The scene fits the L2, so nearly every DRAM byte is a cold miss, paid once however many
+  // warps run; scaling them by the rate would read about 4x.
+  EXPECT_NEAR(s.dram_bytes.value / full.dram_bytes.value, 1.0, 0.25);
+
+  LevelRequest again = scaled, other = scaled;
+  other.sampling.seed = 2;
+  FidelityResult same = run_level_in_child(again, *config_, *image_, *stream_);
+  FidelityResult moved = run_level_in_child(other, *config_, *image_, *stream_);
+  EXPECT_EQ(same.cycles.value, s.cycles.value) << "same seed, same warps, same result";
+  EXPECT_NE(moved.cycles.value, s.cycles.value) << "another seed samples other warps";
 }
 
 TEST_F(FidelityLevels, ResultsSurviveAJsonRoundTrip) {

@@ -16,8 +16,11 @@ TEST(RayRangeReader, ReadsTheSameRaysAsTheStreamReader) {
   std::vector<Ray> all = read_all_rays(path);
   RayRangeReader reader(path);
   ASSERT_EQ(reader.rays(), all.size());
-  for (auto [begin, end] : {std::pair<uint64_t, uint64_t>{0, 10}, {995, 1005}, {2999, 4001},
-                            {5490, 5500}, {5400, 9999}}) {
+  for (auto [begin, end] : {std::pair<uint64_t, uint64_t>{0, 10},
+                            {995, 1005},
+                            {2999, 4001},
+                            {5490, 5500},
+                            {5400, 9999}}) {
     std::vector<Ray> got;
     reader.read(begin, end, got);
     ASSERT_EQ(got.size(), std::min<uint64_t>(end, all.size()) - begin) << begin << ".." << end;

@@ -69,6 +69,38 @@ TEST(CacheTiming, RequestSpanningTwoLinesIsReadyWithTheLaterLine) {
   EXPECT_EQ(cache.stats().bytes_below, 128u);
 }
 
+TEST(CacheTiming, OnlyTheFirstMissOfALineIsCold) {
+  test::MockMemory mem(10);
+  Cache cache(small_cache(), &mem);  // 8 sets of 2 ways: lines 512 bytes apart share a set
+  Cycle now = 0;
+  for (uint64_t addr : {0x0, 0x200, 0x400, 0x0, 0x40}) now = cache.read(addr, 64, now) + 1;
+  EXPECT_EQ(cache.stats().misses, 5u) << "0x0 was evicted by 0x200 and 0x400";
+  EXPECT_EQ(cache.stats().cold_misses, 4u) << "its second miss is a capacity miss, not cold";
+}
+
+TEST(CacheTiming, AbsentSharersServeTheirShareOfFirstReferences) {
+  test::MockMemory mem(10);
+  CacheConfig config = small_cache();
+  config.size_bytes = 1 << 20;
+  config.mshrs = 64;
+  Cache alone(config, &mem), none(config, &mem), half(config, &mem);
+  none.share_first_references(0.0);
+  half.share_first_references(0.5);
+  for (uint64_t line = 0; line < 1000; ++line) {
+    alone.read(line * 64, 64, 0);
+    EXPECT_EQ(none.read(line * 64, 64, 0), 4u) << "another client fetched it: a hit";
+    half.read(line * 64, 64, 0);
+  }
+  EXPECT_EQ(alone.stats().cold_misses, 1000u);
+  EXPECT_EQ(none.stats().absent_fills, 1000u);
+  EXPECT_EQ(none.stats().hits, 1000u);
+  EXPECT_EQ(none.stats().misses, 0u);
+  EXPECT_EQ(half.stats().cold_misses + half.stats().absent_fills, 1000u);
+  EXPECT_NEAR(double(half.stats().cold_misses), 500.0, 50.0);
+  half.read(0, 64, 100);
+  EXPECT_EQ(half.stats().cold_misses + half.stats().absent_fills, 1000u) << "only first ones";
+}
+
 TEST(CacheConfigCheck, RejectsImpossibleConfigs) {
   CacheConfig c = small_cache();
   c.line_bytes = 48;

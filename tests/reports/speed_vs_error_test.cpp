@@ -13,15 +13,17 @@ using Json = nlohmann::ordered_json;
 
 TEST(SpeedVsError, ComparesEveryLevelWithTheFullModel) {
   std::string dir = test::fresh_dir("speed");
-  test::RunResult r =
-      test::run_rtsim("speed-vs-error pica --resolution 96x54 --config " +
-                      test::source_path("configs/mobile.toml") + " --rates 4,8 -o " + dir);
+  test::RunResult r = test::run_rtsim("speed-vs-error pica --resolution 96x54 --config " +
+                                      test::source_path("configs/mobile.toml") +
+                                      " --rates 4,8 --sample-method scale-model,windows -o " + dir);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   Json doc = test::read_json(dir + "/speed_vs_error.json");
   std::vector<std::string> labels;
   for (const Json& row : doc["rows"]) labels.push_back(row["label"]);
   EXPECT_EQ(labels, (std::vector<std::string>{"cycle", "functional", "cache", "sampled 1/4",
-                                              "sampled 1/8"}));
+                                              "sampled 1/8", "windows 1/4", "windows 1/8"}));
+  EXPECT_EQ(doc["results"][3]["sample_method"], "scale-model");
+  EXPECT_EQ(doc["results"][5]["sample_method"], "windows");
   const Json& reference = doc["rows"][0];
   EXPECT_DOUBLE_EQ(reference["cycles"]["error"].get<double>(), 0.0);
   for (const Json& row : doc["rows"]) {
@@ -34,8 +36,9 @@ TEST(SpeedVsError, ComparesEveryLevelWithTheFullModel) {
     }
   }
   EXPECT_GT(doc["rows"][3]["cycles"]["ci95"].get<double>(), 0.0) << "sampled: an interval";
+  EXPECT_GT(doc["rows"][5]["cycles"]["ci95"].get<double>(), 0.0) << "windows: an interval";
   EXPECT_NE(r.out.find("sampled 1/8"), std::string::npos) << "the table is printed";
-  EXPECT_EQ(test::count_lines(test::slurp(dir + "/speed_vs_error.csv")), 6);
+  EXPECT_EQ(test::count_lines(test::slurp(dir + "/speed_vs_error.csv")), 8);
   EXPECT_NE(test::slurp(dir + "/speed_vs_error.md").find("| sampled 1/4 |"), std::string::npos);
   EXPECT_EQ(test::slurp(dir + "/speed_vs_error.png").substr(1, 3), "PNG");
   std::filesystem::remove_all(dir);
@@ -50,6 +53,18 @@ TEST(SpeedVsError, AStreamTooShortForTheRateIsBadInput) {
   EXPECT_NE(r.err.find("rays.rays: 9 rays, too few to sample 1 in 64"), std::string::npos) << r.err;
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   std::filesystem::remove_all(dir);
+}
+
+TEST(SpeedVsError, WindowOptionsNeedTheWindowsMethod) {
+  test::RunResult r = test::run_rtsim("speed-vs-error cornell --window 2048 --no-charts");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("--window applies to --sample-method windows only"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  r = test::run_rtsim("run cornell --fidelity sampled --sample-method everything -o /tmp/x");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("unknown method 'everything' (scale-model, windows)"), std::string::npos)
+      << r.err;
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // pop from an empty on-chip stack reads back.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "model/sched/hardware_stack.h"
 
 namespace rtsim {
@@ -16,8 +18,7 @@ TEST(HardwareStack, SpillsTheOldestEntriesPastTheDepth) {
   StackTransfer spill = stack.settle(ray, 0, 7);
   EXPECT_EQ(spill.entries, 3u);
   EXPECT_EQ(spill.bytes, 24u);
-  EXPECT_EQ(spill.addr, HardwareStack::kSpillBase + 3 * HardwareStack::kRegionBytes)
-      << "the ray's own region, from its bottom";
+  EXPECT_EQ(spill.addr, HardwareStack::region(3)) << "the ray's own region, from its bottom";
   EXPECT_EQ(ray.resident, 4u);
   EXPECT_EQ(ray.spilled, 3u);
   EXPECT_EQ(ray.cost.stack_spills, 3u);
@@ -31,9 +32,16 @@ TEST(HardwareStack, RefillsExactlyWhatAPopNeeds) {
   EXPECT_EQ(stack.refill(ray, 4).bytes, 0u) << "4 pops: all on chip";
   StackTransfer read = stack.refill(ray, 6);
   EXPECT_EQ(read.entries, 2u) << "6 pops with 4 on chip: two come back";
-  EXPECT_EQ(read.addr, HardwareStack::kSpillBase + 1 * 8) << "the top two spilled entries";
+  EXPECT_EQ(read.addr, HardwareStack::region(0) + 1 * 8) << "the top two spilled entries";
   EXPECT_EQ(ray.spilled, 1u);
   EXPECT_EQ(ray.cost.stack_refills, 2u);
+}
+
+TEST(HardwareStack, RegionsSpreadOverCacheSets) {
+  // 1024 sets of 64-byte lines: the first line of 256 regions lands in 256 different sets.
+  std::set<uint64_t> sets;
+  for (uint32_t id = 0; id < 256; ++id) sets.insert(HardwareStack::region(id) / 64 % 1024);
+  EXPECT_EQ(sets.size(), 256u);
 }
 
 TEST(HardwareStack, DeepStackNeverSpillsAndClearFreesAll) {

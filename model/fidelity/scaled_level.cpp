@@ -1,0 +1,259 @@
+#include "model/fidelity/scaled_level.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <deque>
+#include <functional>
+
+#include "model/fidelity/ray_range_reader.h"
+#include "model/fidelity/systematic.h"
+#include "model/sc/rt_simulator.h"
+#include "model/sched/ray_source.h"
+
+namespace rtsim {
+namespace {
+
+uint32_t scaled_count(uint32_t count, double share) {
+  return std::max(1u, uint32_t(double(count) * share));
+}
+
+using Field = std::function<double(const CostTotals&)>;
+
+// One estimate's series: y / x (or a total of y) over the rays of one type, or of all (-1).
+struct Metric {
+  Field y, x;
+  int type = -1;
+  SystematicSeries series;
+};
+
+// The units of the sample (warps) as their rays retire, handed on complete and in stream order
+// so that successive differences are taken between neighbouring warps.
+class WarpCollector : public RayRetireListener {
+ public:
+  WarpCollector(uint64_t rays, uint64_t unit_rays, std::vector<Metric>& metrics)
+      : rays_(rays), unit_rays_(unit_rays), metrics_(metrics) {}
+
+  void retired(const RayContext& ray, Cycle now) override {
+    uint64_t unit = ray.sequence / unit_rays_;
+    while (pending_.size() <= unit - first_) pending_.emplace_back();
+    Pending& p = pending_[unit - first_];
+    CostTotals& c = p.by_type[int(ray.ray.type) % kRayTypeCount];
+    c.rays++;
+    c.nodes += ray.state.counters.trav_nodes;
+    c.triangles += ray.state.counters.trav_prims;
+    c.l1_accesses += ray.cost.l1_accesses;
+    c.l1_hits += ray.cost.l1_hits;
+    c.l2_accesses += ray.cost.l2_accesses;
+    c.l2_hits += ray.cost.l2_hits;
+    c.dram_bytes += ray.cost.dram_bytes;
+    c.latency += double(now - std::min(now, ray.dispatched));
+    ++p.retired;
+    while (!pending_.empty() && pending_.front().retired == unit_size(first_)) {
+      finish(pending_.front());
+      pending_.pop_front();
+      ++first_;
+    }
+  }
+
+  const std::array<CostTotals, kRayTypeCount>& totals() const { return totals_; }
+
+ private:
+  struct Pending {
+    uint64_t retired = 0;
+    std::array<CostTotals, kRayTypeCount> by_type{};
+  };
+
+  uint64_t unit_size(uint64_t unit) const {
+    return std::min(unit_rays_, rays_ - unit * unit_rays_);
+  }
+
+  void finish(const Pending& p) {
+    for (int t = 0; t < kRayTypeCount; ++t) totals_[t] += p.by_type[t];
+    for (Metric& m : metrics_) {
+      double y = 0, x = 0;
+      for (int t = 0; t < kRayTypeCount; ++t) {
+        if (m.type >= 0 && t != m.type) continue;
+        y += m.y(p.by_type[t]);
+        if (m.x) x += m.x(p.by_type[t]);
+      }
+      m.series.add(y, x);
+    }
+  }
+
+  uint64_t rays_, unit_rays_;
+  std::vector<Metric>& metrics_;
+  std::deque<Pending> pending_;
+  uint64_t first_ = 0;  // the unit at pending_.front()
+  std::array<CostTotals, kRayTypeCount> totals_{};
+};
+
+const Field kRays = [](const CostTotals& c) { return double(c.rays); };
+const Field kWork = [](const CostTotals& c) { return double(c.nodes + c.triangles); };
+const Field kNodes = [](const CostTotals& c) { return double(c.nodes); };
+const Field kTriangles = [](const CostTotals& c) { return double(c.triangles); };
+const Field kL1Hits = [](const CostTotals& c) { return double(c.l1_hits); };
+const Field kL1Accesses = [](const CostTotals& c) { return double(c.l1_accesses); };
+const Field kL2Hits = [](const CostTotals& c) { return double(c.l2_hits); };
+const Field kL2Accesses = [](const CostTotals& c) { return double(c.l2_accesses); };
+const Field kDram = [](const CostTotals& c) { return double(c.dram_bytes); };
+const Field kLatency = [](const CostTotals& c) { return c.latency; };
+
+// The estimates of each scope (each ray type, then all rays), in this order.
+enum MetricIndex {
+  kNodesPerRay,
+  kTrianglesPerRay,
+  kL1Rate,
+  kL2Rate,
+  kDramPerRay,
+  kLatencyPerRay,
+  kPerScope
+};
+// After every scope's estimates: the totals of all rays.
+constexpr size_t kWorkTotal = (kRayTypeCount + 1) * kPerScope, kDramTotal = kWorkTotal + 1;
+
+std::vector<Metric> make_metrics() {
+  std::vector<Metric> metrics;
+  for (int scope = 0; scope <= kRayTypeCount; ++scope) {
+    int type = scope < kRayTypeCount ? scope : -1;
+    metrics.push_back({kNodes, kRays, type, {}});
+    metrics.push_back({kTriangles, kRays, type, {}});
+    metrics.push_back({kL1Hits, kL1Accesses, type, {}});
+    metrics.push_back({kL2Hits, kL2Accesses, type, {}});
+    metrics.push_back({kDram, kRays, type, {}});
+    metrics.push_back({kLatency, kRays, type, {}});
+  }
+  metrics.push_back({kWork, {}, -1, {}});
+  metrics.push_back({kDram, {}, -1, {}});
+  return metrics;
+}
+
+// First references to L2 lines in one scope (a ray type, or all rays): those the scaled
+// machine fetched (cold misses) and those an absent unit of the full machine had fetched.
+struct FirstReferences {
+  double fetched = 0, absent = 0;
+};
+
+// What to add to k x the scaled machine's DRAM bytes: its fetched first references are paid
+// once, not k times, and the absent units' ones once too.
+double dram_offset(double k, const FirstReferences& first, double line) {
+  return (first.absent - (k - 1) * first.fetched) * line;
+}
+
+const SystematicSeries& series(const std::vector<Metric>& metrics, int scope, int index) {
+  return metrics[size_t(scope) * kPerScope + size_t(index)].series;
+}
+
+// The estimates of one scope; k: the scale-up, line: the L2's line size. The full machine
+// fetches each first-referenced line once: DRAM bytes = k (D - fetched x line) + (fetched +
+// absent) x line, and its L2 hits = k h + (k - 1) fetched - absent.
+TypeEstimate scope_estimates(const std::vector<Metric>& metrics, int scope, double k,
+                             const FirstReferences& first, double line) {
+  TypeEstimate e;
+  e.nodes_per_ray = series(metrics, scope, kNodesPerRay).ratio(k);
+  e.triangles_per_ray = series(metrics, scope, kTrianglesPerRay).ratio(k);
+  e.l1_hit_rate = series(metrics, scope, kL1Rate).ratio(k);
+  e.l2_hit_rate = series(metrics, scope, kL2Rate).ratio(k, (k - 1) * first.fetched - first.absent);
+  e.dram_bytes_per_ray = series(metrics, scope, kDramPerRay).ratio(k, dram_offset(k, first, line));
+  e.latency_mean = series(metrics, scope, kLatencyPerRay).ratio(k);
+  return e;
+}
+
+}  // namespace
+
+std::vector<uint64_t> scale_model_warps(uint64_t warps, uint32_t rate, uint32_t units,
+                                        uint64_t seed) {
+  uint64_t spacing = std::max(1u, std::min(rate, units));
+  uint64_t offset = (seed / spacing * spacing) % rate;  // which blocks, when rate > units
+  std::vector<uint64_t> out;
+  for (uint64_t j = 0, w = seed % spacing; w < warps; ++j, w += spacing)
+    if ((j / kBlockWarps * spacing + offset) % rate < spacing) out.push_back(w);
+  return out;
+}
+
+ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
+  ScaleModel m;
+  m.config = config;
+  HwConfig& c = m.config;
+  c.rt_units = std::max(1u, config.rt_units / rate);
+  m.machine_share = double(c.rt_units) / double(config.rt_units);
+  m.time_factor = double(rate) * m.machine_share;
+  c.dispatch.rays_per_cycle = config.dispatch.rays_per_cycle * m.machine_share;
+  c.l2.mshrs = scaled_count(config.l2.mshrs, m.machine_share);
+  c.dram.bytes_per_cycle = config.dram.bytes_per_cycle * m.machine_share;
+  c.dram.queue_depth = scaled_count(config.dram.queue_depth, m.machine_share);
+  c.treelet_queues.max_rays = scaled_count(config.treelet_queues.max_rays, m.machine_share);
+  return m;
+}
+
+FidelityResult run_scaled_level(const HwConfig& config, const BvhImage& image,
+                                const std::string& stream, const SamplingConfig& sampling) {
+  setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  HostTimer timer;
+  RayRangeReader reader(stream);
+  uint64_t total = reader.header().total_rays();
+  uint32_t rate = std::max<uint32_t>(sampling.rate, 1);
+  check_sample_rate(total, rate);
+  uint64_t unit = std::min<uint64_t>(config.rt.warp_size, total / (2ull * rate));
+  uint64_t warps = (total + unit - 1) / unit;
+  std::vector<Ray> rays;
+  for (uint64_t w : scale_model_warps(warps, rate, config.rt_units, sampling.seed))
+    reader.read(w * unit, (w + 1) * unit, rays);
+  uint64_t phase = sampling.seed % std::min(rate, config.rt_units);
+
+  ScaleModel model = scale_model(config, rate);
+  std::vector<Metric> metrics = make_metrics();
+  WarpCollector collector(rays.size(), unit, metrics);
+  VectorRaySource source(rays);
+  RtSimulator sim(model.config, image, source, 0, 0, &collector);
+  sim.share_l2_first_references(model.machine_share);
+  sim.run();
+
+  FidelityResult r;
+  r.level = FidelityLevel::Sampled;
+  r.sample_rate = rate;
+  r.sample_method = sample_method_name(SampleMethod::ScaleModel);
+  r.rays = total;
+  r.simulated_rays = r.measured_rays = rays.size();
+  r.strata = uint32_t(metrics[kWorkTotal].series.units());
+  r.clock_ghz = config.clock_ghz;
+  r.time_model = "scale model: 1 in " + std::to_string(rate) + " warps (phase " +
+                 std::to_string(phase) + ") on " + std::to_string(model.config.rt_units) + " of " +
+                 std::to_string(config.rt_units) + " RT units";
+  double k = double(total) / double(rays.size());
+
+  // First references, shared out over the ray types: the fetched ones by their L2 misses,
+  // the absent units' ones by their L2 accesses.
+  const CacheStats& l2 = sim.l2_stats();
+  double line = double(config.l2.line_bytes);
+  const auto& totals = collector.totals();
+  double misses = 0, accesses = 0;
+  for (const CostTotals& c : totals) {
+    misses += double(c.l2_accesses - c.l2_hits);
+    accesses += double(c.l2_accesses);
+  }
+  FirstReferences first_all{double(l2.cold_misses), double(l2.absent_fills)};
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    uint64_t rays_of_type = reader.header().counts[t];
+    const CostTotals& c = totals[t];
+    FirstReferences first{
+        misses > 0 ? first_all.fetched * double(c.l2_accesses - c.l2_hits) / misses : 0,
+        accesses > 0 ? first_all.absent * double(c.l2_accesses) / accesses : 0};
+    if (c.rays > 0) r.types[t] = scope_estimates(metrics, t, k, first, line);
+    r.types[t].rays = rays_of_type;
+  }
+  TypeEstimate all = scope_estimates(metrics, kRayTypeCount, k, first_all, line);
+  r.nodes_per_ray = all.nodes_per_ray;
+  r.triangles_per_ray = all.triangles_per_ray;
+  r.l1_hit_rate = all.l1_hit_rate;
+  r.l2_hit_rate = all.l2_hit_rate;
+  r.dram_bytes = metrics[kDramTotal].series.total(k, dram_offset(k, first_all, line));
+
+  double latency = all.latency_mean.value;
+  double cycles = (double(sim.cycles()) - latency) * model.time_factor + latency;
+  Estimate work = metrics[kWorkTotal].series.total(k);
+  r.cycles = {true, cycles, work.value > 0 ? cycles * work.ci95 / work.value : 0.0};
+  timer.stop(r);
+  return r;
+}
+
+}  // namespace rtsim

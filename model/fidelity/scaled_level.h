@@ -1,0 +1,61 @@
+// The sampled level's default method, a scale model (the idea of Zatel, ISPASS 2024): one warp
+// in every `rate` of the stream runs on a machine with 1/rate of the RT units and of the
+// resources they share (dispatch bandwidth, L2 MSHRs, DRAM bandwidth and queue, the treelet
+// ray buffer). Each unit then sees the kind of warp sequence it sees in the full machine (there
+// too it gets about every rt.count-th warp) and its share of the shared bandwidth, so the
+// scaled machine's cycles estimate the full machine's, from one continuous simulation: no
+// windows, no warm-up, one fill and drain. The L2 keeps its full size: the units of the full
+// machine share most of what their L2 holds (one unit's miss is the others' hit), so a scaled
+// L2 would miss far more (measured: +10% to +90% cycles on Sponza).
+//
+// When rate exceeds rt.count the scaled machine keeps one unit. It still gets every rt.count-th
+// warp, as a unit of the full machine does, but only in 1 block of kBlockWarps such warps in
+// rate / rt.count: it does rt.count / rate of a unit's share, and its time is scaled by
+// rate / rt.count (fill and drain, one mean ray latency, counted once). Spreading its warps
+// rate apart instead would lose the coherence of neighbouring warps (measured on mobile pica:
+// +3% cycles at rate 8, +15% at 64).
+//
+// Scale-up: counts by the rate (stream rays over simulated rays). Cold (compulsory) L2 misses
+// happen once per line however many units share the L2, so they are not scaled: DRAM bytes =
+// k x simulated - (k - 1) x cold bytes, and the L2's hits gain (k - 1) x cold misses. Per ray
+// type, cold misses are shared out in proportion to the type's L2 misses.
+//
+// Intervals (systematic.h): the sampling error of choosing one warp in `rate` (the phase is
+// the seed mod rate, so seeds 0 to rate - 1 give every possible sample); cycles take the relative
+// interval of the warps' traversal steps (nodes + triangles), their work. They do not cover the
+// scale model's own bias.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/bvh/bvh_image.h"
+#include "model/config/hw_config.h"
+#include "model/fidelity/fidelity_result.h"
+#include "model/fidelity/sample_plan.h"
+
+namespace rtsim {
+
+struct ScaleModel {
+  HwConfig config;           // the scaled machine
+  double machine_share = 1;  // its RT units over the full machine's
+  double time_factor = 1;    // full-machine time over scaled-machine time: rate x machine_share
+};
+
+ScaleModel scale_model(const HwConfig& config, uint32_t rate);
+
+constexpr uint64_t kBlockWarps = 64;
+
+// The sampled warps of a stream of `warps` warps, in stream order: every min(rate, units)-th
+// warp from warp seed mod min(rate, units); when rate > units, only the blocks of kBlockWarps
+// of them that fall in 1 of every rate / units blocks (chosen by the seed too).
+std::vector<uint64_t> scale_model_warps(uint64_t warps, uint32_t rate, uint32_t units,
+                                        uint64_t seed);
+
+// Runs the scale model of the stream in this process (SystemC: once per process). Throws
+// InputError if the stream is too short for the rate.
+FidelityResult run_scaled_level(const HwConfig& config, const BvhImage& image,
+                                const std::string& stream, const SamplingConfig& sampling);
+
+}  // namespace rtsim
