@@ -14,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 class Regress : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     dir_ = test::fresh_dir("regress");
     fs::copy_file(test::source_path("configs/mobile.toml"), dir_ + "/hw.toml");
@@ -27,7 +27,8 @@ protected:
                                            "[tolerance]\n"
                                            "cycles = 0.02\n"
                                            "l1_hit_rate = { absolute = 0.01 }\n"
-                                           "\"type.*.dram_bytes_per_ray\" = 0.05\n";
+                                           "\"type.*.dram_bytes_per_ray\" = "
+                                           "{ relative = 0.05, absolute = 64 }\n";
     test::RunResult r = regress("--update-baseline");
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   }
