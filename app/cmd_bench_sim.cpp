@@ -8,7 +8,6 @@
 // --write-stream FILE writes the generated rays as a stream (e.g. 5M rays for the memory check).
 #include <sys/resource.h>
 
-#include <time.h>
 
 #include <chrono>
 #include <cstdlib>
@@ -25,6 +24,7 @@
 #include "model/verify/ray_samples.h"
 #include "traces/embree_scene.h"
 #include "traces/error.h"
+#include "traces/host_clock.h"
 #include "workloads/scene.h"
 
 namespace rtsim::app {
@@ -43,13 +43,6 @@ struct BenchSimOptions {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// CPU time of this process: less disturbed than wall time on a shared, busy machine.
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 double peak_rss_mib() {

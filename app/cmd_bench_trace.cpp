@@ -2,7 +2,6 @@
 // next to its reference, Embree alone tracing the same rays on one core in the same process.
 // The speed goal (workloads/README.md): a 1920x1080 pica-pica frame of Sponza in under 10 s.
 #include <fmt/core.h>
-#include <time.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -13,6 +12,7 @@
 #include "app/commands.h"
 #include "traces/embree_scene.h"
 #include "traces/error.h"
+#include "traces/host_clock.h"
 #include "traces/stream.h"
 #include "workloads/pipeline/summary.h"
 #include "workloads/pipeline/trace.h"
@@ -29,14 +29,6 @@ struct BenchArgs {
 
 double since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// CPU seconds of this process; with one thread, its time on one core, whatever else the
-// (shared, busy) machine runs meanwhile.
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
 // Seconds for one thread of Embree to trace every ray of the stream (reading excluded).

@@ -1,6 +1,6 @@
 #include "model/fidelity/fidelity_result.h"
 
-#include <time.h>
+#include "traces/host_clock.h"
 
 namespace rtsim {
 namespace {
@@ -8,12 +8,6 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 constexpr const char* kLevelNames[] = {"functional", "cache", "cycle", "sampled"};
-
-double clock_seconds(clockid_t clock) {
-  timespec t{};
-  clock_gettime(clock, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
 
 double ratio(double num, double den) {
   return den > 0 ? num / den : 0.0;
@@ -32,11 +26,11 @@ Estimate estimate_from(const nlohmann::json& j) {
 }  // namespace
 
 HostTimer::HostTimer()
-    : wall_(clock_seconds(CLOCK_MONOTONIC)), cpu_(clock_seconds(CLOCK_PROCESS_CPUTIME_ID)) {}
+    : wall_(wall_seconds()), cpu_(rtsim::cpu_seconds()) {}
 
 void HostTimer::stop(FidelityResult& result) const {
-  result.host_seconds = clock_seconds(CLOCK_MONOTONIC) - wall_;
-  result.cpu_seconds = clock_seconds(CLOCK_PROCESS_CPUTIME_ID) - cpu_;
+  result.host_seconds = wall_seconds() - wall_;
+  result.cpu_seconds = rtsim::cpu_seconds() - cpu_;
 }
 
 const char* fidelity_level_name(FidelityLevel level) {

@@ -74,7 +74,7 @@ Cycle Cache::access_line(uint64_t line, Cycle now) {
     return hit_ready;
   }
 
-  bool first = held_lines_.insert(line).second;
+  bool first = track_cold_ && held_lines_.insert(line).second;
   if (first && own_share_ < 1.0 && !fetched_here(line, own_share_)) {
     stats_.hits++;
     stats_.absent_fills++;

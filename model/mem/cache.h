@@ -37,7 +37,7 @@ struct CacheStats {
   uint64_t accesses = 0;           // line accesses (a request spanning 2 lines counts 2)
   uint64_t hits = 0;               // line present and ready
   uint64_t misses = 0;             // line absent: a request went below
-  uint64_t cold_misses = 0;        // misses of lines this cache never held (compulsory)
+  uint64_t cold_misses = 0;        // misses of lines never referenced before (if tracked)
   uint64_t absent_fills = 0;       // first references served by an absent sharer (counted as hits)
   uint64_t mshr_merges = 0;        // line in flight: merged into its MSHR
   uint64_t mshr_stall_cycles = 0;  // cycles misses waited for a free MSHR
@@ -53,11 +53,18 @@ class Cache : public MemoryLevel {
   Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
   // Whether the line holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
+  // Keeps a set of every line referenced, to count cold (compulsory) misses; without it
+  // cold_misses stays 0. Costs a hash insert per miss: the simulator tracks its L2 only.
+  void track_cold_misses() { track_cold_ = true; }
+  bool tracks_cold_misses() const { return track_cold_; }
   // For a scale model (model/fidelity/scaled_level.h): this cache stands in for a shared cache
   // of which the simulation drives only `own_share` of the clients. The first reference to a
   // line then goes below with probability own_share (decided by a hash of the line address);
   // otherwise one of the absent clients fetched it earlier, and it is a hit (absent_fills).
-  void share_first_references(double own_share) { own_share_ = own_share; }
+  void share_first_references(double own_share) {
+    own_share_ = own_share;
+    track_cold_ = true;
+  }
   const CacheStats& stats() const { return stats_; }
   const CacheConfig& config() const { return config_; }
 
@@ -78,6 +85,7 @@ class Cache : public MemoryLevel {
   std::unique_ptr<ReplacementPolicy> policy_;
   std::priority_queue<Cycle, std::vector<Cycle>, std::greater<Cycle>> in_flight_;
   std::unordered_set<uint64_t> held_lines_;  // every line ever referenced: tells cold misses
+  bool track_cold_ = false;
   double own_share_ = 1.0;
   CacheStats stats_;
 };

@@ -31,6 +31,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);
   l2_ = std::make_unique<CacheModule>("l2", config.l2, clock_);
+  l2_->cache().track_cold_misses();
   if (bind_memory) {
     bind_memory(l2_->out);
   } else {

@@ -12,7 +12,7 @@ void report_cache(StatsRegistry& r, const std::string& p, const CacheModule& mod
   r.counter(p + ".accesses", s.accesses);
   r.counter(p + ".hits", s.hits);
   r.counter(p + ".misses", s.misses);
-  r.counter(p + ".cold_misses", s.cold_misses);
+  if (module.cache().tracks_cold_misses()) r.counter(p + ".cold_misses", s.cold_misses);
   r.counter(p + ".mshr_merges", s.mshr_merges);
   r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
   r.counter(p + ".evictions", s.evictions);

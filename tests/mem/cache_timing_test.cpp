@@ -72,6 +72,7 @@ TEST(CacheTiming, RequestSpanningTwoLinesIsReadyWithTheLaterLine) {
 TEST(CacheTiming, OnlyTheFirstMissOfALineIsCold) {
   test::MockMemory mem(10);
   Cache cache(small_cache(), &mem);  // 8 sets of 2 ways: lines 512 bytes apart share a set
+  cache.track_cold_misses();
   Cycle now = 0;
   for (uint64_t addr : {0x0, 0x200, 0x400, 0x0, 0x40}) now = cache.read(addr, 64, now) + 1;
   EXPECT_EQ(cache.stats().misses, 5u) << "0x0 was evicted by 0x200 and 0x400";
@@ -84,6 +85,7 @@ TEST(CacheTiming, AbsentSharersServeTheirShareOfFirstReferences) {
   config.size_bytes = 1 << 20;
   config.mshrs = 64;
   Cache alone(config, &mem), none(config, &mem), half(config, &mem);
+  alone.track_cold_misses();
   none.share_first_references(0.0);
   half.share_first_references(0.5);
   for (uint64_t line = 0; line < 1000; ++line) {
