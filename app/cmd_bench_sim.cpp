@@ -8,7 +8,6 @@
 // --write-stream FILE writes the generated rays as a stream (e.g. 5M rays for the memory check).
 #include <sys/resource.h>
 
-
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>

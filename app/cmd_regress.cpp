@@ -51,8 +51,7 @@ std::vector<reports::CaseOutcome> run_cases(const reports::RegressSuite& suite,
     std::string key = reports::read_file(c.trace.workload) + c.trace.workload + c.trace.resolution +
                       std::to_string(c.trace.frames) + c.trace.scene +
                       (c.trace.seed ? std::to_string(*c.trace.seed) : "");
-    std::string trace =
-        o.output + "/traces/" + fmt::format("{:016x}", fnv1a64(key.data(), key.size()));
+    std::string trace = o.output + "/traces/" + text_hash(key);
     reports::trace_into(c.trace, trace, o.quiet);
     std::string dir = o.output + "/cases/" + c.name;
     fs::remove(dir + "/report.json");

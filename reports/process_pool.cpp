@@ -11,8 +11,6 @@
 #include <map>
 #include <thread>
 
-#include <fmt/core.h>
-
 #include "traces/hash.h"
 
 namespace rtsim::reports {
@@ -38,7 +36,9 @@ pid_t start(const ProcessJob& job) {
 
 }  // namespace
 
-std::string self_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }
+std::string self_executable() {
+  return std::filesystem::read_symlink("/proc/self/exe").string();
+}
 
 std::string executable_fingerprint() {
   static const std::string fingerprint = [] {
@@ -47,7 +47,7 @@ std::string executable_fingerprint() {
     uint64_t hash = fnv1a64(nullptr, 0);  // the offset basis
     while (in.read(buffer.data(), std::streamsize(buffer.size())) || in.gcount() > 0)
       hash = fnv1a64(buffer.data(), size_t(in.gcount()), hash);
-    return fmt::format("{:016x}", hash);
+    return hex64(hash);
   }();
   return fingerprint;
 }
@@ -55,14 +55,26 @@ std::string executable_fingerprint() {
 std::vector<std::string> run_child_argv(const std::string& trace_dir, const std::string& out_dir,
                                         const std::string& fidelity, uint32_t sample_rate,
                                         const std::string& config) {
-  std::vector<std::string> argv{self_executable(), "run", "--from-trace", trace_dir, "-o", out_dir,
-                                "--report", "json", "-q", "--fidelity", fidelity,
-                                "--sample-rate", std::to_string(sample_rate)};
+  std::vector<std::string> argv{self_executable(),
+                                "run",
+                                "--from-trace",
+                                trace_dir,
+                                "-o",
+                                out_dir,
+                                "--report",
+                                "json",
+                                "-q",
+                                "--fidelity",
+                                fidelity,
+                                "--sample-rate",
+                                std::to_string(sample_rate)};
   if (!config.empty()) argv.insert(argv.end(), {"--config", config});
   return argv;
 }
 
-uint32_t local_cores() { return std::max(1u, std::thread::hardware_concurrency()); }
+uint32_t local_cores() {
+  return std::max(1u, std::thread::hardware_concurrency());
+}
 
 void run_processes(const std::vector<ProcessJob>& jobs, uint32_t parallel,
                    const std::function<void(size_t, int, double)>& done) {

@@ -18,16 +18,12 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-std::string hash_text(const std::string& text) {
-  return fmt::format("{:016x}", fnv1a64(text.data(), text.size()));
-}
-
 Json request_of(const SweepSpec& spec, const Json& trace_request, const SweepPoint& point) {
   std::vector<std::string> sets = spec.sets;
   sets.insert(sets.end(), point.sets.begin(), point.sets.end());
   return {{"trace", trace_request},
           {"config", spec.config.empty() ? "" : fs::absolute(spec.config).string()},
-          {"config_hash", spec.config.empty() ? "" : hash_text(read_file(spec.config))},
+          {"config_hash", spec.config.empty() ? "" : text_hash(read_file(spec.config))},
           {"sets", sets},
           {"fidelity", spec.fidelity},
           {"sample_rate", spec.sampling.rate},
@@ -77,7 +73,7 @@ std::vector<PointRun> run_sweep(const SweepSpec& spec, const SweepRunOptions& o)
     for (const SweepPoint& point : spec.points) {
       Json request = request_of(spec, trace.summary["request"], point);
       PointRun p;
-      p.id = w.name + "-" + hash_text(request.dump()).substr(0, 10);
+      p.id = w.name + "-" + text_hash(request.dump()).substr(0, 10);
       p.workload = w.name;
       p.dir = o.output + "/points/" + p.id;
       p.point = &point;

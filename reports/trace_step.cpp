@@ -31,7 +31,7 @@ Json request_json(const TraceRequest& r) {
   j["workload"] = file ? fs::absolute(r.workload).lexically_normal().string() : r.workload;
   if (file) {
     std::string text = read_text(r.workload);
-    j["spec_hash"] = fmt::format("{:016x}", fnv1a64(text.data(), text.size()));
+    j["spec_hash"] = text_hash(text);
   }
   j["resolution"] = r.resolution;
   j["frames"] = r.frames;
@@ -85,7 +85,6 @@ TraceOutcome read_trace_dir(const std::string& dir) {
   out.stream = dir + "/rays.rays";
   if (!fs::exists(out.stream)) throw_input_error(out.stream, "", "missing");
   if (fs::exists(dir + "/preview.png")) out.preview = dir + "/preview.png";
-  out.reused = true;
   return out;
 }
 
@@ -123,7 +122,7 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
                result.summary.workload, result.summary.total_rays(), request.workload,
                result.summary.scene_source, result.summary.triangles, result.summary.width,
                result.summary.height, result.summary.frames, dir);
-  TraceOutcome out{dir, options.output, options.preview, summary, false};
+  TraceOutcome out{dir, options.output, options.preview, summary};
   return out;
 }
 

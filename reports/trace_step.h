@@ -27,7 +27,6 @@ struct TraceRequest {
 struct TraceOutcome {
   std::string dir, stream, preview;  // preview: "" if none was written
   nlohmann::ordered_json summary;    // trace.json
-  bool reused = false;
 };
 
 constexpr const char* kTraceSchema = "rtsim.trace/1";

@@ -1,6 +1,7 @@
 #include "traces/hash.h"
 
 #include <array>
+#include <cstdio>
 
 namespace rtsim {
 namespace {
@@ -32,6 +33,16 @@ uint64_t fnv1a64(const void* data, size_t size, uint64_t hash) {
     hash *= 0x100000001b3ull;
   }
   return hash;
+}
+
+std::string hex64(uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+std::string text_hash(std::string_view text) {
+  return hex64(fnv1a64(text.data(), text.size()));
 }
 
 }  // namespace rtsim

@@ -13,7 +13,11 @@ inline double clock_seconds(clockid_t clock) {
   return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
 
-inline double cpu_seconds() { return clock_seconds(CLOCK_PROCESS_CPUTIME_ID); }
-inline double wall_seconds() { return clock_seconds(CLOCK_MONOTONIC); }
+inline double cpu_seconds() {
+  return clock_seconds(CLOCK_PROCESS_CPUTIME_ID);
+}
+inline double wall_seconds() {
+  return clock_seconds(CLOCK_MONOTONIC);
+}
 
 }  // namespace rtsim

@@ -25,8 +25,7 @@ Estimate estimate_from(const nlohmann::json& j) {
 
 }  // namespace
 
-HostTimer::HostTimer()
-    : wall_(wall_seconds()), cpu_(rtsim::cpu_seconds()) {}
+HostTimer::HostTimer() : wall_(wall_seconds()), cpu_(rtsim::cpu_seconds()) {}
 
 void HostTimer::stop(FidelityResult& result) const {
   result.host_seconds = wall_seconds() - wall_;

@@ -23,12 +23,12 @@ struct DeviceTask {
 struct DeviceResult {
   uint64_t rays = 0, cycles = 0;  // cycles: when the last ray retired
   double time_ns = 0;             // cycles / clock
-  std::vector<float> cost;  // per position of the region: the slot cycles of its rays, summed
+  std::vector<float> cost;        // per position of the region: the slot cycles of its rays, summed
   std::array<double, kRayTypeCount> type_rays{}, type_cycles{};  // rays and their slot cycles
 };
 
 class DeviceBackend {
-public:
+ public:
   virtual ~DeviceBackend() = default;
   // Simulates every task alone on its hardware; results in task order. A task without rays
   // takes no time.

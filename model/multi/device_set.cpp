@@ -89,8 +89,8 @@ void read_devices(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
         r, table, prefix, ctx,
         "hardware config of these devices, relative to this file (empty: built-in defaults)",
         "hardware key=value overrides, as rtsim sim --set takes them");
-    auto count = uint32_t(r.integer("count", 1, "devices", "identical devices of this hardware",
-                                    1, 1024));
+    auto count =
+        uint32_t(r.integer("count", 1, "devices", "identical devices of this hardware", 1, 1024));
     if (!table) break;
     check_element_keys(*table, prefix, ctx);
     for (uint32_t k = 0; k < count; ++k) s.devices.push_back(h);
@@ -108,19 +108,19 @@ void read_changes(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
     const toml::table* table = i < elements ? array->get(i)->as_table() : nullptr;
     ConfigReader r(table, prefix, ctx);
     DeviceChange c;
-    c.frame = uint32_t(r.integer("frame", 1, "frame", "first frame with the new hardware", 0,
-                                 1u << 30));
-    c.device = uint32_t(r.integer("device", 0, "index", "which device changes (0: primary)", 0,
-                                  1023));
-    c.hardware = read_hardware(
-        r, table, prefix, ctx,
-        "the device's hardware config from this frame on (empty: the device's own)",
-        "overrides added to the device's own from this frame on (empty: none)");
+    c.frame =
+        uint32_t(r.integer("frame", 1, "frame", "first frame with the new hardware", 0, 1u << 30));
+    c.device =
+        uint32_t(r.integer("device", 0, "index", "which device changes (0: primary)", 0, 1023));
+    c.hardware =
+        read_hardware(r, table, prefix, ctx,
+                      "the device's hardware config from this frame on (empty: the device's own)",
+                      "overrides added to the device's own from this frame on (empty: none)");
     if (!table) break;
     check_element_keys(*table, prefix, ctx);
     if (c.device >= s.devices.size() && !s.devices.empty())
-      r.fail("device", fmt::format("device {} does not exist ({} devices)", c.device,
-                                   s.devices.size()));
+      r.fail("device",
+             fmt::format("device {} does not exist ({} devices)", c.device, s.devices.size()));
     s.changes.push_back(c);
   }
   std::stable_sort(s.changes.begin(), s.changes.end(),
@@ -145,28 +145,27 @@ void read_single_keys(ConfigReader& r, const toml::table* root, DeviceSet& s,
 
   ConfigReader flow = r.section("flow");
   FlowConfig& f = s.flow;
-  f.raygen_ns_per_pixel = flow.real("raygen_ns_per_pixel", f.raygen_ns_per_pixel, "ns",
-                                    "G-buffer and ray generation on the primary, per pixel", 0,
-                                    1e6);
+  f.raygen_ns_per_pixel =
+      flow.real("raygen_ns_per_pixel", f.raygen_ns_per_pixel, "ns",
+                "G-buffer and ray generation on the primary, per pixel", 0, 1e6);
   f.filter_ns_per_pixel = flow.real("filter_ns_per_pixel", f.filter_ns_per_pixel, "ns",
                                     "filtering of the results on the primary, per pixel", 0, 1e6);
-  f.input_bytes_per_pixel = flow.real("input_bytes_per_pixel", f.input_bytes_per_pixel, "bytes",
-                                      "G-buffer data copied to a device per pixel of its region",
-                                      0, 1e6);
+  f.input_bytes_per_pixel =
+      flow.real("input_bytes_per_pixel", f.input_bytes_per_pixel, "bytes",
+                "G-buffer data copied to a device per pixel of its region", 0, 1e6);
   f.bytes_per_sample = flow.real("bytes_per_sample", f.bytes_per_sample, "bytes",
                                  "copied per camera sample of a region (its position)", 0, 1e6);
   f.bytes_per_ray = flow.real("bytes_per_ray", f.bytes_per_ray, "bytes",
                               "copied per ray of a region, if rays are shipped", 0, 1e6);
-  f.output_bytes_per_pixel = flow.real("output_bytes_per_pixel", f.output_bytes_per_pixel,
-                                       "bytes", "tracing results copied back per pixel", 0, 1e6);
+  f.output_bytes_per_pixel = flow.real("output_bytes_per_pixel", f.output_bytes_per_pixel, "bytes",
+                                       "tracing results copied back per pixel", 0, 1e6);
 
   ConfigReader split = r.section("split");
   std::vector<std::string> names;
   for (SplitStrategy st : s.strategies) names.push_back(strategy_name(st));
   const toml::node* split_node = root ? root->get("split") : nullptr;
-  names = read_strings(split_node ? split_node->as_table() : nullptr, "split", "strategies",
-                       names, "strategies compared side by side: static, balanced, cost, current",
-                       ctx);
+  names = read_strings(split_node ? split_node->as_table() : nullptr, "split", "strategies", names,
+                       "strategies compared side by side: static, balanced, cost, current", ctx);
   s.strategies.clear();
   for (const std::string& n : names) {
     auto st = strategy_from_name(n);
@@ -177,10 +176,11 @@ void read_single_keys(ConfigReader& r, const toml::table* root, DeviceSet& s,
       s.strategies.push_back(*st);
   }
   if (s.strategies.empty()) split.fail("strategies", "names no strategy");
-  std::string order = split.text("order", scan_order_name(s.order),
-                                 "regions run along rows (horizontal strips) or columns",
-                                 {"rows", "columns"});
-  s.order = order == "columns" ? ScanOrder::Columns : ScanOrder::Rows;
+  std::string order = split.text(
+      "order", scan_order_name(s.order),
+      "regions run along rows (horizontal strips), columns, or interleaved rows (17 apart)",
+      {"rows", "columns", "interleaved"});
+  s.order = scan_order_from_name(order).value_or(ScanOrder::Rows);
 
   s.settle_pct = r.section("report").real(
       "settle_pct", s.settle_pct, "%",
@@ -224,8 +224,8 @@ nlohmann::ordered_json device_set_json(const DeviceSet& s) {
   j["description"] = s.description;
   j["file"] = s.file;
   const LinkConfig& l = s.flow.link;
-  j["link"] = {{"bandwidth_gbps", l.bandwidth_gbps}, {"latency_us", l.latency_us},
-               {"shared", l.shared}};
+  j["link"] = {
+      {"bandwidth_gbps", l.bandwidth_gbps}, {"latency_us", l.latency_us}, {"shared", l.shared}};
   const FlowConfig& f = s.flow;
   j["flow"] = {{"raygen_ns_per_pixel", f.raygen_ns_per_pixel},
                {"filter_ns_per_pixel", f.filter_ns_per_pixel},
@@ -242,8 +242,10 @@ nlohmann::ordered_json device_set_json(const DeviceSet& s) {
     j["device"].push_back({{"config", d.config}, {"set", d.sets}});
   j["change"] = nlohmann::ordered_json::array();
   for (const DeviceChange& c : s.changes)
-    j["change"].push_back({{"frame", c.frame}, {"device", c.device},
-                           {"config", c.hardware.config}, {"set", c.hardware.sets}});
+    j["change"].push_back({{"frame", c.frame},
+                           {"device", c.device},
+                           {"config", c.hardware.config},
+                           {"set", c.hardware.sets}});
   return j;
 }
 
@@ -253,8 +255,10 @@ DeviceConfigs::DeviceConfigs(const DeviceSet& set, const std::vector<std::string
   if (base_.empty()) throw_input_error(file, "", "no devices: give [[device]] or --devices");
   for (const DeviceChange& c : changes_)
     if (c.device >= devices())
-      throw_input_error(file, "", fmt::format("a change at frame {} names device {}, but there "
-                                              "are {} devices", c.frame, c.device, devices()));
+      throw_input_error(file, "",
+                        fmt::format("a change at frame {} names device {}, but there "
+                                    "are {} devices",
+                                    c.frame, c.device, devices()));
   for (uint32_t d = 0; d < devices(); ++d) index(d, 0);  // bad configs fail before any work
   for (const DeviceChange& c : changes_) index(c.device, c.frame);
 }
@@ -270,8 +274,8 @@ uint32_t DeviceConfigs::index(uint32_t device, uint32_t frame) {
     h.sets.insert(h.sets.end(), sets.begin(), sets.end());
   }
   h.sets.insert(h.sets.end(), hw_overrides_.begin(), hw_overrides_.end());
-  std::string label = h.config.empty() ? "(defaults)"
-                                       : std::filesystem::path(h.config).stem().string();
+  std::string label =
+      h.config.empty() ? "(defaults)" : std::filesystem::path(h.config).stem().string();
   for (const std::string& s : h.sets) label += " " + s;
   std::string key = h.config + "\n" + label;
   auto it = known_.find(key);

@@ -62,7 +62,7 @@ nlohmann::ordered_json device_set_json(const DeviceSet& set);
 
 // The hardware of every device in every frame, each distinct config loaded once.
 class DeviceConfigs {
-public:
+ public:
   // hw_overrides apply to every device (after its own sets). Throws InputError for a config
   // that does not load.
   DeviceConfigs(const DeviceSet& set, const std::vector<std::string>& hw_overrides = {});
@@ -73,7 +73,7 @@ public:
   // The hardware description that index() resolved, for reports.
   const std::vector<std::string>& labels() const { return labels_; }
 
-private:
+ private:
   std::vector<DeviceHardware> base_;
   std::vector<DeviceChange> changes_;
   std::vector<std::string> hw_overrides_;

@@ -21,13 +21,13 @@ bool FrameReader::next(FrameRays& out) {
       break;
     }
     if (ray.frame >= header.frame_count)
-      throw_input_error(reader_.path(), fmt::format("ray {}", reader_.rays_read() - 1),
-                        fmt::format("frame {} is beyond the header's {} frames", ray.frame,
-                                    header.frame_count));
+      throw_input_error(
+          reader_.path(), fmt::format("ray {}", reader_.rays_read() - 1),
+          fmt::format("frame {} is beyond the header's {} frames", ray.frame, header.frame_count));
     if (ray.frame < frame_)
-      throw_input_error(reader_.path(), fmt::format("ray {}", reader_.rays_read() - 1),
-                        fmt::format("frame {} after frame {}: rays are not in frame order",
-                                    ray.frame, frame_));
+      throw_input_error(
+          reader_.path(), fmt::format("ray {}", reader_.rays_read() - 1),
+          fmt::format("frame {} after frame {}: rays are not in frame order", ray.frame, frame_));
     if (ray.frame > frame_) {
       pending_ = ray;
       break;

@@ -17,12 +17,12 @@ struct FrameRays {
 };
 
 class FrameReader {
-public:
+ public:
   explicit FrameReader(RayStreamReader& reader) : reader_(reader) {}
   // The next frame; false after the last.
   bool next(FrameRays& out);
 
-private:
+ private:
   RayStreamReader& reader_;
   uint32_t frame_ = 0;
   std::optional<Ray> pending_;  // the first ray of the next frame, read ahead

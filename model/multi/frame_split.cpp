@@ -9,17 +9,63 @@
 namespace rtsim::multi {
 
 const char* scan_order_name(ScanOrder order) {
-  return order == ScanOrder::Rows ? "rows" : "columns";
+  switch (order) {
+    case ScanOrder::Rows: return "rows";
+    case ScanOrder::Columns: return "columns";
+    case ScanOrder::Interleaved: return "interleaved";
+  }
+  return "?";
 }
 
+std::optional<ScanOrder> scan_order_from_name(const std::string& name) {
+  for (ScanOrder o : {ScanOrder::Rows, ScanOrder::Columns, ScanOrder::Interleaved})
+    if (name == scan_order_name(o)) return o;
+  return std::nullopt;
+}
+
+namespace {
+
+// Interleaved rows: row y is in class y % S, and classes come one after another, each in
+// increasing y. Classes below H % S hold one row more than the others.
+uint32_t interleaved_rank(uint32_t y, uint32_t height) {
+  uint32_t c = y % kInterleaveStride, q = height / kInterleaveStride;
+  uint32_t r = height % kInterleaveStride;
+  return c * q + std::min(c, r) + y / kInterleaveStride;
+}
+
+uint32_t interleaved_row(uint32_t rank, uint32_t height) {
+  uint32_t q = height / kInterleaveStride, r = height % kInterleaveStride;
+  uint32_t c, i;
+  if (rank < r * (q + 1)) {
+    c = rank / (q + 1);
+    i = rank % (q + 1);
+  } else {
+    c = r + (rank - r * (q + 1)) / q;
+    i = (rank - r * (q + 1)) % q;
+  }
+  return c + i * kInterleaveStride;
+}
+
+}  // namespace
+
 uint32_t ScreenLayout::position_of(uint32_t pixel) const {
-  if (order == ScanOrder::Rows) return pixel;
-  return (pixel % width) * height + pixel / width;
+  switch (order) {
+    case ScanOrder::Rows: return pixel;
+    case ScanOrder::Columns: return (pixel % width) * height + pixel / width;
+    case ScanOrder::Interleaved:
+      return interleaved_rank(pixel / width, height) * width + pixel % width;
+  }
+  return pixel;
 }
 
 uint32_t ScreenLayout::pixel_at(uint32_t position) const {
-  if (order == ScanOrder::Rows) return position;
-  return (position % height) * width + position / height;
+  switch (order) {
+    case ScanOrder::Rows: return position;
+    case ScanOrder::Columns: return (position % height) * width + position / height;
+    case ScanOrder::Interleaved:
+      return interleaved_row(position / width, height) * width + position % width;
+  }
+  return position;
 }
 
 Split equal_area_split(uint32_t positions, uint32_t devices) {
@@ -77,8 +123,7 @@ std::string split_problem(const Split& split, uint32_t positions) {
   uint32_t next = 0;
   for (size_t i = 0; i < split.size(); ++i) {
     const Region& r = split[i];
-    if (r.begin != next)
-      return fmt::format("region {} starts at {}, not at {}", i, r.begin, next);
+    if (r.begin != next) return fmt::format("region {} starts at {}, not at {}", i, r.begin, next);
     if (r.end < r.begin) return fmt::format("region {} ends before it starts", i);
     next = r.end;
   }

@@ -7,13 +7,21 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace rtsim::multi {
 
-enum class ScanOrder { Rows, Columns };
-const char* scan_order_name(ScanOrder order);
+// Rows: pixel index order. Columns: column by column. Interleaved: row by row, but the rows
+// taken kInterleaveStride apart (0, 17, 34, ..., then 1, 18, ...), so that any run of
+// positions longer than a few rows holds rows from the whole height of the image (as 3dfx's
+// scan-line interleave did): a region is then a sample of the frame, not a strip of it. The
+// stride is odd so that work on power-of-two grids (tiles, surfel spawns) spreads over it.
+enum class ScanOrder { Rows, Columns, Interleaved };
+constexpr uint32_t kInterleaveStride = 17;
+const char* scan_order_name(ScanOrder order);  // rows, columns, interleaved
+std::optional<ScanOrder> scan_order_from_name(const std::string& name);
 
 // The pixel grid and the order in which regions run over it. A "position" is a pixel's index
 // in scan order; rays name pixels as y * width + x.

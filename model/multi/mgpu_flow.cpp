@@ -44,9 +44,8 @@ FrameTiming time_frame(const FlowConfig& flow, uint64_t image_pixels,
   // Results come back in the order the devices finish.
   std::vector<size_t> order(devices.size());
   std::iota(order.begin(), order.end(), size_t(0));
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return f.devices[a].end_ns < f.devices[b].end_ns;
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return f.devices[a].end_ns < f.devices[b].end_ns; });
   for (size_t i : order) {
     if (i == 0) continue;
     DeviceTiming& t = f.devices[i];

@@ -19,12 +19,12 @@ struct LinkConfig {
 };
 
 struct FlowConfig {
-  double raygen_ns_per_pixel = 0.5;     // ns: G-buffer and ray generation on the primary
-  double filter_ns_per_pixel = 1.0;     // ns: filtering (denoising) on the primary
-  double input_bytes_per_pixel = 32.0;  // bytes: G-buffer of a sub-region sent to its device
-  double bytes_per_sample = 8.0;        // bytes: position of each irregular sample sent
-  double bytes_per_ray = 0.0;           // bytes: per ray sent, if rays are shipped themselves
-  double output_bytes_per_pixel = 16.0; // bytes: tracing results per pixel copied back
+  double raygen_ns_per_pixel = 0.5;      // ns: G-buffer and ray generation on the primary
+  double filter_ns_per_pixel = 1.0;      // ns: filtering (denoising) on the primary
+  double input_bytes_per_pixel = 32.0;   // bytes: G-buffer of a sub-region sent to its device
+  double bytes_per_sample = 8.0;         // bytes: position of each irregular sample sent
+  double bytes_per_ray = 0.0;            // bytes: per ray sent, if rays are shipped themselves
+  double output_bytes_per_pixel = 16.0;  // bytes: tracing results per pixel copied back
   LinkConfig link;
 };
 
@@ -46,7 +46,7 @@ struct DeviceTiming {
 struct FrameTiming {
   double raygen_ns = 0, filter_ns = 0, frame_ns = 0;
   std::vector<DeviceTiming> devices;
-  double copy_ns = 0;           // time the link(s) spent copying, summed
+  double copy_ns = 0;  // time the link(s) spent copying, summed
   uint64_t copy_bytes = 0;
   double copy_overhead_ns = 0;  // frame_ns - (raygen + longest trace + filter)
 };

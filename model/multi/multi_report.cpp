@@ -31,14 +31,22 @@ nlohmann::ordered_json frame_json(const FrameRecord& r) {
   nlohmann::ordered_json devices = nlohmann::ordered_json::array();
   for (const DeviceFrame& d : r.devices) {
     const DeviceTiming& t = d.timing;
-    devices.push_back({{"hardware", d.hardware},     {"region", {d.region.begin, d.region.end}},
-                       {"pixels", d.pixels},         {"samples", d.samples},
-                       {"rays", d.rays},             {"cycles", d.cycles},
-                       {"cost", d.cost},             {"start_ns", t.start_ns},
-                       {"trace_ns", t.trace_ns},     {"end_ns", t.end_ns},
-                       {"copy_in_ns", t.copy_in_ns}, {"copy_out_ns", t.copy_out_ns},
-                       {"bytes_in", t.bytes_in},     {"bytes_out", t.bytes_out},
-                       {"busy_ns", t.busy_ns},       {"idle_ns", t.idle_ns}});
+    devices.push_back({{"hardware", d.hardware},
+                       {"region", {d.region.begin, d.region.end}},
+                       {"pixels", d.pixels},
+                       {"samples", d.samples},
+                       {"rays", d.rays},
+                       {"cycles", d.cycles},
+                       {"cost", d.cost},
+                       {"start_ns", t.start_ns},
+                       {"trace_ns", t.trace_ns},
+                       {"end_ns", t.end_ns},
+                       {"copy_in_ns", t.copy_in_ns},
+                       {"copy_out_ns", t.copy_out_ns},
+                       {"bytes_in", t.bytes_in},
+                       {"bytes_out", t.bytes_out},
+                       {"busy_ns", t.busy_ns},
+                       {"idle_ns", t.idle_ns}});
   }
   const FrameTiming& t = r.timing;
   return {{"frame", r.frame},
@@ -113,12 +121,12 @@ std::string devices_csv(const MultiRunResult& result) {
       for (size_t d = 0; d < r.devices.size(); ++d) {
         const DeviceFrame& x = r.devices[d];
         const DeviceTiming& t = x.timing;
-        out += fmt::format("{},{},{},{},{},{},{},{},{},{},{:.0f},{:.1f},{:.1f},{:.1f},{:.1f},"
-                           "{:.1f},{:.1f}\n",
-                           strategy_name(run.strategy), r.frame, d, x.hardware, x.region.begin,
-                           x.region.end, x.pixels, x.samples, x.rays, x.cycles, x.cost,
-                           t.start_ns, t.trace_ns, t.end_ns, t.copy_in_ns, t.copy_out_ns,
-                           t.idle_ns);
+        out += fmt::format(
+            "{},{},{},{},{},{},{},{},{},{},{:.0f},{:.1f},{:.1f},{:.1f},{:.1f},"
+            "{:.1f},{:.1f}\n",
+            strategy_name(run.strategy), r.frame, d, x.hardware, x.region.begin, x.region.end,
+            x.pixels, x.samples, x.rays, x.cycles, x.cost, t.start_ns, t.trace_ns, t.end_ns,
+            t.copy_in_ns, t.copy_out_ns, t.idle_ns);
       }
   return out;
 }

@@ -37,8 +37,8 @@ std::string changes_text(const ReportInput& in) {
   for (const DeviceChange& c : in.set->changes) {
     std::string what = c.hardware.config.empty() ? "" : c.hardware.config;
     for (const std::string& s : c.hardware.sets) what += (what.empty() ? "" : " ") + s;
-    text += fmt::format("{}frame {}: device {} -> {}", text.empty() ? "" : "; ", c.frame,
-                        c.device, what);
+    text += fmt::format("{}frame {}: device {} -> {}", text.empty() ? "" : "; ", c.frame, c.device,
+                        what);
   }
   return text;
 }
@@ -48,8 +48,8 @@ std::string changes_text(const ReportInput& in) {
 std::string format_multi_summary(const ReportInput& in) {
   const MultiRunResult& r = *in.result;
   uint32_t frames = uint32_t(r.single_trace_ns.size());
-  std::string out = fmt::format("devices    {} ({}); device 0 is the primary\n", r.devices,
-                                hardware_text(in));
+  std::string out =
+      fmt::format("devices    {} ({}); device 0 is the primary\n", r.devices, hardware_text(in));
   if (!in.set->changes.empty()) out += fmt::format("changes    {}\n", changes_text(in));
   out += fmt::format("frames     {} of {}, {}x{}, {} rays; regions along {}\n", frames,
                      in.header.workload, r.layout.width, r.layout.height, r.rays,
@@ -58,43 +58,47 @@ std::string format_multi_summary(const ReportInput& in) {
                      "avg max dev", "worst", "speed-up", "frame us", "1-dev us", "copy ovh",
                      "idle % per device", "settled (frame:frames)");
   for (const StrategySummary& s : in.summaries)
-    out += fmt::format("{:<10} {:>10.2f}% {:>7.2f}% {:>8.2f}x {:>10.1f} {:>10.1f} {:>8.1f}%  "
-                       "{:<20} {}\n",
-                       strategy_name(s.strategy), s.avg_max_dev_pct, s.worst_max_dev_pct,
-                       s.avg_speedup, s.avg_frame_ns / 1000, s.avg_single_ns / 1000,
-                       s.avg_copy_overhead_pct, idle_text(s), settle_text(s));
-  out += fmt::format("           max dev: of the devices' tracing times from their mean, "
-                     "averaged over frames {}; settled: at or below {}%\n",
-                     frames > 1 ? fmt::format("1..{} (frame 0 is split by area)", frames - 1)
-                                : std::string("0"),
-                     in.set->settle_pct);
+    out += fmt::format(
+        "{:<10} {:>10.2f}% {:>7.2f}% {:>8.2f}x {:>10.1f} {:>10.1f} {:>8.1f}%  "
+        "{:<20} {}\n",
+        strategy_name(s.strategy), s.avg_max_dev_pct, s.worst_max_dev_pct, s.avg_speedup,
+        s.avg_frame_ns / 1000, s.avg_single_ns / 1000, s.avg_copy_overhead_pct, idle_text(s),
+        settle_text(s));
+  out += fmt::format(
+      "           max dev: of the devices' tracing times from their mean, "
+      "averaged over frames {}; settled: at or below {}%\n",
+      frames > 1 ? fmt::format("1..{} (frame 0 is split by area)", frames - 1) : std::string("0"),
+      in.set->settle_pct);
   return out;
 }
 
 std::string multi_report_markdown(const ReportInput& in, bool with_chart) {
   const MultiRunResult& r = *in.result;
   std::string md = fmt::format("# Multi-device frames: {}\n\n", in.header.workload);
-  md += fmt::format("Stream `{}` ({}, {}x{}), {} frames, {} rays. Device set `{}`{}: {} devices "
-                    "({}); device 0 is the primary. Regions run along {}.\n\n",
-                    in.stream, in.header.scene_source, r.layout.width, r.layout.height,
-                    r.single_trace_ns.size(), r.rays, in.set->name,
-                    in.set->file.empty() ? "" : " (" + in.set->file + ")", r.devices,
-                    hardware_text(in), scan_order_name(r.layout.order));
+  md += fmt::format(
+      "Stream `{}` ({}, {}x{}), {} frames, {} rays. Device set `{}`{}: {} devices "
+      "({}); device 0 is the primary. Regions run along {}.\n\n",
+      in.stream, in.header.scene_source, r.layout.width, r.layout.height, r.single_trace_ns.size(),
+      r.rays, in.set->name, in.set->file.empty() ? "" : " (" + in.set->file + ")", r.devices,
+      hardware_text(in), scan_order_name(r.layout.order));
   if (!in.set->changes.empty()) md += fmt::format("Hardware changes: {}.\n\n", changes_text(in));
-  md += "## Summary\n\n| strategy | avg max deviation | worst | speed-up vs 1 device | frame (us) "
-        "| 1 device (us) | copy overhead | idle % per device | settled (frame:frames) |\n"
-        "|---|---:|---:|---:|---:|---:|---:|---|---|\n";
+  md +=
+      "## Summary\n\n| strategy | avg max deviation | worst | speed-up vs 1 device | frame (us) "
+      "| 1 device (us) | copy overhead | idle % per device | settled (frame:frames) |\n"
+      "|---|---:|---:|---:|---:|---:|---:|---|---|\n";
   for (const StrategySummary& s : in.summaries)
-    md += fmt::format("| {} | {:.2f}% | {:.2f}% | {:.2f}x | {:.1f} | {:.1f} | {:.1f}% | {} | {} "
-                      "|\n",
-                      strategy_name(s.strategy), s.avg_max_dev_pct, s.worst_max_dev_pct,
-                      s.avg_speedup, s.avg_frame_ns / 1000, s.avg_single_ns / 1000,
-                      s.avg_copy_overhead_pct, idle_text(s), settle_text(s));
-  md += fmt::format("\nMax deviation: max over devices of |tracing time - mean| / mean, averaged "
-                    "over frames after the first (frame 0 has no previous frame; every strategy "
-                    "splits it by area). Settled: frames after the start or a change until the "
-                    "deviation stays at or below {}%.\n\n",
-                    in.set->settle_pct);
+    md += fmt::format(
+        "| {} | {:.2f}% | {:.2f}% | {:.2f}x | {:.1f} | {:.1f} | {:.1f}% | {} | {} "
+        "|\n",
+        strategy_name(s.strategy), s.avg_max_dev_pct, s.worst_max_dev_pct, s.avg_speedup,
+        s.avg_frame_ns / 1000, s.avg_single_ns / 1000, s.avg_copy_overhead_pct, idle_text(s),
+        settle_text(s));
+  md += fmt::format(
+      "\nMax deviation: max over devices of |tracing time - mean| / mean, averaged "
+      "over frames after the first (frame 0 has no previous frame; every strategy "
+      "splits it by area). Settled: frames after the start or a change until the "
+      "deviation stays at or below {}%.\n\n",
+      in.set->settle_pct);
   if (with_chart) md += "![per-frame figures](chart.png)\n\n";
   md += "## Per frame\n\n| frame |";
   std::string rule = "|---:|";
@@ -122,8 +126,7 @@ std::string multi_report_markdown(const ReportInput& in, bool with_chart) {
     for (const FrameRecord& x : run.frames) {
       md += fmt::format("| {} |", x.frame);
       for (const DeviceFrame& d : x.devices)
-        md += fmt::format(" {:.1f} / {:.1f} |", d.timing.trace_ns / 1000,
-                          d.timing.idle_ns / 1000);
+        md += fmt::format(" {:.1f} / {:.1f} |", d.timing.trace_ns / 1000, d.timing.idle_ns / 1000);
       md += fmt::format(" {:.1f} |\n", x.timing.frame_ns / 1000);
     }
   }

@@ -142,8 +142,8 @@ MultiRunResult run_multi_device(RayStreamReader& reader, const DeviceSet& set,
       record.frame = frame.frame;
       FrameFeedback feedback;
       size_t first = 1 + s * result.devices;
-      account(set, located, splits[s], hardware, &tasks[first], &results[first],
-              results[0].time_ns, record, feedback);
+      account(set, located, splits[s], hardware, &tasks[first], &results[first], results[0].time_ns,
+              record, feedback);
       policies[s]->observe(feedback);
       result.runs[s].frames.push_back(std::move(record));
     }

@@ -43,13 +43,13 @@ struct StrategyRun {
 struct MultiRunResult {
   ScreenLayout layout;
   uint32_t devices = 0;
-  uint64_t rays = 0, outside = 0;  // outside: rays whose pixel is not in the image
+  uint64_t rays = 0, outside = 0;       // outside: rays whose pixel is not in the image
   std::vector<double> single_trace_ns;  // per frame, the primary's hardware alone
   std::vector<StrategyRun> runs;        // in the set's strategy order
 };
 
 struct MultiRunOptions {
-  uint32_t max_frames = 0;  // 0: every frame of the stream
+  uint32_t max_frames = 0;                                        // 0: every frame of the stream
   std::function<void(uint32_t frame, uint32_t frames)> progress;  // before each frame
 };
 

@@ -5,12 +5,13 @@
 namespace rtsim::multi {
 namespace {
 
-double mean(double sum, size_t count) { return count ? sum / double(count) : 0.0; }
+double mean(double sum, size_t count) {
+  return count ? sum / double(count) : 0.0;
+}
 
 // Frames from `begin` until the deviation stays <= limit up to `end` (exclusive); -1 if the
 // last frame before `end` is still above.
-int settle_frames(const std::vector<FrameRecord>& frames, size_t begin, size_t end,
-                  double limit) {
+int settle_frames(const std::vector<FrameRecord>& frames, size_t begin, size_t end, double limit) {
   size_t settled = end;
   for (size_t f = end; f-- > begin;) {
     if (frames[f].max_deviation_pct > limit) break;
@@ -63,8 +64,8 @@ StrategySummary summarize(const StrategyRun& run, uint32_t devices,
       if (frames[f].frame == c && starts.back() != f) starts.push_back(f);
   for (size_t i = 0; i < starts.size(); ++i) {
     size_t end = i + 1 < starts.size() ? starts[i + 1] : n;
-    s.settle.push_back({frames[starts[i]].frame, settle_frames(frames, starts[i], end,
-                                                               settle_pct)});
+    s.settle.push_back(
+        {frames[starts[i]].frame, settle_frames(frames, starts[i], end, settle_pct)});
   }
   return s;
 }

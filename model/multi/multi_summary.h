@@ -14,7 +14,7 @@
 namespace rtsim::multi {
 
 struct SettleRecord {
-  uint32_t frame = 0;    // the start (0) or a change of hardware
+  uint32_t frame = 0;      // the start (0) or a change of hardware
   int settle_frames = -1;  // frames until the deviation stays <= settle_pct; -1: it never does
 };
 

@@ -17,7 +17,7 @@
 namespace rtsim::multi {
 
 class SlotCostListener : public RayRetireListener {
-public:
+ public:
   // pixels: the image's pixel count; rays outside it are costed by type only.
   SlotCostListener(const HwConfig& config, uint32_t pixels);
   void retired(const RayContext& ray, Cycle now) override;
@@ -28,7 +28,7 @@ public:
   const std::array<double, kRayTypeCount>& type_rays() const { return type_rays_; }
   const std::array<double, kRayTypeCount>& type_cost() const { return type_cost_; }
 
-private:
+ private:
   struct Warp {
     Cycle first_dispatch = 0, last_retire = 0;
     std::vector<std::pair<uint32_t, RayType>> rays;  // pixel and type of each ray in it

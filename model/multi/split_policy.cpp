@@ -22,7 +22,9 @@ std::optional<SplitStrategy> strategy_from_name(const std::string& name) {
   return std::nullopt;
 }
 
-std::vector<std::string> strategy_names() { return {"static", "balanced", "cost", "current"}; }
+std::vector<std::string> strategy_names() {
+  return {"static", "balanced", "cost", "current"};
+}
 
 std::unique_ptr<SplitPolicy> make_split_policy(SplitStrategy strategy, uint32_t devices,
                                                uint32_t positions) {

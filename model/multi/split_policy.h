@@ -58,7 +58,7 @@ struct FrameFeedback {
 };
 
 class SplitPolicy {
-public:
+ public:
   virtual ~SplitPolicy() = default;
   // The split of the next frame: one region per device, covering every position once.
   virtual Split next_split(const FramePreview& next) const = 0;

@@ -86,14 +86,12 @@ std::vector<DeviceResult> SystemCBackend::run(const std::vector<DeviceTask>& tas
     const DeviceTask& task = tasks[i];
     if (!task.config) throw std::invalid_argument("SystemCBackend: a task without hardware");
     const BvhImage& image = image_for(*task.config);
-    work.push_back([&task, &image, &layout] {
-      return simulate(*task.config, image, task, layout);
-    });
+    work.push_back(
+        [&task, &image, &layout] { return simulate(*task.config, image, task, layout); });
     if (!task.rays.empty()) busy.push_back(i);
   }
-  std::stable_sort(busy.begin(), busy.end(), [&](size_t a, size_t b) {
-    return tasks[a].rays.size() > tasks[b].rays.size();
-  });
+  std::stable_sort(busy.begin(), busy.end(),
+                   [&](size_t a, size_t b) { return tasks[a].rays.size() > tasks[b].rays.size(); });
   std::vector<std::function<std::string()>> busy_work;
   for (size_t i : busy) busy_work.push_back(work[i]);
   std::vector<std::string> texts = run_in_children(busy_work, jobs_);

@@ -13,12 +13,12 @@
 namespace rtsim::multi {
 
 class SystemCBackend : public DeviceBackend {
-public:
+ public:
   SystemCBackend(const TriangleMesh& mesh, unsigned jobs);
   std::vector<DeviceResult> run(const std::vector<DeviceTask>& tasks,
                                 const ScreenLayout& layout) override;
 
-private:
+ private:
   const BvhImage& image_for(const HwConfig& config);
 
   const TriangleMesh& mesh_;

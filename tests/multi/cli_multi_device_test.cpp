@@ -20,16 +20,18 @@ std::string out_dir(const std::string& name) {
 
 TEST(CliMultiDevice, ThirtyFramesOfPicaOnFourDevices) {
   std::string dir = out_dir("pica");
-  test::RunResult r = test::run_rtsim("multi-device " + kSource + "/tests/multi/pica-tiny.toml "
-                                      "--devices-file " + kSource +
-                                      "/configs/multi/four-mobile.toml -j 2 --no-chart -o " + dir);
+  test::RunResult r =
+      test::run_rtsim("multi-device " + kSource +
+                      "/tests/multi/pica-tiny.toml "
+                      "--devices-file " +
+                      kSource + "/configs/multi/four-mobile.toml -j 2 --no-chart -o " + dir);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   std::printf("%s", r.out.c_str());  // the deviation figures, in the test log
   EXPECT_NE(r.out.find("avg max dev"), std::string::npos) << r.out;
   for (const char* name : {"static", "balanced", "cost", "current"})
     EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << name;
-  for (const char* file : {"report.json", "report.md", "frames.csv", "devices.csv",
-                           "workload.rays"})
+  for (const char* file :
+       {"report.json", "report.md", "frames.csv", "devices.csv", "workload.rays"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/" + file)) << file;
   auto report = nlohmann::json::parse(test::slurp(dir + "/report.json"));
   EXPECT_EQ(report["schema"], "rtsim.multi.report/1");
@@ -57,8 +59,10 @@ TEST(CliMultiDevice, ThirtyFramesOfPicaOnFourDevices) {
 
 TEST(CliMultiDevice, ChartFromTheCsvFiles) {
   std::string dir = out_dir("chart");
-  test::RunResult trace = test::run_rtsim("trace " + kSource + "/tests/multi/pica-tiny.toml "
-                                          "--frames 3 --resolution 32x18 -q -o " + dir + ".rays");
+  test::RunResult trace = test::run_rtsim("trace " + kSource +
+                                          "/tests/multi/pica-tiny.toml "
+                                          "--frames 3 --resolution 32x18 -q -o " +
+                                          dir + ".rays");
   ASSERT_EQ(trace.exit_code, 0) << trace.err;
   test::RunResult r = test::run_rtsim("multi-device " + dir + ".rays --config " + kSource +
                                       "/configs/mobile.toml --devices 2 -j 2 -q -o " + dir);

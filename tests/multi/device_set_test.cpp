@@ -71,6 +71,8 @@ TEST(DeviceSet, OverridesAndDefaults) {
                                   {"link.bandwidth_gbps=32", "split.order=columns"});
   EXPECT_EQ(set.flow.link.bandwidth_gbps, 32);
   EXPECT_EQ(set.order, ScanOrder::Columns);
+  EXPECT_EQ(load_device_set(write_set("[split]\norder = \"interleaved\"\n")).order,
+            ScanOrder::Interleaved);
   EXPECT_EQ(set.devices.size(), 2u);
   EXPECT_EQ(set.devices[0].config, "") << "built-in hardware defaults";
   EXPECT_EQ(set.flow.raygen_ns_per_pixel, FlowConfig{}.raygen_ns_per_pixel);
@@ -112,10 +114,10 @@ TEST(DeviceSet, KeysAreDocumented) {
     keys.push_back(d.key);
     EXPECT_FALSE(d.description.empty()) << d.key;
   }
-  for (const char* k : {"link.bandwidth_gbps", "link.latency_us", "link.shared",
-                        "flow.raygen_ns_per_pixel", "flow.output_bytes_per_pixel",
-                        "split.strategies", "split.order", "report.settle_pct", "device[].config",
-                        "device[].count", "device[].set", "change[].frame", "change[].device"})
+  for (const char* k :
+       {"link.bandwidth_gbps", "link.latency_us", "link.shared", "flow.raygen_ns_per_pixel",
+        "flow.output_bytes_per_pixel", "split.strategies", "split.order", "report.settle_pct",
+        "device[].config", "device[].count", "device[].set", "change[].frame", "change[].device"})
     EXPECT_NE(std::find(keys.begin(), keys.end(), k), keys.end()) << k;
 }
 

@@ -24,20 +24,38 @@ std::vector<int> pixel_owners(const Split& split, const ScreenLayout& layout) {
 }
 
 TEST(ScreenLayout, PositionsAndPixelsRoundTrip) {
-  for (ScanOrder order : {ScanOrder::Rows, ScanOrder::Columns}) {
-    ScreenLayout layout{7, 5, order};
-    std::vector<int> seen(layout.pixels(), 0);
-    for (uint32_t pixel = 0; pixel < layout.pixels(); ++pixel) {
-      uint32_t p = layout.position_of(pixel);
-      ASSERT_LT(p, layout.pixels());
-      EXPECT_EQ(layout.pixel_at(p), pixel) << scan_order_name(order);
-      ++seen[p];
+  for (ScanOrder order : {ScanOrder::Rows, ScanOrder::Columns, ScanOrder::Interleaved})
+    for (uint32_t height : {5u, 16u, 40u, 181u}) {
+      ScreenLayout layout{7, height, order};
+      std::vector<int> seen(layout.pixels(), 0);
+      for (uint32_t pixel = 0; pixel < layout.pixels(); ++pixel) {
+        uint32_t p = layout.position_of(pixel);
+        ASSERT_LT(p, layout.pixels());
+        EXPECT_EQ(layout.pixel_at(p), pixel) << scan_order_name(order) << " height " << height;
+        ++seen[p];
+      }
+      for (int s : seen) EXPECT_EQ(s, 1) << "each position is one pixel's";
     }
-    for (int s : seen) EXPECT_EQ(s, 1) << "each position is one pixel's";
-  }
   ScreenLayout columns{7, 5, ScanOrder::Columns};
   EXPECT_EQ(columns.position_of(1), 5u) << "pixel (1, 0) starts the second column";
   EXPECT_EQ(columns.position_of(7), 1u) << "pixel (0, 1) is second in the first column";
+  // 40 rows, 17 apart: 0, 17, 34, 1, 18, 35, ..., 5, 22, 39, then 6, 23, ..., 16, 33.
+  ScreenLayout interleaved{10, 40, ScanOrder::Interleaved};
+  std::vector<uint32_t> rows;
+  for (uint32_t p = 0; p < interleaved.pixels(); p += 10)
+    rows.push_back(interleaved.pixel_at(p) / 10);
+  EXPECT_EQ(std::vector<uint32_t>(rows.begin(), rows.begin() + 6),
+            (std::vector<uint32_t>{0, 17, 34, 1, 18, 35}));
+  EXPECT_EQ(rows[18], 6u) << "classes 0 to 5 hold 3 rows, the rest 2";
+  EXPECT_EQ(rows.back(), 33u);
+  Split quarter = equal_area_split(interleaved.pixels(), 4);
+  uint32_t lowest = 40, highest = 0;
+  for (uint32_t p = quarter[0].begin; p < quarter[0].end; ++p) {
+    lowest = std::min(lowest, interleaved.pixel_at(p) / 10);
+    highest = std::max(highest, interleaved.pixel_at(p) / 10);
+  }
+  EXPECT_EQ(lowest, 0u);
+  EXPECT_EQ(highest, 36u) << "the first quarter of the positions spans the whole height";
 }
 
 TEST(EqualAreaSplit, CoversEveryPixelOnceWithEqualCounts) {
@@ -101,8 +119,8 @@ TEST(SplitByCdf, IrregularCdfPutsEachShareInItsRegion) {
   // Each boundary is the nearest one on the CDF, so a region misses its share by at most one
   // pixel's weight at either end.
   for (size_t i = 0; i < split.size(); ++i) {
-    double got = std::accumulate(weights.begin() + split[i].begin,
-                                 weights.begin() + split[i].end, 0.0);
+    double got =
+        std::accumulate(weights.begin() + split[i].begin, weights.begin() + split[i].end, 0.0);
     EXPECT_NEAR(got, shares[i], heaviest) << "device " << i;
   }
 }

@@ -32,8 +32,8 @@ TEST(MgpuFlow, OneDeviceIsRaygenTraceFilter) {
 }
 
 TEST(MgpuFlow, TwoDevicesCopyInTraceCopyBackFilter) {
-  FrameTiming t = time_frame(test_flow(true), 1000, {{600, 100, 1000, 20000},
-                                                     {400, 200, 3000, 20000}});
+  FrameTiming t =
+      time_frame(test_flow(true), 1000, {{600, 100, 1000, 20000}, {400, 200, 3000, 20000}});
   // Device 1's inputs: 400 * 4 + 200 * 2 + 3000 * 1 = 5000 B -> 1000 + 500 ns after raygen.
   const DeviceTiming& d1 = t.devices[1];
   EXPECT_EQ(d1.bytes_in, 5000u);

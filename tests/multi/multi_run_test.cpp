@@ -16,7 +16,7 @@ namespace {
 const std::string kMobile = std::string(RTSIM_SOURCE_DIR) + "/configs/mobile.toml";
 
 class LinearBackend : public DeviceBackend {
-public:
+ public:
   std::vector<DeviceResult> run(const std::vector<DeviceTask>& tasks,
                                 const ScreenLayout& layout) override {
     std::vector<DeviceResult> out;
@@ -87,7 +87,7 @@ TEST(MultiRun, HeterogeneousDevicesConvergeAndSettleAfterAChange) {
   test::SyntheticFrames s;
   s.frames = 12;
   s.extra_rays = 0;  // cost follows the samples: every balancer can settle
-  DeviceSet set = mobile_set(4, {"rt.count=2"});  // the last device has half the units
+  DeviceSet set = mobile_set(4, {"rt.count=2"});            // the last device has half the units
   set.changes.push_back({6, 0, {"", {"clock.ghz=0.45"}}});  // the primary throttles at 6
   MultiRunResult r = run(test::write_synthetic_stream("hetero", s, "x", 1), set);
   EXPECT_EQ(change_frames(r), (std::vector<uint32_t>{6}));
