@@ -1,5 +1,6 @@
 #include "reports/page_util.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -108,6 +109,25 @@ std::string markdown_rows(const Json& doc, const std::vector<Row>& rows) {
   std::string out = "| | |\n|---|---|\n";
   for (const Row& r : rows)
     out += "| " + r.label + " | " + show(at_key(doc, r.key), r.style) + " |\n";
+  return out;
+}
+
+std::string text_table(const std::vector<std::vector<std::string>>& rows, bool markdown) {
+  std::vector<size_t> width;
+  for (const auto& row : rows) {
+    width.resize(std::max(width.size(), row.size()), 0);
+    for (size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
+  }
+  std::string out;
+  for (size_t n = 0; n < rows.size(); ++n) {
+    for (size_t i = 0; i < rows[n].size(); ++i)
+      out += markdown ? "| " + rows[n][i] + " " : fmt::format("{:<{}}  ", rows[n][i], width[i]);
+    out += markdown ? "|\n" : "\n";
+    if (markdown && n == 0) {
+      for (size_t i = 0; i < rows[n].size(); ++i) out += "|---";
+      out += "|\n";
+    }
+  }
   return out;
 }
 

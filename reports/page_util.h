@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -37,6 +38,10 @@ struct Row {
   Style style;
 };
 std::string html_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
+
+// A table for the terminal (columns padded to their widest cell, two spaces apart) or in
+// Markdown; the first row is the header.
+std::string text_table(const std::vector<std::vector<std::string>>& rows, bool markdown);
 std::string markdown_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
 
 }  // namespace rtsim::reports

@@ -108,16 +108,7 @@ std::string delta_table(const RegressResult& r, bool markdown) {
                     show(c.current, Style::Real), delta, fmt::format("±{:.4g}", c.allowed),
                     c.status});
   }
-  std::vector<size_t> width(rows[0].size(), 0);
-  for (const auto& row : rows)
-    for (size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
-  std::string out;
-  for (size_t n = 0; n < rows.size(); ++n) {
-    for (size_t i = 0; i < rows[n].size(); ++i)
-      out += markdown ? "| " + rows[n][i] + " " : fmt::format("{:<{}}  ", rows[n][i], width[i]);
-    out += markdown ? "|\n" : "\n";
-    if (markdown && n == 0) out += "|---|---|---|---|---|---|---|\n";
-  }
+  std::string out = text_table(rows, markdown);
   for (const std::string& f : r.case_failures)
     out += (markdown ? "\n- **FAILED** " : "FAILED  ") + f + "\n";
   return out;

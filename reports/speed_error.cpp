@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include "reports/page_util.h"
+
 namespace rtsim::reports {
 namespace {
 
@@ -141,20 +143,7 @@ std::string speed_error_table(const Json& doc, bool markdown) {
                      seeds_cell(r["seeds"]),
                      reference ? "" : (r["meets_goal"].get<bool>() ? "met" : "-")});
   }
-  std::vector<size_t> width(table[0].size(), 0);
-  for (const auto& line : table)
-    for (size_t i = 0; i < line.size(); ++i) width[i] = std::max(width[i], line[i].size());
-  std::string out;
-  for (size_t n = 0; n < table.size(); ++n) {
-    for (size_t i = 0; i < table[n].size(); ++i)
-      out += markdown ? "| " + table[n][i] + " " : fmt::format("{:<{}}  ", table[n][i], width[i]);
-    out += markdown ? "|\n" : "\n";
-    if (markdown && n == 0) {
-      for (size_t i = 0; i < table[n].size(); ++i) out += "|---";
-      out += "|\n";
-    }
-  }
-  return out;
+  return text_table(table, markdown);
 }
 
 std::string speed_error_markdown(const Json& doc) {
