@@ -34,16 +34,16 @@ inline void add_sampling_options(CLI::App& cmd, SamplingConfig& sampling,
       ->expected(1, several ? 2 : 1)
       ->capture_default_str();
   cmd.add_option("--window", sampling.window_rays,
-                 "Sampled level: rays measured per window (0: 4 x ray slots, >= 1024)")
+                 "Windows method: rays measured per window (0: 4 x ray slots, >= 1024)")
       ->capture_default_str();
   cmd.add_option("--warmup", sampling.warmup_rays,
-                 "Sampled level: rays simulated before each window (-1: the ray slots)")
+                 "Windows method: rays simulated before each window (-1: the ray slots)")
       ->capture_default_str();
   cmd.add_option("--sample-seed", sampling.seed,
                  "Sampled level: seed of the warps' phase or of the window offsets")
       ->capture_default_str();
   cmd.add_flag("!--no-warm-pass", sampling.warm_pass,
-               "Sampled level: measure without simulating the windows once first");
+               "Windows method: measure without simulating the windows once first");
 }
 
 // The methods named by --sample-method; InputError for an unknown one, or for the window
