@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <functional>
 
+#include "model/fidelity/ray_charge.h"
 #include "model/fidelity/ray_range_reader.h"
 #include "model/fidelity/stratified.h"
 #include "model/sc/rt_simulator.h"
@@ -55,7 +56,7 @@ SampledSequence build_sequence(RayRangeReader& reader, const SamplePlan& plan, b
 
 // Charges each retired ray to its window and times the windows by the retired count.
 class WindowCollector : public RayRetireListener {
-public:
+ public:
   explicit WindowCollector(SampledSequence& s) {
     for (auto* list : {&s.warm, &s.measured})
       for (WindowMeasure& w : *list) windows_.push_back(&w);
@@ -72,19 +73,10 @@ public:
     auto it = std::upper_bound(windows_.begin(), windows_.end(), ray.sequence,
                                [](uint64_t s, const WindowMeasure* w) { return s < w->first; });
     if (it == windows_.begin() || ray.sequence >= (*(it - 1))->last) return;
-    CostTotals& c = (*(it - 1))->by_type[int(ray.ray.type) % kRayTypeCount];
-    c.rays++;
-    c.nodes += ray.state.counters.trav_nodes;
-    c.triangles += ray.state.counters.trav_prims;
-    c.l1_accesses += ray.cost.l1_accesses;
-    c.l1_hits += ray.cost.l1_hits;
-    c.l2_accesses += ray.cost.l2_accesses;
-    c.l2_hits += ray.cost.l2_hits;
-    c.dram_bytes += ray.cost.dram_bytes;
-    c.latency += double(now - std::min(now, ray.dispatched));
+    charge_retired_ray((*(it - 1))->by_type, ray, now);
   }
 
-private:
+ private:
   std::vector<WindowMeasure*> windows_;  // warm then measured: sequence order
   uint64_t retired_ = 0;
   size_t mark_ = 0;
@@ -99,7 +91,9 @@ double field_sum(const WindowMeasure& w, const Field& field, int type) {
   return v;
 }
 
-double span(const WindowMeasure& w) { return double(w.end - std::min(w.end, w.begin)); }
+double span(const WindowMeasure& w) {
+  return double(w.end - std::min(w.end, w.begin));
+}
 
 // Scaled per-stratum values of the measured pass, and the warm pass's excess (cold start).
 struct Scaled {
@@ -108,7 +102,7 @@ struct Scaled {
 };
 
 class Estimator {
-public:
+ public:
   Estimator(const SamplePlan& plan, const SampledSequence& s) : s_(s) {
     for (const SampleWindow& w : plan.windows)
       scale_.push_back(double(w.stratum_end - w.stratum_begin) / double(w.end - w.begin));
@@ -131,7 +125,7 @@ public:
     return ratio_estimate(sy.strata, sx.strata, sy.excess, sx.excess);
   }
 
-private:
+ private:
   const SampledSequence& s_;
   std::vector<double> scale_;
 };

@@ -5,6 +5,7 @@
 #include <deque>
 #include <functional>
 
+#include "model/fidelity/ray_charge.h"
 #include "model/fidelity/ray_range_reader.h"
 #include "model/fidelity/systematic.h"
 #include "model/sc/rt_simulator.h"
@@ -37,16 +38,7 @@ class WarpCollector : public RayRetireListener {
     uint64_t unit = ray.sequence / unit_rays_;
     while (pending_.size() <= unit - first_) pending_.emplace_back();
     Pending& p = pending_[unit - first_];
-    CostTotals& c = p.by_type[int(ray.ray.type) % kRayTypeCount];
-    c.rays++;
-    c.nodes += ray.state.counters.trav_nodes;
-    c.triangles += ray.state.counters.trav_prims;
-    c.l1_accesses += ray.cost.l1_accesses;
-    c.l1_hits += ray.cost.l1_hits;
-    c.l2_accesses += ray.cost.l2_accesses;
-    c.l2_hits += ray.cost.l2_hits;
-    c.dram_bytes += ray.cost.dram_bytes;
-    c.latency += double(now - std::min(now, ray.dispatched));
+    charge_retired_ray(p.by_type, ray, now);
     ++p.retired;
     while (!pending_.empty() && pending_.front().retired == unit_size(first_)) {
       finish(pending_.front());
