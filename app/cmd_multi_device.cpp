@@ -33,10 +33,10 @@ namespace {
 struct MultiOptions {
   std::string input, output, devices_file, config, resolution;
   std::vector<std::string> device_configs, sets, hw_sets, split;
-  uint32_t devices = 0, frames = 0, jobs = 0;
+  uint32_t devices = 0, frames = 0, jobs = 0, warmup_frames = 0;
   uint64_t seed = 0;
   float orbit = 0;
-  bool seed_set = false, orbit_set = false, importance = false;
+  bool seed_set = false, orbit_set = false, warmup_set = false, importance = false;
   bool no_chart = false, quiet = false, list_keys = false;
 };
 
@@ -59,6 +59,7 @@ std::string trace_input(const MultiOptions& o) {
                                o.seed_set ? std::optional<uint64_t>(o.seed) : std::nullopt, ""));
   if (o.importance) spec.samples.placement = pipeline::Placement::Importance;
   if (o.orbit_set) spec.camera.orbit = o.orbit;
+  if (o.warmup_set) spec.warmup_frames = o.warmup_frames;
   std::filesystem::create_directories(o.output);
   pipeline::TraceOptions options;
   options.output = o.output + "/workload.rays";
@@ -108,10 +109,11 @@ int run_multi(const MultiOptions& o) {
   multi::DeviceSet set = device_set(o);
   multi::DeviceConfigs configs(set, o.hw_sets);
   bool stream_input = is_stream(o.input);
-  if (stream_input && (!o.resolution.empty() || o.seed_set || o.importance || o.orbit_set))
+  if (stream_input &&
+      (!o.resolution.empty() || o.seed_set || o.importance || o.orbit_set || o.warmup_set))
     throw InputError(
-        "multi-device: --resolution, --seed, --importance and --orbit apply to a "
-        "workload, not to a stream");
+        "multi-device: --resolution, --seed, --importance, --orbit and --warmup-frames apply to "
+        "a workload, not to a stream");
   std::string stream = stream_input ? o.input : trace_input(o);
   RayStreamReader reader(stream);
   StreamHeader header = reader.header();
@@ -183,6 +185,9 @@ void add_multi_device_command(CLI::App& app, int& exit_code) {
                 "Place a traced workload's camera samples by importance (irregular samples)");
   cmd->add_option("--orbit", o->orbit, "Camera orbit of a traced workload, degrees over all frames")
       ->each([o](const std::string&) { o->orbit_set = true; });
+  cmd->add_option("--warmup-frames", o->warmup_frames,
+                  "Frames a traced workload's renderer runs before frame 0, writing no rays")
+      ->each([o](const std::string&) { o->warmup_set = true; });
   cmd->add_option("-j,--jobs", o->jobs, "Device simulations at once (default: CPU count)");
   cmd->add_flag("--no-chart", o->no_chart, "Skip chart.png (no Python needed)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");

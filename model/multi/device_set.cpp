@@ -181,6 +181,11 @@ void read_single_keys(ConfigReader& r, const toml::table* root, DeviceSet& s,
       "regions run along rows (horizontal strips), columns, or interleaved rows (17 apart)",
       {"rows", "columns", "interleaved"});
   s.order = scan_order_from_name(order).value_or(ScanOrder::Rows);
+  std::string samples = split.text(
+      "samples", sample_unit_name(s.samples),
+      "what the balanced split counts as a sample: every ray traced, or camera rays only",
+      {"rays", "camera"});
+  s.samples = sample_unit_from_name(samples).value_or(SampleUnit::Rays);
 
   s.settle_pct = r.section("report").real(
       "settle_pct", s.settle_pct, "%",
@@ -235,7 +240,9 @@ nlohmann::ordered_json device_set_json(const DeviceSet& s) {
                {"output_bytes_per_pixel", f.output_bytes_per_pixel}};
   nlohmann::ordered_json names = nlohmann::ordered_json::array();
   for (SplitStrategy st : s.strategies) names.push_back(strategy_name(st));
-  j["split"] = {{"strategies", names}, {"order", scan_order_name(s.order)}};
+  j["split"] = {{"strategies", names},
+                {"order", scan_order_name(s.order)},
+                {"samples", sample_unit_name(s.samples)}};
   j["report"] = {{"settle_pct", s.settle_pct}};
   j["device"] = nlohmann::ordered_json::array();
   for (const DeviceHardware& d : s.devices)

@@ -43,6 +43,7 @@ struct DeviceSet {
   std::vector<SplitStrategy> strategies{SplitStrategy::Static, SplitStrategy::Balanced,
                                         SplitStrategy::Cost, SplitStrategy::Current};
   ScanOrder order = ScanOrder::Rows;
+  SampleUnit samples = SampleUnit::Rays;  // what the balanced split counts
   double settle_pct = 5.0;  // a balancer has settled once the max deviation stays below this
   std::vector<DeviceHardware> devices;
   std::vector<DeviceChange> changes;  // by frame

@@ -17,10 +17,11 @@ constexpr uint32_t kOutside = std::numeric_limits<uint32_t>::max();
 struct LocatedFrame {
   const FrameRays* source = nullptr;
   std::vector<uint32_t> position;  // per ray; kOutside if its pixel is not in the image
-  FramePreview preview;            // camera samples and rays by type, per position
+  FramePreview preview;            // samples and rays by type, per position
 };
 
-LocatedFrame locate(const FrameRays& frame, const ScreenLayout& layout, uint64_t& outside) {
+LocatedFrame locate(const FrameRays& frame, const ScreenLayout& layout, SampleUnit unit,
+                    uint64_t& outside) {
   LocatedFrame located{&frame, {}, {}};
   located.preview.samples.assign(layout.pixels(), 0.0);
   located.preview.rays.assign(layout.pixels(), TypedRays{});
@@ -34,7 +35,7 @@ LocatedFrame locate(const FrameRays& frame, const ScreenLayout& layout, uint64_t
     uint32_t p = layout.position_of(ray.pixel);
     located.position.push_back(p);
     located.preview.rays[p][size_t(ray.type)] += 1;
-    if (ray.type == RayType::Camera) located.preview.samples[p] += 1;
+    if (unit == SampleUnit::Rays || ray.type == RayType::Camera) located.preview.samples[p] += 1;
   }
   return located;
 }
@@ -68,13 +69,14 @@ void account(const DeviceSet& set, const LocatedFrame& frame, const Split& split
     df.region = split[d];
     df.hardware = hardware[d];
     df.pixels = split[d].size();
-    double samples = 0;
+    double samples = 0, camera = 0;
     for (uint32_t p = split[d].begin; p < split[d].end; ++p) {
       samples += frame_samples[p];
+      camera += frame.preview.rays[p][size_t(RayType::Camera)];
       feedback.cost[p] = results[d].cost[p - split[d].begin];
       df.cost += feedback.cost[p];
     }
-    df.samples = uint64_t(samples);
+    df.samples = uint64_t(camera);
     df.rays = tasks[d].rays.size();
     df.cycles = results[d].cycles;
     loads.push_back({df.pixels, df.samples, df.rays, results[d].time_ns});
@@ -118,7 +120,7 @@ MultiRunResult run_multi_device(RayStreamReader& reader, const DeviceSet& set,
   FrameRays frame;
   while (result.single_trace_ns.size() < frames && frame_reader.next(frame)) {
     if (options.progress) options.progress(frame.frame, frames);
-    LocatedFrame located = locate(frame, result.layout, result.outside);
+    LocatedFrame located = locate(frame, result.layout, set.samples, result.outside);
     result.rays += frame.rays.size();
     std::vector<uint32_t> hardware;
     for (uint32_t d = 0; d < result.devices; ++d) hardware.push_back(configs.index(d, frame.frame));

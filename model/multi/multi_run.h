@@ -20,8 +20,8 @@ namespace rtsim::multi {
 
 struct DeviceFrame {
   Region region;
-  uint32_t hardware = 0;  // index into DeviceConfigs::configs()
-  uint64_t pixels = 0, samples = 0, rays = 0, cycles = 0;
+  uint32_t hardware = 0;                                   // index into DeviceConfigs::configs()
+  uint64_t pixels = 0, samples = 0, rays = 0, cycles = 0;  // samples: camera rays
   double cost = 0;  // simulated cycles of its pixels' rays, summed
   DeviceTiming timing;
 };

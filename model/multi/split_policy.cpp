@@ -22,6 +22,16 @@ std::optional<SplitStrategy> strategy_from_name(const std::string& name) {
   return std::nullopt;
 }
 
+const char* sample_unit_name(SampleUnit unit) {
+  return unit == SampleUnit::Rays ? "rays" : "camera";
+}
+
+std::optional<SampleUnit> sample_unit_from_name(const std::string& name) {
+  for (SampleUnit u : {SampleUnit::Rays, SampleUnit::Camera})
+    if (name == sample_unit_name(u)) return u;
+  return std::nullopt;
+}
+
 std::vector<std::string> strategy_names() {
   return {"static", "balanced", "cost", "current"};
 }

@@ -3,7 +3,7 @@
 //   static    equal-area regions, whatever happened before;
 //   balanced  the paper's balancer: p_i = samples processed / time in the previous frame,
 //             t = N / sum(p_i), n_i = t * p_i, split found on the CDF of the previous frame's
-//             sample distribution over the screen;
+//             sample distribution over the screen (a sample is a ray, or a camera ray: SampleUnit);
 //   cost      the same search, with each sample weighted by its simulated cost (the cycles its
 //             rays took) instead of counted;
 //   current   an extension: the CDF of the frame about to be traced, whose rays the primary
@@ -26,13 +26,19 @@
 namespace rtsim::multi {
 
 enum class SplitStrategy { Static, Balanced, Cost, Current };
+
+// What the balancers count as a sample: every ray a device traces (each pass places its own
+// samples: shadow, reflection, GI, ...), or camera rays only.
+enum class SampleUnit { Rays, Camera };
+const char* sample_unit_name(SampleUnit unit);  // rays, camera
+std::optional<SampleUnit> sample_unit_from_name(const std::string& name);
 const char* strategy_name(SplitStrategy strategy);
 std::optional<SplitStrategy> strategy_from_name(const std::string& name);
 std::vector<std::string> strategy_names();
 
 // What one device did in a frame: the work the balancers count, and the time it took.
 struct DeviceWork {
-  double samples = 0;  // camera samples traced (rays of type camera)
+  double samples = 0;  // samples traced, in the run's SampleUnit
   double cost = 0;     // simulated cost of its samples: the cycles of all rays of its pixels
   double time_ns = 0;  // time tracing them
 };
@@ -40,14 +46,14 @@ struct DeviceWork {
 using TypedRays = std::array<float, kRayTypeCount>;  // rays of each RayType at one position
 
 // What is known of a frame before it is traced, once the primary has generated its rays: per
-// position (scan order, ScreenLayout::position_of), its camera samples and its rays by type
-// (empty if unknown).
+// position (scan order, ScreenLayout::position_of), its samples (in the run's SampleUnit) and
+// its rays by type (empty if unknown).
 struct FramePreview {
   std::vector<double> samples;
   std::vector<TypedRays> rays;
 };
 
-// A finished frame: the split it used, each device's work; per position its camera samples,
+// A finished frame: the split it used, each device's work; per position its samples,
 // its rays by type and their simulated cost; the mean cost of a ray of each type.
 struct FrameFeedback {
   Split split;

@@ -43,9 +43,21 @@ TEST(StaticSplit, StaysEqualAreaWhateverItObserves) {
   EXPECT_EQ(policy->next_split(), first);
 }
 
-TEST(CdfBalancer, FirstFrameIsSplitByArea) {
-  for (SplitStrategy s : {SplitStrategy::Balanced, SplitStrategy::Cost})
-    EXPECT_EQ(make_split_policy(s, 3, 100)->next_split(), equal_area_split(100, 3));
+TEST(CdfBalancer, FirstFrameIsSplitOnItsOwnSamples) {
+  const uint32_t positions = 3000;
+  FramePreview first;
+  first.samples = irregular_samples(positions);
+  for (uint32_t i = 0; i < positions; ++i) first.samples[i] *= 1.0 + 3.0 * i / positions;
+  double total = std::accumulate(first.samples.begin(), first.samples.end(), 0.0);
+  for (SplitStrategy s : {SplitStrategy::Balanced, SplitStrategy::Cost, SplitStrategy::Current}) {
+    auto policy = make_split_policy(s, 3, positions);
+    EXPECT_EQ(policy->next_split(), equal_area_split(positions, 3)) << "nothing known: by area";
+    Split split = policy->next_split(first);
+    ASSERT_EQ(split_problem(split, positions), "");
+    EXPECT_FALSE(split == equal_area_split(positions, 3));
+    for (size_t i = 0; i < 3; ++i)
+      EXPECT_NEAR(weight_of(first.samples, split[i]), total / 3, 10.0) << strategy_name(s);
+  }
 }
 
 TEST(CdfBalancer, SharesFollowSpeedsAndTheCdf) {

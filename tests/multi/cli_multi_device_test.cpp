@@ -80,7 +80,10 @@ TEST(CliMultiDevice, BadInputIsOneLineAndExitTwo) {
   std::string bad_key = "multi-device x.rays --devices-file " + set + " --set link.nope=1 -o x";
   std::string both = "multi-device x.rays --devices-file " + set + " --config a.toml -o x";
   std::string no_set = "multi-device x.rays --devices-file /nonexistent.toml -o x";
-  for (const std::string& args : {missing, bad_split, bad_key, both, no_set}) {
+  std::string bad_unit =
+      "multi-device x.rays --devices-file " + set + " --set split.samples=px -o x";
+  std::string warmup = "multi-device x.rays --devices-file " + set + " --warmup-frames 3 -o x";
+  for (const std::string& args : {missing, bad_split, bad_key, both, no_set, bad_unit, warmup}) {
     test::RunResult r = test::run_rtsim(args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_EQ(test::count_lines(r.err), 1) << args << "\n" << r.err;

@@ -38,7 +38,9 @@ RunSummary run(const WorkloadSpec& spec) {
   return p.summary();
 }
 
-const PassSummary& pass(const RunSummary& s, PassId p) { return s.passes[size_t(p)]; }
+const PassSummary& pass(const RunSummary& s, PassId p) {
+  return s.passes[size_t(p)];
+}
 
 TEST(Pipeline, CornellBudgetsAndSkippedPasses) {
   WorkloadSpec spec = small("cornell");
@@ -175,6 +177,48 @@ TEST(Pipeline, ImportancePlacementKeepsTheSampleCountAndMovesSamples) {
     EXPECT_GT(most, 1u) << "frame " << f;
     EXPECT_GT(empty, 0u) << "frame " << f;
   }
+}
+
+// Every recorded ray of a run, warm-up included, and its summary.
+std::vector<Ray> recorded_rays(const WorkloadSpec& spec, RunSummary& summary) {
+  Scene scene = load_scene(spec.scene);
+  EmbreeScene embree(scene.mesh, 1);
+  Pipeline p(spec, scene, embree);
+  RaySink sink(nullptr, spec.width, spec.height, false, spec.warmup_frames);
+  std::vector<Ray> rays;
+  sink.observer = [&rays](const Ray& r, PassId, uint32_t) { rays.push_back(r); };
+  FrameResults frame;
+  for (uint32_t f = 0; f < spec.warmup_frames + spec.frames; ++f) p.run_frame(f, sink, frame);
+  summary = p.summary();
+  return rays;
+}
+
+size_t count_rays(const std::vector<Ray>& rays, uint32_t frame, RayType type) {
+  return size_t(std::count_if(rays.begin(), rays.end(),
+                              [&](const Ray& r) { return r.frame == frame && r.type == type; }));
+}
+
+TEST(Pipeline, WarmupFramesWriteNoRaysAndStartOnWarmSurfels) {
+  WorkloadSpec spec = small("pica-orbit", 64, 36);
+  spec.frames = 2;
+  spec.warmup_frames = 0;
+  spec.passes.gi.budget = 1000000;  // GI rays follow the surfel count
+  RunSummary cold_summary, warm_summary;
+  std::vector<Ray> cold = recorded_rays(spec, cold_summary);
+  spec.warmup_frames = 4;
+  std::vector<Ray> warm = recorded_rays(spec, warm_summary);
+  EXPECT_EQ(warm_summary.total_rays(), warm.size()) << "warm-up rays are not counted";
+  EXPECT_TRUE(std::all_of(warm.begin(), warm.end(), [](const Ray& r) { return r.frame < 2; }));
+  EXPECT_EQ(warm.back().frame, 1u);
+  EXPECT_EQ(count_rays(warm, 0, RayType::Camera), 64u * 36u);
+  EXPECT_GT(count_rays(warm, 0, RayType::DiffuseGI), 2 * count_rays(cold, 0, RayType::DiffuseGI))
+      << "surfels spawned during the warm-up";
+  auto first_camera = [](const std::vector<Ray>& rays) {
+    return std::find_if(rays.begin(), rays.end(),
+                        [](const Ray& r) { return r.type == RayType::Camera; })
+        ->org;
+  };
+  EXPECT_EQ(first_camera(warm), first_camera(cold)) << "the warm-up stays at frame 0's camera";
 }
 
 }  // namespace

@@ -89,7 +89,7 @@ void Pipeline::enter(uint32_t frame, PassId pass) {
 
 void Pipeline::record(PassId pass, const PassOutcome& outcome) {
   PassSummary& s = summary_.passes[size_t(pass)];
-  if (outcome.skipped.empty()) return;
+  if (outcome.skipped.empty() || warming_up_) return;
   if (s.frames_skipped++ == 0) s.reason = outcome.skipped;
 }
 
@@ -118,8 +118,10 @@ std::vector<SamplePosition> Pipeline::place_samples(const FrameContext& ctx, Ray
 }
 
 void Pipeline::run_frame(uint32_t frame, RaySink& sink, FrameResults& r) {
-  r.camera =
-      camera_for_frame(spec_.camera, auto_fit_, frame, spec_.frames, spec_.width, spec_.height);
+  warming_up_ = frame < spec_.warmup_frames;
+  uint32_t camera_frame = warming_up_ ? 0 : frame - spec_.warmup_frames;
+  r.camera = camera_for_frame(spec_.camera, auto_fit_, camera_frame, spec_.frames, spec_.width,
+                              spec_.height);
   FrameContext ctx{scene_, spec_.passes, r.camera, frame, spec_.seed, spec_.width, spec_.height};
   std::fill(sink.frame_cost().begin(), sink.frame_cost().end(), 0u);
   enter(frame, PassId::Camera);

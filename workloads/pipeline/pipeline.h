@@ -58,10 +58,12 @@ struct RunSummary {
 uint64_t pass_budget(const WorkloadSpec& spec, PassId pass, size_t lights);
 
 class Pipeline {
-public:
+ public:
   Pipeline(const WorkloadSpec& spec, const Scene& scene, const EmbreeScene& embree);
 
-  // Runs every pass of one frame; frames must be run in order from 0.
+  // Runs every pass of one frame; frames must be run in order from 0. The first
+  // spec.warmup_frames of them are the warm-up: at frame 0's camera, not in the summary (the
+  // sink drops their rays).
   void run_frame(uint32_t frame, RaySink& sink, FrameResults& results);
 
   const SceneContext& scene() const { return scene_; }
@@ -73,7 +75,7 @@ public:
   // Called before each pass runs (progress reporting).
   std::function<void(uint32_t frame, PassId pass)> on_pass;
 
-private:
+ private:
   std::vector<SamplePosition> place_samples(const FrameContext& ctx, RaySink& sink);
   void record(PassId pass, const PassOutcome& outcome);
   void enter(uint32_t frame, PassId pass);
@@ -85,6 +87,7 @@ private:
   SurfelCache surfels_;
   RunSummary summary_;
   GBuffer previous_;  // last frame's G-buffer (importance placement)
+  bool warming_up_ = false;
   std::vector<uint32_t> previous_cost_;
 };
 

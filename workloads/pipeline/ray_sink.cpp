@@ -24,21 +24,24 @@ RayType pass_ray_type(PassId pass) {
   return RayType::Camera;
 }
 
-RaySink::RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density)
-    : writer_(writer), frame_cost_(size_t(width) * height, 0) {
+RaySink::RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density,
+                 uint32_t warmup_frames)
+    : writer_(writer), warmup_frames_(warmup_frames), frame_cost_(size_t(width) * height, 0) {
   if (keep_density)
     for (auto& d : density_) d.assign(size_t(width) * height, 0);
 }
 
 void RaySink::emit(const Ray& ray, uint32_t origin_prim) {
-  if (writer_) writer_->write(ray);
+  bool on_screen = ray.pixel < frame_cost_.size();
+  if (on_screen) frame_cost_[ray.pixel]++;
+  if (ray.frame < warmup_frames_) return;
+  Ray recorded = ray;
+  recorded.frame -= warmup_frames_;
+  if (writer_) writer_->write(recorded);
   counts_[size_t(pass_)]++;
   auto& density = density_[size_t(pass_)];
-  if (ray.pixel < frame_cost_.size()) {
-    frame_cost_[ray.pixel]++;
-    if (!density.empty()) density[ray.pixel]++;
-  }
-  if (observer) observer(ray, pass_, origin_prim);
+  if (on_screen && !density.empty()) density[ray.pixel]++;
+  if (observer) observer(recorded, pass_, origin_prim);
 }
 
 uint64_t RaySink::total() const {

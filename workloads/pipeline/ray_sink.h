@@ -1,6 +1,7 @@
 // Where passes put their rays: each ray is checked, written to the stream (if any), counted
 // under its pass, and added to per-pass ray-density counts. Passes emit rays in the order the
-// stream keeps them.
+// stream keeps them. Rays of the first warmup_frames frames only feed the frame's cost map;
+// later frames are written renumbered from 0.
 #pragma once
 
 #include <array>
@@ -33,12 +34,13 @@ const char* pass_name(PassId pass);
 RayType pass_ray_type(PassId pass);
 
 class RaySink {
-public:
+ public:
   // origin_prim: the triangle a secondary ray leaves from (kNoHit for camera rays).
   using Observer = std::function<void(const Ray&, PassId, uint32_t origin_prim)>;
 
   // writer may be null (count only). Density counts are kept when keep_density is set.
-  RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density);
+  RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density,
+          uint32_t warmup_frames = 0);
 
   void set_pass(PassId pass) { pass_ = pass; }
   PassId pass() const { return pass_; }
@@ -53,8 +55,9 @@ public:
 
   Observer observer;
 
-private:
+ private:
   RayStreamWriter* writer_;
+  uint32_t warmup_frames_;
   PassId pass_ = PassId::Camera;
   std::array<uint64_t, kPassCount> counts_{};
   std::array<std::vector<uint32_t>, kPassCount> density_;

@@ -180,6 +180,11 @@ void read_root(SpecReader& r, WorkloadSpec& s, const std::string& stem) {
   s.seed = uint64_t(r.integer("seed", int64_t(s.seed), "", "random seed", 0,
                               std::numeric_limits<int64_t>::max()));
   s.frames = uint32_t(r.integer("frames", s.frames, "frames", "frames to trace", 1, 100000));
+  s.warmup_frames = uint32_t(
+      r.integer("warmup_frames", s.warmup_frames, "frames",
+                "frames run before frame 0 at its camera, writing no rays (surfels and the "
+                "importance map warm up)",
+                0, 100000));
   std::string res = r.text("resolution", "1920x1080", "image size WxH, pixels");
   if (!parse_resolution(res, s.width, s.height))
     r.fail("resolution", "expected WxH with positive integers, e.g. \"1920x1080\"");

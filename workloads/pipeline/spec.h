@@ -111,6 +111,9 @@ struct WorkloadSpec {
   std::string scene;  // a built-in name or a path (resolved against the spec's folder)
   uint64_t seed = 1;
   uint32_t frames = 1;
+  // Frames the renderer runs before frame 0, at frame 0's camera, writing no rays: surfels
+  // spawn and the importance map fills in, as in a renderer that has been running a while.
+  uint32_t warmup_frames = 0;
   uint32_t width = 1920, height = 1080;
   CameraSpec camera;
   SampleSpec samples;

@@ -40,13 +40,12 @@ TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options
     header.height = spec.height;
     writer = std::make_unique<RayStreamWriter>(options.output, header);
   }
-  RaySink sink(writer.get(), spec.width, spec.height, !options.preview.empty());
+  RaySink sink(writer.get(), spec.width, spec.height, !options.preview.empty(), spec.warmup_frames);
+  uint32_t frames = spec.warmup_frames + spec.frames;
   if (options.progress)
-    pipeline.on_pass = [&](uint32_t frame, PassId pass) {
-      options.progress(frame, spec.frames, pass);
-    };
+    pipeline.on_pass = [&](uint32_t frame, PassId pass) { options.progress(frame, frames, pass); };
   FrameResults frame;
-  for (uint32_t f = 0; f < spec.frames; ++f) pipeline.run_frame(f, sink, frame);
+  for (uint32_t f = 0; f < frames; ++f) pipeline.run_frame(f, sink, frame);
   if (writer) writer->finish();
 
   TraceResult result;

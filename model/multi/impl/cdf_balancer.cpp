@@ -41,7 +41,12 @@ std::vector<double> CdfBalancer::predicted_cost(const FramePreview& next) const 
 }
 
 Split CdfBalancer::next_split(const FramePreview& next) const {
-  if (weights_.empty()) return equal_area_split(positions_, devices_);
+  if (weights_.empty()) {
+    double total = std::accumulate(next.samples.begin(), next.samples.end(), 0.0);
+    if (next.samples.size() != positions_ || !(total > 0))
+      return equal_area_split(positions_, devices_);
+    return split_by_cdf(next.samples, balanced_shares(speeds(), total));
+  }
   bool predict = work_ == Work::CurrentCost && next.rays.size() == positions_ &&
                  pixel_factor_.size() == positions_;
   std::vector<double> predicted = predict ? predicted_cost(next) : std::vector<double>{};

@@ -6,7 +6,9 @@
 // cost in the last frame that had any, over what their types' means predicted (1 if unknown).
 // Degenerate input: a device that did no work or took no time keeps its last known speed
 // (before any, the mean of the known speeds; with none known, all devices are equally fast);
-// before the first frame, or after a frame without work, the split is by area.
+// the first frame, which has no previous one, is split on the CDF of its own samples (the
+// primary knows where they are once it has generated them) with every device equally fast;
+// after a frame without work the split is by area and speed.
 #pragma once
 
 #include "model/multi/split_policy.h"
@@ -14,7 +16,7 @@
 namespace rtsim::multi {
 
 class CdfBalancer : public SplitPolicy {
-public:
+ public:
   enum class Work { Samples, Cost, CurrentCost };
   CdfBalancer(Work work, uint32_t devices, uint32_t positions);
   using SplitPolicy::next_split;
@@ -22,7 +24,7 @@ public:
   void observe(const FrameFeedback& frame) override;
   std::vector<double> speeds() const override;
 
-private:
+ private:
   std::vector<double> predicted_cost(const FramePreview& next) const;
 
   Work work_;
