@@ -43,6 +43,10 @@ std::string changes_text(const ReportInput& in) {
   return text;
 }
 
+std::string samples_text(const DeviceSet& set) {
+  return set.samples == SampleUnit::Rays ? "every ray" : "camera rays";
+}
+
 }  // namespace
 
 std::string format_multi_summary(const ReportInput& in) {
@@ -51,9 +55,9 @@ std::string format_multi_summary(const ReportInput& in) {
   std::string out =
       fmt::format("devices    {} ({}); device 0 is the primary\n", r.devices, hardware_text(in));
   if (!in.set->changes.empty()) out += fmt::format("changes    {}\n", changes_text(in));
-  out += fmt::format("frames     {} of {}, {}x{}, {} rays; regions along {}\n", frames,
+  out += fmt::format("frames     {} of {}, {}x{}, {} rays; regions along {}; samples: {}\n", frames,
                      in.header.workload, r.layout.width, r.layout.height, r.rays,
-                     scan_order_name(r.layout.order));
+                     scan_order_name(r.layout.order), samples_text(*in.set));
   out += fmt::format("{:<10} {:>11} {:>8} {:>9} {:>10} {:>10} {:>9}  {:<20} {}\n", "strategy",
                      "avg max dev", "worst", "speed-up", "frame us", "1-dev us", "copy ovh",
                      "idle % per device", "settled (frame:frames)");
@@ -67,7 +71,8 @@ std::string format_multi_summary(const ReportInput& in) {
   out += fmt::format(
       "           max dev: of the devices' tracing times from their mean, "
       "averaged over frames {}; settled: at or below {}%\n",
-      frames > 1 ? fmt::format("1..{} (frame 0 is split by area)", frames - 1) : std::string("0"),
+      frames > 1 ? fmt::format("1..{} (frame 0 has no measured speeds)", frames - 1)
+                 : std::string("0"),
       in.set->settle_pct);
   return out;
 }
@@ -77,10 +82,11 @@ std::string multi_report_markdown(const ReportInput& in, bool with_chart) {
   std::string md = fmt::format("# Multi-device frames: {}\n\n", in.header.workload);
   md += fmt::format(
       "Stream `{}` ({}, {}x{}), {} frames, {} rays. Device set `{}`{}: {} devices "
-      "({}); device 0 is the primary. Regions run along {}.\n\n",
+      "({}); device 0 is the primary. Regions run along {}. The balancers count {} as samples."
+      "\n\n",
       in.stream, in.header.scene_source, r.layout.width, r.layout.height, r.single_trace_ns.size(),
       r.rays, in.set->name, in.set->file.empty() ? "" : " (" + in.set->file + ")", r.devices,
-      hardware_text(in), scan_order_name(r.layout.order));
+      hardware_text(in), scan_order_name(r.layout.order), samples_text(*in.set));
   if (!in.set->changes.empty()) md += fmt::format("Hardware changes: {}.\n\n", changes_text(in));
   md +=
       "## Summary\n\n| strategy | avg max deviation | worst | speed-up vs 1 device | frame (us) "
@@ -95,9 +101,9 @@ std::string multi_report_markdown(const ReportInput& in, bool with_chart) {
         settle_text(s));
   md += fmt::format(
       "\nMax deviation: max over devices of |tracing time - mean| / mean, averaged "
-      "over frames after the first (frame 0 has no previous frame; every strategy "
-      "splits it by area). Settled: frames after the start or a change until the "
-      "deviation stays at or below {}%.\n\n",
+      "over frames after the first (frame 0 has no previous frame: static splits it by area, "
+      "the balancers on the CDF of its own samples with equal speeds). Settled: frames after "
+      "the start or a change until the deviation stays at or below {}%.\n\n",
       in.set->settle_pct);
   if (with_chart) md += "![per-frame figures](chart.png)\n\n";
   md += "## Per frame\n\n| frame |";

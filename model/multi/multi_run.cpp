@@ -125,14 +125,22 @@ MultiRunResult run_multi_device(RayStreamReader& reader, const DeviceSet& set,
     std::vector<uint32_t> hardware;
     for (uint32_t d = 0; d < result.devices; ++d) hardware.push_back(configs.index(d, frame.frame));
     const std::vector<HwConfig>& hw = configs.configs();  // complete for this frame now
-    // Task 0: the whole frame on the primary alone; then each strategy's devices.
+    // Task 0: the whole frame on the primary alone; then the devices of each distinct split
+    // (strategies that propose the same split share its simulations: first_task).
     std::vector<DeviceTask> tasks;
     tasks.push_back({&hw[hardware[0]], frame.rays, {0, 0}});
     std::vector<Split> splits;
+    std::vector<size_t> first_task;
     for (const auto& policy : policies) {
       splits.push_back(policy->next_split(located.preview));
       std::string problem = split_problem(splits.back(), positions);
       if (!problem.empty()) throw std::logic_error("split policy: " + problem);
+      auto same = std::find(splits.begin(), splits.end() - 1, splits.back());
+      if (same != splits.end() - 1) {
+        first_task.push_back(first_task[size_t(same - splits.begin())]);
+        continue;
+      }
+      first_task.push_back(tasks.size());
       std::vector<std::vector<Ray>> rays = partition(located, splits.back());
       for (uint32_t d = 0; d < result.devices; ++d)
         tasks.push_back({&hw[hardware[d]], std::move(rays[d]), splits.back()[d]});
@@ -143,7 +151,7 @@ MultiRunResult run_multi_device(RayStreamReader& reader, const DeviceSet& set,
       FrameRecord record;
       record.frame = frame.frame;
       FrameFeedback feedback;
-      size_t first = 1 + s * result.devices;
+      size_t first = first_task[s];
       account(set, located, splits[s], hardware, &tasks[first], &results[first], results[0].time_ns,
               record, feedback);
       policies[s]->observe(feedback);

@@ -2,8 +2,9 @@
 // deviation of the devices' tracing times from their mean, in %, averaged over frames; plus
 // the speed-up against one device, the copy overhead, each device's idle share, and how many
 // frames the split needs to settle after the start and after each hardware change. Frame 0
-// has no previous frame, so every strategy splits it by area; averages of balancing leave it
-// out (the *_all figures keep it).
+// has no previous frame, so no strategy has measured speeds for it (static splits it by area,
+// the balancers on its own samples); averages of balancing leave it out (the *_all figures
+// keep it).
 #pragma once
 
 #include <cstdint>

@@ -19,6 +19,7 @@ class LinearBackend : public DeviceBackend {
  public:
   std::vector<DeviceResult> run(const std::vector<DeviceTask>& tasks,
                                 const ScreenLayout& layout) override {
+    tasks_per_call.push_back(tasks.size());
     std::vector<DeviceResult> out;
     for (const DeviceTask& t : tasks) {
       DeviceResult r;
@@ -36,6 +37,7 @@ class LinearBackend : public DeviceBackend {
     }
     return out;
   }
+  std::vector<size_t> tasks_per_call;  // one call per frame
 };
 
 DeviceSet mobile_set(uint32_t devices, std::vector<std::string> last_device_sets = {}) {
@@ -45,11 +47,13 @@ DeviceSet mobile_set(uint32_t devices, std::vector<std::string> last_device_sets
   return set;
 }
 
-MultiRunResult run(const std::string& stream, const DeviceSet& set) {
+MultiRunResult run(const std::string& stream, const DeviceSet& set, LinearBackend* used = nullptr) {
   RayStreamReader reader(stream);
   DeviceConfigs configs(set);
   LinearBackend backend;
-  return run_multi_device(reader, set, configs, backend);
+  MultiRunResult r = run_multi_device(reader, set, configs, backend);
+  if (used) *used = backend;
+  return r;
 }
 
 std::vector<StrategySummary> summaries(const MultiRunResult& r, double settle_pct = 5.0) {
@@ -62,8 +66,12 @@ std::vector<StrategySummary> summaries(const MultiRunResult& r, double settle_pc
 TEST(MultiRun, BalancersBeatStaticOnIrregularSamples) {
   test::SyntheticFrames s;
   s.frames = 10;
-  MultiRunResult r = run(test::write_synthetic_stream("irregular", s, "x", 1), mobile_set(4));
+  LinearBackend backend;
+  MultiRunResult r =
+      run(test::write_synthetic_stream("irregular", s, "x", 1), mobile_set(4), &backend);
   ASSERT_EQ(r.runs.size(), 4u);
+  ASSERT_EQ(backend.tasks_per_call.size(), 10u);
+  EXPECT_EQ(backend.tasks_per_call[0], 1u + 4 + 4) << "the balancers share frame 0's split";
   std::vector<StrategySummary> sum = summaries(r);
   EXPECT_GT(sum[0].avg_max_dev_pct, 10.0) << "static: samples and cost are not even";
   EXPECT_LT(sum[1].avg_max_dev_pct, 3.0) << "balanced: every ray is a sample";
