@@ -112,23 +112,4 @@ std::string markdown_rows(const Json& doc, const std::vector<Row>& rows) {
   return out;
 }
 
-std::string text_table(const std::vector<std::vector<std::string>>& rows, bool markdown) {
-  std::vector<size_t> width;
-  for (const auto& row : rows) {
-    width.resize(std::max(width.size(), row.size()), 0);
-    for (size_t i = 0; i < row.size(); ++i) width[i] = std::max(width[i], row[i].size());
-  }
-  std::string out;
-  for (size_t n = 0; n < rows.size(); ++n) {
-    for (size_t i = 0; i < rows[n].size(); ++i)
-      out += markdown ? "| " + rows[n][i] + " " : fmt::format("{:<{}}  ", rows[n][i], width[i]);
-    out += markdown ? "|\n" : "\n";
-    if (markdown && n == 0) {
-      for (size_t i = 0; i < rows[n].size(); ++i) out += "|---";
-      out += "|\n";
-    }
-  }
-  return out;
-}
-
 }  // namespace rtsim::reports

@@ -39,9 +39,6 @@ struct Row {
 };
 std::string html_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
 
-// A table for the terminal (columns padded to their widest cell, two spaces apart) or in
-// Markdown; the first row is the header.
-std::string text_table(const std::vector<std::vector<std::string>>& rows, bool markdown);
 std::string markdown_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
 
 }  // namespace rtsim::reports

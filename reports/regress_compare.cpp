@@ -6,6 +6,7 @@
 
 #include "reports/metrics.h"
 #include "reports/page_util.h"
+#include "traces/text_table.h"
 
 namespace rtsim::reports {
 using Json = nlohmann::ordered_json;

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "reports/page_util.h"
+#include "traces/text_table.h"
 
 namespace rtsim::reports {
 namespace {

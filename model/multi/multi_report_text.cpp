@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "model/multi/multi_report.h"
+#include "traces/text_table.h"
 
 namespace rtsim::multi {
 namespace {
@@ -47,6 +48,22 @@ std::string samples_text(const DeviceSet& set) {
   return set.samples == SampleUnit::Rays ? "every ray" : "camera rays";
 }
 
+// One row per strategy: its averages over the run.
+std::string summary_table(const ReportInput& in, bool markdown) {
+  std::vector<std::vector<std::string>> rows{
+      {"strategy", "avg max deviation", "worst", "speed-up vs 1 device", "frame (us)",
+       "1 device (us)", "copy overhead", "idle % per device", "settled (frame:frames)"}};
+  for (const StrategySummary& s : in.summaries)
+    rows.push_back({strategy_name(s.strategy), fmt::format("{:.2f}%", s.avg_max_dev_pct),
+                    fmt::format("{:.2f}%", s.worst_max_dev_pct),
+                    fmt::format("{:.2f}x", s.avg_speedup),
+                    fmt::format("{:.1f}", s.avg_frame_ns / 1000),
+                    fmt::format("{:.1f}", s.avg_single_ns / 1000),
+                    fmt::format("{:.1f}%", s.avg_copy_overhead_pct), idle_text(s), settle_text(s)});
+  std::vector<bool> numbers{false, true, true, true, true, true, true, false, false};
+  return text_table(rows, markdown, numbers);
+}
+
 }  // namespace
 
 std::string format_multi_summary(const ReportInput& in) {
@@ -58,18 +75,9 @@ std::string format_multi_summary(const ReportInput& in) {
   out += fmt::format("frames     {} of {}, {}x{}, {} rays; regions along {}; samples: {}\n", frames,
                      in.header.workload, r.layout.width, r.layout.height, r.rays,
                      scan_order_name(r.layout.order), samples_text(*in.set));
-  out += fmt::format("{:<10} {:>11} {:>8} {:>9} {:>10} {:>10} {:>9}  {:<20} {}\n", "strategy",
-                     "avg max dev", "worst", "speed-up", "frame us", "1-dev us", "copy ovh",
-                     "idle % per device", "settled (frame:frames)");
-  for (const StrategySummary& s : in.summaries)
-    out += fmt::format(
-        "{:<10} {:>10.2f}% {:>7.2f}% {:>8.2f}x {:>10.1f} {:>10.1f} {:>8.1f}%  "
-        "{:<20} {}\n",
-        strategy_name(s.strategy), s.avg_max_dev_pct, s.worst_max_dev_pct, s.avg_speedup,
-        s.avg_frame_ns / 1000, s.avg_single_ns / 1000, s.avg_copy_overhead_pct, idle_text(s),
-        settle_text(s));
+  out += summary_table(in, false);
   out += fmt::format(
-      "           max dev: of the devices' tracing times from their mean, "
+      "max deviation: of the devices' tracing times from their mean, "
       "averaged over frames {}; settled: at or below {}%\n",
       frames > 1 ? fmt::format("1..{} (frame 0 has no measured speeds)", frames - 1)
                  : std::string("0"),
@@ -88,17 +96,7 @@ std::string multi_report_markdown(const ReportInput& in, bool with_chart) {
       r.rays, in.set->name, in.set->file.empty() ? "" : " (" + in.set->file + ")", r.devices,
       hardware_text(in), scan_order_name(r.layout.order), samples_text(*in.set));
   if (!in.set->changes.empty()) md += fmt::format("Hardware changes: {}.\n\n", changes_text(in));
-  md +=
-      "## Summary\n\n| strategy | avg max deviation | worst | speed-up vs 1 device | frame (us) "
-      "| 1 device (us) | copy overhead | idle % per device | settled (frame:frames) |\n"
-      "|---|---:|---:|---:|---:|---:|---:|---|---|\n";
-  for (const StrategySummary& s : in.summaries)
-    md += fmt::format(
-        "| {} | {:.2f}% | {:.2f}% | {:.2f}x | {:.1f} | {:.1f} | {:.1f}% | {} | {} "
-        "|\n",
-        strategy_name(s.strategy), s.avg_max_dev_pct, s.worst_max_dev_pct, s.avg_speedup,
-        s.avg_frame_ns / 1000, s.avg_single_ns / 1000, s.avg_copy_overhead_pct, idle_text(s),
-        settle_text(s));
+  md += "## Summary\n\n" + summary_table(in, true);
   md += fmt::format(
       "\nMax deviation: max over devices of |tracing time - mean| / mean, averaged "
       "over frames after the first (frame 0 has no previous frame: static splits it by area, "
