@@ -11,11 +11,8 @@
 
 #include "app/commands.h"
 #include "model/config/hw_config.h"
-#include "model/sc/sim_progress.h"
 #include "model/sc/sim_report.h"
-#include "model/sched/sim_stats.h"
-#include "model/sched/sim_verifier.h"
-#include "traces/embree_scene.h"
+#include "model/sc/stream_sim.h"
 #include "traces/error.h"
 #include "workloads/scene.h"
 
@@ -92,40 +89,25 @@ int run_sim(const SimOptions& o) {
     fmt::print("sim        {} rays of {} on '{}' ({}, {} RT units, {})\n", header.total_rays(),
                o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
                describe(config.bvh));
-  std::unique_ptr<EmbreeScene> embree;
-  std::unique_ptr<TraversalUnit> model;
-  std::unique_ptr<SimVerifier> verifier;
-  if (!o.no_verify) {
-    embree = std::make_unique<EmbreeScene>(scene.mesh);
-    model = std::make_unique<TraversalUnit>(image);
-    verifier = std::make_unique<SimVerifier>(scene.mesh, *model, *embree);
-  }
-  StreamRaySource source(reader);
-  SimProgress progress(header.total_rays());
-  RetireFanout listeners;
-  if (!o.quiet) listeners.add(&progress);
-  if (verifier) listeners.add(verifier.get());
-  RtSimulator sim(config, image, source, header.width, header.height, &listeners);
+  StreamSim sim(config, image, scene.mesh, reader, !o.no_verify, !o.quiet);
   std::fflush(stdout);  // the header before the progress lines, also in a pipe
   auto start = std::chrono::steady_clock::now();
   try {
     sim.run();
   } catch (const SimStallError& e) {
-    if (!o.quiet) progress.finish();
     fmt::print(stderr, "rtsim: stall: {}", e.what());
     return 1;
   }
-  if (!o.quiet) progress.finish();
-  SimRunInfo info{o.stream, header, &image, verifier ? &verifier->report() : nullptr,
+  SimRunInfo info{o.stream, header, &image, sim.verify_report(),
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
-  nlohmann::ordered_json doc = write_sim_results(o.output, sim, info);
+  nlohmann::ordered_json doc = write_sim_results(o.output, sim.simulator(), info);
   if (!o.quiet) {
     print_summary(doc);
     fmt::print("host       {:.2f} s, {:.0f} rays/s; results in {}\n", info.host_seconds,
                doc["host"]["rays_per_second"].get<double>(), o.output);
   }
-  if (verifier) {
-    const VerifyReport& v = verifier->report();
+  if (const VerifyReport* report = sim.verify_report()) {
+    const VerifyReport& v = *report;
     if (!o.quiet || v.unexplained())
       fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n", v.rays,
                  v.mismatches(), v.unexplained());

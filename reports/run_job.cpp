@@ -2,16 +2,11 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <memory>
 
 #include "model/fidelity/cycle_level.h"
-#include "model/sc/sim_progress.h"
 #include "model/sc/sim_report.h"
-#include "model/sched/ray_source.h"
-#include "model/sched/sim_stats.h"
-#include "model/sched/sim_verifier.h"
+#include "model/sc/stream_sim.h"
 #include "reports/run_collector.h"
-#include "traces/embree_scene.h"
 #include "traces/error.h"
 #include "workloads/scene.h"
 
@@ -27,38 +22,22 @@ void create_folder(const std::string& dir) {
 RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image) {
   RayStreamReader reader(job.stream);
   StreamHeader header = reader.header();
-  std::unique_ptr<EmbreeScene> embree;
-  std::unique_ptr<TraversalUnit> model;
-  std::unique_ptr<SimVerifier> verifier;
+  StreamSim sim(job.config, image, scene.mesh, reader, job.verify, job.progress);
   RunCollector collector;
-  SimProgress progress(job.progress ? reader.header().total_rays() : 0);
-  RetireFanout listeners;
-  listeners.add(&collector);
-  if (job.progress) listeners.add(&progress);
-  if (job.verify) {
-    embree = std::make_unique<EmbreeScene>(scene.mesh);
-    model = std::make_unique<TraversalUnit>(image);
-    verifier = std::make_unique<SimVerifier>(scene.mesh, *model, *embree);
-    listeners.add(verifier.get());
-  }
-  StreamRaySource source(reader);
-  RtSimulator sim(job.config, image, source, header.width, header.height, &listeners);
+  sim.listen(&collector);
   HostTimer timer;
   RunResult result;
   try {
     sim.run();
-    progress.finish();
   } catch (const SimStallError& e) {
-    progress.finish();
     result.stalled = true;
     result.stall_message = e.what();
     return result;
   }
-  result.fidelity = cycle_level_result(sim);
+  result.fidelity = cycle_level_result(sim.simulator());
   timer.stop(result.fidelity);
-  SimRunInfo info{job.stream, header, &image, verifier ? &verifier->report() : nullptr,
-                  result.fidelity.host_seconds};
-  result.stats = write_sim_results(job.output, sim, info);
+  SimRunInfo info{job.stream, header, &image, sim.verify_report(), result.fidelity.host_seconds};
+  result.stats = write_sim_results(job.output, sim.simulator(), info);
   result.collected = collector.to_json();
   write_file_atomic(job.output + "/fidelity.json", result.fidelity.to_json().dump(2) + "\n");
   return result;
