@@ -100,18 +100,10 @@ int run_regress(const RegressOptions& o) {
   reports::RegressSuite suite = reports::read_regress_suite(o.suite);
   Json baseline;
   if (!o.update) {
-    std::string text = reports::read_file(o.baseline + "/baseline.json");
-    if (text.empty())
+    std::string path = o.baseline + "/baseline.json";
+    if (!fs::exists(path))
       throw_input_error(o.baseline, "", "no baseline.json (record one with --update-baseline)");
-    try {
-      baseline = Json::parse(text);
-    } catch (const nlohmann::json::parse_error& e) {
-      throw_input_error(o.baseline + "/baseline.json", fmt::format("byte {}", e.byte),
-                        "not valid JSON");
-    }
-    if (baseline.value("schema", "") != reports::kBaselineSchema)
-      throw_input_error(o.baseline + "/baseline.json", "schema",
-                        std::string("expected ") + reports::kBaselineSchema);
+    baseline = reports::read_json_file(path, reports::kBaselineSchema);
   }
   fs::create_directories(o.output);
   std::vector<reports::CaseOutcome> cases = run_cases(suite, o);

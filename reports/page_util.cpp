@@ -6,6 +6,8 @@
 
 #include <fmt/core.h>
 
+#include "traces/error.h"
+
 namespace rtsim::reports {
 
 using Json = nlohmann::ordered_json;
@@ -50,6 +52,19 @@ std::string read_file(const std::string& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+Json read_json_file(const std::string& path, const char* schema) {
+  if (!std::ifstream(path)) throw_input_error(path, "", "missing");
+  Json doc;
+  try {
+    doc = Json::parse(read_file(path));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw_input_error(path, fmt::format("byte {}", e.byte), "not valid JSON");
+  }
+  if (doc.value("schema", "") != schema)
+    throw_input_error(path, "schema", std::string("expected ") + schema);
+  return doc;
 }
 
 const Json& swept_value(const Json& values, const std::string& key) {

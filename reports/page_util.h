@@ -15,6 +15,9 @@ enum class Style { Integer, Real, Percent, Text };
 std::string html_escape(const std::string& text);
 std::string base64(const std::string& bytes);
 std::string read_file(const std::string& path);  // "" if missing
+// A JSON document rtsim wrote. Throws InputError naming the file if it is missing, not valid
+// JSON (with the byte where parsing stopped) or its "schema" is not the one expected.
+nlohmann::ordered_json read_json_file(const std::string& path, const char* schema);
 
 // The value at a dotted key ("timing.cycles", "workload.passes.0.rays": a number indexes an
 // array); null if any part is missing.

@@ -62,16 +62,8 @@ ReportOutcome write_report(Json& report, const std::string& run_dir, const std::
 
 ReportOutcome rewrite_report(const std::string& run_dir, const ReportOptions& options) {
   std::string path = run_dir + "/report.json";
-  std::string text = read_file(path);
-  if (text.empty()) throw_input_error(run_dir, "", "no report.json (not a run folder)");
-  Json report;
-  try {
-    report = Json::parse(text);
-  } catch (const nlohmann::json::exception& e) {
-    throw_input_error(path, "", std::string("not valid JSON: ") + e.what());
-  }
-  if (report.value("schema", "") != kReportSchema)
-    throw_input_error(path, "schema", std::string("expected ") + kReportSchema);
+  if (!fs::exists(path)) throw_input_error(run_dir, "", "no report.json (not a run folder)");
+  Json report = read_json_file(path, kReportSchema);
   bool pixels =
       !report["pixel_buffers"].is_null() &&
       fs::exists(run_dir + "/" + report["pixel_buffers"]["files"]["cycles"].get<std::string>());

@@ -34,7 +34,10 @@ Json chart_list(const SweepSpec& spec, const Json& points) {
   Json charts = Json::array();
   auto add = [&](const std::string& x, const std::string& y, const std::string& series) {
     charts.push_back({{"id", "curve_" + std::to_string(charts.size())},
-                      {"kind", "curve"}, {"x", x}, {"y", y}, {"series", series}});
+                      {"kind", "curve"},
+                      {"x", x},
+                      {"y", y},
+                      {"series", series}});
   };
   for (const SweepChart& c : spec.charts) add(c.x, c.y, c.series);
   if (spec.charts.empty())
@@ -44,8 +47,11 @@ Json chart_list(const SweepSpec& spec, const Json& points) {
         add(key, "type.*.dram_bytes_per_ray", "workload");
       }
   for (Json& c : charts) c["title"] = chart_title(c);
-  charts.push_back({{"id", "pareto"}, {"kind", "pareto"}, {"x", "on_chip_bytes"},
-                    {"y", "cycles"}, {"series", "workload"},
+  charts.push_back({{"id", "pareto"},
+                    {"kind", "pareto"},
+                    {"x", "on_chip_bytes"},
+                    {"y", "cycles"},
+                    {"series", "workload"},
                     {"title", "Pareto: cycles against on-chip memory"}});
   for (Json& c : charts) {
     c["file"] = "images/" + c["id"].get<std::string>() + ".png";
@@ -69,21 +75,26 @@ Json sweep_json(const SweepSpec& spec, const std::vector<PointRun>& runs) {
     points.push_back({{"id", p.id},
                       {"workload", p.workload},
                       {"values", p.point->values},
-                      {"status", !p.ok ? "failed" : p.reused ? "reused" : "done"},
+                      {"status", !p.ok      ? "failed"
+                                 : p.reused ? "reused"
+                                            : "done"},
                       {"exit_code", p.exit_code},
                       {"dir", "points/" + p.id},
                       {"metrics", p.ok ? p.metrics : Json()}});
   Json workloads = Json::array();
   for (const SweepWorkload& w : spec.workloads)
-    workloads.push_back({{"name", w.name}, {"workload", w.trace.workload},
-                         {"resolution", w.trace.resolution}, {"frames", w.trace.frames}});
+    workloads.push_back({{"name", w.name},
+                         {"workload", w.trace.workload},
+                         {"resolution", w.trace.resolution},
+                         {"frames", w.trace.frames}});
   Json doc;
   doc["schema"] = kSweepSchema;
   doc["generator"] = "rtsim " RTSIM_VERSION;
-  doc["spec"] = {{"file", spec.file}, {"name", spec.name}, {"description", spec.description},
-                 {"config", spec.config}, {"sets", spec.sets}, {"workloads", workloads},
-                 {"keys", spec.keys}, {"fidelity", spec.fidelity},
-                 {"sample_rate", spec.sampling.rate}, {"verify", spec.verify}};
+  doc["spec"] = {
+      {"file", spec.file},     {"name", spec.name},         {"description", spec.description},
+      {"config", spec.config}, {"sets", spec.sets},         {"workloads", workloads},
+      {"keys", spec.keys},     {"fidelity", spec.fidelity}, {"sample_rate", spec.sampling.rate},
+      {"verify", spec.verify}};
   doc["points"] = points;
   doc["charts"] = chart_list(spec, points);
   return doc;
@@ -106,8 +117,9 @@ std::string sweep_csv(const Json& doc) {
     for (const Json& k : doc["spec"]["keys"])
       out += "," + csv_field(swept_value(p["values"], k.get<std::string>()));
     for (const std::string& m : metrics)
-      out += "," + (p["metrics"].is_object() && p["metrics"].contains(m)
-                        ? csv_field(p["metrics"][m]) : std::string());
+      out +=
+          "," + (p["metrics"].is_object() && p["metrics"].contains(m) ? csv_field(p["metrics"][m])
+                                                                      : std::string());
     out += "\n";
   }
   return out;
@@ -136,14 +148,7 @@ ReportOutcome write_sweep_report(Json& doc, const std::string& dir, const Report
 
 ReportOutcome rewrite_sweep_report(const std::string& dir, const ReportOptions& options) {
   std::string path = dir + "/sweep.json";
-  Json doc;
-  try {
-    doc = Json::parse(read_file(path));
-  } catch (const nlohmann::json::exception& e) {
-    throw_input_error(path, "", std::string("not valid JSON: ") + e.what());
-  }
-  if (doc.value("schema", "") != kSweepSchema)
-    throw_input_error(path, "schema", std::string("expected ") + kSweepSchema);
+  Json doc = read_json_file(path, kSweepSchema);
   for (Json& c : doc["charts"]) c["available"] = true;
   return write_sweep_report(doc, dir, options);
 }

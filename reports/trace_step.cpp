@@ -1,12 +1,11 @@
 #include "reports/trace_step.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/core.h>
 
 #include "model/sc/sim_report.h"
+#include "reports/page_util.h"
 #include "traces/error.h"
 #include "traces/hash.h"
 #include "workloads/pipeline/trace.h"
@@ -17,20 +16,13 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The request as recorded: a spec file by absolute path and the hash of its contents.
 Json request_json(const TraceRequest& r) {
   Json j;
   bool file = fs::is_regular_file(r.workload);
   j["workload"] = file ? fs::absolute(r.workload).lexically_normal().string() : r.workload;
   if (file) {
-    std::string text = read_text(r.workload);
+    std::string text = read_file(r.workload);
     j["spec_hash"] = text_hash(text);
   }
   j["resolution"] = r.resolution;
@@ -74,13 +66,7 @@ TraceOutcome read_trace_dir(const std::string& dir) {
   std::string path = dir + "/trace.json";
   if (!fs::exists(path)) throw_input_error(dir, "", "not a trace folder (no trace.json)");
   TraceOutcome out;
-  try {
-    out.summary = Json::parse(read_text(path));
-  } catch (const nlohmann::json::exception& e) {
-    throw_input_error(path, "", std::string("not valid JSON: ") + e.what());
-  }
-  if (out.summary.value("schema", "") != kTraceSchema)
-    throw_input_error(path, "schema", std::string("expected ") + kTraceSchema);
+  out.summary = read_json_file(path, kTraceSchema);
   out.dir = dir;
   out.stream = dir + "/rays.rays";
   if (!fs::exists(out.stream)) throw_input_error(out.stream, "", "missing");
