@@ -1,5 +1,7 @@
 #include "model/sc/tlm_memory.h"
 
+#include <stdexcept>
+
 namespace rtsim {
 namespace {
 
@@ -11,31 +13,30 @@ void serve(MemoryLevel& level, const Clock& clock, tlm::tlm_generic_payload& tra
     return;
   }
   sc_core::sc_time stamp = sc_core::sc_time_stamp();
-  Cycle ready = level.read(trans.get_address(), trans.get_data_length(),
-                           clock.cycles(stamp + delay));
+  Cycle ready =
+      level.read(trans.get_address(), trans.get_data_length(), clock.cycles(stamp + delay));
   delay = clock.time(ready) - stamp;
   trans.set_response_status(tlm::TLM_OK_RESPONSE);
 }
 
 }  // namespace
 
-Cycle TlmReadPort::read(uint64_t addr, uint32_t bytes, Cycle now) {
+Cycle TlmInitiator::send(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle now) {
   if (scratch_.size() < bytes) scratch_.resize(bytes);
-  tlm::tlm_generic_payload& trans = trans_;
-  trans.set_command(tlm::TLM_READ_COMMAND);
-  trans.set_address(addr);
-  trans.set_data_ptr(scratch_.data());
-  trans.set_data_length(bytes);
-  trans.set_streaming_width(bytes);
-  trans.set_byte_enable_ptr(nullptr);
-  trans.set_dmi_allowed(false);
-  trans.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  trans_.set_command(command);
+  trans_.set_address(addr);
+  trans_.set_data_ptr(scratch_.data());
+  trans_.set_data_length(bytes);
+  trans_.set_streaming_width(bytes);
+  trans_.set_byte_enable_ptr(nullptr);
+  trans_.set_dmi_allowed(false);
+  trans_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
   sc_core::sc_time stamp = sc_core::sc_time_stamp();
   sc_core::sc_time delay = clock_.time(now) - stamp;
-  transport_(trans, delay);
-  if (trans.is_response_error())
-    throw std::runtime_error("memory read at " + std::to_string(addr) + " failed: " +
-                             trans.get_response_string());
+  transport_(trans_, delay);
+  if (trans_.is_response_error())
+    throw std::runtime_error("memory access at " + std::to_string(addr) +
+                             " failed: " + trans_.get_response_string());
   return clock_.cycles(stamp + delay);
 }
 
@@ -69,8 +70,8 @@ void DramModule::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& 
     // A write takes the bus for its bytes like a read; the writer does not wait for it.
     write_bytes_ += trans.get_data_length();
     sc_core::sc_time stamp = sc_core::sc_time_stamp();
-    Cycle ready = dram_.read(trans.get_address(), trans.get_data_length(),
-                             clock_.cycles(stamp + delay));
+    Cycle ready =
+        dram_.read(trans.get_address(), trans.get_data_length(), clock_.cycles(stamp + delay));
     delay = clock_.time(ready) - stamp;
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
     return;

@@ -26,20 +26,35 @@
 
 namespace rtsim {
 
-// A MemoryLevel that sends its reads as TLM transactions through `transport` (a socket's
-// b_transport, looked up at call time because sockets bind after construction).
-class TlmReadPort : public MemoryLevel {
+// Sends reads and writes as TLM transactions through `transport` (a socket's b_transport,
+// looked up at call time because sockets bind after construction). The request time is the
+// caller's cycle, which may run ahead of sc_time_stamp() (temporal decoupling: the delay
+// argument carries the offset). Returns the cycle the target is done.
+class TlmInitiator {
  public:
   using Transport = std::function<void(tlm::tlm_generic_payload&, sc_core::sc_time&)>;
-  TlmReadPort(Transport transport, const Clock& clock)
+  TlmInitiator(Transport transport, const Clock& clock)
       : transport_(std::move(transport)), clock_(clock) {}
-  Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
+  Cycle send(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle now);
 
  private:
   Transport transport_;
   Clock clock_;
-  tlm::tlm_generic_payload trans_;  // reused: a level has one read in flight in the call chain
+  tlm::tlm_generic_payload trans_;  // reused: one transaction in flight in the call chain
   std::vector<unsigned char> scratch_;
+};
+
+// A MemoryLevel whose reads go out as TLM transactions.
+class TlmReadPort : public MemoryLevel {
+ public:
+  TlmReadPort(TlmInitiator::Transport transport, const Clock& clock)
+      : initiator_(std::move(transport), clock) {}
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override {
+    return initiator_.send(tlm::TLM_READ_COMMAND, addr, bytes, now);
+  }
+
+ private:
+  TlmInitiator initiator_;
 };
 
 // A cache level: any number of initiators bind to `in`; misses go out through `out`.
