@@ -11,10 +11,6 @@
 #include "synthetic_frames.h"
 #include "workloads/scene.h"
 
-int sc_main(int, char**) {
-  return 0;
-}  // SystemC's library needs the symbol; gtest owns main
-
 namespace rtsim::multi {
 namespace {
 

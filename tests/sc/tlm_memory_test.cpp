@@ -6,8 +6,6 @@
 
 #include "model/sc/tlm_memory.h"
 
-int sc_main(int, char**) { return 0; }  // SystemC's library needs the symbol; gtest owns main
-
 namespace rtsim {
 namespace {
 
