@@ -85,6 +85,28 @@ uint64_t ConfigReader::integer(const std::string& key, uint64_t def, const char*
   return value;
 }
 
+std::vector<std::string> ConfigReader::strings(const std::string& key,
+                                               const std::vector<std::string>& def,
+                                               const char* desc) {
+  std::string text;
+  for (const std::string& d : def) text += (text.empty() ? "\"" : ", \"") + d + "\"";
+  const toml::node* node = take(key, "array of strings", "[" + text + "]", "", desc);
+  if (!node) {
+    record(key, def);
+    return def;
+  }
+  const toml::array* array = node->as_array();
+  std::vector<std::string> values;
+  for (size_t i = 0; array && i < array->size(); ++i) {
+    auto v = array->get(i)->value_exact<std::string>();
+    if (!v) break;
+    values.push_back(*v);
+  }
+  if (!array || values.size() != array->size()) fail(key, "expected an array of strings");
+  record(key, values);
+  return values;
+}
+
 double ConfigReader::real(const std::string& key, double def, const char* unit, const char* desc,
                           double lo, double hi) {
   const toml::node* node = take(key, "number", fmt::format("{}", def), unit, desc);

@@ -35,7 +35,7 @@ struct ConfigReadContext {
 };
 
 class ConfigReader {
-public:
+ public:
   // table may be null: an absent section, every read returns its default.
   ConfigReader(const toml::table* table, std::string prefix, ConfigReadContext& ctx);
 
@@ -47,10 +47,12 @@ public:
   bool boolean(const std::string& key, bool def, const char* desc);
   std::string text(const std::string& key, const std::string& def, const char* desc,
                    const std::vector<std::string>& choices = {});
+  std::vector<std::string> strings(const std::string& key, const std::vector<std::string>& def,
+                                   const char* desc);
   // Throws InputError naming this section's key (or the section itself) and its line.
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
-private:
+ private:
   const toml::node* take(const std::string& key, const char* type, const std::string& def,
                          const char* unit, const char* desc);
   void record(const std::string& key, nlohmann::ordered_json value);

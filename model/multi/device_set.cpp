@@ -16,37 +16,6 @@ std::string line_of(const toml::node* node) {
   return fmt::format("line {}", node->source().begin.line);
 }
 
-std::string file_of(const ConfigReadContext& ctx, const std::string& key) {
-  bool set = std::find(ctx.set_keys.begin(), ctx.set_keys.end(), key) != ctx.set_keys.end();
-  return set ? "--set " + key : ctx.file;
-}
-
-// A list of strings; ConfigReader reads single values only.
-std::vector<std::string> read_strings(const toml::table* table, const std::string& prefix,
-                                      const std::string& key, std::vector<std::string> def,
-                                      const char* desc, ConfigReadContext& ctx) {
-  std::string full = prefix.empty() ? key : prefix + "." + key;
-  if (std::find(ctx.known.begin(), ctx.known.end(), full) == ctx.known.end()) {
-    std::string text;
-    for (const std::string& d : def) text += (text.empty() ? "\"" : ", \"") + d + "\"";
-    ctx.known.push_back(full);
-    ctx.docs.push_back({full, "array of strings", "[" + text + "]", "", desc});
-  }
-  const toml::node* node = table ? table->get(key) : nullptr;
-  if (!node) return def;
-  const toml::array* array = node->as_array();
-  std::vector<std::string> values;
-  for (size_t i = 0; array && i < array->size(); ++i) {
-    auto v = array->get(i)->value_exact<std::string>();
-    if (!v) break;
-    values.push_back(*v);
-  }
-  if (!array || values.size() != array->size())
-    throw_input_error(file_of(ctx, full), line_of(node),
-                      fmt::format("key '{}': expected an array of strings", full));
-  return values;
-}
-
 // Every key of an element of an array of tables must be one that was read for it.
 void check_element_keys(const toml::table& element, const std::string& prefix,
                         const ConfigReadContext& ctx) {
@@ -66,12 +35,11 @@ std::string relative_to(const std::string& file, const std::string& path) {
   return (std::filesystem::path(file).parent_path() / path).lexically_normal().string();
 }
 
-DeviceHardware read_hardware(ConfigReader& r, const toml::table* table, const std::string& prefix,
-                             ConfigReadContext& ctx, const char* config_desc,
+DeviceHardware read_hardware(ConfigReader& r, const std::string& file, const char* config_desc,
                              const char* sets_desc) {
   DeviceHardware h;
-  h.config = relative_to(ctx.file, r.text("config", "", config_desc));
-  h.sets = read_strings(table, prefix, "set", {}, sets_desc, ctx);
+  h.config = relative_to(file, r.text("config", "", config_desc));
+  h.sets = r.strings("set", {}, sets_desc);
   return h;
 }
 
@@ -86,7 +54,7 @@ void read_devices(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
     const toml::table* table = i < elements ? array->get(i)->as_table() : nullptr;
     ConfigReader r(table, prefix, ctx);
     DeviceHardware h = read_hardware(
-        r, table, prefix, ctx,
+        r, ctx.file,
         "hardware config of these devices, relative to this file (empty: built-in defaults)",
         "hardware key=value overrides, as rtsim sim --set takes them");
     auto count =
@@ -112,10 +80,9 @@ void read_changes(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
         uint32_t(r.integer("frame", 1, "frame", "first frame with the new hardware", 0, 1u << 30));
     c.device =
         uint32_t(r.integer("device", 0, "index", "which device changes (0: primary)", 0, 1023));
-    c.hardware =
-        read_hardware(r, table, prefix, ctx,
-                      "the device's hardware config from this frame on (empty: the device's own)",
-                      "overrides added to the device's own from this frame on (empty: none)");
+    c.hardware = read_hardware(
+        r, ctx.file, "the device's hardware config from this frame on (empty: the device's own)",
+        "overrides added to the device's own from this frame on (empty: none)");
     if (!table) break;
     check_element_keys(*table, prefix, ctx);
     if (c.device >= s.devices.size() && !s.devices.empty())
@@ -128,8 +95,7 @@ void read_changes(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
 }
 
 // Every single key of a device set, read once, here. Defaults are the values already in `s`.
-void read_single_keys(ConfigReader& r, const toml::table* root, DeviceSet& s,
-                      ConfigReadContext& ctx) {
+void read_single_keys(ConfigReader& r, DeviceSet& s) {
   s.name = r.text("name", s.name, "the set's name, carried into results");
   s.description = r.text("description", s.description, "what the set models");
 
@@ -163,9 +129,8 @@ void read_single_keys(ConfigReader& r, const toml::table* root, DeviceSet& s,
   ConfigReader split = r.section("split");
   std::vector<std::string> names;
   for (SplitStrategy st : s.strategies) names.push_back(strategy_name(st));
-  const toml::node* split_node = root ? root->get("split") : nullptr;
-  names = read_strings(split_node ? split_node->as_table() : nullptr, "split", "strategies", names,
-                       "strategies compared side by side: static, balanced, cost, current", ctx);
+  names = split.strings("strategies", names,
+                        "strategies compared side by side: static, balanced, cost, current");
   s.strategies.clear();
   for (const std::string& n : names) {
     auto st = strategy_from_name(n);
@@ -195,7 +160,7 @@ void read_single_keys(ConfigReader& r, const toml::table* root, DeviceSet& s,
 DeviceSet read_set(const toml::table* root, ConfigReadContext& ctx) {
   DeviceSet s;
   ConfigReader reader(root, "", ctx);
-  read_single_keys(reader, root, s, ctx);
+  read_single_keys(reader, s);
   toml::table empty;
   read_devices(root ? *root : empty, s, ctx);
   read_changes(root ? *root : empty, s, ctx);
