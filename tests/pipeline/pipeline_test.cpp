@@ -11,6 +11,7 @@
 #include "traces/embree_scene.h"
 #include "traces/stream.h"
 #include "workloads/pipeline/summary.h"
+#include "workloads/pipeline/trace.h"
 #include "workloads/scene.h"
 
 namespace rtsim::pipeline {
@@ -34,7 +35,7 @@ RunSummary run(const WorkloadSpec& spec) {
   Pipeline p(spec, scene, embree);
   RaySink sink(nullptr, spec.width, spec.height, false);
   FrameResults frame;
-  for (uint32_t f = 0; f < spec.frames; ++f) p.run_frame(f, sink, frame);
+  for (uint32_t f = 0; f < p.frames_to_run(); ++f) p.run_frame(f, sink, frame);
   return p.summary();
 }
 
@@ -110,23 +111,9 @@ TEST(Pipeline, PicaPicaBudgetsAtFullHd) {
 
 // What `rtsim trace -o path` writes (tests/pipeline/cli_trace_test.cpp runs the command).
 uint64_t write_stream(const WorkloadSpec& spec, const std::string& path) {
-  Scene scene = load_scene(spec.scene);
-  EmbreeScene embree(scene.mesh, 1);
-  Pipeline p(spec, scene, embree);
-  StreamHeader header;
-  header.scene_source = scene.source;
-  header.scene_fingerprint = scene.fingerprint;
-  header.workload = spec.name;
-  header.seed = spec.seed;
-  header.frame_count = spec.frames;
-  header.width = spec.width;
-  header.height = spec.height;
-  RayStreamWriter writer(path, header);
-  RaySink sink(&writer, spec.width, spec.height, false);
-  FrameResults frame;
-  for (uint32_t f = 0; f < spec.frames; ++f) p.run_frame(f, sink, frame);
-  writer.finish();
-  return p.summary().total_rays();
+  TraceOptions options;
+  options.output = path;
+  return trace_workload(spec, options).summary.total_rays();
 }
 
 std::string slurp(const std::string& path) {
@@ -184,11 +171,11 @@ std::vector<Ray> recorded_rays(const WorkloadSpec& spec, RunSummary& summary) {
   Scene scene = load_scene(spec.scene);
   EmbreeScene embree(scene.mesh, 1);
   Pipeline p(spec, scene, embree);
-  RaySink sink(nullptr, spec.width, spec.height, false, spec.warmup_frames);
+  RaySink sink(nullptr, spec.width, spec.height, false);
   std::vector<Ray> rays;
   sink.observer = [&rays](const Ray& r, PassId, uint32_t) { rays.push_back(r); };
   FrameResults frame;
-  for (uint32_t f = 0; f < spec.warmup_frames + spec.frames; ++f) p.run_frame(f, sink, frame);
+  for (uint32_t f = 0; f < p.frames_to_run(); ++f) p.run_frame(f, sink, frame);
   summary = p.summary();
   return rays;
 }

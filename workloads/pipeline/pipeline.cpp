@@ -119,6 +119,7 @@ std::vector<SamplePosition> Pipeline::place_samples(const FrameContext& ctx, Ray
 
 void Pipeline::run_frame(uint32_t frame, RaySink& sink, FrameResults& r) {
   warming_up_ = frame < spec_.warmup_frames;
+  sink.set_warmup_frames(spec_.warmup_frames);
   uint32_t camera_frame = warming_up_ ? 0 : frame - spec_.warmup_frames;
   r.camera = camera_for_frame(spec_.camera, auto_fit_, camera_frame, spec_.frames, spec_.width,
                               spec_.height);

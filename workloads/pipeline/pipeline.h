@@ -62,9 +62,11 @@ class Pipeline {
   Pipeline(const WorkloadSpec& spec, const Scene& scene, const EmbreeScene& embree);
 
   // Runs every pass of one frame; frames must be run in order from 0. The first
-  // spec.warmup_frames of them are the warm-up: at frame 0's camera, not in the summary (the
-  // sink drops their rays).
+  // spec.warmup_frames of them are the warm-up: at frame 0's camera, not in the summary, and
+  // the sink drops their rays (it writes the others numbered from 0).
   void run_frame(uint32_t frame, RaySink& sink, FrameResults& results);
+  // How many frames to run: the warm-up and the recorded ones.
+  uint32_t frames_to_run() const { return spec_.warmup_frames + spec_.frames; }
 
   const SceneContext& scene() const { return scene_; }
   const SurfelCache& surfels() const { return surfels_; }

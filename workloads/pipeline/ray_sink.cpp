@@ -24,9 +24,8 @@ RayType pass_ray_type(PassId pass) {
   return RayType::Camera;
 }
 
-RaySink::RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density,
-                 uint32_t warmup_frames)
-    : writer_(writer), warmup_frames_(warmup_frames), frame_cost_(size_t(width) * height, 0) {
+RaySink::RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density)
+    : writer_(writer), frame_cost_(size_t(width) * height, 0) {
   if (keep_density)
     for (auto& d : density_) d.assign(size_t(width) * height, 0);
 }

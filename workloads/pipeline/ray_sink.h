@@ -39,8 +39,9 @@ class RaySink {
   using Observer = std::function<void(const Ray&, PassId, uint32_t origin_prim)>;
 
   // writer may be null (count only). Density counts are kept when keep_density is set.
-  RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density,
-          uint32_t warmup_frames = 0);
+  RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool keep_density);
+  // Frames before this one are the warm-up (the Pipeline sets it from its spec).
+  void set_warmup_frames(uint32_t frames) { warmup_frames_ = frames; }
 
   void set_pass(PassId pass) { pass_ = pass; }
   PassId pass() const { return pass_; }
@@ -57,7 +58,7 @@ class RaySink {
 
  private:
   RayStreamWriter* writer_;
-  uint32_t warmup_frames_;
+  uint32_t warmup_frames_ = 0;
   PassId pass_ = PassId::Camera;
   std::array<uint64_t, kPassCount> counts_{};
   std::array<std::vector<uint32_t>, kPassCount> density_;

@@ -40,8 +40,8 @@ TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options
     header.height = spec.height;
     writer = std::make_unique<RayStreamWriter>(options.output, header);
   }
-  RaySink sink(writer.get(), spec.width, spec.height, !options.preview.empty(), spec.warmup_frames);
-  uint32_t frames = spec.warmup_frames + spec.frames;
+  RaySink sink(writer.get(), spec.width, spec.height, !options.preview.empty());
+  uint32_t frames = pipeline.frames_to_run();
   if (options.progress)
     pipeline.on_pass = [&](uint32_t frame, PassId pass) { options.progress(frame, frames, pass); };
   FrameResults frame;
