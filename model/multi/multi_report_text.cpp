@@ -45,7 +45,7 @@ std::string changes_text(const ReportInput& in) {
 }
 
 std::string samples_text(const DeviceSet& set) {
-  return set.samples == SampleUnit::Rays ? "every ray" : "camera rays";
+  return set.samples == SampleUnit::Rays ? "every ray" : "camera rays only";
 }
 
 // One row per strategy: its averages over the run.
@@ -90,7 +90,7 @@ std::string multi_report_markdown(const ReportInput& in, bool with_chart) {
   std::string md = fmt::format("# Multi-device frames: {}\n\n", in.header.workload);
   md += fmt::format(
       "Stream `{}` ({}, {}x{}), {} frames, {} rays. Device set `{}`{}: {} devices "
-      "({}); device 0 is the primary. Regions run along {}. The balancers count {} as samples."
+      "({}); device 0 is the primary. Regions run along {}. Samples counted by the balancers: {}."
       "\n\n",
       in.stream, in.header.scene_source, r.layout.width, r.layout.height, r.single_trace_ns.size(),
       r.rays, in.set->name, in.set->file.empty() ? "" : " (" + in.set->file + ")", r.devices,
