@@ -82,8 +82,9 @@ TEST(SystemCBackend, HalfTheUnitsConverges) {
     // splits take 5 to 9 frames here: a pixel's cost (slot cycles) grows with its device's
     // load, so a busy device's pixels look dearer.
     EXPECT_GE(b.settle[0].settle_frames, 0) << name << ": settles at or below 10%";
-    if (r.runs[k].strategy == SplitStrategy::Balanced)
+    if (r.runs[k].strategy == SplitStrategy::Balanced) {
       EXPECT_LE(b.settle[0].settle_frames, 3) << name;
+    }
   }
 }
 
