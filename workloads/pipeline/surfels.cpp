@@ -64,15 +64,18 @@ float SurfelCache::coverage(const glm::vec3& p, const glm::vec3& n) const {
   return sum;
 }
 
-bool SurfelCache::irradiance(const glm::vec3& p, const glm::vec3& n, glm::vec3& out) const {
+bool SurfelCache::gaussian_mean(const glm::vec3& p, const glm::vec3& n, float reach, float sigma,
+                                bool by_samples, glm::vec3& out) const {
+  float inv_two_sigma2 = 1.0f / (2.0f * sigma * sigma);
   float wsum = 0.0f;
   glm::vec3 sum(0.0f);
-  for_each_near(p, 2.0f * radius_, [&](const Surfel& s) {
+  for_each_near(p, reach * radius_, [&](const Surfel& s) {
     if (s.irradiance_samples == 0) return;
     float dist = distance(s, p);
-    float cos = std::max(0.0f, glm::dot(n, s.normal));
-    if (dist >= 2.0f || cos <= 0.0f) return;
-    float w = std::exp(-2.0f * dist * dist) * cos * cos;
+    float cos = glm::dot(n, s.normal);
+    if (dist >= reach || cos <= 0.0f) return;
+    float w = std::exp(-dist * dist * inv_two_sigma2) * cos * cos;
+    if (by_samples) w *= float(s.irradiance_samples);
     wsum += w;
     sum += w * s.irradiance_sum / float(s.irradiance_samples);
   });
@@ -81,25 +84,19 @@ bool SurfelCache::irradiance(const glm::vec3& p, const glm::vec3& n, glm::vec3& 
   return true;
 }
 
+bool SurfelCache::irradiance(const glm::vec3& p, const glm::vec3& n, glm::vec3& out) const {
+  return gaussian_mean(p, n, 2.0f, 0.5f, false, out);
+}
+
 void SurfelCache::smooth_irradiance(float reach) {
   std::vector<glm::vec3> mean(surfels_.size(), glm::vec3(0.0f));
-  std::vector<float> weight(surfels_.size(), 0.0f);
-  float inv_two_sigma2 = 2.0f / (reach * reach);
+  std::vector<bool> found(surfels_.size(), false);
+  for (size_t i = 0; i < surfels_.size(); ++i)
+    found[i] =
+        gaussian_mean(surfels_[i].position, surfels_[i].normal, reach, reach / 2, true, mean[i]);
   for (size_t i = 0; i < surfels_.size(); ++i) {
-    const Surfel& s = surfels_[i];
-    for_each_near(s.position, reach * radius_, [&](const Surfel& t) {
-      if (t.irradiance_samples == 0) return;
-      float dist = distance(t, s.position);
-      float cos = glm::dot(s.normal, t.normal);
-      if (dist >= reach || cos <= 0.0f) return;
-      float w = std::exp(-dist * dist * inv_two_sigma2) * cos * cos * float(t.irradiance_samples);
-      mean[i] += w * t.irradiance_sum / float(t.irradiance_samples);
-      weight[i] += w;
-    });
-  }
-  for (size_t i = 0; i < surfels_.size(); ++i) {
-    if (weight[i] <= 0.0f) continue;
-    surfels_[i].irradiance_sum = mean[i] / weight[i];
+    if (!found[i]) continue;
+    surfels_[i].irradiance_sum = mean[i];
     surfels_[i].irradiance_samples = 1;
   }
 }

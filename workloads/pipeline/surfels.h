@@ -27,7 +27,7 @@ struct Surfel {
 };
 
 class SurfelCache {
-public:
+ public:
   // radius 0: set by the first spawn_surfels() call (see there).
   explicit SurfelCache(float radius) : radius_(radius) {}
 
@@ -49,12 +49,17 @@ public:
   // surfel has had only a few rays.
   void smooth_irradiance(float reach);
 
-private:
+ private:
   template <typename F>
   void for_each_near(const glm::vec3& p, float reach, F&& f) const;
   // Distance from p in radii, squashed along the surfel's normal (Mahalanobis).
   float distance(const Surfel& s, const glm::vec3& p) const;
   float weight(const Surfel& s, const glm::vec3& p, const glm::vec3& n) const;
+  // Mean irradiance of the surfels within `reach` radii of p, each weighted by a Gaussian
+  // (sigma in radii) of its distance, the squared cosine between normals and, if by_samples,
+  // its sample count; false if none is near.
+  bool gaussian_mean(const glm::vec3& p, const glm::vec3& n, float reach, float sigma,
+                     bool by_samples, glm::vec3& out) const;
 
   float radius_;
   std::vector<Surfel> surfels_;
