@@ -123,7 +123,7 @@ std::string html_rows(const Json& doc, const std::vector<Row>& rows) {
 std::string markdown_rows(const Json& doc, const std::vector<Row>& rows) {
   std::string out = "| | |\n|---|---|\n";
   for (const Row& r : rows)
-    out += "| " + r.label + " | " + show(at_key(doc, r.key), r.style) + " |\n";
+    if (r.brief) out += "| " + r.label + " | " + show(at_key(doc, r.key), r.style) + " |\n";
   return out;
 }
 

@@ -39,6 +39,7 @@ std::string html_cell(const nlohmann::ordered_json& doc, const std::string& key,
 struct Row {
   std::string label, key;
   Style style;
+  bool brief = true;  // also in the Markdown pages (markdown_rows skips the others)
 };
 std::string html_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
 

@@ -15,28 +15,8 @@ std::string section(const char* id, const char* title, const std::string& body) 
   return fmt::format("<section id=\"{}\">\n<h2>{}</h2>\n{}</section>\n", id, title, body);
 }
 
-std::string summary(const Json& r) {
-  return html_rows(r, {{"workload", "workload.name", Style::Text},
-                       {"hardware", "hardware.name", Style::Text},
-                       {"fidelity level", "timing.level", Style::Text},
-                       {"rays", "timing.rays", Style::Integer},
-                       {"cycles", "timing.cycles", Style::Integer},
-                       {"MRays/s", "timing.mrays_per_second", Style::Real},
-                       {"DRAM bytes per ray", "bandwidth.dram_bytes_per_ray", Style::Real},
-                       {"L1 hit rate", "bandwidth.l1_hit_rate", Style::Percent},
-                       {"L2 hit rate", "bandwidth.l2_hit_rate", Style::Percent},
-                       {"unexplained mismatches", "verification.unexplained", Style::Integer}});
-}
-
 std::string workload(const Json& r) {
-  std::string out = html_rows(r, {{"workload", "workload.name", Style::Text},
-                                  {"scene", "workload.scene", Style::Text},
-                                  {"triangles", "workload.triangles", Style::Integer},
-                                  {"width", "workload.width", Style::Integer},
-                                  {"height", "workload.height", Style::Integer},
-                                  {"frames", "workload.frames", Style::Integer},
-                                  {"lights", "workload.lights", Style::Integer},
-                                  {"rays", "workload.rays", Style::Integer}});
+  std::string out = html_rows(r, workload_rows());
   out += "<h3>Rays per type</h3>\n" +
          html_type_table(r, "workload.rays_per_type", {{"rays", "", kInt}});
   out +=
@@ -55,51 +35,15 @@ std::string workload(const Json& r) {
 }
 
 std::string hardware(const Json& r) {
-  std::string out =
-      html_rows(r, {{"preset", "hardware.name", Style::Text},
-                    {"description", "hardware.description", Style::Text},
-                    {"config file", "hardware.config_file", Style::Text},
-                    {"clock (GHz)", "hardware.clock_ghz", Style::Real},
-                    {"RT units", "hardware.rt_units", Style::Integer},
-                    {"traversal", "hardware.mode", Style::Text},
-                    {"ray slots", "hardware.ray_slots", Style::Integer},
-                    {"L1 bytes (per unit)", "hardware.l1.size_bytes", Style::Integer},
-                    {"L1 hit latency", "hardware.l1.hit_latency", Style::Integer},
-                    {"L2 bytes", "hardware.l2.size_bytes", Style::Integer},
-                    {"L2 hit latency", "hardware.l2.hit_latency", Style::Integer},
-                    {"DRAM bytes/cycle", "hardware.dram.bytes_per_cycle", Style::Real},
-                    {"DRAM latency", "hardware.dram.latency", Style::Integer},
-                    {"BVH", "hardware.bvh", Style::Text},
-                    {"on-chip bytes", "hardware.on_chip_bytes", Style::Integer}});
+  std::string out = html_rows(r, hardware_rows());
   const Json& sets = r["hardware"]["sets"];
   if (!sets.empty()) out += "<p>Overrides: <code>" + html_escape(sets.dump()) + "</code></p>\n";
   return out + "<details><summary>Every key, resolved</summary><pre>" +
          html_escape(r["hardware"]["resolved"].dump(2)) + "</pre></details>\n";
 }
 
-std::string timing(const Json& r) {
-  return html_rows(r, {{"fidelity level", "timing.level", Style::Text},
-                       {"time model", "timing.time_model", Style::Text},
-                       {"cycles", "timing.cycles", Style::Integer},
-                       {"cycles, 95% interval (±)", "timing.cycles_ci95", Style::Integer},
-                       {"clock (GHz)", "timing.clock_ghz", Style::Real},
-                       {"MRays/s at the clock", "timing.mrays_per_second", Style::Real},
-                       {"rays per cycle", "timing.rays_per_cycle", Style::Real},
-                       {"host seconds (simulation)", "timing.host_seconds", Style::Real}});
-}
-
 std::string bandwidth(const Json& r) {
-  std::string out =
-      "<h3>Bytes per ray at each level</h3>\n" +
-      html_rows(r,
-                {{"L1 (requested by the units)", "bandwidth.l1_bytes_per_ray", Style::Real},
-                 {"L2 (L1 misses)", "bandwidth.l2_bytes_per_ray", Style::Real},
-                 {"DRAM (L2 misses and stack spills)", "bandwidth.dram_bytes_per_ray", Style::Real},
-                 {"L1 hit rate", "bandwidth.l1_hit_rate", Style::Percent},
-                 {"L2 hit rate", "bandwidth.l2_hit_rate", Style::Percent},
-                 {"DRAM bytes", "bandwidth.dram_bytes", Style::Integer},
-                 {"DRAM bytes per cycle", "bandwidth.dram_bytes_per_cycle", Style::Real},
-                 {"DRAM utilisation", "bandwidth.dram_utilisation", Style::Percent}});
+  std::string out = html_rows(r, bandwidth_rows());
   return out + "<h3>Per ray type</h3>\n" +
          html_type_table(r, "bandwidth.by_type",
                          {{"L1 line bytes/ray", "l1_bytes_per_ray", kReal},
@@ -166,11 +110,12 @@ std::string report_html(const Json& r, const std::string& run_dir) {
       "href=\"#bandwidth\">Bandwidth</a><a href=\"#coherence\">Coherence</a><a "
       "href=\"#verification\">Verification</a><a href=\"#pictures\">Pictures</a><a "
       "href=\"#charts\">Charts</a></nav>\n";
-  out += section("summary", "Summary", summary(r));
+  out += section("summary", "Summary", html_rows(r, summary_rows()));
   out += section("workload", "Workload", workload(r));
   out += section("hardware", "Hardware config", hardware(r));
-  out += section("timing", "Timing",
-                 timing(r) + "<h3>Latency per ray type (cycles)</h3>\n" + latency(r));
+  out += section(
+      "timing", "Timing",
+      html_rows(r, timing_rows()) + "<h3>Latency per ray type (cycles)</h3>\n" + latency(r));
   out += section("bandwidth", "Bandwidth", bandwidth(r));
   out += section("coherence", "Coherence", coherence(r));
   out += section("verification", "Verification", verification(r));

@@ -55,49 +55,18 @@ std::string report_markdown(const Json& r) {
       "report.html, data: report.json\n\n",
       r["workload"]["name"].get<std::string>(), r["hardware"]["name"].get<std::string>(),
       r["generator"].get<std::string>(), r["command"].get<std::string>());
-  out += "## Summary\n\n" +
-         markdown_rows(r, {{"fidelity level", "timing.level", Style::Text},
-                           {"rays", "timing.rays", Style::Integer},
-                           {"cycles", "timing.cycles", Style::Integer},
-                           {"MRays/s", "timing.mrays_per_second", Style::Real},
-                           {"DRAM bytes per ray", "bandwidth.dram_bytes_per_ray", Style::Real},
-                           {"L1 hit rate", "bandwidth.l1_hit_rate", Style::Percent},
-                           {"L2 hit rate", "bandwidth.l2_hit_rate", Style::Percent}});
-  out +=
-      "\n## Workload\n\n" + markdown_rows(r, {{"scene", "workload.scene", Style::Text},
-                                              {"triangles", "workload.triangles", Style::Integer},
-                                              {"width", "workload.width", Style::Integer},
-                                              {"height", "workload.height", Style::Integer},
-                                              {"frames", "workload.frames", Style::Integer},
-                                              {"rays", "workload.rays", Style::Integer}});
+  out += "## Summary\n\n" + markdown_rows(r, summary_rows());
+  out += "\n## Workload\n\n" + markdown_rows(r, workload_rows());
   out += "\n" + markdown_type_table(r, "workload.rays_per_type", {{"rays", "", kInt}}) + "\n" +
          passes(r);
-  out += "\n## Hardware config\n\n" +
-         markdown_rows(r, {{"preset", "hardware.name", Style::Text},
-                           {"config file", "hardware.config_file", Style::Text},
-                           {"clock (GHz)", "hardware.clock_ghz", Style::Real},
-                           {"RT units", "hardware.rt_units", Style::Integer},
-                           {"traversal", "hardware.mode", Style::Text},
-                           {"L1 bytes (per unit)", "hardware.l1.size_bytes", Style::Integer},
-                           {"L2 bytes", "hardware.l2.size_bytes", Style::Integer},
-                           {"BVH", "hardware.bvh", Style::Text},
-                           {"on-chip bytes", "hardware.on_chip_bytes", Style::Integer}});
-  out += "\n## Timing\n\n" +
-         markdown_rows(r, {{"time model", "timing.time_model", Style::Text},
-                           {"cycles", "timing.cycles", Style::Integer},
-                           {"cycles, 95% interval (±)", "timing.cycles_ci95", Style::Integer},
-                           {"clock (GHz)", "timing.clock_ghz", Style::Real},
-                           {"MRays/s at the clock", "timing.mrays_per_second", Style::Real}});
+  out += "\n## Hardware config\n\n" + markdown_rows(r, hardware_rows());
+  out += "\n## Timing\n\n" + markdown_rows(r, timing_rows());
   out += "\n" + markdown_type_table(r, "latency.by_type",
                                     {{"p50", "p50", kInt},
                                      {"p95", "p95", kInt},
                                      {"p99", "p99", kInt},
                                      {"mean", "mean", kReal}});
-  out += "\n## Bandwidth\n\n" +
-         markdown_rows(r, {{"L1 bytes per ray", "bandwidth.l1_bytes_per_ray", Style::Real},
-                           {"L2 bytes per ray", "bandwidth.l2_bytes_per_ray", Style::Real},
-                           {"DRAM bytes per ray", "bandwidth.dram_bytes_per_ray", Style::Real},
-                           {"DRAM utilisation", "bandwidth.dram_utilisation", Style::Percent}});
+  out += "\n## Bandwidth\n\n" + markdown_rows(r, bandwidth_rows());
   out += "\n" + markdown_type_table(r, "hit_rates.by_type",
                                     {{"L1 hit rate", "l1", kPct}, {"L2 hit rate", "l2", kPct}});
   out += "\n## Coherence\n\n" +

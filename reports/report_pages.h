@@ -8,11 +8,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "reports/page_util.h"
+
 namespace rtsim::reports {
 
 // run_dir: where images/ are read from (for embedding).
 std::string report_html(const nlohmann::ordered_json& report, const std::string& run_dir);
 std::string report_markdown(const nlohmann::ordered_json& report);
+
+// The labelled values of the summary, workload, hardware, timing and bandwidth sections, for
+// both pages (report_rows.cpp).
+const std::vector<Row>& summary_rows();
+const std::vector<Row>& workload_rows();
+const std::vector<Row>& hardware_rows();
+const std::vector<Row>& timing_rows();
+const std::vector<Row>& bandwidth_rows();
 
 // A table with one row per key of doc[prefix] (ray types), columns (title, key under the row,
 // style); the HTML cells carry their full keys.

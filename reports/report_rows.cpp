@@ -1,0 +1,81 @@
+// The labelled values of a run report's sections, declared once: report.html shows every row,
+// report.md the brief ones.
+#include "reports/report_pages.h"
+
+namespace rtsim::reports {
+
+const std::vector<Row>& summary_rows() {
+  static const std::vector<Row> rows{
+      {"workload", "workload.name", Style::Text, false},
+      {"hardware", "hardware.name", Style::Text, false},
+      {"fidelity level", "timing.level", Style::Text},
+      {"rays", "timing.rays", Style::Integer},
+      {"cycles", "timing.cycles", Style::Integer},
+      {"MRays/s", "timing.mrays_per_second", Style::Real},
+      {"DRAM bytes per ray", "bandwidth.dram_bytes_per_ray", Style::Real},
+      {"L1 hit rate", "bandwidth.l1_hit_rate", Style::Percent},
+      {"L2 hit rate", "bandwidth.l2_hit_rate", Style::Percent},
+      {"unexplained mismatches", "verification.unexplained", Style::Integer, false}};
+  return rows;
+}
+
+const std::vector<Row>& workload_rows() {
+  static const std::vector<Row> rows{{"workload", "workload.name", Style::Text, false},
+                                     {"scene", "workload.scene", Style::Text},
+                                     {"triangles", "workload.triangles", Style::Integer},
+                                     {"width", "workload.width", Style::Integer},
+                                     {"height", "workload.height", Style::Integer},
+                                     {"frames", "workload.frames", Style::Integer},
+                                     {"lights", "workload.lights", Style::Integer, false},
+                                     {"rays", "workload.rays", Style::Integer}};
+  return rows;
+}
+
+const std::vector<Row>& hardware_rows() {
+  static const std::vector<Row> rows{
+      {"preset", "hardware.name", Style::Text},
+      {"description", "hardware.description", Style::Text, false},
+      {"config file", "hardware.config_file", Style::Text},
+      {"clock (GHz)", "hardware.clock_ghz", Style::Real},
+      {"RT units", "hardware.rt_units", Style::Integer},
+      {"traversal", "hardware.mode", Style::Text},
+      {"ray slots", "hardware.ray_slots", Style::Integer, false},
+      {"L1 bytes (per unit)", "hardware.l1.size_bytes", Style::Integer},
+      {"L1 hit latency", "hardware.l1.hit_latency", Style::Integer, false},
+      {"L2 bytes", "hardware.l2.size_bytes", Style::Integer},
+      {"L2 hit latency", "hardware.l2.hit_latency", Style::Integer, false},
+      {"DRAM bytes/cycle", "hardware.dram.bytes_per_cycle", Style::Real, false},
+      {"DRAM latency", "hardware.dram.latency", Style::Integer, false},
+      {"BVH", "hardware.bvh", Style::Text},
+      {"on-chip bytes", "hardware.on_chip_bytes", Style::Integer}};
+  return rows;
+}
+
+const std::vector<Row>& timing_rows() {
+  static const std::vector<Row> rows{
+      {"fidelity level", "timing.level", Style::Text, false},
+      {"time model", "timing.time_model", Style::Text},
+      {"cycles", "timing.cycles", Style::Integer},
+      {"cycles, 95% interval (±)", "timing.cycles_ci95", Style::Integer},
+      {"clock (GHz)", "timing.clock_ghz", Style::Real},
+      {"MRays/s at the clock", "timing.mrays_per_second", Style::Real},
+      {"rays per cycle", "timing.rays_per_cycle", Style::Real, false},
+      {"host seconds (simulation)", "timing.host_seconds", Style::Real, false}};
+  return rows;
+}
+
+const std::vector<Row>& bandwidth_rows() {
+  static const std::vector<Row> rows{
+      {"L1 bytes per ray (requested by the units)", "bandwidth.l1_bytes_per_ray", Style::Real},
+      {"L2 bytes per ray (L1 misses)", "bandwidth.l2_bytes_per_ray", Style::Real},
+      {"DRAM bytes per ray (L2 misses and stack spills)", "bandwidth.dram_bytes_per_ray",
+       Style::Real},
+      {"L1 hit rate", "bandwidth.l1_hit_rate", Style::Percent, false},
+      {"L2 hit rate", "bandwidth.l2_hit_rate", Style::Percent, false},
+      {"DRAM bytes", "bandwidth.dram_bytes", Style::Integer, false},
+      {"DRAM bytes per cycle", "bandwidth.dram_bytes_per_cycle", Style::Real, false},
+      {"DRAM utilisation", "bandwidth.dram_utilisation", Style::Percent}};
+  return rows;
+}
+
+}  // namespace rtsim::reports
