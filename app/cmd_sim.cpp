@@ -2,7 +2,6 @@
 // cycle-approximate model of the RT hardware over a ray stream and writes DIR/stats.json,
 // DIR/config.toml (the resolved config) and per-pixel buffers. Every ray's answer is checked
 // against Embree unless --no-verify; exit 1 if a mismatch is unexplained or the model stalls.
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -13,6 +12,7 @@
 #include "model/config/hw_config.h"
 #include "model/sc/sim_report.h"
 #include "model/sc/stream_sim.h"
+#include "traces/host_clock.h"
 #include "traces/error.h"
 #include "workloads/scene.h"
 
@@ -91,15 +91,14 @@ int run_sim(const SimOptions& o) {
                describe(config.bvh));
   StreamSim sim(config, image, scene.mesh, reader, !o.no_verify, !o.quiet);
   std::fflush(stdout);  // the header before the progress lines, also in a pipe
-  auto start = std::chrono::steady_clock::now();
+  double start = wall_seconds();
   try {
     sim.run();
   } catch (const SimStallError& e) {
     fmt::print(stderr, "rtsim: stall: {}", e.what());
     return 1;
   }
-  SimRunInfo info{o.stream, header, &image, sim.verify_report(),
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
+  SimRunInfo info{o.stream, header, &image, sim.verify_report(), wall_seconds() - start};
   nlohmann::ordered_json doc = write_sim_results(o.output, sim.simulator(), info);
   if (!o.quiet) {
     print_summary(doc);

@@ -1,30 +1,22 @@
 #include "workloads/pipeline/trace.h"
 
-#include <chrono>
 #include <memory>
 
 #include "traces/embree_scene.h"
+#include "traces/host_clock.h"
 #include "traces/stream.h"
 #include "workloads/pipeline/preview.h"
 #include "workloads/scene.h"
 
 namespace rtsim::pipeline {
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
-
 TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options) {
-  auto start = std::chrono::steady_clock::now();
+  double start = wall_seconds();
   Scene scene = load_scene(spec.scene);
-  double load_seconds = seconds_since(start);
-  start = std::chrono::steady_clock::now();
+  double load_seconds = wall_seconds() - start;
+  start = wall_seconds();
   EmbreeScene embree(scene.mesh, options.embree_threads);
-  double build_seconds = seconds_since(start);
-  start = std::chrono::steady_clock::now();
+  double build_seconds = wall_seconds() - start;
+  start = wall_seconds();
 
   Pipeline pipeline(spec, scene, embree);
   std::unique_ptr<RayStreamWriter> writer;
@@ -58,7 +50,7 @@ TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options
   result.summary = pipeline.summary();
   result.summary.load_seconds = load_seconds;
   result.summary.build_seconds = build_seconds;
-  result.summary.trace_seconds = seconds_since(start);
+  result.summary.trace_seconds = wall_seconds() - start;
   return result;
 }
 
