@@ -51,9 +51,6 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.sim.stall_cycles =
       sim.integer("stall_cycles", c.sim.stall_cycles, "cycles",
                   "no progress for this long stops the run with a stall error", 1, 1ull << 40);
-  c.sim.direct_l1 = sim.boolean("direct_l1", c.sim.direct_l1,
-                                "RT units read their L1 by a direct call (like a TLM DMI "
-                                "pointer) instead of a transaction: same timing, faster");
 
   ConfigReader dispatch = r.section("dispatch");
   c.dispatch.rays_per_cycle =

@@ -22,7 +22,6 @@ namespace rtsim {
 struct SimulationConfig {
   uint32_t quantum_cycles = 16;    // cycles: how far a unit runs ahead of SystemC time
   uint64_t stall_cycles = 200000;  // cycles: no progress for this long stops with a stall error
-  bool direct_l1 = true;           // RT units call their L1 directly instead of through the socket
 };
 
 struct HwConfig {

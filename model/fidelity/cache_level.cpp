@@ -34,9 +34,13 @@ struct Warp {
 class CacheWalk {
  public:
   CacheWalk(const HwConfig& config, const BvhImage& image)
-      : c_(config), traversal_(image), dram_(config.dram), l2_(config.l2, &dram_) {
+      : c_(config),
+        traversal_(image),
+        dram_(config.dram),
+        dram_target_(dram_),
+        l2_(config.l2, &dram_target_) {
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
-      l1_.push_back(std::make_unique<Cache>(c_.l1, &l2_));
+      l1_.push_back(std::make_unique<Cache>(c_.l1, &l2_, CacheRole::L1));
       units_.emplace_back(c_.rt.warps);
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }
@@ -154,6 +158,7 @@ class CacheWalk {
   HwConfig c_;
   TraversalUnit traversal_;
   Dram dram_;
+  DramTarget dram_target_;
   Cache l2_;
   std::vector<std::unique_ptr<Cache>> l1_;
   std::vector<std::vector<Warp>> units_;

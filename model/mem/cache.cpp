@@ -33,20 +33,57 @@ std::string cache_config_problem(const CacheConfig& c) {
   return {};
 }
 
-Cache::Cache(const CacheConfig& config, MemoryLevel* below) : config_(config), below_(below) {
+Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
+    : config_(config), below_(below), role_(role) {
   std::string problem = cache_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
   sets_ = uint32_t(config.size_bytes / (uint64_t(config.line_bytes) * config.ways));
   lines_.resize(size_t(sets_) * config.ways);
   policy_ = make_replacement_policy(config.replacement, sets_, config.ways);
+  mshr_free_.assign(config.mshrs, 0);
 }
 
-Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle now) {
+template <class T>
+uint32_t Cache::take(std::vector<T>& pool, std::vector<uint32_t>& free) {
+  if (free.empty()) {
+    pool.emplace_back();
+    return uint32_t(pool.size() - 1);
+  }
+  uint32_t id = free.back();
+  free.pop_back();
+  return id;
+}
+
+Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+                  ReadCharge& charge) {
   uint64_t first = addr / config_.line_bytes;
   uint64_t last = (addr + std::max<uint32_t>(bytes, 1) - 1) / config_.line_bytes;
-  Cycle ready = now;
-  for (uint64_t line = first; line <= last; ++line) ready = std::max(ready, access_line(line, now));
+  Caller caller{client, token, kNone};
+  Cycle ready = at;
+  for (uint64_t line = first; line <= last; ++line) {
+    Cycle r = access_line(line, at, caller, charge);
+    if (r != kPending) ready = std::max(ready, r);
+  }
+  if (caller.request == kNone) return ready;
+  // The request record holds one count for this call, so it cannot complete during it.
+  Request& q = requests_[caller.request];
+  q.ready = std::max(q.ready, ready);
+  if (--q.lines > 0) return kPending;
+  charge += q.charge;
+  free_requests_.push_back(caller.request);
+  return q.ready;
+}
+
+Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
+  ReadCharge charge;
+  Cycle ready = read(addr, bytes, at, nullptr, 0, charge);
+  if (ready == kPending) throw std::logic_error("Cache::read: a level below did not answer at once");
   return ready;
+}
+
+void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
+  stats_.write_bytes += bytes;
+  below_->write(addr, bytes, at);
 }
 
 bool Cache::contains(uint64_t addr) const {
@@ -56,21 +93,30 @@ bool Cache::contains(uint64_t addr) const {
                      [&](const Line& l) { return l.valid && l.tag == line / sets_; });
 }
 
-Cycle Cache::access_line(uint64_t line, Cycle now) {
+Cycle Cache::access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge) {
   stats_.accesses++;
+  bool l1 = role_ == CacheRole::L1;
+  (l1 ? charge.l1_accesses : charge.l2_accesses)++;
   auto set = uint32_t(line % sets_);
   uint64_t tag = line / sets_;
   Line* ways = &lines_[size_t(set) * config_.ways];
-  Cycle hit_ready = now + config_.hit_latency;
+  Cycle hit_ready = at + config_.hit_latency;
 
   for (uint32_t w = 0; w < config_.ways; ++w) {
-    if (!ways[w].valid || ways[w].tag != tag) continue;
+    Line& l = ways[w];
+    if (!l.valid || l.tag != tag) continue;
     policy_->touch(set, w);
-    if (ways[w].ready > now) {
+    if (l.ready == kPending) {
       stats_.mshr_merges++;
-      return std::max(ways[w].ready, hit_ready);
+      wait_for(l.miss, caller, hit_ready);
+      return kPending;
+    }
+    if (l.ready > at) {
+      stats_.mshr_merges++;
+      return std::max(l.ready, hit_ready);
     }
     stats_.hits++;
+    (l1 ? charge.l1_hits : charge.l2_hits)++;
     return hit_ready;
   }
 
@@ -78,20 +124,96 @@ Cycle Cache::access_line(uint64_t line, Cycle now) {
   if (first && own_share_ < 1.0 && !fetched_here(line, own_share_)) {
     stats_.hits++;
     stats_.absent_fills++;
-    install(set, ways, Line{tag, hit_ready, true});
+    (l1 ? charge.l1_hits : charge.l2_hits)++;
+    install(set, ways, Line{tag, hit_ready, kNone, true});
     return hit_ready;
   }
-  stats_.misses++;
   if (first) stats_.cold_misses++;
-  Cycle issue = reserve_mshr(now) + config_.hit_latency;
-  stats_.bytes_below += config_.line_bytes;
-  Cycle ready = below_->read(line * config_.line_bytes, config_.line_bytes, issue);
-  in_flight_.push(ready);
-  install(set, ways, Line{tag, ready, true});
-  return ready;
+  return miss(line, set, ways, at, caller, charge);
 }
 
-void Cache::install(uint32_t set, Line* ways, const Line& line) {
+void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest) {
+  if (caller.request == kNone) {
+    caller.request = take(requests_, free_requests_);
+    requests_[caller.request] = Request{caller.client, caller.token, 1, 0, {}};
+  }
+  requests_[caller.request].lines++;
+  misses_[miss].waiters.push_back({caller.request, earliest});
+}
+
+Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
+                  ReadCharge& charge) {
+  stats_.misses++;
+  stats_.bytes_below += config_.line_bytes;
+  if (role_ == CacheRole::L2) charge.dram_bytes += config_.line_bytes;
+  uint32_t id = take(misses_, free_misses_);
+  uint32_t way = install(set, ways, Line{line / sets_, kPending, id, true});
+  Miss& m = misses_[id];
+  m.line = line;
+  m.set = set;
+  m.way = way;
+  m.send = at + config_.hit_latency;
+  m.charge = {};
+  m.waiters.clear();
+  wait_for(id, caller, 0);
+  // The MSHR free first: one free at the send cycle, else the earliest whose data time is known.
+  uint32_t best = kNone;
+  for (uint32_t i = 0; i < config_.mshrs; ++i) {
+    Cycle free = mshr_free_[i];
+    if (free == kPending || (best != kNone && free >= mshr_free_[best])) continue;
+    best = i;
+    if (free <= m.send) break;
+  }
+  if (best == kNone)
+    waiting_.push_back(id);
+  else
+    issue(id, best, std::max(m.send, mshr_free_[best]));
+  return kPending;
+}
+
+void Cache::issue(uint32_t miss, uint32_t mshr, Cycle at) {
+  mshr_free_[mshr] = kPending;
+  Miss& m = misses_[miss];
+  m.mshr = mshr;
+  stats_.mshr_stall_cycles += at - m.send;
+  ReadCharge below;
+  Cycle ready = below_->read(m.line * config_.line_bytes, config_.line_bytes, at, this, miss, below);
+  misses_[miss].charge += below;
+  if (ready != kPending) read_done(miss, ready, {});
+}
+
+void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
+  auto id = uint32_t(token);
+  Miss& m = misses_[id];
+  Line& line = lines_[size_t(m.set) * config_.ways + m.way];
+  if (line.valid && line.ready == kPending && line.miss == id) line.ready = ready;
+  uint32_t mshr = m.mshr;
+  mshr_free_[mshr] = ready;
+  ReadCharge first = m.charge;
+  first += charge;
+  // Completing a waiter only notifies its client; nothing here takes a new miss record.
+  for (size_t i = 0; i < misses_[id].waiters.size(); ++i) {
+    Waiter w = misses_[id].waiters[i];
+    complete_part(w.request, std::max(ready, w.earliest), i == 0 ? first : ReadCharge{});
+  }
+  misses_[id].waiters.clear();
+  free_misses_.push_back(id);
+  if (waiting_.empty()) return;
+  uint32_t next = waiting_.front();
+  waiting_.pop_front();
+  issue(next, mshr, std::max(ready, misses_[next].send));
+}
+
+void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charge) {
+  Request& q = requests_[request];
+  q.ready = std::max(q.ready, ready);
+  q.charge += charge;
+  if (--q.lines > 0) return;
+  free_requests_.push_back(request);
+  q.client->read_done(q.token, q.ready, q.charge);
+}
+
+uint32_t Cache::install(uint32_t set, Line* ways, const Line& line) {
   uint32_t victim = config_.ways;
   for (uint32_t w = 0; w < config_.ways && victim == config_.ways; ++w)
     if (!ways[w].valid) victim = w;
@@ -101,16 +223,7 @@ void Cache::install(uint32_t set, Line* ways, const Line& line) {
   }
   ways[victim] = line;
   policy_->insert(set, victim);
-}
-
-// The cycle a new miss can start: now, or when the earliest in-flight miss frees its MSHR.
-Cycle Cache::reserve_mshr(Cycle now) {
-  while (!in_flight_.empty() && in_flight_.top() <= now) in_flight_.pop();
-  if (in_flight_.size() < config_.mshrs) return now;
-  Cycle start = in_flight_.top();
-  in_flight_.pop();
-  stats_.mshr_stall_cycles += start - now;
-  return start;
+  return victim;
 }
 
 }  // namespace rtsim

@@ -1,17 +1,20 @@
-// Set-associative cache with MSHRs (miss merging), one level of the RT unit's memory hierarchy
-// (per-unit L1 for nodes and triangles, shared L2).
-// Timing: a hit is ready hit_latency cycles after the request; a miss goes below after the tag
-// check (hit_latency) and its line is ready when the level below delivers it. A request to a
-// line whose miss is still in flight merges into that MSHR and is ready with it. With all
-// MSHRs busy, a new miss waits for the earliest one to finish (counted as stall cycles).
-// Requests spanning several lines access them in the same cycle. Allocate on miss, read only
-// (the RT unit never writes BVH data; stack spills are modelled as DRAM traffic).
+// Set-associative cache with MSHRs (miss merging): one level of the RT unit's memory hierarchy
+// (the per-unit L1 for nodes, triangles and stack refills; the shared L2).
+// Timing: a hit is ready hit_latency cycles after the request. A miss is sent below after the
+// tag check (hit_latency), when it has an MSHR: with all MSHRs busy it waits until the first of
+// them is freed by its data, counted as MSHR stall cycles; its line is ready when the level
+// below delivers it. A request to a line whose miss is still in flight merges into that MSHR
+// and is ready with it (not before its own tag check). MSHR occupancy is kept per MSHR as the
+// cycle its data arrives, so a request sees the MSHRs busy at its own cycle, not later ones.
+// The level below may answer at once or later (MemoryTarget); so may this cache: a read that
+// waits for data of unknown time returns kPending and completes through its client.
+// Requests spanning several lines access them in the same cycle. Allocate on miss; reads only:
+// writes (stack spills) pass below without allocation (write-around).
 #pragma once
 
 #include <cstdint>
-#include <functional>
+#include <deque>
 #include <memory>
-#include <queue>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -33,6 +36,10 @@ struct CacheConfig {
 // Why the config is impossible (empty if it is fine): sizes, powers of two, known policy.
 std::string cache_config_problem(const CacheConfig& config);
 
+// Which counters of a ReadCharge a level fills: its own accesses and hits; the L2, as the last
+// cache level, also the bytes it fetches from DRAM.
+enum class CacheRole : uint8_t { L1, L2 };
+
 struct CacheStats {
   uint64_t accesses = 0;           // line accesses (a request spanning 2 lines counts 2)
   uint64_t hits = 0;               // line present and ready
@@ -43,14 +50,21 @@ struct CacheStats {
   uint64_t mshr_stall_cycles = 0;  // cycles misses waited for a free MSHR
   uint64_t evictions = 0;          // valid lines replaced
   uint64_t bytes_below = 0;        // bytes requested from the level below
+  uint64_t write_bytes = 0;        // bytes written around this level (stack spills)
 };
 
-class Cache : public MemoryLevel {
+class Cache : public MemoryTarget, private ReadClient {
  public:
   // Throws std::invalid_argument for an impossible config (see cache_config_problem).
-  Cache(const CacheConfig& config, MemoryLevel* below);
+  Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role = CacheRole::L2);
 
-  Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+             ReadCharge& charge) override;
+  // A read over levels that all answer at once (unit tests, the cache fidelity level).
+  // Throws std::logic_error if it would have to wait.
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at);
+  void write(uint64_t addr, uint32_t bytes, Cycle at) override;
+
   // Whether the line holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
   // Keeps a set of every line referenced, to count cold (compulsory) misses; without it
@@ -69,21 +83,61 @@ class Cache : public MemoryLevel {
   const CacheConfig& config() const { return config_; }
 
  private:
+  static constexpr uint32_t kNone = ~0u;
   struct Line {
     uint64_t tag = 0;
-    Cycle ready = 0;
+    Cycle ready = 0;       // kPending: its miss (below) has not learnt its data's cycle
+    uint32_t miss = kNone;  // that miss, while ready is kPending
     bool valid = false;
   };
-  Cycle access_line(uint64_t line, Cycle now);
-  void install(uint32_t set, Line* ways, const Line& line);  // evicting a victim if needed
-  Cycle reserve_mshr(Cycle now);
+  struct Waiter {
+    uint32_t request;
+    Cycle earliest;  // its own tag check: the data cannot be ready before
+  };
+  struct Miss {
+    uint64_t line = 0;
+    uint32_t set = 0, way = 0, mshr = 0;
+    Cycle send = 0;  // the cycle it may go below (after the tag check)
+    ReadCharge charge;
+    std::vector<Waiter> waiters;  // the first one made the miss
+  };
+  // A read that waits: its client, and the lines it still waits for.
+  struct Request {
+    ReadClient* client = nullptr;
+    uint64_t token = 0;
+    uint32_t lines = 0;
+    Cycle ready = 0;
+    ReadCharge charge;
+  };
+  struct Caller {  // the read being served, and its request record once it has to wait
+    ReadClient* client;
+    uint64_t token;
+    uint32_t request;
+  };
+
+  Cycle access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge);
+  void wait_for(uint32_t miss, Caller& caller, Cycle earliest);
+  Cycle miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
+             ReadCharge& charge);
+  void issue(uint32_t miss, uint32_t mshr, Cycle at);
+  void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
+  void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
+  uint32_t install(uint32_t set, Line* ways, const Line& line);  // evicting a victim if needed
+  template <class T>
+  static uint32_t take(std::vector<T>& pool, std::vector<uint32_t>& free);
 
   CacheConfig config_;
-  MemoryLevel* below_;
+  MemoryTarget* below_;
+  CacheRole role_;
   uint32_t sets_;
   std::vector<Line> lines_;  // sets_ x ways, set-major
   std::unique_ptr<ReplacementPolicy> policy_;
-  std::priority_queue<Cycle, std::vector<Cycle>, std::greater<Cycle>> in_flight_;
+  std::vector<Cycle> mshr_free_;  // per MSHR: the cycle it is free from (kPending: not known)
+  std::vector<Miss> misses_;
+  std::vector<uint32_t> free_misses_;
+  std::deque<uint32_t> waiting_;  // misses for which every MSHR's end was unknown
+  std::vector<Request> requests_;
+  std::vector<uint32_t> free_requests_;
   std::unordered_set<uint64_t> held_lines_;  // every line ever referenced: tells cold misses
   bool track_cold_ = false;
   double own_share_ = 1.0;

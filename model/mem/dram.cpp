@@ -41,4 +41,9 @@ Cycle Dram::read(uint64_t, uint32_t bytes, Cycle now) {
   return ready;
 }
 
+void Dram::write(uint64_t addr, uint32_t bytes, Cycle now) {
+  read(addr, bytes, now);
+  stats_.write_bytes += bytes;
+}
+
 }  // namespace rtsim

@@ -1,8 +1,15 @@
-// The contract between levels of the memory hierarchy, in plain C++ (no SystemC).
-// A level answers a read of `bytes` at `addr` issued at cycle `now` with the cycle the data
-// is ready. Calls must arrive in non-decreasing `now` order per level (each level keeps
-// reservations of its own resources: MSHRs, a data bus); a call may change only the level's
-// own state and stats and those of the levels below it.
+// The contracts between levels of the memory hierarchy, in plain C++ (no SystemC).
+//
+// MemoryTarget is a cache level as its requesters see it. A read of `bytes` at `addr` made at
+// cycle `at` returns the cycle its data is ready when that is known at once (a hit), or
+// kPending: then the target calls client->read_done(token, ready, charge) later, never during
+// the read call itself. A target serves calls in the order they are made, so the caller makes
+// them in non-decreasing `at` (an RT unit in its local time; the shared L2's module in
+// simulated-time order, model/sc/shared_cache_module.h), and a request dated earlier is never
+// delayed by one dated later. Writes are posted: nobody waits for them.
+//
+// MemoryLevel is the synchronous form of the last level (DRAM): read returns the ready cycle.
+// Calls must arrive in non-decreasing `now`; the shared L2's module guarantees it.
 #pragma once
 
 #include <cstdint>
@@ -10,9 +17,43 @@
 namespace rtsim {
 
 using Cycle = uint64_t;
+constexpr Cycle kPending = ~Cycle(0);  // a read whose ready cycle is not known yet
+
+// What one read cost the levels of the hierarchy, charged to the ray that made it. A level
+// counts its own line accesses and hits; the last cache level counts the bytes it fetched.
+struct ReadCharge {
+  uint32_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0;
+  uint64_t dram_bytes = 0;
+  ReadCharge& operator+=(const ReadCharge& o) {
+    l1_accesses += o.l1_accesses;
+    l1_hits += o.l1_hits;
+    l2_accesses += o.l2_accesses;
+    l2_hits += o.l2_hits;
+    dram_bytes += o.dram_bytes;
+    return *this;
+  }
+};
+
+// Who waits for a read that did not complete at once.
+class ReadClient {
+ public:
+  virtual ~ReadClient() = default;
+  // The read made with `token` has its data at `ready`; charge is what it cost beyond what the
+  // read call returned.
+  virtual void read_done(uint64_t token, Cycle ready, const ReadCharge& charge) = 0;
+};
+
+class MemoryTarget {
+ public:
+  virtual ~MemoryTarget() = default;
+  // charge receives the cost known at once. Returns the ready cycle or kPending.
+  virtual Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+                     ReadCharge& charge) = 0;
+  virtual void write(uint64_t addr, uint32_t bytes, Cycle at) = 0;
+};
 
 class MemoryLevel {
-public:
+ public:
   virtual ~MemoryLevel() = default;
   virtual Cycle read(uint64_t addr, uint32_t bytes, Cycle now) = 0;
 };

@@ -18,6 +18,11 @@ struct Clock {
     return Cycle((t.value() + p / 2) / p);
   }
   sc_core::sc_time time(Cycle c) const { return double(c) * period; }
+  // The TLM delay from now to cycle c (zero if c is not later).
+  sc_core::sc_time delay_to(Cycle c) const {
+    sc_core::sc_time t = time(c), now = sc_core::sc_time_stamp();
+    return t > now ? t - now : sc_core::SC_ZERO_TIME;
+  }
 };
 
 }  // namespace rtsim

@@ -30,7 +30,8 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
       collector_(width, height) {
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);
-  l2_ = std::make_unique<CacheModule>("l2", config.l2, clock_);
+  l2_ = std::make_unique<SharedCacheModule>("l2", config.l2, clock_,
+                                            [this](std::exception_ptr e) { control_.fail(e); });
   l2_->cache().track_cold_misses();
   if (bind_memory) {
     bind_memory(l2_->out);
@@ -51,9 +52,9 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   }
   for (uint32_t i = 0; i < config.rt_units; ++i) {
     std::string name = "rt" + std::to_string(i);
-    units_.push_back(std::make_unique<RtUnitModule>(
-        name.c_str(), i, config.rt, config.l1, traversal_, clock_, config.sim.quantum_cycles,
-        config.sim.direct_l1, &l2_->cache().stats(), control_));
+    units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, config.l1,
+                                                    traversal_, clock_, config.sim.quantum_cycles,
+                                                    control_));
     units_.back()->supply.bind(*supply);
     units_.back()->l1.out.bind(l2_->in);
   }
@@ -96,6 +97,7 @@ std::string RtSimulator::dump() const {
       << " in flight, stream " << (d.exhausted() ? "exhausted" : "has rays") << "\n";
   if (treelets_) out << treelets_->dump();
   for (const auto& unit : units_) out << unit->core().dump();
+  out << "l2: " << l2_->queued() << " requests and DRAM reads queued\n";
   return out.str();
 }
 

@@ -15,6 +15,7 @@
 #include "model/config/hw_config.h"
 #include "model/sc/dispatcher_module.h"
 #include "model/sc/rt_unit_module.h"
+#include "model/sc/shared_cache_module.h"
 #include "model/sc/stall_watchdog.h"
 #include "model/sc/tlm_memory.h"
 #include "model/sc/treelet_queue_module.h"
@@ -35,7 +36,7 @@ uint32_t ray_slots(const HwConfig& config);
 
 class RtSimulator {
  public:
-  using MemoryBinder = std::function<void(tlm_utils::simple_initiator_socket<CacheModule>&)>;
+  using MemoryBinder = std::function<void(tlm_utils::simple_initiator_socket<SharedCacheModule>&)>;
 
   // width x height: the pixel grid of the rays (0 x 0: no pixel buffers). listener (optional)
   // also sees every retired ray, after the stats (the verifier).
@@ -68,7 +69,7 @@ class RtSimulator {
   SimStatsCollector collector_;
   RetireFanout fanout_;
   SimControl control_;
-  std::unique_ptr<CacheModule> l2_;
+  std::unique_ptr<SharedCacheModule> l2_;
   std::unique_ptr<DramModule> dram_;
   std::unique_ptr<DispatcherModule> dispatch_;
   std::unique_ptr<TreeletQueueModule> treelets_;

@@ -7,17 +7,17 @@
 namespace rtsim {
 namespace {
 
-void report_cache(StatsRegistry& r, const std::string& p, const CacheModule& module) {
-  const CacheStats& s = module.cache().stats();
+void report_cache(StatsRegistry& r, const std::string& p, const Cache& cache) {
+  const CacheStats& s = cache.stats();
   r.counter(p + ".accesses", s.accesses);
   r.counter(p + ".hits", s.hits);
   r.counter(p + ".misses", s.misses);
-  if (module.cache().tracks_cold_misses()) r.counter(p + ".cold_misses", s.cold_misses);
+  if (cache.tracks_cold_misses()) r.counter(p + ".cold_misses", s.cold_misses);
   r.counter(p + ".mshr_merges", s.mshr_merges);
   r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
   r.counter(p + ".evictions", s.evictions);
   r.counter(p + ".bytes_below", s.bytes_below);
-  r.counter(p + ".write_bytes", module.write_bytes());
+  r.counter(p + ".write_bytes", s.write_bytes);
   r.ratio(p + ".hit_rate", p + ".hits", p + ".accesses");
 }
 
@@ -84,6 +84,9 @@ void RtSimulator::report(StatsRegistry& r) const {
     r.counter(p + ".issue_stalls", s.issue_stalls);
     r.counter(p + ".fetches", s.fetches);
     r.counter(p + ".fetch_bytes", s.fetch_bytes);
+    r.counter(p + ".waited_reads", s.waited_reads);
+    r.counter(p + ".late_data", s.late_data);
+    r.counter(p + ".late_cycles", s.late_cycles);
     r.counter(p + ".stack.spill_writes", s.spill_writes);
     r.counter(p + ".stack.spill_entries", s.spill_entries);
     r.counter(p + ".stack.refill_reads", s.refill_reads);
@@ -96,7 +99,7 @@ void RtSimulator::report(StatsRegistry& r) const {
             1.0 / config_.rt.issue_per_cycle);
     report_test_units(r, p + ".box", core.box());
     report_test_units(r, p + ".triangle", core.triangle());
-    report_cache(r, p + ".l1", unit->l1);
+    report_cache(r, p + ".l1", unit->l1.cache());
     total.steps += steps;
     total.warp_steps += s.warp_steps;
     total.active_lanes += s.active_lanes;
@@ -123,12 +126,12 @@ void RtSimulator::report(StatsRegistry& r) const {
   r.ratio("rt.slot_occupancy", "rt.ray_slot_cycles", "cycles",
           1.0 / (double(slots) * config_.rt_units));
 
-  report_cache(r, "l2", *l2_);
+  report_cache(r, "l2", l2_->cache());
   if (dram_) {
     const DramStats& s = dram_->dram().stats();
     r.counter("dram.requests", s.requests);
     r.counter("dram.bytes", s.bytes);
-    r.counter("dram.write_bytes", dram_->write_bytes());
+    r.counter("dram.write_bytes", s.write_bytes);
     r.real("dram.busy_cycles", s.busy_cycles);
     r.counter("dram.queue_stall_cycles", s.queue_stall_cycles);
     r.counter("dram.total_latency_cycles", s.total_latency_cycles);

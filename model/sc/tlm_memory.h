@@ -1,22 +1,17 @@
-// TLM-2.0 wrappers of the memory hierarchy (model/mem): caches and DRAM as sc_modules joined
-// by sockets, so that another loosely-timed TLM memory model can be bound where the DRAM is.
-// Protocol: the base protocol's blocking transport, loosely timed. A read transaction starts at
-// sc_time_stamp() + delay; the target adds to delay the time until its data is ready. Only the
-// address and length matter: the functional model reads BVH data itself, so targets do not
-// fill the data buffer. No module has a thread: a transaction is one function call chain,
-// and callers sleep until the returned time.
-// Writes (stack spills) are posted: caches pass them below without allocating (write-around),
-// and the DRAM charges their bytes to its bus like reads.
+// TLM-2.0 modules of the memory hierarchy's ends: an RT unit's L1 (the initiator of the
+// approximately-timed requests to the shared L2, model/sc/shared_cache_module.h) and the DRAM
+// (a loosely-timed target, which the L2 calls in simulated-time order; another loosely-timed
+// TLM memory model can be bound in its place).
+// Only addresses and lengths matter: the functional model reads BVH data itself, so targets do
+// not fill data buffers. No module has a thread: a transaction is a function call chain.
 #pragma once
 
 #include <functional>
 #include <memory>
-#include <string>
 #include <vector>
 
 #include <systemc>
 #include <tlm>
-#include <tlm_utils/multi_passthrough_target_socket.h>
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/simple_target_socket.h>
 
@@ -26,59 +21,52 @@
 
 namespace rtsim {
 
-// Sends reads and writes as TLM transactions through `transport` (a socket's b_transport,
-// looked up at call time because sockets bind after construction). The request time is the
-// caller's cycle, which may run ahead of sc_time_stamp() (temporal decoupling: the delay
-// argument carries the offset). Returns the cycle the target is done.
-class TlmInitiator {
- public:
-  using Transport = std::function<void(tlm::tlm_generic_payload&, sc_core::sc_time&)>;
-  TlmInitiator(Transport transport, const Clock& clock)
-      : transport_(std::move(transport)), clock_(clock) {}
-  Cycle send(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle now);
-
- private:
-  Transport transport_;
-  Clock clock_;
-  tlm::tlm_generic_payload trans_;  // reused: one transaction in flight in the call chain
-  std::vector<unsigned char> scratch_;
-};
-
-// A MemoryLevel whose reads go out as TLM transactions.
-class TlmReadPort : public MemoryLevel {
- public:
-  TlmReadPort(TlmInitiator::Transport transport, const Clock& clock)
-      : initiator_(std::move(transport), clock) {}
-  Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override {
-    return initiator_.send(tlm::TLM_READ_COMMAND, addr, bytes, now);
+// Carried by the L1's read transactions: what the read cost below the L1, filled in by a
+// target that knows (the shared L2); a foreign target may ignore it.
+struct ReadChargeExtension : tlm::tlm_extension<ReadChargeExtension> {
+  ReadCharge charge;
+  tlm::tlm_extension_base* clone() const override { return new ReadChargeExtension(*this); }
+  void copy_from(const tlm::tlm_extension_base& other) override {
+    charge = static_cast<const ReadChargeExtension&>(other).charge;
   }
-
- private:
-  TlmInitiator initiator_;
 };
 
-// A cache level: any number of initiators bind to `in`; misses go out through `out`.
-class CacheModule : public sc_core::sc_module {
+// An RT unit's L1. The unit reads it by a direct call (it is the unit's own); its misses leave
+// through `out` as AT transactions (BEGIN_REQ dated by the TLM delay; the data's cycle comes
+// back as BEGIN_RESP, possibly well before that cycle, its delay saying when), and so do its
+// posted writes. on_response runs after each response, so the owner can wake up.
+class L1Module : public sc_core::sc_module, private MemoryTarget {
  public:
-  tlm_utils::multi_passthrough_target_socket<CacheModule> in;
-  tlm_utils::simple_initiator_socket<CacheModule> out;
+  tlm_utils::simple_initiator_socket<L1Module> out;
 
-  CacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock);
-  const Cache& cache() const { return cache_; }
+  L1Module(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
+           std::function<void()> on_response = {});
   Cache& cache() { return cache_; }
-  // The cache level itself, for the initiator that owns this cache (an RT unit and its L1):
-  // reads without a transaction, the timing analogue of a TLM DMI pointer. Same answers as
-  // the `in` socket; misses still go out through `out`.
-  MemoryLevel& direct() { return cache_; }
-  uint64_t write_bytes() const { return write_bytes_; }  // bytes written around this level
+  const Cache& cache() const { return cache_; }
 
  private:
-  void b_transport(int port, tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
+  struct Transaction : tlm::tlm_generic_payload {
+    ReadClient* client = nullptr;  // null: a posted write
+    uint64_t token = 0;
+    ReadChargeExtension* charge = nullptr;
+  };
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+             ReadCharge& charge) override;
+  void write(uint64_t addr, uint32_t bytes, Cycle at) override;
+  // Sends a transaction; true if the target completed it at once (delay then says when).
+  bool send(Transaction& t, tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at,
+            sc_core::sc_time& delay);
+  tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                     sc_core::sc_time& delay);
+  Transaction& take();
+  void give_back(Transaction& t) { free_.push_back(&t); }
 
   Clock clock_;
-  TlmReadPort below_;
+  std::function<void()> on_response_;
+  std::vector<std::unique_ptr<Transaction>> pool_;
+  std::vector<Transaction*> free_;
+  std::vector<unsigned char> scratch_;
   Cache cache_;
-  uint64_t write_bytes_ = 0;
 };
 
 class DramModule : public sc_core::sc_module {
@@ -87,14 +75,12 @@ class DramModule : public sc_core::sc_module {
 
   DramModule(sc_core::sc_module_name name, const DramConfig& config, const Clock& clock);
   const Dram& dram() const { return dram_; }
-  uint64_t write_bytes() const { return write_bytes_; }  // of dram().stats().bytes
 
  private:
   void b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& delay);
 
   Clock clock_;
   Dram dram_;
-  uint64_t write_bytes_ = 0;
 };
 
 }  // namespace rtsim

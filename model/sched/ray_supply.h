@@ -2,8 +2,8 @@
 // them and bind them through ports):
 //  - RaySupply: where a unit gets rays and gives them back: the ray dispatcher (per-ray and
 //    packet modes) or the treelet scheduler in front of it (treelet mode).
-//  - RayMemory: the unit's port into its L1 (reads that return the cycle data is ready, and
-//    posted writes for stack spills).
+//  - the unit's L1, a MemoryTarget (model/mem/memory_level.h): reads that return the cycle
+//    data is ready or report it later, and posted writes for stack spills.
 //  - RayRetireListener: who learns of every finished ray (stats, verification).
 #pragma once
 
@@ -32,14 +32,6 @@ public:
   virtual void retire(RayContext& ray, Cycle now) = 0;
   // True when take() will never return a ray again.
   virtual bool exhausted() const = 0;
-};
-
-class RayMemory {
-public:
-  virtual ~RayMemory() = default;
-  virtual Cycle read(uint64_t addr, uint32_t bytes, Cycle now) = 0;
-  // A posted write (stack spill): it costs bandwidth below, and nobody waits for it.
-  virtual void write(uint64_t addr, uint32_t bytes, Cycle now) = 0;
 };
 
 class RayRetireListener {

@@ -38,13 +38,12 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
 }
 
 RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
-               RayMemory& memory, MemoryProbe probe)
+               MemoryTarget& memory)
     : id_(id),
       config_(config),
       traversal_(traversal),
       node_treelet_(traversal.image().node_treelet),
       memory_(memory),
-      probe_(probe),
       stack_(config.stack),
       box_(config.box),
       triangle_(config.triangle) {
@@ -55,8 +54,12 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
   issue_granted_.assign(slots_.size(), ~Cycle(0));
   for (uint32_t w = config.warps; w-- > 0;) free_warps_.push_back(w);
   for (uint32_t s = uint32_t(slots_.size()); s-- > 0;) free_slots_.push_back(s);
+  wait_.assign(slots_.size(), Wait::None);
+  pending_reads_.assign(slots_.size(), 0);
+  data_ready_.assign(slots_.size(), 0);
+  step_tests_.assign(slots_.size(), kNoTests);
+  step_leaf_.assign(slots_.size(), 0);
   lane_next_.resize(config.warp_size);
-  lane_tests_.resize(config.warp_size);
 }
 
 void RtCore::account(Cycle now) {
@@ -208,7 +211,7 @@ void RtCore::retire(uint32_t slot, Cycle now) {
 std::string RtCore::dump() const {
   std::ostringstream out;
   out << "rt" << id_ << ": " << in_flight_ << " of " << slots_.size() << " ray slots busy, "
-      << events_.size() << " events pending";
+      << events_.size() << " events pending, " << waiting_reads_ << " reads waiting for data";
   if (!events_.empty()) out << " (next at cycle " << events_.next_cycle() << ")";
   out << ", local cycle " << now_ << (waiting_ ? ", waiting for rays" : "") << "\n";
   const int max_shown = 4;

@@ -11,6 +11,10 @@
 // control_latency cycles after the tests finish. A fresh ray first spends setup_latency cycles
 // in ray setup. Stack spills and refills follow hardware_stack.h. The unit does work only at
 // the cycles in its event queue: nothing happens on idle cycles.
+// Memory: a read the L1 cannot answer at once (a miss, or a merge into one) leaves its ray
+// (packet mode: its warp) waiting; the L1 reports the data's cycle later (read_done), and the
+// step goes on at that cycle. Data reported for a cycle the unit has already passed (it runs up
+// to a quantum ahead of simulated time) is used at the unit's local cycle, counted as late.
 #pragma once
 
 #include <cstdint>
@@ -49,17 +53,13 @@ struct RtCoreConfig {
 
 std::string rt_core_config_problem(const RtCoreConfig& config);
 
-// Where a unit reads its cache counters to charge each ray its share (may be null).
-struct MemoryProbe {
-  const CacheStats* l1 = nullptr;
-  const CacheStats* l2 = nullptr;
-};
-
 struct RtCoreStats {
   uint64_t rays_started = 0, rays_retired = 0;
   uint64_t node_steps = 0, leaf_steps = 0;
   uint64_t issue_stalls = 0;              // step starts deferred a cycle by the issue width
   uint64_t fetches = 0, fetch_bytes = 0;  // reads to the L1 (packet mode: after coalescing)
+  uint64_t waited_reads = 0;              // reads that waited for data below the L1
+  uint64_t late_data = 0, late_cycles = 0;  // data reported after the unit's local cycle
   uint64_t spill_writes = 0, spill_entries = 0, refill_reads = 0, refill_entries = 0;
   uint64_t postponed = 0, refused = 0;  // treelet mode: rays queued, rays a full queue refused
   uint64_t warp_steps = 0, active_lanes = 0;  // packet mode
@@ -68,10 +68,11 @@ struct RtCoreStats {
   Cycle last_cycle = 0;        // the last cycle the unit did anything
 };
 
-class RtCore {
+class RtCore : private ReadClient {
 public:
-  RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal, RayMemory& memory,
-         MemoryProbe probe = {});
+  // memory: the unit's L1; the unit is the client of every read it makes.
+  RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
+         MemoryTarget& memory);
 
   void set_supply(RaySupply* supply) { supply_ = supply; }
   // Asks for rays at cycle now (also after a "work available" notice); returns progress made.
@@ -85,6 +86,7 @@ public:
   bool started() const { return started_; }
   bool waiting() const { return waiting_; }  // has free slots the supply could not fill yet
   bool finished() const { return in_flight_ == 0 && events_.empty() && !waiting_ && started_; }
+  uint32_t waiting_reads() const { return waiting_reads_; }  // reads whose data is not back
   uint32_t in_flight() const { return in_flight_; }
   uint32_t slots() const { return uint32_t(slots_.size()); }
 
@@ -97,6 +99,8 @@ public:
   void account(Cycle now);   // counts slot occupancy up to now
 
 private:
+  // What a slot (packet mode: a warp) waits for, if anything.
+  enum class Wait : uint8_t { None, Refill, Data };
   struct Next {
     bool live = false;  // an entry that step() will visit (not culled)
     bool leaf = false;
@@ -114,8 +118,17 @@ private:
   void release(uint32_t slot, Cycle now);
   void on_ray(uint32_t slot, Cycle now);
   void on_warp(uint32_t warp, Cycle now);
+  uint32_t item_of(uint32_t slot) const {
+    return config_.mode == TraversalMode::Packet ? slot / config_.warp_size : slot;
+  }
+  // A read for the ray: its ready cycle, or kPending (its item then waits for read_done).
   Cycle read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now);
+  void read_done(uint64_t slot, Cycle ready, const ReadCharge& charge) override;
+  // After an item's reads: wait for the pending ones (true), or go on (false).
+  bool wait_reads(uint32_t item, Wait wait, Cycle known_ready);
   Cycle fetch(RayContext& ray, const StepResult& step, Cycle now);
+  // The tests of a step (packet mode: of a warp step) once its data is there.
+  void test_step(uint32_t item, Cycle data);
   bool refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready);
   uint32_t treelet_of(const RayContext& ray, const Next& next) const;
   void settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cycle now);
@@ -125,8 +138,7 @@ private:
   RtCoreConfig config_;
   const TraversalUnit& traversal_;
   const std::vector<uint32_t>& node_treelet_;
-  RayMemory& memory_;
-  MemoryProbe probe_;
+  MemoryTarget& memory_;
   RaySupply* supply_ = nullptr;
   HardwareStack stack_;
   TestUnitPool box_, triangle_;
@@ -134,11 +146,20 @@ private:
   std::vector<RayContext*> slots_;    // warps * warp_size
   std::vector<uint32_t> warp_live_;   // rays still in each warp (per-ray and packet modes)
   std::vector<Cycle> issue_granted_;  // per slot (packet mode: per warp): a reserved issue
+  // Per item (slot, or warp in packet mode): what it waits for, reads not back, latest data.
+  std::vector<Wait> wait_;
+  std::vector<uint32_t> pending_reads_;
+  std::vector<Cycle> data_ready_;
+  // Per slot: the tests of the step waiting for its data (kNoTests: no step); per item: whether
+  // that step is a leaf step.
+  static constexpr uint32_t kNoTests = ~0u;
+  std::vector<uint32_t> step_tests_;
+  std::vector<uint8_t> step_leaf_;
+  uint32_t waiting_reads_ = 0;
   std::vector<uint32_t> free_slots_;  // treelet mode
   std::vector<uint32_t> free_warps_;  // per-ray and packet modes
   std::vector<RayContext*> batch_;
   std::vector<Next> lane_next_;  // packet mode scratch
-  std::vector<uint32_t> lane_tests_;
   std::vector<uint64_t> warp_reads_;
   uint32_t in_flight_ = 0;
   bool waiting_ = false, started_ = false;

@@ -10,6 +10,11 @@
 namespace rtsim {
 
 void RtCore::on_warp(uint32_t warp, Cycle now) {
+  if (wait_[warp] == Wait::Data) {
+    wait_[warp] = Wait::None;
+    test_step(warp, now);
+    return;
+  }
   if (!claim_issue(warp, now)) return;
   uint32_t base = warp * config_.warp_size;
   // What each lane visits next; a lane with nothing left retires now.
@@ -40,6 +45,7 @@ void RtCore::on_warp(uint32_t warp, Cycle now) {
   for (uint32_t lane = 0; lane < config_.warp_size; ++lane)
     if (active(lane)) refilled |= refill(*slots_[base + lane], lane_next_[lane], now, ready);
   if (refilled) {
+    if (wait_reads(warp, Wait::Refill, ready)) return;
     events_.push(ready, warp);
     return;
   }
@@ -48,26 +54,25 @@ void RtCore::on_warp(uint32_t warp, Cycle now) {
   Cycle data = now;
   uint32_t count = 0;
   for (uint32_t lane = 0; lane < config_.warp_size; ++lane) {
+    step_tests_[base + lane] = kNoTests;
     if (!active(lane)) continue;
     RayContext& ray = *slots_[base + lane];
     StepResult step = traversal_.step(ray.state);
     check_kind(step, lane_next_[lane]);
     ++count;
-    lane_tests_[lane] = step.tests;
+    step_tests_[base + lane] = step.tests;
     if (step.access_count > 0) {
       uint64_t addr = ray.state.accesses[step.first_access].address;
       if (std::find(warp_reads_.begin(), warp_reads_.end(), addr) == warp_reads_.end()) {
         warp_reads_.push_back(addr);
-        data = std::max(data, fetch(ray, step, now));
+        Cycle ready = fetch(ray, step, now);
+        if (ready != kPending) data = std::max(data, ready);
       }
     }
     settle(ray, lane_next_[lane].depth, 0, now);
     ray.state.accesses.clear();
   }
-  TestUnitPool& unit = leaf_step ? triangle_ : box_;
-  Cycle done = data;
-  for (uint32_t lane = 0; lane < config_.warp_size; ++lane)
-    if (active(lane)) done = std::max(done, unit.reserve(data, lane_tests_[lane]));
+  step_leaf_[warp] = leaf_step;
   progress_ += count;
   (leaf_step ? stats_.leaf_steps : stats_.node_steps) += count;
   stats_.warp_steps++;
@@ -76,7 +81,7 @@ void RtCore::on_warp(uint32_t warp, Cycle now) {
     stats_.node_warp_steps++;
     stats_.distinct_nodes += warp_reads_.size();
   }
-  events_.push(done + config_.control_latency, warp);
+  if (!wait_reads(warp, Wait::Data, data)) test_step(warp, data);
 }
 
 }  // namespace rtsim

@@ -5,30 +5,70 @@
 #include "model/sched/rt_core.h"
 
 namespace rtsim {
+namespace {
+
+void add_charge(RayCost& cost, const ReadCharge& c) {
+  cost.l1_accesses += c.l1_accesses;
+  cost.l1_hits += c.l1_hits;
+  cost.l2_accesses += c.l2_accesses;
+  cost.l2_hits += c.l2_hits;
+  cost.dram_bytes += c.dram_bytes;
+}
+
+}  // namespace
 
 Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now) {
-  // The call chain through L1, L2 and DRAM is synchronous: the counters' growth during it is
-  // exactly this read's doing.
-  const CacheStats* l1 = probe_.l1;
-  const CacheStats* l2 = probe_.l2;
-  uint64_t l1_accesses = l1 ? l1->accesses : 0, l1_hits = l1 ? l1->hits : 0;
-  uint64_t l1_below = l1 ? l1->bytes_below : 0;
-  uint64_t l2_accesses = l2 ? l2->accesses : 0, l2_hits = l2 ? l2->hits : 0;
-  uint64_t l2_below = l2 ? l2->bytes_below : 0;
-  Cycle ready = memory_.read(addr, bytes, now);
-  if (l1) {
-    ray.cost.l1_accesses += uint32_t(l1->accesses - l1_accesses);
-    ray.cost.l1_hits += uint32_t(l1->hits - l1_hits);
-    if (!l2) ray.cost.dram_bytes += l1->bytes_below - l1_below;
-  }
-  if (l2) {
-    ray.cost.l2_accesses += uint32_t(l2->accesses - l2_accesses);
-    ray.cost.l2_hits += uint32_t(l2->hits - l2_hits);
-    ray.cost.dram_bytes += l2->bytes_below - l2_below;
-  }
+  ReadCharge charge;
+  Cycle ready = memory_.read(addr, bytes, now, this, ray.slot, charge);
+  add_charge(ray.cost, charge);
   stats_.fetches++;
   stats_.fetch_bytes += bytes;
+  if (ready == kPending) {
+    pending_reads_[item_of(ray.slot)]++;
+    waiting_reads_++;
+    stats_.waited_reads++;
+  }
   return ready;
+}
+
+void RtCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
+  auto slot = uint32_t(token);
+  add_charge(slots_[slot]->cost, charge);
+  uint32_t item = item_of(slot);
+  data_ready_[item] = std::max(data_ready_[item], ready);
+  waiting_reads_--;
+  if (--pending_reads_[item] > 0) return;
+  Cycle at = data_ready_[item];
+  if (at < now_) {
+    stats_.late_data++;
+    stats_.late_cycles += now_ - at;
+    at = now_;
+  }
+  if (wait_[item] == Wait::Refill) wait_[item] = Wait::None;
+  if (config_.mode != TraversalMode::Packet) slots_[item]->ready = at;
+  events_.push(at, item);
+}
+
+bool RtCore::wait_reads(uint32_t item, Wait wait, Cycle known_ready) {
+  if (pending_reads_[item] == 0) return false;
+  wait_[item] = wait;
+  data_ready_[item] = known_ready;
+  return true;
+}
+
+void RtCore::test_step(uint32_t item, Cycle data) {
+  TestUnitPool& unit = step_leaf_[item] ? triangle_ : box_;
+  uint32_t first = config_.mode == TraversalMode::Packet ? item * config_.warp_size : item;
+  uint32_t count = config_.mode == TraversalMode::Packet ? config_.warp_size : 1;
+  Cycle done = data;
+  for (uint32_t slot = first; slot < first + count; ++slot) {
+    if (step_tests_[slot] == kNoTests) continue;
+    done = std::max(done, unit.reserve(data, step_tests_[slot]));
+    step_tests_[slot] = kNoTests;
+  }
+  Cycle next = done + config_.control_latency;
+  if (config_.mode != TraversalMode::Packet) slots_[item]->ready = next;
+  events_.push(next, item);
 }
 
 Cycle RtCore::fetch(RayContext& ray, const StepResult& step, Cycle now) {
@@ -46,7 +86,8 @@ bool RtCore::refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready) 
   if (transfer.bytes == 0) return false;
   stats_.refill_reads++;
   stats_.refill_entries += transfer.entries;
-  ready = std::max(ready, read(ray, transfer.addr, transfer.bytes, now));
+  Cycle data = read(ray, transfer.addr, transfer.bytes, now);
+  if (data != kPending) ready = std::max(ready, data);
   return true;
 }
 
@@ -73,6 +114,11 @@ void RtCore::settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cy
 }
 
 void RtCore::on_ray(uint32_t slot, Cycle now) {
+  if (wait_[slot] == Wait::Data) {
+    wait_[slot] = Wait::None;
+    test_step(slot, now);
+    return;
+  }
   RayContext& ray = *slots_[slot];
   // Traversal control starts issue_per_cycle steps a cycle.
   if (!claim_issue(slot, now)) return;
@@ -95,6 +141,7 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   // Entries spilled earlier come back before the step can pop them.
   Cycle ready = now;
   if (refill(ray, next, now, ready)) {
+    if (wait_reads(slot, Wait::Refill, ready)) return;
     ray.ready = ready;
     events_.push(ready, slot);
     return;
@@ -110,13 +157,12 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   }
   progress_++;
   Cycle data = fetch(ray, step, now);
-  TestUnitPool& unit = step.kind == StepKind::Node ? box_ : triangle_;
-  Cycle done = unit.reserve(data, step.tests);
   (step.kind == StepKind::Node ? stats_.node_steps : stats_.leaf_steps)++;
   settle(ray, next.depth, visited_treelet, now);
   ray.state.accesses.clear();
-  ray.ready = done + config_.control_latency;
-  events_.push(ray.ready, slot);
+  step_tests_[slot] = step.tests;
+  step_leaf_[slot] = step.kind == StepKind::Leaf;
+  if (!wait_reads(slot, Wait::Data, now)) test_step(slot, data);
 }
 
 }  // namespace rtsim

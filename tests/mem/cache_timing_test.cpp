@@ -1,5 +1,5 @@
 // The cache alone with a mock memory below it: exact hit and miss latencies, miss merging,
-// MSHR back-pressure.
+// MSHR back-pressure, and a level below that reports its data later.
 #include <gtest/gtest.h>
 
 #include "mock_memory.h"
@@ -49,14 +49,64 @@ TEST(CacheTiming, MissToALineInFlightMergesIntoItsMshr) {
   EXPECT_EQ(cache.read(0x1020, 16, first), first + 4) << "after the fill it is a plain hit";
 }
 
-TEST(CacheTiming, FullMshrsDelayTheNextMiss) {
+TEST(CacheTiming, WithMshrsFullAMissWaitsExactlyUntilTheFirstCompletes) {
   test::MockMemory mem(100);
   Cache cache(small_cache(), &mem);  // 2 MSHRs
   EXPECT_EQ(cache.read(0x0000, 64, 0), 104u);
   EXPECT_EQ(cache.read(0x0040, 64, 1), 105u);
-  EXPECT_EQ(cache.read(0x0080, 64, 2), 104u + 4 + 100) << "waits for the first MSHR to free";
-  EXPECT_EQ(cache.stats().mshr_stall_cycles, 102u);
+  EXPECT_EQ(cache.read(0x0080, 64, 2), 104u + 100) << "goes below when the first MSHR frees";
+  ASSERT_EQ(mem.requests.size(), 3u);
+  EXPECT_EQ(mem.requests[2].at, 104u);
+  EXPECT_EQ(cache.stats().mshr_stall_cycles, 104u - 6) << "from its tag check to the MSHR";
   EXPECT_EQ(cache.read(0x00c0, 64, 300), 404u) << "MSHRs free again later";
+}
+
+TEST(CacheTiming, AMissAtTheCycleAnMshrFreesDoesNotWait) {
+  test::MockMemory mem(100);
+  Cache cache(small_cache(), &mem);
+  cache.read(0x0000, 64, 0);  // MSHR busy until 104
+  cache.read(0x0040, 64, 0);  // until 104
+  EXPECT_EQ(cache.read(0x0080, 64, 99), 99u + 4 + 1 + 100) << "its tag check ends at 103: waits 1";
+  EXPECT_EQ(cache.stats().mshr_stall_cycles, 1u);
+  EXPECT_EQ(cache.read(0x00c0, 64, 100), 100u + 4 + 100) << "tag check ends at 104: no wait";
+  EXPECT_EQ(cache.stats().mshr_stall_cycles, 1u);
+}
+
+TEST(CacheTiming, ReadsWaitForDataTheLevelBelowReportsLater) {
+  test::MockMemory mem(0, true);
+  test::RecordingClient client;
+  Cache cache(small_cache(), &mem, CacheRole::L1);
+  ReadCharge charge;
+  EXPECT_EQ(cache.read(0x1000, 64, 10, &client, 7, charge), kPending);
+  EXPECT_EQ(cache.read(0x1010, 16, 20, &client, 8, charge), kPending) << "merges: time unknown";
+  EXPECT_EQ(charge.l1_accesses, 2u);
+  EXPECT_EQ(charge.l1_hits, 0u);
+  ASSERT_EQ(mem.requests.size(), 1u);
+  EXPECT_TRUE(client.done.empty()) << "nothing completes before the level below answers";
+  mem.answer(0, 150);
+  ASSERT_EQ(client.done.size(), 2u);
+  EXPECT_EQ(client.done[0].token, 7u);
+  EXPECT_EQ(client.done[0].ready, 150u);
+  EXPECT_EQ(client.done[1].token, 8u);
+  EXPECT_EQ(client.done[1].ready, 150u);
+  EXPECT_EQ(cache.read(0x1000, 64, 100, &client, 9, charge), 150u) << "in flight, time known";
+  EXPECT_EQ(cache.read(0x1000, 64, 150, &client, 9, charge), 154u) << "then a hit";
+}
+
+TEST(CacheTiming, MissesWaitingForMshrsOfUnknownEndLeaveWhenOneIsReported) {
+  test::MockMemory mem(0, true);
+  test::RecordingClient client;
+  Cache cache(small_cache(), &mem);  // 2 MSHRs
+  ReadCharge charge;
+  cache.read(0x0000, 64, 0, &client, 1, charge);
+  cache.read(0x0040, 64, 0, &client, 2, charge);
+  cache.read(0x0080, 64, 5, &client, 3, charge);
+  EXPECT_EQ(mem.requests.size(), 2u) << "no MSHR for the third miss yet";
+  mem.answer(1, 300);
+  ASSERT_EQ(mem.requests.size(), 3u);
+  EXPECT_EQ(mem.requests[2].at, 300u) << "it takes the MSHR freed at 300";
+  EXPECT_EQ(cache.stats().mshr_stall_cycles, 300u - 9);
+  EXPECT_EQ(charge.dram_bytes, 3u * 64) << "as the L2, it charges what it fetches";
 }
 
 TEST(CacheTiming, RequestSpanningTwoLinesIsReadyWithTheLaterLine) {

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "model/sc/tlm_ray_port.h"
+#include "model/sc/shared_cache_module.h"
+#include "model/sc/tlm_memory.h"
+#include "tests/mem/mock_memory.h"
 #include "tests/sc/sim_test_util.h"
 
 namespace rtsim {
@@ -73,38 +75,41 @@ TEST(SimReport, WritesStatsConfigAndPixelFiles) {
   std::filesystem::remove_all(dir);
 }
 
-// Posted writes through L1 and L2 reach the DRAM without allocating a line, and take the bus.
+// Writes 1 KiB, then reads a line, through its L1 at cycle 0.
 struct Writer : sc_core::sc_module {
-  tlm_utils::simple_initiator_socket<Writer> out{"out"};
-  Cycle read_ready = 0;
+  L1Module l1;
+  test::RecordingClient client;
   SC_HAS_PROCESS(Writer);
-  explicit Writer(sc_core::sc_module_name name) : sc_module(name) { SC_THREAD(run); }
+  Writer(sc_core::sc_module_name name, const Clock& clock)
+      : sc_module(name), l1("l1", CacheConfig{1024, 64, 2, "lru", 2, 4}, clock) {
+    SC_METHOD(run);
+  }
   void run() {
-    Clock clock;
-    TlmRayPort port([this](auto& t, auto& d) { out->b_transport(t, d); }, clock);
-    port.write(0x8000, 1024, 0);
-    read_ready = port.read(0x1000, 64, 0);
+    l1.cache().write(0x8000, 1024, 0);
+    ReadCharge charge;
+    l1.cache().read(0x1000, 64, 0, &client, 0, charge);
   }
 };
 
 TEST(SimReport, SpillWritesGoAroundTheCachesAndTakeTheBus) {
   std::string result = run_in_child([] {
     Clock clock;
-    Writer writer("writer");
-    CacheModule l1("l1", CacheConfig{1024, 64, 2, "lru", 2, 4}, clock);
-    CacheModule l2("l2", CacheConfig{4096, 64, 4, "lru", 10, 4}, clock);
+    Writer writer("writer", clock);
+    SharedCacheModule l2("l2", CacheConfig{4096, 64, 4, "lru", 10, 4}, clock);
     DramModule dram("dram", DramConfig{16.0, 100, 8}, clock);
-    writer.out.bind(l1.in);
-    l1.out.bind(l2.in);
+    writer.l1.out.bind(l2.in);
     l2.out.bind(dram.in);
     sc_core::sc_start();
-    return std::to_string(l1.write_bytes()) + " " + std::to_string(dram.write_bytes()) + " " +
-           std::to_string(l1.cache().stats().accesses) + " " + std::to_string(writer.read_ready);
+    const Cache& l1 = writer.l1.cache();
+    return std::to_string(l1.stats().write_bytes) + " " +
+           std::to_string(dram.dram().stats().write_bytes) + " " +
+           std::to_string(l1.stats().accesses) + " " + std::to_string(l2.cache().stats().accesses) +
+           " " + std::to_string(writer.client.done.at(0).ready);
   });
   // The write passed both caches (no access counted) and holds the bus for 1024 / 16 = 64
-  // cycles, so the read's miss, at the DRAM at cycle 2 + 10, waits for it: its 4-cycle
-  // transfer ends at 68, its data is ready 100 cycles later.
-  EXPECT_EQ(result, "1024 1024 1 " + std::to_string(64 + 4 + 100));
+  // cycles from cycle 0, so the read's miss, at the DRAM at cycle 2 + 10, waits for it: its
+  // 4-cycle transfer ends at 68, its data is ready 100 cycles later.
+  EXPECT_EQ(result, "1024 1024 1 1 " + std::to_string(64 + 4 + 100));
 }
 
 }  // namespace

@@ -49,19 +49,6 @@ TEST(SimDeterminism, SameInputsGiveIdenticalStats) {
   EXPECT_EQ(a.dump(), b.dump());
 }
 
-TEST(SimDirectL1, TimesExactlyLikeTheSocket) {
-  test::SimScene s;
-  std::vector<Ray> rays = test::mixed_rays(s.scene, 1500, 4);
-  HwConfig config = test::small_machine();
-  config.sim.direct_l1 = true;
-  nlohmann::json direct = test::simulate(config, s.scene, rays);
-  config.sim.direct_l1 = false;
-  nlohmann::json socket = test::simulate(config, s.scene, rays);
-  direct.erase("config");
-  socket.erase("config");
-  EXPECT_EQ(direct.dump(), socket.dump());
-}
-
 TEST(SimQuantum, DecouplingChangesCyclesOnlySlightly) {
   test::SimScene s;
   std::vector<Ray> rays = test::mixed_rays(s.scene, 3000, 5);

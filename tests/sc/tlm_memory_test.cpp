@@ -1,10 +1,17 @@
-// The memory hierarchy as SystemC modules: L1 -> L2 -> DRAM through TLM-2.0 sockets, and a
-// foreign loosely-timed TLM memory bound where the DRAM would be.
+// The memory hierarchy as SystemC modules: L1 -> shared L2 -> DRAM through TLM-2.0 sockets
+// (approximately timed between L1 and L2, loosely timed to the DRAM), requests served in time
+// order, the configured latency sums, DRAM bandwidth under load, and a foreign loosely-timed
+// TLM memory bound where the DRAM would be.
 #include <gtest/gtest.h>
+
+#include <map>
+#include <memory>
 
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include "model/sc/shared_cache_module.h"
 #include "model/sc/tlm_memory.h"
+#include "tests/mem/mock_memory.h"
 
 namespace rtsim {
 namespace {
@@ -23,65 +30,160 @@ struct FixedLatencyMemory : sc_core::sc_module {
   }
 };
 
-// Issues reads from a thread and records when each one's data is ready, in cycles.
-struct Requester : sc_core::sc_module {
-  tlm_utils::simple_initiator_socket<Requester> out{"out"};
-  std::vector<std::pair<uint64_t, sc_core::sc_time>> script;  // (address, issue time)
+// An approximately-timed initiator: at cycle 0 it sends one read per (address, cycle) of its
+// script, in script order, each dated by its TLM delay; records when each one's data is ready.
+struct AtRequester : sc_core::sc_module {
+  tlm_utils::simple_initiator_socket<AtRequester> out{"out"};
+  std::vector<std::pair<uint64_t, Cycle>> script;
   std::vector<Cycle> ready;
   Clock clock;
-  SC_HAS_PROCESS(Requester);
-  explicit Requester(sc_core::sc_module_name name) : sc_module(name) { SC_THREAD(run); }
+  SC_HAS_PROCESS(AtRequester);
+  explicit AtRequester(sc_core::sc_module_name name) : sc_module(name) {
+    out.register_nb_transport_bw(this, &AtRequester::nb_transport_bw);
+    SC_THREAD(run);
+  }
   void run() {
-    TlmReadPort port([this](auto& t, auto& d) { out->b_transport(t, d); }, clock);
+    ready.assign(script.size(), kPending);
+    for (size_t i = 0; i < script.size(); ++i) {
+      trans.push_back(std::make_unique<tlm::tlm_generic_payload>());
+      tlm::tlm_generic_payload& t = *trans.back();
+      index[&t] = i;
+      t.set_command(tlm::TLM_READ_COMMAND);
+      t.set_address(script[i].first);
+      t.set_data_ptr(data);
+      t.set_data_length(64);
+      t.set_streaming_width(64);
+      tlm::tlm_phase phase = tlm::BEGIN_REQ;
+      sc_core::sc_time delay = clock.time(script[i].second);
+      out->nb_transport_fw(t, phase, delay);
+    }
+  }
+  tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& t, tlm::tlm_phase& phase,
+                                     sc_core::sc_time& delay) {
+    if (phase == tlm::BEGIN_RESP) ready[index[&t]] = clock.cycles(sc_core::sc_time_stamp() + delay);
+    return tlm::TLM_COMPLETED;
+  }
+  std::vector<std::unique_ptr<tlm::tlm_generic_payload>> trans;
+  std::map<tlm::tlm_generic_payload*, size_t> index;
+  unsigned char data[64] = {};
+};
+
+CacheConfig l2_config(uint32_t hit_latency, uint32_t mshrs) {
+  CacheConfig c;
+  c.size_bytes = 1 << 20;
+  c.line_bytes = 64;
+  c.ways = 8;
+  c.hit_latency = hit_latency;
+  c.mshrs = mshrs;
+  return c;
+}
+
+TEST(TlmMemory, AnEarlierDatedRequestIsNotDelayedByALaterDatedOneSentBefore) {
+  Clock clock;
+  AtRequester cpu("cpu");
+  SharedCacheModule l2("l2", l2_config(10, 8), clock);
+  DramModule dram("dram", DramConfig{64.0, 300, 64}, clock);
+  cpu.out.bind(l2.in);
+  l2.out.bind(dram.in);
+  cpu.script = {{0x10000, 1000}, {0x0, 10}, {0x40, 11}, {0x80, 12}};
+  sc_core::sc_start();
+  // Each miss reaches the DRAM after the L2's 10-cycle tag check and takes its bus for a cycle.
+  EXPECT_EQ(cpu.ready[1], 10u + 10 + 1 + 300) << "served at its own cycle, before cycle 1000's";
+  EXPECT_EQ(cpu.ready[2], 11u + 10 + 1 + 300);
+  EXPECT_EQ(cpu.ready[3], 12u + 10 + 1 + 300);
+  EXPECT_EQ(cpu.ready[0], 1000u + 10 + 1 + 300);
+  EXPECT_EQ(dram.dram().stats().total_latency_cycles, 4u * 301) << "no request queued";
+}
+
+TEST(TlmMemory, ManyIndependentMissesSaturateTheDramBandwidth) {
+  Clock clock;
+  AtRequester cpu("cpu");
+  SharedCacheModule l2("l2", l2_config(10, 64), clock);
+  DramModule dram("dram", DramConfig{16.0, 100, 64}, clock);
+  cpu.out.bind(l2.in);
+  l2.out.bind(dram.in);
+  for (uint64_t i = 0; i < 4000; ++i) cpu.script.push_back({i * 64, i / 8});  // 8 lines a cycle
+  sc_core::sc_start();
+  Cycle last = *std::max_element(cpu.ready.begin(), cpu.ready.end());
+  // From the first miss at the DRAM (cycle 10) to the end of the last transfer.
+  double span = double(last - 100 - 10);
+  double achieved = double(dram.dram().stats().bytes) / span;
+  EXPECT_NEAR(achieved / 16.0, 1.0, 0.05) << "bytes per cycle against the configured peak";
+  EXPECT_GT(l2.cache().stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
+}
+
+// Reads through an L1 from a thread at given cycles; records each read's ready cycle.
+struct L1Requester : sc_core::sc_module {
+  L1Module l1;
+  std::vector<std::pair<uint64_t, Cycle>> script;
+  std::vector<Cycle> ready;
+  std::vector<ReadCharge> charge;
+  test::RecordingClient client;
+  SC_HAS_PROCESS(L1Requester);
+  L1Requester(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock)
+      : sc_module(name), l1("l1", config, clock) {
+    SC_THREAD(run);
+  }
+  void run() {
+    Clock clock;
     for (auto [addr, at] : script) {
-      if (at > sc_core::sc_time_stamp()) wait(at - sc_core::sc_time_stamp());
-      Cycle done = port.read(addr, 32, clock.cycles(sc_core::sc_time_stamp()));
+      if (clock.time(at) > sc_core::sc_time_stamp()) wait(clock.delay_to(at));
+      ReadCharge c;
+      Cycle done = l1.cache().read(addr, 32, at, &client, ready.size(), c);
+      while (done == kPending) {
+        wait(clock.period);
+        for (const auto& d : client.done) done = d.ready, c += d.charge;
+        client.done.clear();
+      }
       ready.push_back(done);
-      wait(clock.time(done) - sc_core::sc_time_stamp());  // sleep until the data arrives
+      charge.push_back(c);
+      if (clock.time(done) > sc_core::sc_time_stamp()) wait(clock.delay_to(done));
     }
   }
 };
 
-TEST(TlmMemory, HierarchyLatenciesAndForeignTarget) {
+TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   Clock clock;  // 1 ns cycles
   CacheConfig l1;
   l1.size_bytes = 1024;
   l1.hit_latency = 2;
-  CacheConfig l2;
-  l2.size_bytes = 8192;
-  l2.hit_latency = 10;
-  DramConfig dram;
-  dram.bytes_per_cycle = 16;
-  dram.latency = 100;
+  DramConfig dram_config;
+  dram_config.bytes_per_cycle = 16;
+  dram_config.latency = 100;
 
-  Requester cpu("cpu");
-  CacheModule l1_cache("l1", l1, clock), l2_cache("l2", l2, clock);
-  DramModule memory("dram", dram, clock);
-  cpu.out.bind(l1_cache.in);
-  l1_cache.out.bind(l2_cache.in);
-  l2_cache.out.bind(memory.in);
-  auto ns = [](double n) { return sc_core::sc_time(n, sc_core::SC_NS); };
-  cpu.script = {{0x1000, ns(0)}, {0x1000, ns(0)}, {0x5000, ns(0)}};
+  L1Requester cpu("cpu", l1, clock), other("other", l1, clock);
+  SharedCacheModule l2("l2", l2_config(10, 8), clock);
+  DramModule dram("dram", dram_config, clock);
+  cpu.l1.out.bind(l2.in);
+  other.l1.out.bind(l2.in);
+  l2.out.bind(dram.in);
+  cpu.script = {{0x1000, 0}, {0x1000, 200}};
+  other.script = {{0x1000, 300}};
 
-  Requester other("other");
-  CacheModule other_l1("other_l1", l1, clock);
+  L1Requester foreign_cpu("foreign_cpu", l1, clock);
+  SharedCacheModule foreign_l2("foreign_l2", l2_config(10, 8), clock);
   FixedLatencyMemory foreign("foreign");
-  other.out.bind(other_l1.in);
-  other_l1.out.bind(foreign.in);
-  other.script = {{0x40, ns(5)}, {0x40, ns(5)}};
+  foreign_cpu.l1.out.bind(foreign_l2.in);
+  foreign_l2.out.bind(foreign.in);
+  foreign_cpu.script = {{0x40, 5}};
 
   sc_core::sc_start();
 
-  ASSERT_EQ(cpu.ready.size(), 3u);
+  ASSERT_EQ(cpu.ready.size(), 2u);
   // L1 tag 2 + L2 tag 10 + DRAM 64 B at 16 B/cycle 4 + latency 100.
-  EXPECT_EQ(cpu.ready[0], 2u + 10 + 4 + 100) << "cold miss through L1, L2 and DRAM";
-  EXPECT_EQ(cpu.ready[1], cpu.ready[0] + 2) << "then an L1 hit";
-  EXPECT_EQ(cpu.ready[2], cpu.ready[1] + 116) << "another cold miss";
-  EXPECT_EQ(l2_cache.cache().stats().misses, 2u);
-  EXPECT_EQ(memory.dram().stats().bytes, 128u);
+  EXPECT_EQ(cpu.ready[0], 2u + 10 + 4 + 100) << "a DRAM access";
+  EXPECT_EQ(cpu.charge[0].l2_accesses, 1u);
+  EXPECT_EQ(cpu.charge[0].dram_bytes, 64u) << "the L2's fetch, charged to the read";
+  EXPECT_EQ(cpu.ready[1], 200u + 2) << "an L1 hit";
+  EXPECT_EQ(cpu.charge[1].l1_hits, 1u);
+  ASSERT_EQ(other.ready.size(), 1u);
+  EXPECT_EQ(other.ready[0], 300u + 2 + 10) << "another unit's L1 miss hits in the L2";
+  EXPECT_EQ(other.charge[0].l2_hits, 1u);
+  EXPECT_EQ(l2.cache().stats().misses, 1u);
+  EXPECT_EQ(dram.dram().stats().bytes, 64u);
 
-  ASSERT_EQ(other.ready.size(), 2u);
-  EXPECT_EQ(other.ready[0], 5u + 2 + 50) << "the foreign memory's 50 ns, bound through TLM";
+  ASSERT_EQ(foreign_cpu.ready.size(), 1u);
+  EXPECT_EQ(foreign_cpu.ready[0], 5u + 2 + 10 + 50) << "the foreign memory's 50 ns, through TLM";
   EXPECT_EQ(foreign.reads, 1);
 }
 

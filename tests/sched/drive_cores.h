@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,7 +13,9 @@
 namespace rtsim::test {
 
 // Returns the cycle the last core finished; throws if no core can make progress.
-inline Cycle drive(const std::vector<RtCore*>& cores) {
+// after_cycle (optional) runs after every handled cycle: a deferred memory answers there.
+inline Cycle drive(const std::vector<RtCore*>& cores,
+                   const std::function<void()>& after_cycle = {}) {
   Cycle now = 0;
   for (RtCore* core : cores) core->poll(0);
   for (;;) {
@@ -42,6 +45,7 @@ inline Cycle drive(const std::vector<RtCore*>& cores) {
       if (core->waiting()) core->poll(now);
       core->advance(now + 1);
     }
+    if (after_cycle) after_cycle();
   }
 }
 

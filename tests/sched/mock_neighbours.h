@@ -10,11 +10,22 @@
 
 namespace rtsim::test {
 
-struct MockRayMemory : RayMemory {
-  explicit MockRayMemory(Cycle latency) : latency(latency) {}
-  Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override {
+// deferred: every read returns kPending and is answered (latency cycles after it was made)
+// only by answer_all(), as an L1 miss is by the L2.
+struct MockRayMemory : MemoryTarget {
+  explicit MockRayMemory(Cycle latency, bool deferred = false)
+      : latency(latency), deferred(deferred) {}
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle now, ReadClient* client, uint64_t token,
+             ReadCharge&) override {
     reads.push_back({addr, bytes, now});
-    return now + latency;
+    if (!deferred) return now + latency;
+    unanswered.push_back({client, token, now + latency});
+    return kPending;
+  }
+  void answer_all() {
+    std::vector<Answer> now;
+    now.swap(unanswered);
+    for (const Answer& a : now) a.client->read_done(a.token, a.ready, {});
   }
   void write(uint64_t addr, uint32_t bytes, Cycle now) override {
     writes.push_back({addr, bytes, now});
@@ -24,8 +35,15 @@ struct MockRayMemory : RayMemory {
     uint32_t bytes;
     Cycle at;
   };
+  struct Answer {
+    ReadClient* client;
+    uint64_t token;
+    Cycle ready;
+  };
   Cycle latency;
+  bool deferred;
   std::vector<Request> reads, writes;
+  std::vector<Answer> unanswered;
 };
 
 // What a retired ray left: its answer and when.

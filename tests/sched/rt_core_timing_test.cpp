@@ -61,6 +61,32 @@ TEST(RtCoreTiming, EveryStageTakesExactlyItsLatency) {
   EXPECT_EQ(core.box().stats().tests, 1u) << "the root has one child box";
 }
 
+TEST(RtCoreTiming, DataReportedLaterStepsExactlyAsDataKnownAtOnce) {
+  OneTriangle scene;
+  TraversalUnit unit(scene.image);
+  std::vector<Ray> rays(6, scene.ray);
+  for (TraversalMode mode : {TraversalMode::DepthFirst, TraversalMode::Packet}) {
+    RtCoreConfig c = timing_config();
+    c.mode = mode;
+    c.warp_size = 3;
+    c.warps = 2;
+    std::vector<Cycle> retired[2];
+    for (bool deferred : {false, true}) {
+      test::MockRayMemory memory(50, deferred);
+      test::MockSupply supply(rays, unit, 6);
+      RtCore core(0, c, unit, memory);
+      core.set_supply(&supply.dispatcher);
+      test::drive({&core}, [&] { memory.answer_all(); });
+      for (const test::Retired& r : supply.listener.done) retired[deferred].push_back(r.cycle);
+      EXPECT_EQ(core.stats().waited_reads, deferred ? memory.reads.size() : 0u);
+      EXPECT_EQ(core.stats().late_data, 0u);
+      EXPECT_EQ(core.waiting_reads(), 0u);
+    }
+    ASSERT_EQ(retired[0].size(), 6u) << traversal_mode_name(mode);
+    EXPECT_EQ(retired[0], retired[1]) << traversal_mode_name(mode);
+  }
+}
+
 TEST(RtCoreTiming, IssueWidthDefersTheFourthRay) {
   OneTriangle scene;
   TraversalUnit unit(scene.image);

@@ -95,12 +95,12 @@ TEST(HwConfig, WrongTypeRangeAndSyntaxAreClearErrors) {
 TEST(HwConfig, SetOverridesAnyKey) {
   HwConfig c = load_hw_config(RTSIM_SOURCE_DIR "/configs/mobile.toml",
                               {"rt.l1.size_bytes=8192", "rt.mode=treelet", "clock.ghz=2",
-                               "dram.bytes_per_cycle=12.5", "sim.direct_l1=false"});
+                               "dram.bytes_per_cycle=12.5", "sim.quantum_cycles=4"});
   EXPECT_EQ(c.l1.size_bytes, 8192u);
   EXPECT_EQ(c.rt.mode, TraversalMode::Treelet);
   EXPECT_DOUBLE_EQ(c.clock_ghz, 2.0);
   EXPECT_DOUBLE_EQ(c.dram.bytes_per_cycle, 12.5);
-  EXPECT_FALSE(c.sim.direct_l1);
+  EXPECT_EQ(c.sim.quantum_cycles, 4u);
   std::string e = error_of("", {"rt.l1.sise=1"});
   EXPECT_NE(e.find("--set rt.l1.sise"), std::string::npos) << e;
   EXPECT_NE(e.find("unknown key"), std::string::npos) << e;

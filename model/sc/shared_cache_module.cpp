@@ -1,0 +1,154 @@
+#include "model/sc/shared_cache_module.h"
+
+#include "model/sc/tlm_memory.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace rtsim {
+
+SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config,
+                                     const Clock& clock,
+                                     std::function<void(std::exception_ptr)> on_error)
+    : sc_module(name),
+      in("in"),
+      out("out"),
+      clock_(clock),
+      on_error_(std::move(on_error)),
+      cache_(config, this, CacheRole::L2) {
+  in.register_nb_transport_fw(this, &SharedCacheModule::nb_transport_fw);
+  SC_METHOD(serve);
+  sensitive << wake_;
+  dont_initialize();
+}
+
+void SharedCacheModule::add_job(const Job& job, Cycle at) {
+  uint32_t id;
+  if (free_jobs_.empty()) {
+    id = uint32_t(jobs_.size());
+    jobs_.push_back(job);
+  } else {
+    id = free_jobs_.back();
+    free_jobs_.pop_back();
+    jobs_[id] = job;
+  }
+  events_.push(at, id);
+  wake_.notify(clock_.delay_to(at));
+}
+
+tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
+                                                      tlm::tlm_phase& phase,
+                                                      sc_core::sc_time& delay) {
+  if (phase != tlm::BEGIN_REQ) return tlm::TLM_COMPLETED;  // END_RESP: nothing left to do
+  bool write = trans.get_command() == tlm::TLM_WRITE_COMMAND;
+  if (!write && trans.get_command() != tlm::TLM_READ_COMMAND) {
+    trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
+    return tlm::TLM_COMPLETED;
+  }
+  Job job;
+  job.kind = write ? JobKind::Write : JobKind::Read;
+  job.port = port;
+  job.trans = write ? nullptr : &trans;
+  job.addr = trans.get_address();
+  job.bytes = trans.get_data_length();
+  add_job(job, clock_.cycles(sc_core::sc_time_stamp() + delay));
+  if (write) {
+    trans.set_response_status(tlm::TLM_OK_RESPONSE);
+    return tlm::TLM_COMPLETED;
+  }
+  phase = tlm::END_REQ;
+  return tlm::TLM_UPDATED;
+}
+
+void SharedCacheModule::serve() {
+  try {
+    Cycle now = clock_.cycles(sc_core::sc_time_stamp());
+    while (!events_.empty() && events_.next_cycle() <= now) {
+      EventQueue::Event e = events_.pop();
+      run_job(e.item, e.cycle);
+    }
+    if (!events_.empty()) wake_.notify(clock_.delay_to(events_.next_cycle()));
+  } catch (...) {
+    if (!on_error_) throw;
+    on_error_(std::current_exception());
+  }
+}
+
+void SharedCacheModule::run_job(uint32_t id, Cycle at) {
+  Job job = jobs_[id];  // a copy: serving it may add jobs
+  switch (job.kind) {
+    case JobKind::Read: {
+      ReadCharge charge;
+      Cycle ready = cache_.read(job.addr, job.bytes, at, this, id, charge);
+      jobs_[id].charge += charge;
+      if (ready != kPending) respond(id, ready);
+      return;
+    }
+    case JobKind::Write:
+      free_jobs_.push_back(id);
+      cache_.write(job.addr, job.bytes, at);
+      return;
+    case JobKind::DramRead: {
+      free_jobs_.push_back(id);
+      Cycle ready = send_below(tlm::TLM_READ_COMMAND, job.addr, job.bytes, at);
+      job.client->read_done(job.token, ready, {});
+      return;
+    }
+  }
+}
+
+Cycle SharedCacheModule::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
+                              uint64_t token, ReadCharge&) {
+  Job job;
+  job.kind = JobKind::DramRead;
+  job.addr = addr;
+  job.bytes = bytes;
+  job.client = client;
+  job.token = token;
+  add_job(job, at);
+  return kPending;
+}
+
+void SharedCacheModule::write(uint64_t addr, uint32_t bytes, Cycle at) {
+  send_below(tlm::TLM_WRITE_COMMAND, addr, bytes, at);
+}
+
+void SharedCacheModule::read_done(uint64_t job, Cycle ready, const ReadCharge& charge) {
+  jobs_[job].charge += charge;
+  respond(uint32_t(job), ready);
+}
+
+void SharedCacheModule::respond(uint32_t id, Cycle ready) {
+  Job job = jobs_[id];
+  free_jobs_.push_back(id);
+  ReadChargeExtension* extension = nullptr;
+  job.trans->get_extension(extension);
+  if (extension) extension->charge = job.charge;
+  job.trans->set_response_status(tlm::TLM_OK_RESPONSE);
+  tlm::tlm_phase phase = tlm::BEGIN_RESP;
+  sc_core::sc_time delay = clock_.delay_to(ready);
+  in[job.port]->nb_transport_bw(*job.trans, phase, delay);
+}
+
+Cycle SharedCacheModule::send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes,
+                                    Cycle at) {
+  if (scratch_.size() < bytes) scratch_.resize(bytes);
+  tlm::tlm_generic_payload& t = below_trans_;
+  t.set_command(command);
+  t.set_address(addr);
+  t.set_data_ptr(scratch_.data());
+  t.set_data_length(bytes);
+  t.set_streaming_width(bytes);
+  t.set_byte_enable_ptr(nullptr);
+  t.set_dmi_allowed(false);
+  t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  sc_core::sc_time stamp = sc_core::sc_time_stamp();
+  sc_core::sc_time delay = clock_.delay_to(at);
+  out->b_transport(t, delay);
+  if (t.is_response_error())
+    throw std::runtime_error("memory access at " + std::to_string(addr) +
+                             " failed: " + t.get_response_string());
+  return clock_.cycles(stamp + delay);
+}
+
+}  // namespace rtsim

@@ -1,0 +1,84 @@
+// The shared L2 as an sc_module that serves its requests in simulated-time order.
+// Initiators (the RT units' L1s, model/sc/tlm_memory.h) bind to `in` and send TLM-2.0
+// approximately-timed transactions: BEGIN_REQ dated by its delay, answered END_REQ at once
+// (the request queue has no bound); the response is BEGIN_RESP, sent as soon as the data's
+// cycle is known (a hit: when the request is served; a miss: when the DRAM has answered),
+// with a delay saying when the data is ready. Writes are posted (completed on the request).
+// Why a queue: units run up to a quantum ahead of simulated time and an L1 miss that waited for
+// an MSHR leaves later than it was made, so requests arrive out of time order. The module
+// holds them in an event calendar and serves each at its own cycle, when simulated time
+// reaches it; the cache (model/mem/cache.h) and the DRAM below therefore see every request in
+// non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
+// The DRAM is reached through `out` by the base protocol's blocking transport (loosely timed),
+// called at the request's own cycle, so any loosely-timed TLM memory can be bound there.
+// One SC_METHOD, woken only at cycles that have requests or DRAM reads to serve.
+#pragma once
+
+#include <exception>
+#include <functional>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/multi_passthrough_target_socket.h>
+#include <tlm_utils/simple_initiator_socket.h>
+
+#include "model/mem/cache.h"
+#include "model/sc/clock.h"
+#include "model/sched/event_queue.h"
+
+namespace rtsim {
+
+class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, private ReadClient {
+ public:
+  tlm_utils::multi_passthrough_target_socket<SharedCacheModule> in;
+  tlm_utils::simple_initiator_socket<SharedCacheModule> out;
+
+  SC_HAS_PROCESS(SharedCacheModule);
+  // on_error receives what serving a request threw (a failed DRAM access); without it the
+  // exception leaves the SystemC kernel.
+  SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
+                    std::function<void(std::exception_ptr)> on_error = {});
+  Cache& cache() { return cache_; }
+  const Cache& cache() const { return cache_; }
+  size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served
+
+ private:
+  enum class JobKind : uint8_t { Read, Write, DramRead };
+  struct Job {
+    JobKind kind = JobKind::Read;
+    int port = 0;
+    tlm::tlm_generic_payload* trans = nullptr;  // Read: the initiator's transaction
+    uint64_t addr = 0;
+    uint32_t bytes = 0;
+    ReadClient* client = nullptr;  // DramRead: the cache, and its token
+    uint64_t token = 0;
+    ReadCharge charge;
+  };
+
+  tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
+                                     tlm::tlm_phase& phase, sc_core::sc_time& delay);
+  // Below the cache: its misses become DRAM reads at their own cycle; its writes go out now.
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+             ReadCharge& charge) override;
+  void write(uint64_t addr, uint32_t bytes, Cycle at) override;
+  void read_done(uint64_t job, Cycle ready, const ReadCharge& charge) override;
+
+  void serve();
+  void run_job(uint32_t id, Cycle at);
+  void respond(uint32_t id, Cycle ready);
+  void add_job(const Job& job, Cycle at);
+  Cycle send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at);
+
+  Clock clock_;
+  std::function<void(std::exception_ptr)> on_error_;
+  Cache cache_;
+  EventQueue events_;  // job ids at their cycles
+  std::vector<Job> jobs_;
+  std::vector<uint32_t> free_jobs_;
+  sc_core::sc_event wake_;
+  tlm::tlm_generic_payload below_trans_;
+  std::vector<unsigned char> scratch_;
+};
+
+}  // namespace rtsim
