@@ -40,7 +40,7 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   sets_ = uint32_t(config.size_bytes / (uint64_t(config.line_bytes) * config.ways));
   lines_.resize(size_t(sets_) * config.ways);
   policy_ = make_replacement_policy(config.replacement, sets_, config.ways);
-  mshr_free_.assign(config.mshrs, 0);
+  for (uint32_t i = 0; i < config.mshrs; ++i) free_mshrs_.push(0);
 }
 
 template <class T>
@@ -58,20 +58,17 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, u
                   ReadCharge& charge) {
   uint64_t first = addr / config_.line_bytes;
   uint64_t last = (addr + std::max<uint32_t>(bytes, 1) - 1) / config_.line_bytes;
-  Caller caller{client, token, kNone};
+  Caller caller{client, token, last > first, kNone};
+  if (!caller.several_lines) return access_line(first, at, caller, charge);
   Cycle ready = at;
   for (uint64_t line = first; line <= last; ++line) {
     Cycle r = access_line(line, at, caller, charge);
     if (r != kPending) ready = std::max(ready, r);
   }
   if (caller.request == kNone) return ready;
-  // The request record holds one count for this call, so it cannot complete during it.
-  Request& q = requests_[caller.request];
+  Request& q = requests_[caller.request];  // its lines complete later, never during this call
   q.ready = std::max(q.ready, ready);
-  if (--q.lines > 0) return kPending;
-  charge += q.charge;
-  free_requests_.push_back(caller.request);
-  return q.ready;
+  return kPending;
 }
 
 Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
@@ -83,7 +80,7 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
 
 void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
   stats_.write_bytes += bytes;
-  below_->write(addr, bytes, at);
+  below_->write(addr, bytes, at + config_.hit_latency);  // through the level's pipeline
 }
 
 bool Cache::contains(uint64_t addr) const {
@@ -133,12 +130,28 @@ Cycle Cache::access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& ch
 }
 
 void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest) {
+  if (!caller.several_lines) {
+    misses_[miss].waiters.push_back({caller.client, caller.token, earliest});
+    return;
+  }
   if (caller.request == kNone) {
     caller.request = take(requests_, free_requests_);
-    requests_[caller.request] = Request{caller.client, caller.token, 1, 0, {}};
+    requests_[caller.request] = Request{caller.client, caller.token, 0, 0, {}};
   }
   requests_[caller.request].lines++;
-  misses_[miss].waiters.push_back({caller.request, earliest});
+  misses_[miss].waiters.push_back({&join_, caller.request, earliest});
+}
+
+uint32_t Cache::new_miss(uint64_t line, uint32_t set, uint32_t way, Cycle send) {
+  uint32_t id = take(misses_, free_misses_);
+  Miss& m = misses_[id];
+  m.line = line;
+  m.set = set;
+  m.way = way;
+  m.send = send;
+  m.charge = {};
+  m.waiters.clear();
+  return id;
 }
 
 Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
@@ -146,35 +159,37 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   stats_.misses++;
   stats_.bytes_below += config_.line_bytes;
   if (role_ == CacheRole::L2) charge.dram_bytes += config_.line_bytes;
-  uint32_t id = take(misses_, free_misses_);
-  uint32_t way = install(set, ways, Line{line / sets_, kPending, id, true});
-  Miss& m = misses_[id];
-  m.line = line;
-  m.set = set;
-  m.way = way;
-  m.send = at + config_.hit_latency;
-  m.charge = {};
-  m.waiters.clear();
-  wait_for(id, caller, 0);
-  // The MSHR free first: one free at the send cycle, else the earliest whose data time is known.
-  uint32_t best = kNone;
-  for (uint32_t i = 0; i < config_.mshrs; ++i) {
-    Cycle free = mshr_free_[i];
-    if (free == kPending || (best != kNone && free >= mshr_free_[best])) continue;
-    best = i;
-    if (free <= m.send) break;
-  }
-  if (best == kNone)
+  Cycle send = at + config_.hit_latency;
+  uint32_t way = install(set, ways, Line{line / sets_, kPending, kNone, true});
+  uint32_t id = new_miss(line, set, way, send);
+  ways[way].miss = id;
+  // The MSHR free first; with none whose end is known, wait until one's end is reported.
+  if (free_mshrs_.empty()) {
+    wait_for(id, caller, 0);
     waiting_.push_back(id);
-  else
-    issue(id, best, std::max(m.send, mshr_free_[best]));
-  return kPending;
+    return kPending;
+  }
+  Cycle start = std::max(send, free_mshrs_.top());
+  free_mshrs_.pop();
+  stats_.mshr_stall_cycles += start - send;
+  ReadCharge below;
+  Cycle ready = below_->read(line * config_.line_bytes, config_.line_bytes, start, this, id, below);
+  if (ready == kPending) {
+    misses_[id].charge = below;
+    wait_for(id, caller, 0);
+    return kPending;
+  }
+  // Answered at once: the line is in flight until `ready`, and so is its MSHR.
+  charge += below;
+  ways[way].ready = ready;
+  ways[way].miss = kNone;
+  free_mshrs_.push(ready);
+  free_misses_.push_back(id);
+  return ready;
 }
 
-void Cache::issue(uint32_t miss, uint32_t mshr, Cycle at) {
-  mshr_free_[mshr] = kPending;
+void Cache::issue(uint32_t miss, Cycle at) {
   Miss& m = misses_[miss];
-  m.mshr = mshr;
   stats_.mshr_stall_cycles += at - m.send;
   ReadCharge below;
   Cycle ready = below_->read(m.line * config_.line_bytes, config_.line_bytes, at, this, miss, below);
@@ -187,21 +202,23 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   Miss& m = misses_[id];
   Line& line = lines_[size_t(m.set) * config_.ways + m.way];
   if (line.valid && line.ready == kPending && line.miss == id) line.ready = ready;
-  uint32_t mshr = m.mshr;
-  mshr_free_[mshr] = ready;
   ReadCharge first = m.charge;
   first += charge;
   // Completing a waiter only notifies its client; nothing here takes a new miss record.
   for (size_t i = 0; i < misses_[id].waiters.size(); ++i) {
     Waiter w = misses_[id].waiters[i];
-    complete_part(w.request, std::max(ready, w.earliest), i == 0 ? first : ReadCharge{});
+    w.client->read_done(w.token, std::max(ready, w.earliest), i == 0 ? first : ReadCharge{});
   }
   misses_[id].waiters.clear();
   free_misses_.push_back(id);
-  if (waiting_.empty()) return;
+  // Its MSHR is free from `ready`: for the first miss waiting for one, or for later misses.
+  if (waiting_.empty()) {
+    free_mshrs_.push(ready);
+    return;
+  }
   uint32_t next = waiting_.front();
   waiting_.pop_front();
-  issue(next, mshr, std::max(ready, misses_[next].send));
+  issue(next, std::max(ready, misses_[next].send));
 }
 
 void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charge) {

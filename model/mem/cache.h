@@ -9,12 +9,14 @@
 // The level below may answer at once or later (MemoryTarget); so may this cache: a read that
 // waits for data of unknown time returns kPending and completes through its client.
 // Requests spanning several lines access them in the same cycle. Allocate on miss; reads only:
-// writes (stack spills) pass below without allocation (write-around).
+// writes (stack spills) pass below without allocation (write-around), hit_latency cycles
+// after they arrive, as a miss does.
 #pragma once
 
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <queue>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -86,22 +88,24 @@ class Cache : public MemoryTarget, private ReadClient {
   static constexpr uint32_t kNone = ~0u;
   struct Line {
     uint64_t tag = 0;
-    Cycle ready = 0;       // kPending: its miss (below) has not learnt its data's cycle
+    Cycle ready = 0;        // kPending: its miss (below) has not learnt its data's cycle
     uint32_t miss = kNone;  // that miss, while ready is kPending
     bool valid = false;
   };
   struct Waiter {
-    uint32_t request;
+    ReadClient* client;
+    uint64_t token;
     Cycle earliest;  // its own tag check: the data cannot be ready before
   };
   struct Miss {
     uint64_t line = 0;
-    uint32_t set = 0, way = 0, mshr = 0;
+    uint32_t set = 0, way = 0;
     Cycle send = 0;  // the cycle it may go below (after the tag check)
     ReadCharge charge;
     std::vector<Waiter> waiters;  // the first one made the miss
   };
-  // A read that waits: its client, and the lines it still waits for.
+  // A read of several lines that waits: its client, and the lines it still waits for. Its
+  // lines' misses report to join_, which completes the read with the last of them.
   struct Request {
     ReadClient* client = nullptr;
     uint64_t token = 0;
@@ -109,17 +113,27 @@ class Cache : public MemoryTarget, private ReadClient {
     Cycle ready = 0;
     ReadCharge charge;
   };
-  struct Caller {  // the read being served, and its request record once it has to wait
+  struct Join : ReadClient {
+    explicit Join(Cache& cache) : cache(cache) {}
+    void read_done(uint64_t request, Cycle ready, const ReadCharge& charge) override {
+      cache.complete_part(uint32_t(request), ready, charge);
+    }
+    Cache& cache;
+  };
+  struct Caller {  // the read being served; a read of several lines gets a Request to wait
     ReadClient* client;
     uint64_t token;
+    bool several_lines;
     uint32_t request;
   };
 
+  // A line's ready cycle, or kPending once the caller waits for it.
   Cycle access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge);
   void wait_for(uint32_t miss, Caller& caller, Cycle earliest);
   Cycle miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
              ReadCharge& charge);
-  void issue(uint32_t miss, uint32_t mshr, Cycle at);
+  uint32_t new_miss(uint64_t line, uint32_t set, uint32_t way, Cycle send);
+  void issue(uint32_t miss, Cycle at);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
   uint32_t install(uint32_t set, Line* ways, const Line& line);  // evicting a victim if needed
@@ -132,12 +146,15 @@ class Cache : public MemoryTarget, private ReadClient {
   uint32_t sets_;
   std::vector<Line> lines_;  // sets_ x ways, set-major
   std::unique_ptr<ReplacementPolicy> policy_;
-  std::vector<Cycle> mshr_free_;  // per MSHR: the cycle it is free from (kPending: not known)
+  // The cycles the MSHRs not holding a miss are free from, earliest first. An MSHR whose miss
+  // has not learnt its data's cycle is in none of them.
+  std::priority_queue<Cycle, std::vector<Cycle>, std::greater<Cycle>> free_mshrs_;
   std::vector<Miss> misses_;
   std::vector<uint32_t> free_misses_;
   std::deque<uint32_t> waiting_;  // misses for which every MSHR's end was unknown
   std::vector<Request> requests_;
   std::vector<uint32_t> free_requests_;
+  Join join_{*this};
   std::unordered_set<uint64_t> held_lines_;  // every line ever referenced: tells cold misses
   bool track_cold_ = false;
   double own_share_ = 1.0;

@@ -30,7 +30,8 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
       collector_(width, height) {
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);
-  l2_ = std::make_unique<SharedCacheModule>("l2", config.l2, clock_,
+  // The L1s send misses and writes after their tag check: the L2 may serve that far ahead.
+  l2_ = std::make_unique<SharedCacheModule>("l2", config.l2, clock_, config.l1.hit_latency,
                                             [this](std::exception_ptr e) { control_.fail(e); });
   l2_->cache().track_cold_misses();
   if (bind_memory) {

@@ -9,7 +9,7 @@ RtUnitModule::RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCo
                            const Clock& clock, uint32_t quantum_cycles, SimControl& control)
     : sc_module(name),
       supply("supply"),
-      l1("l1", l1_config, clock, [this] { arm(); }),
+      l1("l1", l1_config, clock, [this] { arm_at(core_.take_data_event()); }),
       clock_(clock),
       quantum_(std::max<uint32_t>(quantum_cycles, 1)),
       control_(control),
@@ -25,12 +25,21 @@ void RtUnitModule::start_of_simulation() {
 }
 
 void RtUnitModule::arm() {
-  if (core_.has_event()) wake_.notify(clock_.delay_to(core_.next_event()));
+  if (core_.has_event()) arm_at(core_.next_event());
+}
+
+// Between runs the core's next event is armed, so data reported for a cycle is the only new
+// candidate.
+void RtUnitModule::arm_at(Cycle cycle) {
+  if (cycle >= armed_) return;  // the pending notification comes first
+  armed_ = cycle;
+  wake_.notify(clock_.delay_to(cycle));
 }
 
 void RtUnitModule::run() {
   try {
     Cycle now = clock_.cycles(sc_core::sc_time_stamp());
+    if (armed_ <= now) armed_ = kPending;  // that notification has fired
     uint64_t progress = 0;
     if (!core_.started() || core_.waiting()) progress += core_.poll(now);
     progress += core_.advance(now + quantum_);
@@ -40,6 +49,7 @@ void RtUnitModule::run() {
       if (--control_.units_running == 0) sc_core::sc_stop();
       return;  // no next trigger: the unit sleeps for good
     }
+    core_.take_data_event();
     arm();
     // With no event, no ray supply to wait for and no read out, nothing can wake the unit:
     // the watchdog reports the stall.

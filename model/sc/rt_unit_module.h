@@ -32,13 +32,15 @@ public:
 private:
   void start_of_simulation() override;
   void run();
-  void arm();  // wakes the process at the core's next event
+  void arm();        // wakes the process at the core's next event
+  void arm_at(Cycle cycle);
 
   Clock clock_;
   uint32_t quantum_;
   SimControl& control_;
   RtCore core_;
   sc_core::sc_event wake_;
+  Cycle armed_ = kPending;  // the cycle wake_ is notified for (kPending: none)
   sc_core::sc_event_or_list wake_or_work_;
 };
 

@@ -2,18 +2,20 @@
 
 #include "model/sc/tlm_memory.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
 namespace rtsim {
 
 SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config,
-                                     const Clock& clock,
+                                     const Clock& clock, uint32_t lookahead,
                                      std::function<void(std::exception_ptr)> on_error)
     : sc_module(name),
       in("in"),
       out("out"),
       clock_(clock),
+      lookahead_(std::max<uint32_t>(lookahead, 1)),
       on_error_(std::move(on_error)),
       cache_(config, this, CacheRole::L2) {
   in.register_nb_transport_fw(this, &SharedCacheModule::nb_transport_fw);
@@ -33,6 +35,8 @@ void SharedCacheModule::add_job(const Job& job, Cycle at) {
     jobs_[id] = job;
   }
   events_.push(at, id);
+  if (serving_ || at >= armed_) return;  // serve() arms wake_, or an earlier wake is pending
+  armed_ = at;
   wake_.notify(clock_.delay_to(at));
 }
 
@@ -45,13 +49,19 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
     trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
     return tlm::TLM_COMPLETED;
   }
+  Cycle at = clock_.cycles(sc_core::sc_time_stamp() + delay);
+  if (at < served_until_)
+    throw std::logic_error(std::string(name()) + ": a request dated cycle " + std::to_string(at) +
+                           " came after cycle " + std::to_string(served_until_) +
+                           " was served: its initiator breaks the lookahead of " +
+                           std::to_string(lookahead_) + " cycles");
   Job job;
   job.kind = write ? JobKind::Write : JobKind::Read;
   job.port = port;
   job.trans = write ? nullptr : &trans;
   job.addr = trans.get_address();
   job.bytes = trans.get_data_length();
-  add_job(job, clock_.cycles(sc_core::sc_time_stamp() + delay));
+  add_job(job, at);
   if (write) {
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
     return tlm::TLM_COMPLETED;
@@ -62,13 +72,20 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
 
 void SharedCacheModule::serve() {
   try {
-    Cycle now = clock_.cycles(sc_core::sc_time_stamp());
-    while (!events_.empty() && events_.next_cycle() <= now) {
+    served_until_ = clock_.cycles(sc_core::sc_time_stamp()) + lookahead_;
+    serving_ = true;
+    while (!events_.empty() && events_.next_cycle() < served_until_) {
       EventQueue::Event e = events_.pop();
       run_job(e.item, e.cycle);
     }
-    if (!events_.empty()) wake_.notify(clock_.delay_to(events_.next_cycle()));
+    serving_ = false;
+    armed_ = kPending;
+    if (!events_.empty()) {
+      armed_ = events_.next_cycle();
+      wake_.notify(clock_.delay_to(armed_));
+    }
   } catch (...) {
+    serving_ = false;
     if (!on_error_) throw;
     on_error_(std::current_exception());
   }
@@ -94,6 +111,10 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
       job.client->read_done(job.token, ready, {});
       return;
     }
+    case JobKind::DramWrite:
+      free_jobs_.push_back(id);
+      send_below(tlm::TLM_WRITE_COMMAND, job.addr, job.bytes, at);
+      return;
   }
 }
 
@@ -110,7 +131,11 @@ Cycle SharedCacheModule::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClien
 }
 
 void SharedCacheModule::write(uint64_t addr, uint32_t bytes, Cycle at) {
-  send_below(tlm::TLM_WRITE_COMMAND, addr, bytes, at);
+  Job job;
+  job.kind = JobKind::DramWrite;
+  job.addr = addr;
+  job.bytes = bytes;
+  add_job(job, at);
 }
 
 void SharedCacheModule::read_done(uint64_t job, Cycle ready, const ReadCharge& charge) {

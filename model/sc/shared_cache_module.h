@@ -11,7 +11,11 @@
 // non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
 // The DRAM is reached through `out` by the base protocol's blocking transport (loosely timed),
 // called at the request's own cycle, so any loosely-timed TLM memory can be bound there.
-// One SC_METHOD, woken only at cycles that have requests or DRAM reads to serve.
+// One SC_METHOD, woken only at cycles that have requests or DRAM accesses to serve. With a
+// lookahead of L cycles (every initiator dates its requests at least L cycles after the
+// current simulated time: an L1 sends a miss after its tag check) it wakes at the cycle c of
+// its earliest job and serves everything dated before c + L, so one wake-up serves L cycles
+// of a busy L2. Responses carry their data's cycle in their delay, so this changes no timing.
 #pragma once
 
 #include <exception>
@@ -37,14 +41,16 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   SC_HAS_PROCESS(SharedCacheModule);
   // on_error receives what serving a request threw (a failed DRAM access); without it the
   // exception leaves the SystemC kernel.
+  // lookahead: see above (0 for initiators that promise nothing).
   SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
+                    uint32_t lookahead = 0,
                     std::function<void(std::exception_ptr)> on_error = {});
   Cache& cache() { return cache_; }
   const Cache& cache() const { return cache_; }
   size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served
 
  private:
-  enum class JobKind : uint8_t { Read, Write, DramRead };
+  enum class JobKind : uint8_t { Read, Write, DramRead, DramWrite };
   struct Job {
     JobKind kind = JobKind::Read;
     int port = 0;
@@ -58,7 +64,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
 
   tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
                                      tlm::tlm_phase& phase, sc_core::sc_time& delay);
-  // Below the cache: its misses become DRAM reads at their own cycle; its writes go out now.
+  // Below the cache: its misses and writes become DRAM accesses at their own cycle.
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
              ReadCharge& charge) override;
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
@@ -71,12 +77,16 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   Cycle send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at);
 
   Clock clock_;
+  uint32_t lookahead_;  // at least 1: a wake-up at cycle c serves what is dated before c + it
   std::function<void(std::exception_ptr)> on_error_;
   Cache cache_;
   EventQueue events_;  // job ids at their cycles
   std::vector<Job> jobs_;
   std::vector<uint32_t> free_jobs_;
   sc_core::sc_event wake_;
+  Cycle armed_ = kPending;  // the cycle wake_ is notified for (kPending: none)
+  Cycle served_until_ = 0;  // every job dated before it has been served
+  bool serving_ = false;    // serve() arms wake_ for the next job when it ends
   tlm::tlm_generic_payload below_trans_;
   std::vector<unsigned char> scratch_;
 };

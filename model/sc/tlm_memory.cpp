@@ -30,6 +30,8 @@ L1Module::Transaction& L1Module::take() {
     Transaction& t = *pool_.back();
     t.charge = new ReadChargeExtension;
     t.set_extension(t.charge);  // owned and freed by the payload
+    t.set_byte_enable_ptr(nullptr);
+    t.set_dmi_allowed(false);
     return t;
   }
   Transaction* t = free_.back();
@@ -45,8 +47,6 @@ bool L1Module::send(Transaction& t, tlm::tlm_command command, uint64_t addr, uin
   t.set_data_ptr(scratch_.data());
   t.set_data_length(bytes);
   t.set_streaming_width(bytes);
-  t.set_byte_enable_ptr(nullptr);
-  t.set_dmi_allowed(false);
   t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
   t.charge->charge = {};
   tlm::tlm_phase phase = tlm::BEGIN_REQ;

@@ -15,6 +15,7 @@
 // (packet mode: its warp) waiting; the L1 reports the data's cycle later (read_done), and the
 // step goes on at that cycle. Data reported for a cycle the unit has already passed (it runs up
 // to a quantum ahead of simulated time) is used at the unit's local cycle, counted as late.
+// The test units are booked when the data is reported (their calendar takes any order).
 #pragma once
 
 #include <cstdint>
@@ -87,6 +88,12 @@ public:
   bool waiting() const { return waiting_; }  // has free slots the supply could not fill yet
   bool finished() const { return in_flight_ == 0 && events_.empty() && !waiting_ && started_; }
   uint32_t waiting_reads() const { return waiting_reads_; }  // reads whose data is not back
+  // The earliest event that reported data scheduled since the last call (kPending: none).
+  Cycle take_data_event() {
+    Cycle at = data_event_;
+    data_event_ = kPending;
+    return at;
+  }
   uint32_t in_flight() const { return in_flight_; }
   uint32_t slots() const { return uint32_t(slots_.size()); }
 
@@ -127,8 +134,9 @@ private:
   // After an item's reads: wait for the pending ones (true), or go on (false).
   bool wait_reads(uint32_t item, Wait wait, Cycle known_ready);
   Cycle fetch(RayContext& ray, const StepResult& step, Cycle now);
-  // The tests of a step (packet mode: of a warp step) once its data is there.
-  void test_step(uint32_t item, Cycle data);
+  // Books the tests of a step (packet mode: of a warp step) once its data is there, and
+  // schedules the item's next step; returns its cycle.
+  Cycle test_step(uint32_t item, Cycle data);
   bool refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready);
   uint32_t treelet_of(const RayContext& ray, const Next& next) const;
   void settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cycle now);
@@ -156,6 +164,7 @@ private:
   std::vector<uint32_t> step_tests_;
   std::vector<uint8_t> step_leaf_;
   uint32_t waiting_reads_ = 0;
+  Cycle data_event_ = kPending;
   std::vector<uint32_t> free_slots_;  // treelet mode
   std::vector<uint32_t> free_warps_;  // per-ray and packet modes
   std::vector<RayContext*> batch_;

@@ -10,11 +10,6 @@
 namespace rtsim {
 
 void RtCore::on_warp(uint32_t warp, Cycle now) {
-  if (wait_[warp] == Wait::Data) {
-    wait_[warp] = Wait::None;
-    test_step(warp, now);
-    return;
-  }
   if (!claim_issue(warp, now)) return;
   uint32_t base = warp * config_.warp_size;
   // What each lane visits next; a lane with nothing left retires now.

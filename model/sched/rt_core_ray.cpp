@@ -44,9 +44,15 @@ void RtCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
     stats_.late_cycles += now_ - at;
     at = now_;
   }
-  if (wait_[item] == Wait::Refill) wait_[item] = Wait::None;
-  if (config_.mode != TraversalMode::Packet) slots_[item]->ready = at;
-  events_.push(at, item);
+  Wait wait = wait_[item];
+  wait_[item] = Wait::None;
+  if (wait == Wait::Data) {
+    at = test_step(item, at);  // the test units keep a calendar: booked here, in any order
+  } else {
+    if (config_.mode != TraversalMode::Packet) slots_[item]->ready = at;
+    events_.push(at, item);
+  }
+  data_event_ = std::min(data_event_, at);
 }
 
 bool RtCore::wait_reads(uint32_t item, Wait wait, Cycle known_ready) {
@@ -56,7 +62,7 @@ bool RtCore::wait_reads(uint32_t item, Wait wait, Cycle known_ready) {
   return true;
 }
 
-void RtCore::test_step(uint32_t item, Cycle data) {
+Cycle RtCore::test_step(uint32_t item, Cycle data) {
   TestUnitPool& unit = step_leaf_[item] ? triangle_ : box_;
   uint32_t first = config_.mode == TraversalMode::Packet ? item * config_.warp_size : item;
   uint32_t count = config_.mode == TraversalMode::Packet ? config_.warp_size : 1;
@@ -69,6 +75,7 @@ void RtCore::test_step(uint32_t item, Cycle data) {
   Cycle next = done + config_.control_latency;
   if (config_.mode != TraversalMode::Packet) slots_[item]->ready = next;
   events_.push(next, item);
+  return next;
 }
 
 Cycle RtCore::fetch(RayContext& ray, const StepResult& step, Cycle now) {
@@ -114,11 +121,6 @@ void RtCore::settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cy
 }
 
 void RtCore::on_ray(uint32_t slot, Cycle now) {
-  if (wait_[slot] == Wait::Data) {
-    wait_[slot] = Wait::None;
-    test_step(slot, now);
-    return;
-  }
   RayContext& ray = *slots_[slot];
   // Traversal control starts issue_per_cycle steps a cycle.
   if (!claim_issue(slot, now)) return;

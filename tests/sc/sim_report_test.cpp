@@ -106,10 +106,11 @@ TEST(SimReport, SpillWritesGoAroundTheCachesAndTakeTheBus) {
            std::to_string(l1.stats().accesses) + " " + std::to_string(l2.cache().stats().accesses) +
            " " + std::to_string(writer.client.done.at(0).ready);
   });
-  // The write passed both caches (no access counted) and holds the bus for 1024 / 16 = 64
-  // cycles from cycle 0, so the read's miss, at the DRAM at cycle 2 + 10, waits for it: its
-  // 4-cycle transfer ends at 68, its data is ready 100 cycles later.
-  EXPECT_EQ(result, "1024 1024 1 1 " + std::to_string(64 + 4 + 100));
+  // The write passed both caches (no access counted; it takes each level's 2 and 10 cycles)
+  // and holds the bus for 1024 / 16 = 64 cycles from cycle 12, so the read's miss, at the DRAM
+  // at cycle 2 + 10 too but after it, waits: its 4-cycle transfer ends at 80, its data is ready
+  // 100 cycles later.
+  EXPECT_EQ(result, "1024 1024 1 1 " + std::to_string(12 + 64 + 4 + 100));
 }
 
 }  // namespace
