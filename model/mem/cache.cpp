@@ -131,7 +131,7 @@ Cycle Cache::access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& ch
 
 void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest) {
   if (!caller.several_lines) {
-    misses_[miss].waiters.push_back({caller.client, caller.token, earliest});
+    add_waiter(miss, {caller.client, caller.token, earliest, kNone});
     return;
   }
   if (caller.request == kNone) {
@@ -139,19 +139,15 @@ void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest) {
     requests_[caller.request] = Request{caller.client, caller.token, 0, 0, {}};
   }
   requests_[caller.request].lines++;
-  misses_[miss].waiters.push_back({&join_, caller.request, earliest});
+  add_waiter(miss, {&join_, caller.request, earliest, kNone});
 }
 
-uint32_t Cache::new_miss(uint64_t line, uint32_t set, uint32_t way, Cycle send) {
-  uint32_t id = take(misses_, free_misses_);
-  Miss& m = misses_[id];
-  m.line = line;
-  m.set = set;
-  m.way = way;
-  m.send = send;
-  m.charge = {};
-  m.waiters.clear();
-  return id;
+void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
+  uint32_t id = take(waiters_, free_waiters_);
+  waiters_[id] = waiter;
+  Miss& m = misses_[miss];
+  (m.first == kNone ? m.first : waiters_[m.last].next) = id;
+  m.last = id;
 }
 
 Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
@@ -160,9 +156,15 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   stats_.bytes_below += config_.line_bytes;
   if (role_ == CacheRole::L2) charge.dram_bytes += config_.line_bytes;
   Cycle send = at + config_.hit_latency;
-  uint32_t way = install(set, ways, Line{line / sets_, kPending, kNone, true});
-  uint32_t id = new_miss(line, set, way, send);
-  ways[way].miss = id;
+  uint32_t id = take(misses_, free_misses_);
+  uint32_t way = install(set, ways, Line{line / sets_, kPending, id, true});
+  Miss& m = misses_[id];
+  m.line = line;
+  m.set = set;
+  m.way = way;
+  m.send = send;
+  m.charge = {};
+  m.first = m.last = kNone;
   // The MSHR free first; with none whose end is known, wait until one's end is reported.
   if (free_mshrs_.empty()) {
     wait_for(id, caller, 0);
@@ -204,12 +206,15 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   if (line.valid && line.ready == kPending && line.miss == id) line.ready = ready;
   ReadCharge first = m.charge;
   first += charge;
-  // Completing a waiter only notifies its client; nothing here takes a new miss record.
-  for (size_t i = 0; i < misses_[id].waiters.size(); ++i) {
-    Waiter w = misses_[id].waiters[i];
-    w.client->read_done(w.token, std::max(ready, w.earliest), i == 0 ? first : ReadCharge{});
+  // Completing a waiter only notifies its client; nothing here adds a waiter or a miss.
+  uint32_t head = m.first;
+  for (uint32_t w = head; w != kNone;) {
+    Waiter waiter = waiters_[w];
+    free_waiters_.push_back(w);
+    waiter.client->read_done(waiter.token, std::max(ready, waiter.earliest),
+                             w == head ? first : ReadCharge{});
+    w = waiter.next;
   }
-  misses_[id].waiters.clear();
   free_misses_.push_back(id);
   // Its MSHR is free from `ready`: for the first miss waiting for one, or for later misses.
   if (waiting_.empty()) {

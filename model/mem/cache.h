@@ -96,13 +96,14 @@ class Cache : public MemoryTarget, private ReadClient {
     ReadClient* client;
     uint64_t token;
     Cycle earliest;  // its own tag check: the data cannot be ready before
+    uint32_t next;   // the next waiter of the same miss (kNone: the last)
   };
   struct Miss {
     uint64_t line = 0;
     uint32_t set = 0, way = 0;
     Cycle send = 0;  // the cycle it may go below (after the tag check)
     ReadCharge charge;
-    std::vector<Waiter> waiters;  // the first one made the miss
+    uint32_t first = kNone, last = kNone;  // its waiters, in order: the first made the miss
   };
   // A read of several lines that waits: its client, and the lines it still waits for. Its
   // lines' misses report to join_, which completes the read with the last of them.
@@ -130,9 +131,9 @@ class Cache : public MemoryTarget, private ReadClient {
   // A line's ready cycle, or kPending once the caller waits for it.
   Cycle access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge);
   void wait_for(uint32_t miss, Caller& caller, Cycle earliest);
+  void add_waiter(uint32_t miss, const Waiter& waiter);
   Cycle miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
              ReadCharge& charge);
-  uint32_t new_miss(uint64_t line, uint32_t set, uint32_t way, Cycle send);
   void issue(uint32_t miss, Cycle at);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
@@ -150,6 +151,8 @@ class Cache : public MemoryTarget, private ReadClient {
   // has not learnt its data's cycle is in none of them.
   std::priority_queue<Cycle, std::vector<Cycle>, std::greater<Cycle>> free_mshrs_;
   std::vector<Miss> misses_;
+  std::vector<Waiter> waiters_;  // the waiters of all misses, in lists through Waiter::next
+  std::vector<uint32_t> free_waiters_;
   std::vector<uint32_t> free_misses_;
   std::deque<uint32_t> waiting_;  // misses for which every MSHR's end was unknown
   std::vector<Request> requests_;

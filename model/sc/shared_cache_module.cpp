@@ -73,11 +73,10 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
 void SharedCacheModule::serve() {
   try {
     served_until_ = clock_.cycles(sc_core::sc_time_stamp()) + lookahead_;
+    stamp_ = sc_core::sc_time_stamp();
     serving_ = true;
-    while (!events_.empty() && events_.next_cycle() < served_until_) {
-      EventQueue::Event e = events_.pop();
-      run_job(e.item, e.cycle);
-    }
+    EventQueue::Event e;
+    while (events_.pop_before(served_until_, e)) run_job(e.item, e.cycle);
     serving_ = false;
     armed_ = kPending;
     if (!events_.empty()) {
@@ -151,7 +150,7 @@ void SharedCacheModule::respond(uint32_t id, Cycle ready) {
   if (extension) extension->charge = job.charge;
   job.trans->set_response_status(tlm::TLM_OK_RESPONSE);
   tlm::tlm_phase phase = tlm::BEGIN_RESP;
-  sc_core::sc_time delay = clock_.delay_to(ready);
+  sc_core::sc_time delay = clock_.time(ready) - stamp_;  // serve() runs at stamp_
   in[job.port]->nb_transport_bw(*job.trans, phase, delay);
 }
 
@@ -167,13 +166,12 @@ Cycle SharedCacheModule::send_below(tlm::tlm_command command, uint64_t addr, uin
   t.set_byte_enable_ptr(nullptr);
   t.set_dmi_allowed(false);
   t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  sc_core::sc_time stamp = sc_core::sc_time_stamp();
-  sc_core::sc_time delay = clock_.delay_to(at);
+  sc_core::sc_time delay = clock_.time(at) - stamp_;
   out->b_transport(t, delay);
   if (t.is_response_error())
     throw std::runtime_error("memory access at " + std::to_string(addr) +
                              " failed: " + t.get_response_string());
-  return clock_.cycles(stamp + delay);
+  return clock_.cycles(stamp_ + delay);
 }
 
 }  // namespace rtsim

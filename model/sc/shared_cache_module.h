@@ -86,6 +86,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   sc_core::sc_event wake_;
   Cycle armed_ = kPending;  // the cycle wake_ is notified for (kPending: none)
   Cycle served_until_ = 0;  // every job dated before it has been served
+  sc_core::sc_time stamp_;  // the simulated time serve() runs at
   bool serving_ = false;    // serve() arms wake_ for the next job when it ends
   tlm::tlm_generic_payload below_trans_;
   std::vector<unsigned char> scratch_;

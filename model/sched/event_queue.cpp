@@ -72,6 +72,15 @@ Cycle EventQueue::next_cycle() const {
   return cursor_ + gap(cursor_);
 }
 
+bool EventQueue::pop_before(Cycle until, Event& event) {
+  if (size_ == 0) return false;
+  // Events left at the cursor's cycle (several in one cycle) need no scan for the next one.
+  bool at_cursor = on_wheel_ > 0 && head_[cursor_ % kWheel] != kNone;
+  if ((at_cursor ? cursor_ : next_cycle()) >= until) return false;
+  event = pop();
+  return true;
+}
+
 EventQueue::Event EventQueue::pop() {
   settle();
   uint32_t slot = uint32_t(cursor_ % kWheel);

@@ -31,6 +31,8 @@ public:
   // events may still be pushed for any cycle from the last one popped on.
   Cycle next_cycle() const;
   Event pop();
+  // Pops the earliest event if it is before cycle `until` (then true); else changes nothing.
+  bool pop_before(Cycle until, Event& event);
 
 private:
   static constexpr uint32_t kNone = ~0u;

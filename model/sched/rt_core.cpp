@@ -78,8 +78,8 @@ uint64_t RtCore::poll(Cycle now) {
 
 uint64_t RtCore::advance(Cycle until) {
   progress_ = 0;
-  while (!events_.empty() && events_.next_cycle() < until) {
-    EventQueue::Event e = events_.pop();
+  EventQueue::Event e;
+  while (events_.pop_before(until, e)) {
     now_ = std::max(now_, e.cycle);
     if (config_.mode == TraversalMode::Packet)
       on_warp(e.item, now_);
