@@ -72,7 +72,7 @@ TEST_F(Regress, FailsWhenAConfigChangeSlowsTheDesign) {
 }
 
 TEST_F(Regress, AFasterDesignPassesAsImproved) {
-  change_config("hit_latency = 16", "hit_latency = 2");  // the L1's
+  change_config("mshrs = 8", "mshrs = 32");  // the L1's
   test::RunResult r = regress();
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("improved"), std::string::npos) << r.out;

@@ -1,6 +1,6 @@
 // Whole simulations on a built-in scene: every ray retires with Embree's answer, the stats
-// add up, the run is deterministic, the direct L1 path times exactly like the socket, and
-// temporal decoupling moves the cycle count only a little.
+// add up, the run is deterministic, and temporal decoupling moves the cycle count only a
+// little.
 #include <gtest/gtest.h>
 
 #include "tests/sc/sim_test_util.h"
