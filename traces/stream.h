@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "traces/output_file.h"
 #include "traces/ray.h"
 
 namespace rtsim {
@@ -49,7 +50,8 @@ private:
   void flush_chunk();
   void write_bytes(const void* data, size_t size);
 
-  std::string path_, tmp_path_;
+  std::string path_;
+  OutputFile output_;
   StreamHeader header_;
   FILE* file_ = nullptr;
   std::vector<uint8_t> chunk_;

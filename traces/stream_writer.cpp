@@ -15,12 +15,15 @@ namespace rtsim {
 
 RayStreamWriter::RayStreamWriter(const std::string& path, StreamHeader header)
     : path_(path),
-      tmp_path_(path + ".tmp-" + std::to_string(getpid())),
+      output_(path),
       header_(std::move(header)) {
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
     throw std::invalid_argument("chunk_rays must be in [1, " + std::to_string(kMaxChunkRays) + "]");
   header_.counts = {};
-  file_ = std::fopen(tmp_path_.c_str(), "wb");
+  if (output_.sequential())  // checked before opening: opening a FIFO waits for a reader
+    throw_input_error(path_, "", "cannot write a ray stream to a FIFO or socket: it needs a "
+                                 "seekable file (its header is completed last)");
+  file_ = std::fopen(output_.write_path().c_str(), "wb");
   if (!file_) throw_input_error(path_, "", std::string("cannot write: ") + std::strerror(errno));
   auto bytes = encode_header(header_);
   write_bytes(bytes.data(), bytes.size());
@@ -30,7 +33,7 @@ RayStreamWriter::RayStreamWriter(const std::string& path, StreamHeader header)
 RayStreamWriter::~RayStreamWriter() {
   if (file_) {
     std::fclose(file_);
-    std::remove(tmp_path_.c_str());
+    output_.discard();
   }
 }
 
@@ -58,13 +61,15 @@ void RayStreamWriter::finish() {
   if (chunk_count_ > 0) flush_chunk();
   flush_chunk();  // an empty chunk marks the end
   auto bytes = encode_header(header_);
-  if (std::fseek(file_, 0, SEEK_SET) != 0) throw_input_error(path_, "", "cannot seek");
+  if (std::fseek(file_, 0, SEEK_SET) != 0)
+    throw_input_error(path_, "", "cannot seek back to the header: a stream needs a seekable file");
   write_bytes(bytes.data(), bytes.size());
-  bool ok = std::fflush(file_) == 0 && fsync(fileno(file_)) == 0;
+  bool ok = std::fflush(file_) == 0;
+  if (output_.renames()) ok = ok && fsync(fileno(file_)) == 0;
   ok = std::fclose(file_) == 0 && ok;
   file_ = nullptr;
-  if (!ok || std::rename(tmp_path_.c_str(), path_.c_str()) != 0) {
-    std::remove(tmp_path_.c_str());
+  if (!ok || !output_.commit()) {
+    output_.discard();
     throw_input_error(path_, "", std::string("cannot write: ") + std::strerror(errno));
   }
 }

@@ -38,6 +38,8 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   std::string problem = cache_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
   sets_ = uint32_t(config.size_bytes / (uint64_t(config.line_bytes) * config.ways));
+  if (sets_ > 1 && power_of_two(sets_)) set_shift_ = uint32_t(__builtin_ctz(sets_));
+  line_shift_ = uint32_t(__builtin_ctz(config.line_bytes));
   lines_.resize(size_t(sets_) * config.ways);
   policy_ = make_replacement_policy(config.replacement, sets_, config.ways);
   for (uint32_t i = 0; i < config.mshrs; ++i) free_mshrs_.push(0);
@@ -56,8 +58,8 @@ uint32_t Cache::take(std::vector<T>& pool, std::vector<uint32_t>& free) {
 
 Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
                   ReadCharge& charge) {
-  uint64_t first = addr / config_.line_bytes;
-  uint64_t last = (addr + std::max<uint32_t>(bytes, 1) - 1) / config_.line_bytes;
+  uint64_t first = addr >> line_shift_;
+  uint64_t last = (addr + std::max<uint32_t>(bytes, 1) - 1) >> line_shift_;
   Caller caller{client, token, last > first, kNone};
   if (!caller.several_lines) return access_line(first, at, caller, charge);
   Cycle ready = at;
@@ -84,18 +86,18 @@ void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
 }
 
 bool Cache::contains(uint64_t addr) const {
-  uint64_t line = addr / config_.line_bytes;
-  const Line* set = &lines_[size_t(line % sets_) * config_.ways];
+  uint64_t line = addr >> line_shift_;
+  const Line* set = &lines_[size_t(set_of(line)) * config_.ways];
   return std::any_of(set, set + config_.ways,
-                     [&](const Line& l) { return l.valid && l.tag == line / sets_; });
+                     [&](const Line& l) { return l.valid && l.tag == tag_of(line); });
 }
 
 Cycle Cache::access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge) {
   stats_.accesses++;
   bool l1 = role_ == CacheRole::L1;
   (l1 ? charge.l1_accesses : charge.l2_accesses)++;
-  auto set = uint32_t(line % sets_);
-  uint64_t tag = line / sets_;
+  uint32_t set = set_of(line);
+  uint64_t tag = tag_of(line);
   Line* ways = &lines_[size_t(set) * config_.ways];
   Cycle hit_ready = at + config_.hit_latency;
 
@@ -157,7 +159,7 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   if (role_ == CacheRole::L2) charge.dram_bytes += config_.line_bytes;
   Cycle send = at + config_.hit_latency;
   uint32_t id = take(misses_, free_misses_);
-  uint32_t way = install(set, ways, Line{line / sets_, kPending, id, true});
+  uint32_t way = install(set, ways, Line{tag_of(line), kPending, id, true});
   Miss& m = misses_[id];
   m.line = line;
   m.set = set;
@@ -175,7 +177,7 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   free_mshrs_.pop();
   stats_.mshr_stall_cycles += start - send;
   ReadCharge below;
-  Cycle ready = below_->read(line * config_.line_bytes, config_.line_bytes, start, this, id, below);
+  Cycle ready = below_->read(line << line_shift_, config_.line_bytes, start, this, id, below);
   if (ready == kPending) {
     misses_[id].charge = below;
     wait_for(id, caller, 0);
@@ -194,7 +196,7 @@ void Cache::issue(uint32_t miss, Cycle at) {
   Miss& m = misses_[miss];
   stats_.mshr_stall_cycles += at - m.send;
   ReadCharge below;
-  Cycle ready = below_->read(m.line * config_.line_bytes, config_.line_bytes, at, this, miss, below);
+  Cycle ready = below_->read(m.line << line_shift_, config_.line_bytes, at, this, miss, below);
   misses_[miss].charge += below;
   if (ready != kPending) read_done(miss, ready, {});
 }

@@ -141,10 +141,19 @@ class Cache : public MemoryTarget, private ReadClient {
   template <class T>
   static uint32_t take(std::vector<T>& pool, std::vector<uint32_t>& free);
 
+  // Set and tag of a line number: shifts and masks for a power-of-two set count (divisions
+  // are slow on the hot path), divisions otherwise.
+  uint32_t set_of(uint64_t line) const {
+    return uint32_t(set_shift_ ? line & (sets_ - 1) : line % sets_);
+  }
+  uint64_t tag_of(uint64_t line) const { return set_shift_ ? line >> set_shift_ : line / sets_; }
+
   CacheConfig config_;
   MemoryTarget* below_;
   CacheRole role_;
   uint32_t sets_;
+  uint32_t set_shift_ = 0;   // log2(sets_) if sets_ is a power of two above 1, else 0
+  uint32_t line_shift_ = 0;  // log2(line_bytes)
   std::vector<Line> lines_;  // sets_ x ways, set-major
   std::unique_ptr<ReplacementPolicy> policy_;
   // The cycles the MSHRs not holding a miss are free from, earliest first. An MSHR whose miss

@@ -8,6 +8,7 @@
 
 #include "model/verify/arbiter.h"
 #include "traces/error.h"
+#include "traces/output_file.h"
 
 namespace rtsim {
 namespace {
@@ -159,13 +160,17 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
 }
 
 void write_file_atomic(const std::string& path, const std::string& bytes) {
-  std::string tmp = path + ".tmp-" + std::to_string(getpid());
+  OutputFile output(path);
+  bool ok;
   {
-    std::ofstream out(tmp, std::ios::binary);
+    std::ofstream out(output.write_path(), std::ios::binary);
     out.write(bytes.data(), std::streamsize(bytes.size()));
-    if (!out) throw_input_error(path, "", "cannot write");
+    ok = bool(out.flush());
   }
-  std::filesystem::rename(tmp, path);
+  if (!ok || !output.commit()) {
+    output.discard();
+    throw_input_error(path, "", "cannot write");
+  }
 }
 
 Json write_sim_results(const std::string& dir, const RtSimulator& sim, const SimRunInfo& info) {

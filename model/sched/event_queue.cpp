@@ -75,8 +75,15 @@ Cycle EventQueue::next_cycle() const {
 bool EventQueue::pop_before(Cycle until, Event& event) {
   if (size_ == 0) return false;
   // Events left at the cursor's cycle (several in one cycle) need no scan for the next one.
-  bool at_cursor = on_wheel_ > 0 && head_[cursor_ % kWheel] != kNone;
-  if ((at_cursor ? cursor_ : next_cycle()) >= until) return false;
+  Cycle next = on_wheel_ > 0 && head_[cursor_ % kWheel] != kNone ? cursor_ : next_cycle();
+  if (next >= until) return false;
+  if (next != cursor_) {  // turn the wheel to it, as settle() would, without a second scan
+    cursor_ = next;
+    while (!far_.empty() && far_.top().cycle < cursor_ + kWheel) {
+      append(far_.top().cycle, far_.top().item);
+      far_.pop();
+    }
+  }
   event = pop();
   return true;
 }
