@@ -1,43 +1,86 @@
 #include "reports/metrics.h"
 
 #include "reports/page_util.h"
+#include "traces/ray.h"
 
 namespace rtsim::reports {
 
 using Json = nlohmann::ordered_json;
 
+namespace {
+
+// Each metric of a run and where report.json holds it.
+struct MetricKey {
+  const char* name;
+  const char* key;
+};
+constexpr MetricKey kRunMetrics[] = {
+    {"cycles", "timing.cycles"},
+    {"cycles_ci95", "timing.cycles_ci95"},
+    {"mrays_per_second", "timing.mrays_per_second"},
+    {"rays", "timing.rays"},
+    {"dram_bytes", "bandwidth.dram_bytes"},
+    {"dram_bytes_per_ray", "bandwidth.dram_bytes_per_ray"},
+    {"l1_bytes_per_ray", "bandwidth.l1_bytes_per_ray"},
+    {"l2_bytes_per_ray", "bandwidth.l2_bytes_per_ray"},
+    {"l1_hit_rate", "bandwidth.l1_hit_rate"},
+    {"l2_hit_rate", "bandwidth.l2_hit_rate"},
+    {"dram_utilisation", "bandwidth.dram_utilisation"},
+    {"nodes_per_ray", "coherence.nodes_per_ray"},
+    {"triangles_per_ray", "coherence.triangles_per_ray"},
+    {"stack_spills_per_ray", "coherence.stack_spills_per_ray"},
+    {"on_chip_bytes", "hardware.on_chip_bytes"},
+    {"unexplained", "verification.unexplained"},
+    {"host_seconds", "timing.host_seconds"},
+};
+// Per ray type T: type.T.NAME, at the key with T in place of %.
+constexpr MetricKey kTypeMetrics[] = {
+    {"dram_bytes_per_ray", "bandwidth.by_type.%.dram_bytes_per_ray"},
+    {"l1_hit_rate", "hit_rates.by_type.%.l1"},
+    {"l2_hit_rate", "hit_rates.by_type.%.l2"},
+    {"nodes_per_ray", "coherence.by_type.%.nodes_per_ray"},
+    {"latency_mean", "latency.by_type.%.mean"},
+    {"latency_p50", "latency.by_type.%.p50"},
+    {"latency_p99", "latency.by_type.%.p99"},
+};
+
+std::string with_type(const char* key, const std::string& type) {
+  std::string k = key;
+  return k.replace(k.find('%'), 1, type);
+}
+
+}  // namespace
+
 Json flat_metrics(const Json& r) {
   Json m;
-  auto put = [&](const std::string& name, const std::string& key) { m[name] = at_key(r, key); };
-  put("cycles", "timing.cycles");
-  put("cycles_ci95", "timing.cycles_ci95");
-  put("mrays_per_second", "timing.mrays_per_second");
-  put("rays", "timing.rays");
-  put("dram_bytes", "bandwidth.dram_bytes");
-  put("dram_bytes_per_ray", "bandwidth.dram_bytes_per_ray");
-  put("l1_bytes_per_ray", "bandwidth.l1_bytes_per_ray");
-  put("l2_bytes_per_ray", "bandwidth.l2_bytes_per_ray");
-  put("l1_hit_rate", "bandwidth.l1_hit_rate");
-  put("l2_hit_rate", "bandwidth.l2_hit_rate");
-  put("dram_utilisation", "bandwidth.dram_utilisation");
-  put("nodes_per_ray", "coherence.nodes_per_ray");
-  put("triangles_per_ray", "coherence.triangles_per_ray");
-  put("stack_spills_per_ray", "coherence.stack_spills_per_ray");
-  put("on_chip_bytes", "hardware.on_chip_bytes");
-  put("unexplained", "verification.unexplained");
-  put("host_seconds", "timing.host_seconds");
+  for (const MetricKey& k : kRunMetrics) m[k.name] = at_key(r, k.key);
   for (const auto& [type, rays] : r["workload"]["rays_per_type"].items()) {
     std::string p = "type." + type + ".";
     m[p + "rays"] = rays;
-    put(p + "dram_bytes_per_ray", "bandwidth.by_type." + type + ".dram_bytes_per_ray");
-    put(p + "l1_hit_rate", "hit_rates.by_type." + type + ".l1");
-    put(p + "l2_hit_rate", "hit_rates.by_type." + type + ".l2");
-    put(p + "nodes_per_ray", "coherence.by_type." + type + ".nodes_per_ray");
-    put(p + "latency_mean", "latency.by_type." + type + ".mean");
-    put(p + "latency_p50", "latency.by_type." + type + ".p50");
-    put(p + "latency_p99", "latency.by_type." + type + ".p99");
+    for (const MetricKey& k : kTypeMetrics) m[p + k.name] = at_key(r, with_type(k.key, type));
   }
   return m;
+}
+
+std::string metric_name_problem(const std::string& name) {
+  for (const MetricKey& k : kRunMetrics)
+    if (name == k.name) return {};
+  std::string names, type_names = "rays";
+  for (const MetricKey& k : kRunMetrics) names += std::string(names.empty() ? "" : ", ") + k.name;
+  for (const MetricKey& k : kTypeMetrics) type_names += std::string(", ") + k.name;
+  if (name.rfind("type.", 0) == 0) {
+    size_t dot = name.find('.', 5);
+    std::string type = name.substr(5, dot == std::string::npos ? std::string::npos : dot - 5);
+    std::string rest = dot == std::string::npos ? "" : name.substr(dot + 1);
+    if (type != "*" && !ray_type_from_name(type))
+      return "unknown ray type '" + type + "' in metric '" + name + "'";
+    if (rest == "rays") return {};
+    for (const MetricKey& k : kTypeMetrics)
+      if (rest == k.name) return {};
+    return "unknown metric '" + name + "' (per ray type: type.TYPE.NAME or type.*.NAME, NAME one of " +
+           type_names + ")";
+  }
+  return "unknown metric '" + name + "' (metrics: " + names + "; per ray type: type.*.NAME)";
 }
 
 std::string metric_direction(const std::string& name) {

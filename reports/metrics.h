@@ -16,6 +16,10 @@ namespace rtsim::reports {
 
 nlohmann::ordered_json flat_metrics(const nlohmann::ordered_json& report);
 
+// Why `name` is no metric of flat_metrics (empty if it is one); type.*.NAME stands for NAME of
+// every ray type.
+std::string metric_name_problem(const std::string& name);
+
 // Whether a larger value is better ("higher"), worse ("lower"), or neither ("either").
 std::string metric_direction(const std::string& name);
 

@@ -10,6 +10,7 @@
 #include "model/config/config_reader.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
+#include "reports/metrics.h"
 #include "reports/spec_reader.h"
 #include "traces/error.h"
 
@@ -51,6 +52,8 @@ RegressCase read_case(const SpecReader& r, const toml::table& t, const toml::tab
 }
 
 Tolerance read_tolerance(const SpecReader& r, const std::string& metric, const toml::node& n) {
+  std::string problem = metric_name_problem(metric);
+  if (!problem.empty()) r.fail(n, "[tolerance] " + problem);
   Tolerance t{metric, 0, 0, ""};
   if (!n.is_table()) {
     t.relative = r.non_negative(n, "tolerance '" + metric + "'");

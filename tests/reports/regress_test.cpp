@@ -85,5 +85,21 @@ TEST_F(Regress, AMissingBaselineIsBadInput) {
   EXPECT_NE(r.err.find("--update-baseline"), std::string::npos) << r.err;
 }
 
+TEST(RegressCli, AMisspeltMetricIsBadInputBeforeAnyCaseRuns) {
+  std::string dir = test::fresh_dir("regress-metric");
+  std::ofstream(dir + "/suite.toml") << "[[case]]\nname = \"pica\"\nworkload = \"pica\"\n"
+                                        "[tolerance]\ncycels = 0.01\n";
+  test::RunResult r =
+      test::run_rtsim("regress " + dir + "/suite.toml --baseline " + dir + "/b -o " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_EQ(r.err.rfind("rtsim: error: " + dir + "/suite.toml: line 5: [tolerance] unknown metric "
+                        "'cycels'",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out/cases")) << "no case ran";
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rtsim

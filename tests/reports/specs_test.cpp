@@ -99,6 +99,29 @@ TEST(SweepSpec, MistakesNameTheFileAndLine) {
       << "checked when read, not point by point";
 }
 
+TEST(RegressSuite, AToleranceOnAnUnknownMetricNamesItsLine) {
+  auto suite = [](const std::string& tolerances) {
+    return "[[case]]\nname = \"a\"\n[tolerance]\ncycles = 0.02\n" + tolerances;
+  };
+  std::string e = error_of([&] { read_regress_suite(write("r.toml", suite("cycels = 0.01\n"))); });
+  EXPECT_NE(e.find("r.toml: line 5: [tolerance] unknown metric 'cycels' (metrics: cycles,"),
+            std::string::npos)
+      << "a misspelt metric compares n/a with n/a and never catches a regression: " << e;
+  e = error_of([&] { read_regress_suite(write("r.toml", suite("\"type.gi.l1_hit_rate\" = 0.1\n"))); });
+  EXPECT_NE(e.find("line 5: [tolerance] unknown ray type 'gi'"), std::string::npos) << e;
+  e = error_of([&] {
+    read_regress_suite(write("r.toml", suite("\"type.*.l1_hitrate\" = { absolute = 0.1 }\n")));
+  });
+  EXPECT_NE(e.find("line 5: [tolerance] unknown metric 'type.*.l1_hitrate' (per ray type"),
+            std::string::npos)
+      << e;
+  EXPECT_EQ(error_of([&] {
+              read_regress_suite(write("r.toml", suite("\"type.diffuse_gi.latency_p99\" = 0.1\n"
+                                                       "\"type.*.rays\" = 0\n")));
+            }),
+            "");
+}
+
 TEST(RegressSuite, ReadsCasesDefaultsAndTolerances) {
   RegressSuite s = read_regress_suite(write("r.toml", R"(config = "hw.toml"
 [defaults]
