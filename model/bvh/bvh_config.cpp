@@ -20,6 +20,12 @@ std::string validate(const BvhConfig& c) {
   if (c.region_align == 0 || (c.region_align & (c.region_align - 1)) != 0)
     return fmt::format("region_align is {}: it must be a power of two", c.region_align);
   if (c.node_base % 64 != 0) return "node_base must be 64-byte aligned";
+  if (c.node_align != 0 &&
+      ((c.node_align & (c.node_align - 1)) != 0 || c.node_align < 16 || c.node_align > 4096))
+    return fmt::format("node_align is {}: it must be 0 or a power of two in 16..4096",
+                       c.node_align);
+  if (c.node_align > 64 && c.node_base % c.node_align != 0)
+    return fmt::format("node_base must be a multiple of node_align ({})", c.node_align);
   return {};
 }
 
@@ -62,6 +68,7 @@ std::string describe(const BvhConfig& c) {
   std::string text =
       fmt::format("bvh{} {} {} {}", c.width, node_format_name(c.node_format),
                   triangle_format_name(c.triangle_format), node_layout_name(c.node_layout));
+  if (c.node_align) text += fmt::format(" aligned {} B", c.node_align);
   return text + fmt::format(" (treelets {} B, leaves <= {}, {} bins)", c.treelet_bytes,
                             c.max_leaf_size, c.sah_bins);
 }

@@ -34,6 +34,9 @@ struct BvhConfig {
   TriangleFormat triangle_format = TriangleFormat::Raw;
   NodeLayout node_layout = NodeLayout::Treelet;
   uint32_t treelet_bytes = 4096;    // bytes: budget of one treelet, 512..65536
+  // bytes: 0 packs nodes; else a power of two (the L1 line or sector): nodes are padded so that
+  // none spans more blocks of this size than it fills
+  uint32_t node_align = 0;
   uint64_t node_base = 0x10000000;  // address: first byte of the node region
   uint64_t region_align = 4096;     // bytes: the triangle region starts on this alignment
 };

@@ -32,6 +32,16 @@ uint32_t deepest_level(const WideBvh& bvh) {
   return deepest;
 }
 
+// The stride of records of `size` bytes that never span more `align`-byte blocks than they
+// fill: a power of two up to the block (it divides the block), else whole blocks.
+uint32_t padded_stride(uint32_t size, uint32_t align) {
+  if (align == 0) return size;
+  if (size > align) return (size + align - 1) / align * align;
+  uint32_t stride = 1;
+  while (stride < size) stride *= 2;
+  return stride;
+}
+
 }  // namespace
 
 BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
@@ -42,7 +52,8 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
 
   BvhImage image;
   image.config = config;
-  image.node_stride = node_stride(config.node_format, config.width);
+  image.node_size = node_stride(config.node_format, config.width);
+  image.node_stride = padded_stride(image.node_size, config.node_align);
   image.triangle_stride = triangle_stride(config.triangle_format);
   image.scene_extent = largest_coordinate(mesh);
 

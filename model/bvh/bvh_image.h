@@ -2,6 +2,8 @@
 // address space, plus the facts about it that the model reports (sizes, treelets, depth).
 // Address space: nodes from config.node_base, node i at node_base + i * node_stride; the
 // triangle region starts at the next multiple of config.region_align after the last node.
+// With config.node_align, node_stride is the record's size padded so that no node spans more
+// aligned blocks than it fills (the next power of two up to the block, else a multiple of it).
 #pragma once
 
 #include <cstdint>
@@ -23,7 +25,8 @@ struct BvhBuildStats {
 
 struct BvhImage {
   BvhConfig config;
-  uint32_t node_stride = 0, triangle_stride = 0;  // bytes per record
+  uint32_t node_stride = 0, triangle_stride = 0;  // bytes per record, padding included
+  uint32_t node_size = 0;                         // bytes a node fetch reads (no padding)
   uint32_t node_count = 0, triangle_count = 0;
   uint64_t node_base = 0, triangle_base = 0;  // addresses of the two regions
   std::vector<uint8_t> nodes, triangles;      // the bytes of the two regions
@@ -45,6 +48,7 @@ struct BvhImage {
     return triangles.data() + size_t(position) * triangle_stride;
   }
   uint64_t total_bytes() const { return nodes.size() + triangles.size(); }
+  uint64_t node_padding_bytes() const { return uint64_t(node_count) * (node_stride - node_size); }
 };
 
 // Builds, collapses, forms treelets, orders and encodes. Throws InputError (via

@@ -140,6 +140,11 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.bvh.node_layout = *node_layout_from_name(layout);
   c.bvh.treelet_bytes = uint32_t(bvh.integer("treelet_bytes", c.bvh.treelet_bytes, "bytes",
                                              "node budget of one treelet", 512, 65536));
+  c.bvh.node_align = uint32_t(bvh.integer(
+      "node_align", c.bvh.node_align, "bytes",
+      "0 packs nodes; a power of two (the L1 line or sector) pads them so that none spans more "
+      "blocks of it than it fills",
+      0, 4096));
   c.bvh.max_leaf_size = int(bvh.integer("max_leaf_size", uint64_t(c.bvh.max_leaf_size), "triangles",
                                         "most triangles in one leaf", 1, 16));
   c.bvh.sah_bins = int(bvh.integer("sah_bins", uint64_t(c.bvh.sah_bins), "bins",

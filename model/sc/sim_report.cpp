@@ -101,7 +101,8 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
                   {"nodes", info.image->node_count},
                   {"triangles", info.image->triangle_count},
                   {"treelets", info.image->treelets.count},
-                  {"bytes", info.image->total_bytes()}};
+                  {"bytes", info.image->total_bytes()},
+                  {"node_padding_bytes", info.image->node_padding_bytes()}};
   doc["summary"] = {{"mode", traversal_mode_name(c.rt.mode)},
                     {"rays", sim.rays()},
                     {"cycles", sim.cycles()},

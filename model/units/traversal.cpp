@@ -62,7 +62,7 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
   // Fetch the node.
   s.counters.trav_nodes++;
   if (config_.record_accesses) {
-    record(s, image_.node_address(entry.index), image_.node_stride, AccessKind::Node);
+    record(s, image_.node_address(entry.index), image_.node_size, AccessKind::Node);
     out.access_count = 1;
   }
   NodeView node;

@@ -100,6 +100,29 @@ TEST(AddressSpace, RegionsAreAlignedAndDisjoint) {
   EXPECT_EQ(image.triangle_address(2), image.triangle_base + 80);
 }
 
+TEST(AddressSpace, AlignedNodesNeverSpanMoreBlocksThanTheyFill) {
+  TriangleMesh mesh = test::random_soup(500, 0.3f, 2);
+  BvhConfig packed = test::config(NodeFormat::Cwbvh8, 8);
+  for (uint32_t align : {32u, 64u, 128u}) {
+    BvhConfig c = packed;
+    c.node_align = align;
+    BvhImage image = build_bvh_image(mesh, c);
+    EXPECT_EQ(image.node_size, 80u);
+    EXPECT_EQ(image.node_stride, align == 32 ? 96u : 128u) << align;
+    for (uint32_t i = 0; i < image.node_count; ++i) {
+      uint64_t first = image.node_address(i) / align;
+      uint64_t last = (image.node_address(i) + image.node_size - 1) / align;
+      ASSERT_EQ(last - first + 1, (image.node_size + align - 1) / align) << "node " << i;
+    }
+    EXPECT_EQ(image.node_padding_bytes(), uint64_t(image.node_count) * (image.node_stride - 80));
+    EXPECT_EQ(image.node_count, build_bvh_image(mesh, packed).node_count) << "the same tree";
+    for (int64_t parent : parents(image)) EXPECT_GE(parent, -1) << "every node is reachable";
+  }
+  BvhConfig bad = packed;
+  bad.node_align = 96;
+  EXPECT_NE(validate(bad).find("node_align is 96"), std::string::npos);
+}
+
 TEST(Treelets, RespectTheBudgetAndAreConnected) {
   TriangleMesh mesh = test::random_soup(20000, 0.2f, 6);
   uint32_t previous_count = 0;

@@ -40,10 +40,13 @@ inline BvhConfig config(NodeFormat format, int width, int leaf = 3) {
 }
 
 // Every node format at every width of the issue.
+// Every node format and width, and compressed nodes padded to 128-byte lines.
 inline std::vector<BvhConfig> all_configs() {
   std::vector<BvhConfig> out;
   for (NodeFormat f : {NodeFormat::Aabb32, NodeFormat::Cwbvh8})
     for (int w : {2, 4, 6, 8}) out.push_back(config(f, w));
+  out.push_back(config(NodeFormat::Cwbvh8, 8));
+  out.back().node_align = 128;
   return out;
 }
 

@@ -50,7 +50,7 @@ TEST(RtCoreTiming, EveryStageTakesExactlyItsLatency) {
   // Arrival 0 + dispatch latency 10, setup 4: the node fetch at 14.
   ASSERT_EQ(memory.reads.size(), 2u);
   EXPECT_EQ(memory.reads[0].at, 14u) << "node fetch after dispatch and setup";
-  EXPECT_EQ(memory.reads[0].bytes, scene.image.node_stride);
+  EXPECT_EQ(memory.reads[0].bytes, scene.image.node_size);
   // Data at 64, box unit 8, control 1: the leaf fetch at 73.
   EXPECT_NE(memory.reads[1].at, 72u) << "not one cycle early";
   EXPECT_EQ(memory.reads[1].at, 73u) << "leaf fetch after memory, box unit and control";
