@@ -51,6 +51,15 @@ void print_summary(const nlohmann::ordered_json& doc) {
         t["nodes_per_ray"].get<double>(), t["triangles_per_ray"].get<double>(),
         100 * t["l1_hit_rate"].get<double>(), 100 * t["l2_hit_rate"].get<double>(),
         t["dram_bytes_per_ray"].get<double>());
+  const auto& m = doc["memory"];
+  auto percent = [](const nlohmann::ordered_json& v) {
+    return v.is_null() ? std::string("n/a") : fmt::format("{:.1f}%", 100 * v.get<double>());
+  };
+  fmt::print(
+      "memory     L1 hit {} served {}  L2 hit {} served {}  compulsory {} of L2 misses  "
+      "(served: hits and merges into misses in flight)\n",
+      percent(m["l1_hit_rate"]), percent(m["l1_served_rate"]), percent(m["l2_hit_rate"]),
+      percent(m["l2_served_rate"]), percent(m["l2_compulsory_share"]));
   const auto& u = doc["utilisation"]["mean"];
   fmt::print(
       "busy       box {:.1f}%  triangle {:.1f}%  control {:.1f}%  ray slots {:.1f}%  "

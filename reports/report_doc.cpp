@@ -80,7 +80,10 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
             {"l1_bytes_per_ray", Json()},
             {"l2_bytes_per_ray", Json()},
             {"dram_bytes_per_cycle", Json()},
-            {"dram_utilisation", Json()}};
+            {"dram_utilisation", Json()},
+            {"l1_served_rate", Json()},
+            {"l2_served_rate", Json()},
+            {"l2_compulsory_share", Json()}};
   Json by_type = Json::object();
   for (int t = 0; t < kRayTypeCount; ++t) {
     const TypeEstimate& e = f.types[t];
@@ -94,6 +97,8 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
     b["l2_bytes_per_ray"] = sum_units(counters, c.rt_units, ".l1.bytes_below") / rays;
     b["dram_bytes_per_cycle"] = stats["memory"]["dram_bytes_per_cycle"];
     b["dram_utilisation"] = stats["utilisation"]["dram"];
+    for (const char* key : {"l1_served_rate", "l2_served_rate", "l2_compulsory_share"})
+      b[key] = stats["memory"][key];
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
       entry["l1_bytes_per_ray"] =

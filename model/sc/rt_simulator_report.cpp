@@ -12,13 +12,18 @@ void report_cache(StatsRegistry& r, const std::string& p, const Cache& cache) {
   r.counter(p + ".accesses", s.accesses);
   r.counter(p + ".hits", s.hits);
   r.counter(p + ".misses", s.misses);
-  if (cache.tracks_cold_misses()) r.counter(p + ".cold_misses", s.cold_misses);
+  if (cache.tracks_cold_misses()) {
+    r.counter(p + ".cold_misses", s.cold_misses);
+    r.ratio(p + ".compulsory_share", p + ".cold_misses", p + ".misses");
+  }
   r.counter(p + ".mshr_merges", s.mshr_merges);
   r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
   r.counter(p + ".evictions", s.evictions);
   r.counter(p + ".bytes_below", s.bytes_below);
   r.counter(p + ".write_bytes", s.write_bytes);
   r.ratio(p + ".hit_rate", p + ".hits", p + ".accesses");
+  r.counter(p + ".served", s.hits + s.mshr_merges);
+  r.ratio(p + ".served_rate", p + ".served", p + ".accesses");
 }
 
 void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPool& pool) {

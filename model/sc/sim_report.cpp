@@ -118,8 +118,14 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   }
   doc["ray_types"] = types;
   double l1_accesses = sum(r, c.rt_units, ".l1.accesses");
-  doc["memory"] = {{"l1_hit_rate", l1_accesses ? sum(r, c.rt_units, ".l1.hits") / l1_accesses : 0},
+  auto l1_share = [&](const char* counter) {
+    return l1_accesses ? sum(r, c.rt_units, counter) / l1_accesses : 0;
+  };
+  doc["memory"] = {{"l1_hit_rate", l1_share(".l1.hits")},
                    {"l2_hit_rate", r.value("l2.hit_rate")},
+                   {"l1_served_rate", l1_share(".l1.served")},
+                   {"l2_served_rate", r.value("l2.served_rate")},
+                   {"l2_compulsory_share", r.value("l2.compulsory_share")},
                    {"dram_bytes", r.value("dram.bytes")},
                    {"dram_bytes_per_ray", r.value("dram.bytes_per_ray")},
                    {"dram_bytes_per_cycle", r.value("dram.bytes_per_cycle")}};

@@ -36,6 +36,16 @@ TEST(SimReport, StatsDocumentHasEveryFigure) {
     EXPECT_GE(u, 0.0) << unit;
     EXPECT_LE(u, 1.0) << unit;
   }
+  const nlohmann::json& m = doc["memory"];
+  for (const char* level : {"l1", "l2"}) {
+    double hit = m[std::string(level) + "_hit_rate"].get<double>();
+    double served = m[std::string(level) + "_served_rate"].get<double>();
+    EXPECT_GE(served, hit) << level << ": merges are served without going below, not hits";
+    EXPECT_LE(served, 1.0) << level;
+  }
+  double compulsory = m["l2_compulsory_share"].get<double>();
+  EXPECT_GT(compulsory, 0.0) << "a cold start misses every line once";
+  EXPECT_LE(compulsory, 1.0);
   double simd = doc["coherence"]["simd_efficiency"].get<double>();
   EXPECT_GT(simd, 0.0);
   EXPECT_LE(simd, 1.0);
