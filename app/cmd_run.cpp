@@ -133,6 +133,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-charts", o->no_charts, "Write the pages without running Python");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");
   cmd->callback([o, cmd, &exit_code] {
+    reports::refuse_workload_with_trace(*cmd, o->from_trace);
     o->sampling.method = reports::sampling_methods(*cmd, o->sample_methods).front();
     exit_code = run(*o);
   });

@@ -168,6 +168,7 @@ void add_speed_vs_error_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--output", o->output, "Folder for the trace, JSON, CSV, Markdown, chart");
   cmd->add_flag("--no-charts", o->no_charts, "Skip the chart");
   cmd->callback([o, cmd, &exit_code] {
+    reports::refuse_workload_with_trace(*cmd, o->from_trace);
     if (o->workload.workload.empty() && o->from_trace.empty())
       throw InputError("speed-vs-error: a workload (spec or built-in scene) or --from-trace");
     o->methods = reports::sampling_methods(*cmd, o->sample_methods);

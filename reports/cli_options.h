@@ -24,6 +24,18 @@ inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
   cmd.add_option("--scene", request.scene, "Scene file or built-in (replaces the spec's scene)");
 }
 
+// With --from-trace DIR the stream is reused as it was traced: a workload or an option that
+// would trace it differently is refused (InputError), not silently ignored.
+inline void refuse_workload_with_trace(const CLI::App& cmd, const std::string& from_trace) {
+  if (from_trace.empty()) return;
+  for (const char* option : {"workload", "--resolution", "--frames", "--seed", "--scene"})
+    if (cmd.count(option) > 0)
+      throw InputError(std::string(cmd.get_name()) + ": --from-trace " + from_trace +
+                       " reuses that trace as it was traced; " +
+                       (option[0] == '-' ? std::string(option) : "a workload") +
+                       " cannot change it (trace anew without --from-trace)");
+}
+
 // --sample-method takes one method, or with `several` a comma-separated list of them.
 inline void add_sampling_options(CLI::App& cmd, SamplingConfig& sampling,
                                  std::vector<std::string>& methods, bool several = false) {

@@ -124,5 +124,23 @@ TEST(RunCommand, BadInputIsOneLineAndExitTwo) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(RunCommand, AFromTraceRunRefusesWhatWouldTraceAnew) {
+  std::string dir = test::fresh_dir("from-trace");
+  for (const std::string& command :
+       {"run pica", "run --resolution 8x8", "run --frames 2", "run --seed 3", "run --scene cornell",
+        "speed-vs-error pica", "speed-vs-error --resolution 8x8"}) {
+    test::RunResult r = test::run_rtsim(command + " --from-trace " + dir + "/t -o " + dir + "/o");
+    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.out << r.err;
+    std::string sub = command.substr(0, command.find(' '));
+    EXPECT_EQ(r.err.rfind("rtsim: error: " + sub + ": --from-trace " + dir +
+                              "/t reuses that trace as it was traced; ",
+                          0),
+              0u)
+        << command << ": " << r.err;
+    EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  }
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace rtsim
