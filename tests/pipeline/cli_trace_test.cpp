@@ -40,6 +40,20 @@ TEST(CliTrace, WritesTheStreamWithOverridesAndASummary) {
   std::remove(out.c_str());
 }
 
+TEST(CliTrace, ADegenerateCameraIsBadInputNamingTheSpecAndKey) {
+  std::string file = tmp("flat.toml"), out = tmp("flat.rays");
+  std::FILE* f = std::fopen(file.c_str(), "w");
+  std::fputs("scene = \"cornell\"\n[camera]\nposition = [0, 1, 3]\nlook_at = [0, 1, 3]\n", f);
+  std::fclose(f);
+  auto r = run_rtsim("trace " + file + " -q --resolution 16x9 -o " + out);
+  EXPECT_EQ(r.exit_code, 2) << "it used to trace rays that all miss, exit 0";
+  EXPECT_EQ(r.err.rfind("rtsim: error: " + file + ": line 4: key 'camera.look_at': equals position", 0),
+            0u)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  std::remove(file.c_str());
+}
+
 TEST(CliTrace, SameInputsSameBytes) {
   std::string a = tmp("a.rays"), b = tmp("b.rays");
   ASSERT_EQ(run_rtsim("trace pica -q -o " + a + " --resolution 80x45").exit_code, 0);

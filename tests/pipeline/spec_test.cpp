@@ -152,6 +152,21 @@ TEST(Spec, BadValuesNameKeyAndLine) {
   EXPECT_NE(error_of("scene = \"cornell\"\n[camera\n").find("w.toml: line 2:"), std::string::npos);
 }
 
+TEST(Spec, ADegenerateCameraNamesItsKey) {
+  const std::string scene = "scene = \"cornell\"\n[camera]\n";
+  EXPECT_EQ(error_of(scene + "position = [1, 2, 3]\nlook_at = [1, 2, 3]\n"),
+            "w.toml: line 4: key 'camera.look_at': equals position: the camera has no view "
+            "direction");
+  EXPECT_EQ(error_of(scene + "position = [0, 0, 0]\nlook_at = [0, 5, 0]\n"),
+            "w.toml: line 2: key 'camera.up': is parallel to the view direction (position to "
+            "look_at): the image has no up; choose another up");
+  EXPECT_EQ(error_of(scene + "up = [0, 0, 0]\n"), "w.toml: line 3: key 'camera.up': must not be zero");
+  EXPECT_NE(error_of(scene + "[[camera.key]]\nposition = [0, 0, 0]\nlook_at = [0, 0, 0]\n")
+                .find("key 'camera.key[].look_at': equals position"),
+            std::string::npos);
+  EXPECT_EQ(error_of(scene + "position = [0, 0, 0]\nlook_at = [0, 0, -5]\n"), "") << "a view";
+}
+
 TEST(Spec, ResolutionSyntax) {
   uint32_t w = 0, h = 0;
   EXPECT_TRUE(parse_resolution("1920x1080", w, h));

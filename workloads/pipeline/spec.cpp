@@ -2,6 +2,7 @@
 #include "workloads/pipeline/spec.h"
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -18,12 +19,24 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// A view direction the image can be built on: position and look_at apart, up not along it
+// (else every ray would be NaN or miss).
+void check_view(const SpecReader& r, glm::vec3 position, glm::vec3 look_at, glm::vec3 up) {
+  glm::vec3 view = look_at - position;
+  if (glm::length(view) == 0.0f)
+    r.fail("look_at", "equals position: the camera has no view direction");
+  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(up))) < 1e-4f)
+    r.fail("up", "is parallel to the view direction (position to look_at): the image has no "
+                 "up; choose another up");
+}
+
 void read_camera(SpecReader& r, CameraSpec& c) {
   c.position =
       r.vec3_or_auto("position", "fit to the scene bounds", "scene units", "where the camera is");
   c.look_at = r.vec3_or_auto("look_at", "fit to the scene bounds", "scene units",
                              "the point the camera looks at");
   c.up = r.vec3("up", c.up, "", "the up direction of the image");
+  if (!r.documenting() && glm::length(c.up) == 0.0f) r.fail("up", "must not be zero");
   c.fov = float(r.real("fov", c.fov, "degrees", "vertical field of view", 1.0, 179.0));
   c.jitter = r.boolean("jitter", c.jitter, "sub-pixel Halton jitter per frame, as TAA does");
   c.orbit = float(r.real("orbit", c.orbit, "degrees",
@@ -39,8 +52,10 @@ void read_camera(SpecReader& r, CameraSpec& c) {
         k->maybe_vec3("look_at", "scene units", "look-at point at this key", "(required)");
     if (k->documenting()) continue;
     if (!position || !look_at) k->fail("", "a camera key needs position and look_at");
+    check_view(*k, *position, *look_at, c.up);
     c.keys.push_back({*position, *look_at});
   }
+  if (!r.documenting() && c.position && c.look_at) check_view(r, *c.position, *c.look_at, c.up);
 }
 
 void read_samples(SpecReader& r, SampleSpec& s) {
