@@ -23,6 +23,7 @@
 #include "model/multi/multi_summary.h"
 #include "model/multi/systemc_backend.h"
 #include "reports/charts.h"
+#include "traces/output_file.h"
 #include "traces/error.h"
 #include "workloads/pipeline/trace.h"
 #include "workloads/scene.h"
@@ -107,6 +108,7 @@ int run_multi(const MultiOptions& o) {
   if (o.input.empty() || o.output.empty())
     throw InputError("multi-device: WORKLOAD_OR_STREAM and -o DIR are required (or --list-keys)");
   multi::DeviceSet set = device_set(o);
+  create_output_folder(o.output);
   multi::DeviceConfigs configs(set, o.hw_sets);
   bool stream_input = is_stream(o.input);
   if (stream_input &&

@@ -14,6 +14,7 @@
 #include "reports/page_util.h"
 #include "reports/process_pool.h"
 #include "reports/regress_compare.h"
+#include "traces/output_file.h"
 #include "traces/error.h"
 #include "traces/hash.h"
 
@@ -98,6 +99,12 @@ int update_baseline(const reports::RegressSuite& suite, const RegressOptions& o,
 int run_regress(const RegressOptions& o) {
   if (o.baseline.empty()) throw InputError("regress: --baseline DIR is required");
   reports::RegressSuite suite = reports::read_regress_suite(o.suite);
+  create_output_folder(o.output);
+  if (o.update) create_output_folder(o.baseline);
+  if (!o.junit.empty())
+    create_output_folder(fs::path(o.junit).parent_path().empty()
+                             ? std::string(".")
+                             : fs::path(o.junit).parent_path().string());
   Json baseline;
   if (!o.update) {
     std::string path = o.baseline + "/baseline.json";

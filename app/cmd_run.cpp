@@ -16,6 +16,7 @@
 #include "reports/report_writer.h"
 #include "reports/run_job.h"
 #include "traces/error.h"
+#include "traces/output_file.h"
 
 namespace rtsim::app {
 namespace {
@@ -78,6 +79,7 @@ int run(const RunOptions& o) {
                      "' (functional, cache, cycle, sampled)");
   if (o.report != "full" && o.report != "json") throw InputError("run: --report: 'full' or 'json'");
   HwConfig config = load_hw_config(o.config, o.sets);
+  create_output_folder(o.output);
   reports::TraceOutcome trace = o.from_trace.empty()
                                     ? reports::trace_into(o.workload, o.output + "/trace", o.quiet)
                                     : reports::read_trace_dir(o.from_trace);

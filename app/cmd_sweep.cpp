@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "reports/sweep_report.h"
 #include "reports/sweep_spec.h"
+#include "traces/output_file.h"
 #include "traces/error.h"
 
 namespace rtsim::app {
@@ -23,6 +24,7 @@ struct SweepOptions {
 int run_sweep_command(const SweepOptions& o) {
   if (o.output.empty()) throw InputError("sweep: -o DIR is required");
   reports::SweepSpec spec = reports::read_sweep_spec(o.spec);
+  create_output_folder(o.output);
   std::vector<reports::PointRun> points = reports::run_sweep(spec, {o.output, o.jobs, o.quiet});
   nlohmann::ordered_json doc = reports::sweep_json(spec, points);
   reports::ReportOutcome out = reports::write_sweep_report(doc, o.output, {!o.no_charts, true});
@@ -34,9 +36,10 @@ int run_sweep_command(const SweepOptions& o) {
   }
   if (!o.quiet) {
     if (!out.charts_ok) fmt::print("charts     missing: {}\n", out.message);
-    fmt::print("sweep      {} points: {} failed, {} with unexplained mismatches; results in "
-               "{}/sweep.html, sweep.csv, sweep.json\n",
-               points.size(), failed, unverified, o.output);
+    fmt::print(
+        "sweep      {} points: {} failed, {} with unexplained mismatches; results in "
+        "{}/sweep.html, sweep.csv, sweep.json\n",
+        points.size(), failed, unverified, o.output);
   }
   return failed + unverified > 0 ? 1 : 0;
 }

@@ -77,8 +77,8 @@ std::string metric_name_problem(const std::string& name) {
     if (rest == "rays") return {};
     for (const MetricKey& k : kTypeMetrics)
       if (rest == k.name) return {};
-    return "unknown metric '" + name + "' (per ray type: type.TYPE.NAME or type.*.NAME, NAME one of " +
-           type_names + ")";
+    return "unknown metric '" + name +
+           "' (per ray type: type.TYPE.NAME or type.*.NAME, NAME one of " + type_names + ")";
   }
   return "unknown metric '" + name + "' (metrics: " + names + "; per ray type: type.*.NAME)";
 }

@@ -8,16 +8,11 @@
 #include "model/sc/stream_sim.h"
 #include "reports/run_collector.h"
 #include "traces/error.h"
+#include "traces/output_file.h"
 #include "workloads/scene.h"
 
 namespace rtsim::reports {
 namespace {
-
-void create_folder(const std::string& dir) {
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error) throw_input_error(dir, "", "cannot create the folder: " + error.message());
-}
 
 RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image) {
   RayStreamReader reader(job.stream);
@@ -46,7 +41,7 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
 }  // namespace
 
 RunResult run_job(const RunJob& job) {
-  create_folder(job.output);
+  create_output_folder(job.output);
   Scene scene = load_stream_scene(job.stream, RayStreamReader(job.stream).header());
   BvhImage image = build_bvh_image(scene.mesh, job.config.bvh);
   if (job.level.level == FidelityLevel::Cycle) return run_cycle(job, scene, image);

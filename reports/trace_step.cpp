@@ -6,6 +6,7 @@
 
 #include "model/sc/sim_report.h"
 #include "reports/page_util.h"
+#include "traces/output_file.h"
 #include "traces/error.h"
 #include "traces/hash.h"
 #include "workloads/pipeline/trace.h"
@@ -84,9 +85,7 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
       return old;
     }
   }
-  std::error_code error;
-  fs::create_directories(dir, error);
-  if (error) throw_input_error(dir, "", "cannot create the folder: " + error.message());
+  create_output_folder(dir);
   pipeline::WorkloadSpec spec = pipeline::load_workload(request.workload);
   pipeline::apply_overrides(spec, pipeline::make_overrides(request.resolution, request.frames,
                                                            request.seed, request.scene));

@@ -6,9 +6,21 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "traces/error.h"
+
 namespace rtsim {
 
 namespace fs = std::filesystem;
+
+void create_output_folder(const std::string& dir) {
+  std::error_code error;
+  fs::create_directories(dir, error);
+  if (error) throw_input_error(dir, "", "cannot create the output folder: " + error.message());
+  if (!fs::is_directory(dir, error))
+    throw_input_error(dir, "", "cannot create the output folder: a file of that name exists");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw_input_error(dir, "", "the output folder is not writable");
+}
 
 OutputFile::OutputFile(const std::string& path) : target_(path) {
   // Follow links (also to a file that does not exist yet), as open() would; at most 40, as Linux.

@@ -9,6 +9,11 @@
 
 namespace rtsim {
 
+// Creates the output folder `dir` (and its parents) and checks that files can be written in
+// it; InputError naming the folder otherwise. Commands call it before any work, so a bad -o
+// is one line and exit 2 at once, not an error after hours of simulation.
+void create_output_folder(const std::string& dir);
+
 class OutputFile {
  public:
   explicit OutputFile(const std::string& path);

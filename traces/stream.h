@@ -35,7 +35,7 @@ struct StreamHeader {
 // Writes to PATH.tmp-PID and renames to PATH in finish(); a writer destroyed before finish()
 // removes its temporary file, so an interrupted run never leaves a half-written stream.
 class RayStreamWriter {
-public:
+ public:
   RayStreamWriter(const std::string& path, StreamHeader header);
   ~RayStreamWriter();
   RayStreamWriter(const RayStreamWriter&) = delete;
@@ -46,7 +46,7 @@ public:
   void finish();
   const StreamHeader& header() const { return header_; }
 
-private:
+ private:
   void flush_chunk();
   void write_bytes(const void* data, size_t size);
 
@@ -62,7 +62,7 @@ private:
 // version, checksum mismatch, truncation, invalid ray, counts that disagree with the header)
 // throws InputError naming the file and byte offset.
 class RayStreamReader {
-public:
+ public:
   explicit RayStreamReader(const std::string& path);
   // Reads from an open file (for example fmemopen), taking ownership; name is used in errors.
   RayStreamReader(FILE* file, const std::string& name);
@@ -77,7 +77,7 @@ public:
   size_t next_batch(std::vector<Ray>& out, size_t max);
   uint64_t rays_read() const { return rays_read_; }
 
-private:
+ private:
   void read_header();
   bool load_chunk();
   void read_exact(void* data, size_t size, uint64_t start, const char* what);

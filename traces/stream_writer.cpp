@@ -14,15 +14,14 @@
 namespace rtsim {
 
 RayStreamWriter::RayStreamWriter(const std::string& path, StreamHeader header)
-    : path_(path),
-      output_(path),
-      header_(std::move(header)) {
+    : path_(path), output_(path), header_(std::move(header)) {
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
     throw std::invalid_argument("chunk_rays must be in [1, " + std::to_string(kMaxChunkRays) + "]");
   header_.counts = {};
   if (output_.sequential())  // checked before opening: opening a FIFO waits for a reader
-    throw_input_error(path_, "", "cannot write a ray stream to a FIFO or socket: it needs a "
-                                 "seekable file (its header is completed last)");
+    throw_input_error(path_, "",
+                      "cannot write a ray stream to a FIFO or socket: it needs a "
+                      "seekable file (its header is completed last)");
   file_ = std::fopen(output_.write_path().c_str(), "wb");
   if (!file_) throw_input_error(path_, "", std::string("cannot write: ") + std::strerror(errno));
   auto bytes = encode_header(header_);

@@ -33,7 +33,7 @@ struct BvhConfig {
   NodeFormat node_format = NodeFormat::Aabb32;
   TriangleFormat triangle_format = TriangleFormat::Raw;
   NodeLayout node_layout = NodeLayout::Treelet;
-  uint32_t treelet_bytes = 4096;    // bytes: budget of one treelet, 512..65536
+  uint32_t treelet_bytes = 4096;  // bytes: budget of one treelet, 512..65536
   // bytes: 0 packs nodes; else a power of two (the L1 line or sector): nodes are padded so that
   // none spans more blocks of this size than it fills
   uint32_t node_align = 0;

@@ -76,7 +76,8 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, u
 Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
   ReadCharge charge;
   Cycle ready = read(addr, bytes, at, nullptr, 0, charge);
-  if (ready == kPending) throw std::logic_error("Cache::read: a level below did not answer at once");
+  if (ready == kPending)
+    throw std::logic_error("Cache::read: a level below did not answer at once");
   return ready;
 }
 

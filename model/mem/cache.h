@@ -132,8 +132,7 @@ class Cache : public MemoryTarget, private ReadClient {
   Cycle access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge);
   void wait_for(uint32_t miss, Caller& caller, Cycle earliest);
   void add_waiter(uint32_t miss, const Waiter& waiter);
-  Cycle miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
-             ReadCharge& charge);
+  Cycle miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller, ReadCharge& charge);
   void issue(uint32_t miss, Cycle at);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);

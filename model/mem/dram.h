@@ -30,23 +30,23 @@ std::string dram_config_problem(const DramConfig& config);
 
 struct DramStats {
   uint64_t requests = 0;
-  uint64_t bytes = 0;                  // reads and writes
-  uint64_t write_bytes = 0;            // of them written
-  double busy_cycles = 0;              // cycles the data bus was transferring
-  uint64_t queue_stall_cycles = 0;     // cycles requests waited for room in the queue
-  uint64_t total_latency_cycles = 0;   // sum over requests of ready - arrival
-  Cycle last_ready = 0;                // cycle the last transfer's data was ready
+  uint64_t bytes = 0;                 // reads and writes
+  uint64_t write_bytes = 0;           // of them written
+  double busy_cycles = 0;             // cycles the data bus was transferring
+  uint64_t queue_stall_cycles = 0;    // cycles requests waited for room in the queue
+  uint64_t total_latency_cycles = 0;  // sum over requests of ready - arrival
+  Cycle last_ready = 0;               // cycle the last transfer's data was ready
 };
 
 class Dram : public MemoryLevel {
-public:
+ public:
   explicit Dram(const DramConfig& config);  // throws std::invalid_argument if impossible
   Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
   void write(uint64_t addr, uint32_t bytes, Cycle now);
   const DramStats& stats() const { return stats_; }
   const DramConfig& config() const { return config_; }
 
-private:
+ private:
   DramConfig config_;
   double bus_free_ = 0;  // cycle (fractional) the bus finishes its last reserved transfer
   std::priority_queue<double, std::vector<double>, std::greater<double>> waiting_;  // starts
@@ -56,15 +56,14 @@ private:
 // A Dram as the level below a cache that answers every read at once (unit tests, the cache
 // fidelity level).
 class DramTarget : public MemoryTarget {
-public:
+ public:
   explicit DramTarget(Dram& dram) : dram_(dram) {}
-  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient*, uint64_t,
-             ReadCharge&) override {
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient*, uint64_t, ReadCharge&) override {
     return dram_.read(addr, bytes, at);
   }
   void write(uint64_t addr, uint32_t bytes, Cycle at) override { dram_.write(addr, bytes, at); }
 
-private:
+ private:
   Dram& dram_;
 };
 

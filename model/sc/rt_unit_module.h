@@ -17,7 +17,7 @@
 namespace rtsim {
 
 class RtUnitModule : public sc_core::sc_module {
-public:
+ public:
   sc_core::sc_port<RaySupplyIf> supply;
   L1Module l1;
 
@@ -29,10 +29,10 @@ public:
   const RtCore& core() const { return core_; }
   RtCore& core() { return core_; }
 
-private:
+ private:
   void start_of_simulation() override;
   void run();
-  void arm();        // wakes the process at the core's next event
+  void arm();  // wakes the process at the core's next event
   void arm_at(Cycle cycle);
 
   Clock clock_;

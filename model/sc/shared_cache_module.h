@@ -16,6 +16,8 @@
 // current simulated time: an L1 sends a miss after its tag check) it wakes at the cycle c of
 // its earliest job and serves everything dated before c + L, so one wake-up serves L cycles
 // of a busy L2. Responses carry their data's cycle in their delay, so this changes no timing.
+// A request sent while it serves (an L1 miss that waited for the MSHR a response freed) is dated
+// no earlier than the job being served and is served in its turn.
 #pragma once
 
 #include <exception>
@@ -43,8 +45,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   // exception leaves the SystemC kernel.
   // lookahead: see above (0 for initiators that promise nothing).
   SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
-                    uint32_t lookahead = 0,
-                    std::function<void(std::exception_ptr)> on_error = {});
+                    uint32_t lookahead = 0, std::function<void(std::exception_ptr)> on_error = {});
   Cache& cache() { return cache_; }
   const Cache& cache() const { return cache_; }
   size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served

@@ -181,9 +181,7 @@ void write_file_atomic(const std::string& path, const std::string& bytes) {
 }
 
 Json write_sim_results(const std::string& dir, const RtSimulator& sim, const SimRunInfo& info) {
-  std::error_code error;
-  std::filesystem::create_directories(dir, error);
-  if (error) throw_input_error(dir, "", "cannot create the output folder: " + error.message());
+  create_output_folder(dir);
   StatsRegistry stats;
   sim.report(stats);
   Json doc = sim_stats_json(sim, stats, info);

@@ -76,8 +76,8 @@ void L1Module::write(uint64_t addr, uint32_t bytes, Cycle at) {
   if (send(t, tlm::TLM_WRITE_COMMAND, addr, bytes, at, delay)) give_back(t);
 }
 
-tlm::tlm_sync_enum L1Module::nb_transport_bw(tlm::tlm_generic_payload& trans,
-                                             tlm::tlm_phase& phase, sc_core::sc_time& delay) {
+tlm::tlm_sync_enum L1Module::nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                             sc_core::sc_time& delay) {
   if (phase != tlm::BEGIN_RESP) return tlm::TLM_ACCEPTED;
   check(trans);
   auto& t = static_cast<Transaction&>(trans);

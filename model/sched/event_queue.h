@@ -16,7 +16,7 @@
 namespace rtsim {
 
 class EventQueue {
-public:
+ public:
   struct Event {
     Cycle cycle = 0;
     uint32_t item = 0;  // what the owner schedules: a ray slot or a warp
@@ -34,7 +34,7 @@ public:
   // Pops the earliest event if it is before cycle `until` (then true); else changes nothing.
   bool pop_before(Cycle until, Event& event);
 
-private:
+ private:
   static constexpr uint32_t kNone = ~0u;
   struct Node {
     uint32_t item = 0, next = kNone;

@@ -17,7 +17,7 @@
 namespace rtsim {
 
 class RaySupply {
-public:
+ public:
   virtual ~RaySupply() = default;
   // Appends up to `max` rays for `unit` at cycle `now` to out; returns how many. Each ray's
   // `ready` says when it reaches the unit. 0 with exhausted() false means "not now, later".
@@ -35,7 +35,7 @@ public:
 };
 
 class RayRetireListener {
-public:
+ public:
   virtual ~RayRetireListener() = default;
   virtual void retired(const RayContext& ray, Cycle now) = 0;
 };

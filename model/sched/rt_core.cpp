@@ -10,12 +10,9 @@ namespace rtsim {
 
 const char* traversal_mode_name(TraversalMode mode) {
   switch (mode) {
-    case TraversalMode::DepthFirst:
-      return "depth_first";
-    case TraversalMode::Treelet:
-      return "treelet";
-    case TraversalMode::Packet:
-      return "packet";
+    case TraversalMode::DepthFirst: return "depth_first";
+    case TraversalMode::Treelet: return "treelet";
+    case TraversalMode::Packet: return "packet";
   }
   return "?";
 }

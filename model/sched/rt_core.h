@@ -57,9 +57,9 @@ std::string rt_core_config_problem(const RtCoreConfig& config);
 struct RtCoreStats {
   uint64_t rays_started = 0, rays_retired = 0;
   uint64_t node_steps = 0, leaf_steps = 0;
-  uint64_t issue_stalls = 0;              // step starts deferred a cycle by the issue width
-  uint64_t fetches = 0, fetch_bytes = 0;  // reads to the L1 (packet mode: after coalescing)
-  uint64_t waited_reads = 0;              // reads that waited for data below the L1
+  uint64_t issue_stalls = 0;                // step starts deferred a cycle by the issue width
+  uint64_t fetches = 0, fetch_bytes = 0;    // reads to the L1 (packet mode: after coalescing)
+  uint64_t waited_reads = 0;                // reads that waited for data below the L1
   uint64_t late_data = 0, late_cycles = 0;  // data reported after the unit's local cycle
   uint64_t spill_writes = 0, spill_entries = 0, refill_reads = 0, refill_entries = 0;
   uint64_t postponed = 0, refused = 0;  // treelet mode: rays queued, rays a full queue refused
@@ -70,7 +70,7 @@ struct RtCoreStats {
 };
 
 class RtCore : private ReadClient {
-public:
+ public:
   // memory: the unit's L1; the unit is the client of every read it makes.
   RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
          MemoryTarget& memory);
@@ -105,7 +105,7 @@ public:
   std::string dump() const;  // what every ray is doing, for stall reports
   void account(Cycle now);   // counts slot occupancy up to now
 
-private:
+ private:
   // What a slot (packet mode: a warp) waits for, if anything.
   enum class Wait : uint8_t { None, Refill, Data };
   struct Next {

@@ -20,7 +20,9 @@ struct MockMemory : MemoryTarget {
     writes.push_back({addr, bytes, at, nullptr, 0});
   }
   // Deferred mode: request i's data is ready at `ready`.
-  void answer(size_t i, Cycle ready) { requests[i].client->read_done(requests[i].token, ready, {}); }
+  void answer(size_t i, Cycle ready) {
+    requests[i].client->read_done(requests[i].token, ready, {});
+  }
   struct Request {
     uint64_t addr;
     uint32_t bytes;

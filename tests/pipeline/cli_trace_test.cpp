@@ -12,7 +12,9 @@ namespace {
 
 using test::run_rtsim;
 
-std::string tmp(const std::string& name) { return ::testing::TempDir() + "cli-trace-" + name; }
+std::string tmp(const std::string& name) {
+  return ::testing::TempDir() + "cli-trace-" + name;
+}
 
 std::string spec(const std::string& name) {
   return std::string(RTSIM_SOURCE_DIR) + "/workloads/specs/" + name + ".toml";
@@ -47,8 +49,9 @@ TEST(CliTrace, ADegenerateCameraIsBadInputNamingTheSpecAndKey) {
   std::fclose(f);
   auto r = run_rtsim("trace " + file + " -q --resolution 16x9 -o " + out);
   EXPECT_EQ(r.exit_code, 2) << "it used to trace rays that all miss, exit 0";
-  EXPECT_EQ(r.err.rfind("rtsim: error: " + file + ": line 4: key 'camera.look_at': equals position", 0),
-            0u)
+  EXPECT_EQ(
+      r.err.rfind("rtsim: error: " + file + ": line 4: key 'camera.look_at': equals position", 0),
+      0u)
       << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
   std::remove(file.c_str());

@@ -160,7 +160,8 @@ TEST(Spec, ADegenerateCameraNamesItsKey) {
   EXPECT_EQ(error_of(scene + "position = [0, 0, 0]\nlook_at = [0, 5, 0]\n"),
             "w.toml: line 2: key 'camera.up': is parallel to the view direction (position to "
             "look_at): the image has no up; choose another up");
-  EXPECT_EQ(error_of(scene + "up = [0, 0, 0]\n"), "w.toml: line 3: key 'camera.up': must not be zero");
+  EXPECT_EQ(error_of(scene + "up = [0, 0, 0]\n"),
+            "w.toml: line 3: key 'camera.up': must not be zero");
   EXPECT_NE(error_of(scene + "[[camera.key]]\nposition = [0, 0, 0]\nlook_at = [0, 0, 0]\n")
                 .find("key 'camera.key[].look_at': equals position"),
             std::string::npos);

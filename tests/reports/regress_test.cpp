@@ -92,8 +92,9 @@ TEST(RegressCli, AMisspeltMetricIsBadInputBeforeAnyCaseRuns) {
   test::RunResult r =
       test::run_rtsim("regress " + dir + "/suite.toml --baseline " + dir + "/b -o " + dir + "/out");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_EQ(r.err.rfind("rtsim: error: " + dir + "/suite.toml: line 5: [tolerance] unknown metric "
-                        "'cycels'",
+  EXPECT_EQ(r.err.rfind("rtsim: error: " + dir +
+                            "/suite.toml: line 5: [tolerance] unknown metric "
+                            "'cycels'",
                         0),
             0u)
       << r.err;

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "tests/reports/report_test_util.h"
 
@@ -14,10 +15,10 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 class RunReport : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
-    dir_ = test::shared_run("run", "run pica --resolution 64x36 --config " +
-                                       test::source_path("configs/mobile.toml"));
+    dir_ = test::shared_run(
+        "run", "run pica --resolution 64x36 --config " + test::source_path("configs/mobile.toml"));
     ASSERT_FALSE(dir_.empty()) << "rtsim run failed";
     report_ = test::read_json(dir_ + "/report.json");
     html_ = test::slurp(dir_ + "/report.html");
@@ -47,9 +48,10 @@ TEST_F(RunReport, HasEverySection) {
   EXPECT_NEAR(report_["timing"]["mrays_per_second"].get<double>(),
               report_["timing"]["rays"].get<double>() / report_["timing"]["cycles"].get<double>() *
                   report_["timing"]["clock_ghz"].get<double>() * 1e3,
-              1e-6) << "MRays/s at the configured clock";
-  for (const char* level : {"l1_bytes_per_ray", "l2_bytes_per_ray", "dram_bytes_per_ray",
-                            "dram_utilisation"})
+              1e-6)
+      << "MRays/s at the configured clock";
+  for (const char* level :
+       {"l1_bytes_per_ray", "l2_bytes_per_ray", "dram_bytes_per_ray", "dram_utilisation"})
     EXPECT_TRUE(report_["bandwidth"][level].is_number()) << level;
   EXPECT_TRUE(report_["coherence"]["nodes_per_ray"].is_number());
   EXPECT_TRUE(report_["verification"]["passed"].get<bool>());
@@ -68,9 +70,9 @@ TEST_F(RunReport, EveryNumberOnThePageIsTheJsons) {
       EXPECT_NEAR(shown, v, 1e-3 * std::abs(v) + 0.006) << c.key << " shows " << c.shown;
     }
   }
-  for (const char* key : {"timing.cycles", "timing.mrays_per_second",
-                          "bandwidth.dram_bytes_per_ray", "verification.unexplained",
-                          "workload.triangles", "hardware.l2.size_bytes"}) {
+  for (const char* key :
+       {"timing.cycles", "timing.mrays_per_second", "bandwidth.dram_bytes_per_ray",
+        "verification.unexplained", "workload.triangles", "hardware.l2.size_bytes"}) {
     bool found = false;
     for (const test::Cell& c : cells) found |= c.key == key;
     EXPECT_TRUE(found) << key << " is on the page";
@@ -126,18 +128,43 @@ TEST(RunCommand, BadInputIsOneLineAndExitTwo) {
 
 TEST(RunCommand, AFromTraceRunRefusesWhatWouldTraceAnew) {
   std::string dir = test::fresh_dir("from-trace");
-  for (const std::string& command :
+  for (const char* command :
        {"run pica", "run --resolution 8x8", "run --frames 2", "run --seed 3", "run --scene cornell",
         "speed-vs-error pica", "speed-vs-error --resolution 8x8"}) {
-    test::RunResult r = test::run_rtsim(command + " --from-trace " + dir + "/t -o " + dir + "/o");
+    std::string line = command;
+    test::RunResult r = test::run_rtsim(line + " --from-trace " + dir + "/t -o " + dir + "/o");
     EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.out << r.err;
-    std::string sub = command.substr(0, command.find(' '));
+    std::string sub = line.substr(0, line.find(' '));
     EXPECT_EQ(r.err.rfind("rtsim: error: " + sub + ": --from-trace " + dir +
                               "/t reuses that trace as it was traced; ",
                           0),
               0u)
         << command << ": " << r.err;
     EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(OutputFolders, AnUnusableOutputFolderIsBadInputBeforeAnyWork) {
+  std::string dir = test::fresh_dir("outputs");
+  std::ofstream(dir + "/file") << "a file, not a folder";
+  std::ofstream(dir + "/suite.toml") << "[[case]]\nname = \"pica\"\nresolution = \"8x8\"\n"
+                                        "[tolerance]\ncycles = 0.02\n";
+  const std::string bad = dir + "/file/out";
+  const std::string sweep = test::source_path("tests/reports/sweep-tiny.toml");
+  const std::string devices = test::source_path("configs/multi/four-mobile.toml");
+  for (const std::string& command :
+       {"sweep " + sweep + " -o " + bad,
+        "regress " + dir + "/suite.toml --baseline " + dir + "/b --update-baseline -o " + bad,
+        "regress " + dir + "/suite.toml --baseline " + bad + " --update-baseline -o " + dir + "/o",
+        "multi-device pica --resolution 8x8 --devices-file " + devices + " -o " + bad,
+        "speed-vs-error pica --resolution 8x8 -o " + bad, "run pica --resolution 8x8 -o " + bad}) {
+    test::RunResult r = test::run_rtsim(command);
+    EXPECT_EQ(r.exit_code, 2) << command << "\n" << r.out << r.err;
+    EXPECT_EQ(r.err.rfind("rtsim: error: " + bad + ": cannot create the output folder", 0), 0u)
+        << command << ": " << r.err;
+    EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+    EXPECT_EQ(r.out.find("case "), std::string::npos) << "no case ran: " << r.out;
   }
   std::filesystem::remove_all(dir);
 }

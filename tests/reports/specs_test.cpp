@@ -107,7 +107,8 @@ TEST(RegressSuite, AToleranceOnAnUnknownMetricNamesItsLine) {
   EXPECT_NE(e.find("r.toml: line 5: [tolerance] unknown metric 'cycels' (metrics: cycles,"),
             std::string::npos)
       << "a misspelt metric compares n/a with n/a and never catches a regression: " << e;
-  e = error_of([&] { read_regress_suite(write("r.toml", suite("\"type.gi.l1_hit_rate\" = 0.1\n"))); });
+  e = error_of(
+      [&] { read_regress_suite(write("r.toml", suite("\"type.gi.l1_hit_rate\" = 0.1\n"))); });
   EXPECT_NE(e.find("line 5: [tolerance] unknown ray type 'gi'"), std::string::npos) << e;
   e = error_of([&] {
     read_regress_suite(write("r.toml", suite("\"type.*.l1_hitrate\" = { absolute = 0.1 }\n")));

@@ -38,5 +38,21 @@ TEST(SimMemory, LightlyLoadedDramHasItsUnloadedLatencyOnEveryPreset) {
   EXPECT_GE(presets, 5);
 }
 
+TEST(SimMemory, L1MissesWaitingForMshrsJoinTheL2InOrderWhateverTheLatencies) {
+  // An L1 tag check longer than the L2's hit: misses freed by an L2 response are dated inside
+  // the window the L2 is serving, and must be served in their turn there.
+  test::SimScene s;
+  std::vector<Ray> rays = test::mixed_rays(s.scene, 1000, 8);
+  HwConfig config = test::small_machine();
+  config.l1.hit_latency = 40;
+  config.l1.mshrs = 2;
+  config.l2.hit_latency = 3;
+  config.dram.latency = 0;
+  nlohmann::json doc = test::simulate(config, s.scene, rays, true);
+  EXPECT_EQ(doc["verify"]["unexplained"], 0);
+  EXPECT_EQ(counter(doc, "rays"), double(rays.size()));
+  EXPECT_GT(counter(doc, "rt0.l1.mshr_stall_cycles"), 0.0) << "misses waited for MSHRs";
+}
+
 }  // namespace
 }  // namespace rtsim

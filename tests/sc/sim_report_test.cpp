@@ -27,8 +27,8 @@ TEST(SimReport, StatsDocumentHasEveryFigure) {
   for (auto& [type, t] : doc["ray_types"].items()) {
     for (const char* p : {"p50", "p95", "p99"}) EXPECT_TRUE(t["latency_cycles"].contains(p));
     EXPECT_LE(t["latency_cycles"]["p50"], t["latency_cycles"]["p99"]) << type;
-    for (const char* key : {"nodes_per_ray", "triangles_per_ray", "l1_hit_rate", "l2_hit_rate",
-                            "dram_bytes_per_ray"})
+    for (const char* key :
+         {"nodes_per_ray", "triangles_per_ray", "l1_hit_rate", "l2_hit_rate", "dram_bytes_per_ray"})
       EXPECT_TRUE(t.contains(key)) << type << " " << key;
   }
   for (const char* unit : {"box", "triangle", "control", "ray_slots"}) {

@@ -70,7 +70,10 @@ struct RecordingListener : RayRetireListener {
 struct MockSupply {
   MockSupply(std::vector<Ray> rays_in, const TraversalUnit& unit, uint32_t pool_size,
              DispatchConfig config = {1000.0, 0})
-      : rays(std::move(rays_in)), source(rays), pool(pool_size), listener(unit),
+      : rays(std::move(rays_in)),
+        source(rays),
+        pool(pool_size),
+        listener(unit),
         dispatcher(config, source, pool, &listener) {}
   std::vector<Ray> rays;
   VectorRaySource source;

@@ -16,8 +16,8 @@ void write_png(const std::string& path, uint32_t width, uint32_t height,
   auto out = OIIO::ImageOutput::create("png");
   if (!out) throw_input_error(path, "", "OpenImageIO has no PNG writer: " + OIIO::geterror());
   OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
-  bool ok = out->open(output.write_path(), spec) &&
-            out->write_image(OIIO::TypeDesc::UINT8, rgb.data());
+  bool ok =
+      out->open(output.write_path(), spec) && out->write_image(OIIO::TypeDesc::UINT8, rgb.data());
   std::string error = ok ? "" : out->geterror();
   ok = out->close() && ok;
   if (!ok || !output.commit()) {

@@ -26,8 +26,9 @@ void check_view(const SpecReader& r, glm::vec3 position, glm::vec3 look_at, glm:
   if (glm::length(view) == 0.0f)
     r.fail("look_at", "equals position: the camera has no view direction");
   if (glm::length(glm::cross(glm::normalize(view), glm::normalize(up))) < 1e-4f)
-    r.fail("up", "is parallel to the view direction (position to look_at): the image has no "
-                 "up; choose another up");
+    r.fail("up",
+           "is parallel to the view direction (position to look_at): the image has no "
+           "up; choose another up");
 }
 
 void read_camera(SpecReader& r, CameraSpec& c) {
