@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "reports/cli_options.h"
 #include "model/bvh/bvh_image.h"
 #include "model/units/traversal.h"
 #include "model/verify/ray_samples.h"
@@ -100,7 +101,9 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<BenchOptions>();
   cmd->add_option("--scene", options->scene, "Scene file or built-in scene")->capture_default_str();
   cmd->add_option("--rays", options->rays, "Number of rays")->capture_default_str();
-  cmd->add_option("--seed", options->seed, "Seed of the ray sampler")->capture_default_str();
+  cmd->add_option("--seed", options->seed, "Seed of the ray sampler")
+      ->check(reports::non_negative())
+      ->capture_default_str();
   cmd->add_option("--repeat", options->repeat, "Runs per side; the fastest counts")
       ->check(CLI::Range(1, 100))
       ->capture_default_str();

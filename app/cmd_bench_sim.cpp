@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "reports/cli_options.h"
 #include "model/config/hw_config.h"
 #include "model/sc/fork_run.h"
 #include "model/sc/rt_simulator.h"
@@ -185,7 +186,9 @@ void add_bench_sim_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<BenchSimOptions>();
   cmd->add_option("--scene", o->scene, "Scene file or built-in scene")->capture_default_str();
   cmd->add_option("--rays", o->rays, "Diffuse-GI-like rays to generate")->capture_default_str();
-  cmd->add_option("--seed", o->seed, "Seed of the ray sampler")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Seed of the ray sampler")
+      ->check(reports::non_negative())
+      ->capture_default_str();
   cmd->add_option("--stream", o->stream, "Simulate this stream instead (constant memory)");
   cmd->add_option("--config", o->config, "Hardware config (.toml)");
   cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "reports/cli_options.h"
 #include "traces/embree_scene.h"
 #include "traces/error.h"
 #include "traces/host_clock.h"
@@ -87,7 +88,8 @@ void add_bench_trace_command(CLI::App& app, int& exit_code) {
   auto a = std::make_shared<BenchArgs>();
   cmd->add_option("workload", a->workload, "Workload spec (.toml) or built-in scene")->required();
   cmd->add_option("--resolution", a->resolution, "Image size WxH (overrides the spec)");
-  cmd->add_option("--frames", a->frames, "Frames (overrides the spec)")->check(CLI::PositiveNumber);
+  cmd->add_option("--frames", a->frames, "Frames (overrides the spec)")
+      ->check(reports::frame_range());
   cmd->add_option("--keep", a->keep, "Keep the stream at this path (default: a temp file)");
   cmd->add_option("--goal", a->goal, "Seconds per frame to compare against")->capture_default_str();
   cmd->callback([a, &exit_code] {

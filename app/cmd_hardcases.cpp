@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "app/commands.h"
+#include "reports/cli_options.h"
 #include "traces/stream.h"
 #include "workloads/hardcases.h"
 
@@ -56,7 +57,9 @@ void add_hardcases_command(CLI::App& app, int& exit_code) {
                   "Rays in each case's seeded random part")
       ->capture_default_str()
       ->check(CLI::Range(size_t(1), size_t(1) << 24));
-  cmd->add_option("--seed", options->seed, "Seed of the random parts")->capture_default_str();
+  cmd->add_option("--seed", options->seed, "Seed of the random parts")
+      ->check(reports::non_negative())
+      ->capture_default_str();
   cmd->callback([options, &exit_code] {
     write_hardcases(*options);
     exit_code = 0;

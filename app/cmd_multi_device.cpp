@@ -17,6 +17,7 @@
 #include <fmt/core.h>
 
 #include "app/commands.h"
+#include "reports/cli_options.h"
 #include "model/multi/device_set.h"
 #include "model/multi/multi_report.h"
 #include "model/multi/multi_run.h"
@@ -179,9 +180,10 @@ void add_multi_device_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--hw-set", o->hw_sets, "Override a hardware key of every device")
       ->allow_extra_args(false);
   cmd->add_option("--frames", o->frames, "Frames: of the stream, or to trace")
-      ->check(CLI::PositiveNumber);
+      ->check(reports::frame_range());
   cmd->add_option("--resolution", o->resolution, "Image size WxH of a traced workload");
   cmd->add_option("--seed", o->seed, "Random seed of a traced workload")
+      ->check(reports::non_negative())
       ->each([o](const std::string&) { o->seed_set = true; });
   cmd->add_flag("--importance", o->importance,
                 "Place a traced workload's camera samples by importance (irregular samples)");

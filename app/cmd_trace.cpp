@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "reports/cli_options.h"
 #include "traces/error.h"
 #include "workloads/pipeline/summary.h"
 #include "workloads/pipeline/trace.h"
@@ -58,9 +59,10 @@ void add_trace_command(CLI::App& app, int& exit_code) {
                   "Workload spec (.toml), or a scene (built-in or file) with the default spec");
   cmd->add_option("-o,--output", a->output, "Ray stream to write (.rays)");
   cmd->add_option("--frames", a->frames, "Frames to trace (overrides the spec)")
-      ->check(CLI::PositiveNumber);
+      ->check(reports::frame_range());
   cmd->add_option("--resolution", a->resolution, "Image size WxH (overrides the spec)");
   cmd->add_option("--seed", a->seed, "Random seed (overrides the spec)")
+      ->check(reports::non_negative())
       ->each([a](const std::string&) { a->seed_set = true; });
   cmd->add_option("--scene", a->scene, "Scene file or built-in (replaces the spec's scene)");
   cmd->add_option("--preview", a->preview,

@@ -27,7 +27,9 @@ struct VerifyOptions {
   BvhConfig bvh;
 };
 
-std::string hex(float x) { return fmt::format("{:a}", x); }
+std::string hex(float x) {
+  return fmt::format("{:a}", x);
+}
 
 std::string hex3(const glm::vec3& v) {
   return fmt::format("({}, {}, {})", hex(v.x), hex(v.y), hex(v.z));

@@ -2,12 +2,33 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include "app/commands.h"
 #include "traces/error.h"
+
+namespace {
+
+// A usage error as one line: CLI11's message, naming the command and where help is; an unknown
+// or missing command lists the commands.
+std::string usage_problem(const CLI::App& app, int argc, char** argv, const CLI::ParseError& e) {
+  std::string commands;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    commands += (commands.empty() ? "" : ", ") + sub->get_name();
+  std::string first = argc > 1 ? argv[1] : "";
+  if (first.empty() || first[0] == '-')
+    return "a command is required (" + commands + "; rtsim --help describes them)";
+  const CLI::App* command = nullptr;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (sub->get_name() == first) command = sub;
+  if (!command) return "unknown command '" + first + "' (commands: " + commands + ")";
+  return first + ": " + e.what() + " (rtsim " + first + " --help lists the options)";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   // SystemC's banner would precede every simulation's output; children inherit this.
@@ -42,7 +63,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    app.exit(e);
+    fmt::print(stderr, "rtsim: error: {}\n", usage_problem(app, argc, argv, e));
     return 2;
   } catch (const rtsim::InputError& e) {
     fmt::print(stderr, "rtsim: error: {}\n", e.what());

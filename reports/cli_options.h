@@ -14,13 +14,29 @@
 
 namespace rtsim::reports {
 
+// Frames as a workload spec takes them.
+inline CLI::Range frame_range() {
+  return CLI::Range(1, 100000);
+}
+
+// An unsigned option given a negative number (CLI11 would wrap "-1" round to 2^64-1).
+inline CLI::Validator non_negative() {
+  return CLI::Validator(
+      [](std::string& text) {
+        return text.find('-') == std::string::npos ? std::string()
+                                                   : "'" + text + "' must not be negative";
+      },
+      "UINT");
+}
+
 inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
   cmd.add_option("--resolution", request.resolution, "Image size WxH (overrides the spec)");
   cmd.add_option("--frames", request.frames, "Frames to trace (overrides the spec)")
-      ->check(CLI::PositiveNumber);
+      ->check(frame_range());
   cmd.add_option_function<uint64_t>(
-      "--seed", [&request](const uint64_t& seed) { request.seed = seed; },
-      "Random seed of the workload (overrides the spec)");
+         "--seed", [&request](const uint64_t& seed) { request.seed = seed; },
+         "Random seed of the workload (overrides the spec)")
+      ->check(non_negative());
   cmd.add_option("--scene", request.scene, "Scene file or built-in (replaces the spec's scene)");
 }
 

@@ -34,5 +34,28 @@ TEST(Cli, UsageErrorsExitWith2) {
   EXPECT_EQ(run_rtsim("scene-info cornell --no-such-flag").exit_code, 2);
 }
 
+TEST(CliUsage, UsageErrorsAreOneLineWithTheCommandAndExitTwo) {
+  struct Case {
+    const char* args;
+    const char* first_line;
+  };
+  for (const Case& c : {
+           Case{"", "rtsim: error: a command is required (scene-info, "},
+           Case{"bogus", "rtsim: error: unknown command 'bogus' (commands: scene-info, "},
+           Case{"trace cornell --seed -1 -o x.rays",
+                "rtsim: error: trace: --seed: '-1' must not be negative"},
+           Case{"run pica --seed -1 -o x", "rtsim: error: run: --seed: '-1' must not be negative"},
+           Case{"trace cornell --frames 0 -o x.rays",
+                "rtsim: error: trace: --frames: Value 0 not in range 1 to 100000"},
+           Case{"sim --bogus",
+                "rtsim: error: sim: The following argument was not expected: --bogus"},
+       }) {
+    RunResult r = run_rtsim(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args;
+    EXPECT_EQ(r.err.rfind(c.first_line, 0), 0u) << c.args << ": " << r.err;
+    EXPECT_EQ(count_lines(r.err), 1) << c.args << ": " << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace rtsim::test
