@@ -176,16 +176,13 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   }
   Cycle start = std::max(send, free_mshrs_.top());
   free_mshrs_.pop();
-  stats_.mshr_stall_cycles += start - send;
-  ReadCharge below;
-  Cycle ready = below_->read(line << line_shift_, config_.line_bytes, start, this, id, below);
+  Cycle ready = issue(id, start);
   if (ready == kPending) {
-    misses_[id].charge = below;
     wait_for(id, caller, 0);
     return kPending;
   }
   // Answered at once: the line is in flight until `ready`, and so is its MSHR.
-  charge += below;
+  charge += misses_[id].charge;
   ways[way].ready = ready;
   ways[way].miss = kNone;
   free_mshrs_.push(ready);
@@ -193,13 +190,13 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   return ready;
 }
 
-void Cache::issue(uint32_t miss, Cycle at) {
+Cycle Cache::issue(uint32_t miss, Cycle at) {
   Miss& m = misses_[miss];
   stats_.mshr_stall_cycles += at - m.send;
   ReadCharge below;
   Cycle ready = below_->read(m.line << line_shift_, config_.line_bytes, at, this, miss, below);
   misses_[miss].charge += below;
-  if (ready != kPending) read_done(miss, ready, {});
+  return ready;
 }
 
 void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
@@ -226,7 +223,8 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   }
   uint32_t next = waiting_.front();
   waiting_.pop_front();
-  issue(next, std::max(ready, misses_[next].send));
+  Cycle next_ready = issue(next, std::max(ready, misses_[next].send));
+  if (next_ready != kPending) read_done(next, next_ready, {});
 }
 
 void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charge) {

@@ -133,7 +133,8 @@ class Cache : public MemoryTarget, private ReadClient {
   void wait_for(uint32_t miss, Caller& caller, Cycle earliest);
   void add_waiter(uint32_t miss, const Waiter& waiter);
   Cycle miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller, ReadCharge& charge);
-  void issue(uint32_t miss, Cycle at);
+  // Sends a miss below at `at` (its MSHR taken); the below's answer: a cycle, or kPending.
+  Cycle issue(uint32_t miss, Cycle at);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
   uint32_t install(uint32_t set, Line* ways, const Line& line);  // evicting a victim if needed

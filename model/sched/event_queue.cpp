@@ -49,6 +49,14 @@ uint32_t EventQueue::gap(Cycle from) const {
   return kWheel;
 }
 
+// Far events that came within reach of the cursor join the wheel, in their order.
+void EventQueue::pull_far() {
+  while (!far_.empty() && far_.top().cycle < cursor_ + kWheel) {
+    append(far_.top().cycle, far_.top().item);
+    far_.pop();
+  }
+}
+
 void EventQueue::settle() {
   while (head_[cursor_ % kWheel] == kNone) {
     if (on_wheel_ == 0) {
@@ -59,11 +67,7 @@ void EventQueue::settle() {
       if (!far_.empty()) next = std::min(next, far_.top().cycle - kWheel + 1);
       cursor_ = std::max(next, cursor_ + 1);
     }
-    // Far events that came within reach join the wheel, in their order.
-    while (!far_.empty() && far_.top().cycle < cursor_ + kWheel) {
-      append(far_.top().cycle, far_.top().item);
-      far_.pop();
-    }
+    pull_far();
   }
 }
 
@@ -79,10 +83,7 @@ bool EventQueue::pop_before(Cycle until, Event& event) {
   if (next >= until) return false;
   if (next != cursor_) {  // turn the wheel to it, as settle() would, without a second scan
     cursor_ = next;
-    while (!far_.empty() && far_.top().cycle < cursor_ + kWheel) {
-      append(far_.top().cycle, far_.top().item);
-      far_.pop();
-    }
+    pull_far();
   }
   event = pop();
   return true;

@@ -48,7 +48,8 @@ class EventQueue {
     }
   };
   void append(Cycle cycle, uint32_t item);
-  void settle();  // turns the wheel to the earliest pending cycle
+  void settle();    // turns the wheel to the earliest pending cycle
+  void pull_far();  // moves far events within kWheel of the cursor onto the wheel
   uint32_t gap(Cycle from) const;
 
   Cycle cursor_ = 0;                     // no pending event is earlier

@@ -78,13 +78,22 @@ CacheConfig l2_config(uint32_t hit_latency, uint32_t mshrs) {
   return c;
 }
 
-TEST(TlmMemory, AnEarlierDatedRequestIsNotDelayedByALaterDatedOneSentBefore) {
+// An approximately-timed requester straight at an L2 (10-cycle tag check) in front of a DRAM.
+struct L2Bench {
+  L2Bench(uint32_t mshrs, const DramConfig& dram_config)
+      : l2("l2", l2_config(10, mshrs), clock), dram("dram", dram_config, clock) {
+    cpu.out.bind(l2.in);
+    l2.out.bind(dram.in);
+  }
   Clock clock;
-  AtRequester cpu("cpu");
-  SharedCacheModule l2("l2", l2_config(10, 8), clock);
-  DramModule dram("dram", DramConfig{64.0, 300, 64}, clock);
-  cpu.out.bind(l2.in);
-  l2.out.bind(dram.in);
+  AtRequester cpu{"cpu"};
+  SharedCacheModule l2;
+  DramModule dram;
+};
+
+TEST(TlmMemory, AnEarlierDatedRequestIsNotDelayedByALaterDatedOneSentBefore) {
+  L2Bench bench(8, DramConfig{64.0, 300, 64});
+  AtRequester& cpu = bench.cpu;
   cpu.script = {{0x10000, 1000}, {0x0, 10}, {0x40, 11}, {0x80, 12}};
   sc_core::sc_start();
   // Each miss reaches the DRAM after the L2's 10-cycle tag check and takes its bus for a cycle.
@@ -92,24 +101,20 @@ TEST(TlmMemory, AnEarlierDatedRequestIsNotDelayedByALaterDatedOneSentBefore) {
   EXPECT_EQ(cpu.ready[2], 11u + 10 + 1 + 300);
   EXPECT_EQ(cpu.ready[3], 12u + 10 + 1 + 300);
   EXPECT_EQ(cpu.ready[0], 1000u + 10 + 1 + 300);
-  EXPECT_EQ(dram.dram().stats().total_latency_cycles, 4u * 301) << "no request queued";
+  EXPECT_EQ(bench.dram.dram().stats().total_latency_cycles, 4u * 301) << "no request queued";
 }
 
 TEST(TlmMemory, ManyIndependentMissesSaturateTheDramBandwidth) {
-  Clock clock;
-  AtRequester cpu("cpu");
-  SharedCacheModule l2("l2", l2_config(10, 64), clock);
-  DramModule dram("dram", DramConfig{16.0, 100, 64}, clock);
-  cpu.out.bind(l2.in);
-  l2.out.bind(dram.in);
+  L2Bench bench(64, DramConfig{16.0, 100, 64});
+  AtRequester& cpu = bench.cpu;
   for (uint64_t i = 0; i < 4000; ++i) cpu.script.push_back({i * 64, i / 8});  // 8 lines a cycle
   sc_core::sc_start();
   Cycle last = *std::max_element(cpu.ready.begin(), cpu.ready.end());
   // From the first miss at the DRAM (cycle 10) to the end of the last transfer.
   double span = double(last - 100 - 10);
-  double achieved = double(dram.dram().stats().bytes) / span;
+  double achieved = double(bench.dram.dram().stats().bytes) / span;
   EXPECT_NEAR(achieved / 16.0, 1.0, 0.05) << "bytes per cycle against the configured peak";
-  EXPECT_GT(l2.cache().stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
+  EXPECT_GT(bench.l2.cache().stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
 }
 
 // Reads through an L1 from a thread at given cycles; records each read's ready cycle.
