@@ -17,6 +17,9 @@ void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
                            fmt::format("data capacity of {}", which).c_str(), 64, 1ull << 34);
   c.line_bytes = uint32_t(
       r.integer("line_bytes", c.line_bytes, "bytes", "line size, a power of two", 4, 4096));
+  c.sector_bytes = uint32_t(r.integer(
+      "sector_bytes", c.sector_bytes, "bytes",
+      "fetch unit of a miss, a power of two dividing the line; 0 = the whole line", 0, 4096));
   c.ways = uint32_t(r.integer("ways", c.ways, "lines", "associativity: lines per set", 1, 1024));
   c.replacement =
       r.text("replacement", c.replacement, "replacement policy", replacement_policy_names());
@@ -24,7 +27,17 @@ void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
       uint32_t(r.integer("hit_latency", c.hit_latency, "cycles",
                          "request to data on a hit; also the tag check of a miss", 0, 100000));
   c.mshrs =
-      uint32_t(r.integer("mshrs", c.mshrs, "count", "line misses in flight at once", 1, 65536));
+      uint32_t(r.integer("mshrs", c.mshrs, "count", "block misses in flight at once", 1, 65536));
+  c.merge_limit = uint32_t(r.integer("merge_limit", c.merge_limit, "requests",
+                                     "requests one MSHR takes besides its own (more replay after "
+                                     "the data); 0 = no limit",
+                                     0, 65535));
+  c.banks = uint32_t(
+      r.integer("banks", c.banks, "banks", "lines interleaved over them, a power of two", 1, 1024));
+  c.bank_ports = uint32_t(r.integer("bank_ports", c.bank_ports, "lookups/cycle",
+                                    "lookups one bank starts per cycle; 0 = no limit", 0, 1024));
+  c.bytes_per_cycle = r.real("bytes_per_cycle", c.bytes_per_cycle, "bytes/cycle",
+                             "data port bandwidth (reads and writes); 0 = no limit", 0, 1e6);
 }
 
 void read_test_units(ConfigReader r, TestUnitConfig& c, const char* tests) {
@@ -122,6 +135,8 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                          "from the end of a transfer to data ready", 0, 1000000));
   c.dram.queue_depth = uint32_t(dram.integer("queue_depth", c.dram.queue_depth, "requests",
                                              "requests that may wait for the bus", 1, 1 << 20));
+  c.dram.burst_bytes = uint32_t(dram.integer("burst_bytes", c.dram.burst_bytes, "bytes",
+                                             "smallest transfer, a power of two", 1, 4096));
 
   ConfigReader bvh = r.section("bvh");
   c.bvh.width =
@@ -170,6 +185,12 @@ ConfigReadContext resolve(const HwConfig& config) {
 }
 
 }  // namespace
+
+CacheConfig l1_as_built(const HwConfig& config) {
+  CacheConfig l1 = config.l1;
+  l1.write_back = config.rt.mode != TraversalMode::Treelet;
+  return l1;
+}
 
 std::string hw_config_problem(const HwConfig& c) {
   auto section = [](const char* name, const std::string& problem) {

@@ -39,6 +39,10 @@ struct HwConfig {
   BvhConfig bvh;
 };
 
+// The L1 as the simulator builds it: write-back, but write-through in treelet mode, where a
+// ray moves between units and so its spilled stack entries must reach the shared L2.
+CacheConfig l1_as_built(const HwConfig& config);
+
 // One key's documentation (for SIM.md and --list-keys).
 struct HwConfigKey {
   std::string key, type, default_value, unit, description;

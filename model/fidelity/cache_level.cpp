@@ -40,7 +40,7 @@ class CacheWalk {
         dram_target_(dram_),
         l2_(config.l2, &dram_target_) {
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
-      l1_.push_back(std::make_unique<Cache>(c_.l1, &l2_, CacheRole::L1));
+      l1_.push_back(std::make_unique<Cache>(l1_as_built(c_), &l2_, CacheRole::L1));
       units_.emplace_back(c_.rt.warps);
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }
@@ -97,12 +97,20 @@ class CacheWalk {
     lane.cost.l2_hits += b2.hits - a2.hits;
     uint64_t below = b2.bytes_below - a2.bytes_below;
     lane.cost.dram_bytes += below;
-    dram_bytes_ += below;
+    dram_bytes_ += below + b2.writeback_bytes - a2.writeback_bytes;
     double latency = c_.l1.hit_latency;
     if (b1.misses > a1.misses) latency += c_.l2.hit_latency;
     if (b2.misses > a2.misses)
-      latency += c_.dram.latency + double(c_.l2.line_bytes) / c_.dram.bytes_per_cycle;
+      latency += c_.dram.latency + double(l2_.block_bytes()) / c_.dram.bytes_per_cycle;
     return latency;
+  }
+
+  // A spill through the unit's L1; the DRAM bytes of write-backs count with the run only.
+  void write(uint32_t unit, uint64_t addr, uint32_t bytes) {
+    uint64_t before = l2_.stats().writeback_bytes;
+    now_ += kReadGap;
+    l1_[unit]->write(addr, bytes, now_);
+    dram_bytes_ += l2_.stats().writeback_bytes - before;
   }
 
   void step(uint32_t unit, Warp& warp, Lane& lane, uint32_t slot) {
@@ -137,9 +145,8 @@ class CacheWalk {
     lane.spilled = std::min(lane.spilled, size);
     if (size - lane.spilled > stack.entries) {
       uint32_t spill = size - lane.spilled - stack.entries;
+      write(unit, spill_region + lane.spilled * stack.entry_bytes, spill * stack.entry_bytes);
       lane.spilled += spill;
-      lane.cost.dram_bytes += uint64_t(spill) * stack.entry_bytes;
-      dram_bytes_ += uint64_t(spill) * stack.entry_bytes;
     }
   }
 

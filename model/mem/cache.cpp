@@ -10,10 +10,10 @@ bool power_of_two(uint64_t x) {
   return x && !(x & (x - 1));
 }
 
-// Whether the first reference to a line is this cache's own fetch, for a given share: a
-// splitmix64 hash of the line, as a fraction of 2^64, below the share.
-bool fetched_here(uint64_t line, double share) {
-  uint64_t z = line + 0x9e3779b97f4a7c15ull;
+// Whether the first reference to a block is this cache's own fetch, for a given share: a
+// splitmix64 hash of the block, as a fraction of 2^64, below the share.
+bool fetched_here(uint64_t block, double share) {
+  uint64_t z = block + 0x9e3779b97f4a7c15ull;
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
   z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
   z ^= z >> 31;
@@ -24,10 +24,16 @@ bool fetched_here(uint64_t line, double share) {
 
 std::string cache_config_problem(const CacheConfig& c) {
   if (!power_of_two(c.line_bytes)) return "line_bytes must be a power of two";
+  if (c.sector_bytes != 0 &&
+      (!power_of_two(c.sector_bytes) || c.sector_bytes > c.line_bytes || c.sector_bytes < 4))
+    return "sector_bytes must be 0 or a power of two from 4 to line_bytes";
   if (c.ways == 0) return "ways must be at least 1";
   if (c.size_bytes == 0 || c.size_bytes % (uint64_t(c.line_bytes) * c.ways) != 0)
     return "size_bytes must be a positive multiple of line_bytes * ways";
   if (c.mshrs == 0) return "mshrs must be at least 1";
+  if (c.merge_limit > 65535) return "merge_limit must be at most 65535";
+  if (!power_of_two(c.banks)) return "banks must be a power of two";
+  if (!(c.bytes_per_cycle >= 0)) return "bytes_per_cycle must be 0 (no limit) or positive";
   if (!make_replacement_policy(c.replacement, 1, 1))
     return "replacement '" + c.replacement + "' is unknown (lru, fifo, random)";
   return {};
@@ -40,7 +46,13 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   sets_ = uint32_t(config.size_bytes / (uint64_t(config.line_bytes) * config.ways));
   if (sets_ > 1 && power_of_two(sets_)) set_shift_ = uint32_t(__builtin_ctz(sets_));
   line_shift_ = uint32_t(__builtin_ctz(config.line_bytes));
+  block_shift_ = config.sector_bytes ? uint32_t(__builtin_ctz(config.sector_bytes)) : line_shift_;
+  sector_shift_ = line_shift_ - block_shift_;
+  sector_mask_ = (uint64_t(1) << sector_shift_) - 1;
+  admits_ = config.bank_ports > 0 || config.bytes_per_cycle > 0;
   lines_.resize(size_t(sets_) * config.ways);
+  blocks_.resize(lines_.size() << sector_shift_);
+  banks_.resize(config.banks);
   policy_ = make_replacement_policy(config.replacement, sets_, config.ways);
   for (uint32_t i = 0; i < config.mshrs; ++i) free_mshrs_.push(0);
 }
@@ -56,19 +68,55 @@ uint32_t Cache::take(std::vector<T>& pool, std::vector<uint32_t>& free) {
   return id;
 }
 
+Cycle Cache::admit(uint64_t line, uint64_t bytes, Cycle at) {
+  Cycle start = at;
+  if (config_.bank_ports > 0) {
+    Bank& bank = banks_[line & (config_.banks - 1)];
+    if (bank.cycle < at) bank = {at, 0};
+    if (bank.used == config_.bank_ports) bank = {bank.cycle + 1, 0};
+    bank.used++;
+    if (bank.cycle > at) {
+      stats_.bank_conflicts++;
+      stats_.bank_stall_cycles += bank.cycle - at;
+    }
+    start = bank.cycle;
+  }
+  if (config_.bytes_per_cycle > 0) {
+    double begin = std::max(double(start), port_free_);
+    port_free_ = begin + double(bytes) / config_.bytes_per_cycle;
+    auto cycle = Cycle(begin);  // it starts within that cycle
+    stats_.port_stall_cycles += cycle - start;
+    start = cycle;
+  }
+  return start;
+}
+
+uint64_t Cache::bytes_in(uint64_t line, uint64_t addr, uint64_t end) const {
+  uint64_t begin = line << line_shift_;
+  return std::min(end, begin + config_.line_bytes) - std::max(addr, begin);
+}
+
 Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
                   ReadCharge& charge) {
-  uint64_t first = addr >> line_shift_;
-  uint64_t last = (addr + std::max<uint32_t>(bytes, 1) - 1) >> line_shift_;
+  uint64_t end = addr + std::max<uint32_t>(bytes, 1);
+  uint64_t first = addr >> block_shift_;
+  uint64_t last = (end - 1) >> block_shift_;
+  stats_.bytes_read += bytes;
+  if (addr >= kLocalMemoryBase) stats_.local_reads++;
   Caller caller{client, token, last > first, kNone};
-  if (!caller.several_lines) return access_line(first, at, caller, charge);
-  Cycle ready = at;
-  for (uint64_t line = first; line <= last; ++line) {
-    Cycle r = access_line(line, at, caller, charge);
+  if (!caller.several_blocks)
+    return read_block(first, admits_ ? admit(first >> sector_shift_, bytes, at) : at, caller,
+                      charge);
+  Cycle ready = at, start = at;
+  for (uint64_t block = first; block <= last; ++block) {
+    uint64_t line = block >> sector_shift_;
+    if (admits_ && (block == first || (block & sector_mask_) == 0))
+      start = admit(line, bytes_in(line, addr, end), at);
+    Cycle r = read_block(block, start, caller, charge);
     if (r != kPending) ready = std::max(ready, r);
   }
   if (caller.request == kNone) return ready;
-  Request& q = requests_[caller.request];  // its lines complete later, never during this call
+  Request& q = requests_[caller.request];  // its blocks complete later, never during this call
   q.ready = std::max(q.ready, ready);
   return kPending;
 }
@@ -82,67 +130,114 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
 }
 
 void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
+  uint64_t end = addr + std::max<uint32_t>(bytes, 1);
+  uint64_t first = addr >> block_shift_;
+  uint64_t last = (end - 1) >> block_shift_;
   stats_.write_bytes += bytes;
-  below_->write(addr, bytes, at + config_.hit_latency);  // through the level's pipeline
+  Cycle start = at;
+  for (uint64_t block = first; block <= last; ++block) {
+    uint64_t line = block >> sector_shift_;
+    if (admits_ && (block == first || (block & sector_mask_) == 0))
+      start = admit(line, bytes_in(line, addr, end), at);
+    write_block(block, start);
+  }
+  if (!config_.write_back) below_->write(addr, bytes, start + config_.hit_latency);
 }
 
 bool Cache::contains(uint64_t addr) const {
-  uint64_t line = addr >> line_shift_;
-  const Line* set = &lines_[size_t(set_of(line)) * config_.ways];
-  return std::any_of(set, set + config_.ways,
-                     [&](const Line& l) { return l.valid && l.tag == tag_of(line); });
+  uint64_t block = addr >> block_shift_;
+  uint64_t line = block >> sector_shift_;
+  uint32_t set = set_of(line);
+  uint32_t way = find(set, tag_of(line));
+  if (way == kNone) return false;
+  return blocks_[((size_t(set) * config_.ways + way) << sector_shift_) + (block & sector_mask_)]
+      .valid;
 }
 
-Cycle Cache::access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge) {
+uint32_t Cache::find(uint32_t set, uint64_t tag) const {
+  const Line* ways = &lines_[size_t(set) * config_.ways];
+  for (uint32_t w = 0; w < config_.ways; ++w)
+    if (ways[w].valid && ways[w].tag == tag) return w;
+  return kNone;
+}
+
+uint32_t Cache::merge(Block& b) {
+  stats_.mshr_merges++;
+  if (config_.merge_limit > 0 && b.merges >= config_.merge_limit) {
+    stats_.merge_limit_stalls++;
+    return config_.hit_latency;
+  }
+  b.merges++;
+  return 0;
+}
+
+Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge) {
   stats_.accesses++;
   bool l1 = role_ == CacheRole::L1;
   (l1 ? charge.l1_accesses : charge.l2_accesses)++;
+  uint64_t line = block >> sector_shift_;
   uint32_t set = set_of(line);
-  uint64_t tag = tag_of(line);
-  Line* ways = &lines_[size_t(set) * config_.ways];
+  uint32_t way = find(set, tag_of(line));
   Cycle hit_ready = at + config_.hit_latency;
 
-  for (uint32_t w = 0; w < config_.ways; ++w) {
-    Line& l = ways[w];
-    if (!l.valid || l.tag != tag) continue;
-    policy_->touch(set, w);
-    if (l.ready == kPending) {
-      stats_.mshr_merges++;
-      wait_for(l.miss, caller, hit_ready);
+  if (way != kNone) {
+    policy_->touch(set, way);
+    Block& b = block_at(set, way, block);
+    if (b.valid && (b.ready == kPending || b.ready > at)) {
+      uint32_t replay = merge(b);
+      if (b.ready != kPending) return std::max(b.ready + replay, hit_ready);
+      wait_for(b.miss, caller, hit_ready, replay);
       return kPending;
     }
-    if (l.ready > at) {
-      stats_.mshr_merges++;
-      return std::max(l.ready, hit_ready);
+    if (b.valid) {
+      stats_.hits++;
+      (l1 ? charge.l1_hits : charge.l2_hits)++;
+      return hit_ready;
     }
-    stats_.hits++;
-    (l1 ? charge.l1_hits : charge.l2_hits)++;
-    return hit_ready;
   }
 
-  bool first = track_cold_ && held_lines_.insert(line).second;
-  if (first && own_share_ < 1.0 && !fetched_here(line, own_share_)) {
+  bool first = track_cold_ && held_blocks_.insert(block).second;
+  if (first && own_share_ < 1.0 && !fetched_here(block, own_share_)) {
     stats_.hits++;
     stats_.absent_fills++;
     (l1 ? charge.l1_hits : charge.l2_hits)++;
-    install(set, ways, Line{tag, hit_ready, kNone, true});
+    if (way == kNone) way = allocate(set, tag_of(line), at);
+    block_at(set, way, block) = Block{hit_ready, kNone, 0, true, false};
     return hit_ready;
   }
   if (first) stats_.cold_misses++;
-  return miss(line, set, ways, at, caller, charge);
+  if ((block << block_shift_) >= kLocalMemoryBase) stats_.local_misses++;
+  if (way == kNone) way = allocate(set, tag_of(line), at);
+  return miss(block, set, way, at, caller, charge);
 }
 
-void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest) {
-  if (!caller.several_lines) {
-    add_waiter(miss, {caller.client, caller.token, earliest, kNone});
+void Cache::write_block(uint64_t block, Cycle at) {
+  stats_.writes++;
+  uint64_t line = block >> sector_shift_;
+  uint32_t set = set_of(line);
+  uint32_t way = find(set, tag_of(line));
+  if (way == kNone) way = allocate(set, tag_of(line), at);
+  policy_->touch(set, way);
+  Block& b = block_at(set, way, block);
+  if (!b.valid) {
+    stats_.write_misses++;
+    b = Block{at, kNone, 0, true, false};  // a read from `at` on finds it, after its tag check
+    if (track_cold_) held_blocks_.insert(block);
+  }
+  b.dirty = config_.write_back;
+}
+
+void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t replay) {
+  if (!caller.several_blocks) {
+    add_waiter(miss, {caller.client, caller.token, earliest, replay, kNone});
     return;
   }
   if (caller.request == kNone) {
     caller.request = take(requests_, free_requests_);
     requests_[caller.request] = Request{caller.client, caller.token, 0, 0, {}};
   }
-  requests_[caller.request].lines++;
-  add_waiter(miss, {&join_, caller.request, earliest, kNone});
+  requests_[caller.request].blocks++;
+  add_waiter(miss, {&join_, caller.request, earliest, replay, kNone});
 }
 
 void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
@@ -153,16 +248,17 @@ void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
   m.last = id;
 }
 
-Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller,
+Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
                   ReadCharge& charge) {
   stats_.misses++;
-  stats_.bytes_below += config_.line_bytes;
-  if (role_ == CacheRole::L2) charge.dram_bytes += config_.line_bytes;
+  stats_.bytes_below += block_bytes();
+  if (role_ == CacheRole::L2) charge.dram_bytes += block_bytes();
   Cycle send = at + config_.hit_latency;
   uint32_t id = take(misses_, free_misses_);
-  uint32_t way = install(set, ways, Line{tag_of(line), kPending, id, true});
+  Block& b = block_at(set, way, block);
+  b = Block{kPending, id, 0, true, false};
   Miss& m = misses_[id];
-  m.line = line;
+  m.block = block;
   m.set = set;
   m.way = way;
   m.send = send;
@@ -170,7 +266,7 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   m.first = m.last = kNone;
   // The MSHR free first; with none whose end is known, wait until one's end is reported.
   if (free_mshrs_.empty()) {
-    wait_for(id, caller, 0);
+    wait_for(id, caller, 0, 0);
     waiting_.push_back(id);
     return kPending;
   }
@@ -178,13 +274,14 @@ Cycle Cache::miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& cal
   free_mshrs_.pop();
   Cycle ready = issue(id, start);
   if (ready == kPending) {
-    wait_for(id, caller, 0);
+    wait_for(id, caller, 0, 0);
     return kPending;
   }
-  // Answered at once: the line is in flight until `ready`, and so is its MSHR.
+  // Answered at once: the block is in flight until `ready`, and so is its MSHR.
   charge += misses_[id].charge;
-  ways[way].ready = ready;
-  ways[way].miss = kNone;
+  Block& filled = block_at(set, way, block);
+  filled.ready = ready;
+  filled.miss = kNone;
   free_mshrs_.push(ready);
   free_misses_.push_back(id);
   return ready;
@@ -194,7 +291,7 @@ Cycle Cache::issue(uint32_t miss, Cycle at) {
   Miss& m = misses_[miss];
   stats_.mshr_stall_cycles += at - m.send;
   ReadCharge below;
-  Cycle ready = below_->read(m.line << line_shift_, config_.line_bytes, at, this, miss, below);
+  Cycle ready = below_->read(m.block << block_shift_, block_bytes(), at, this, miss, below);
   misses_[miss].charge += below;
   return ready;
 }
@@ -202,8 +299,11 @@ Cycle Cache::issue(uint32_t miss, Cycle at) {
 void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   auto id = uint32_t(token);
   Miss& m = misses_[id];
-  Line& line = lines_[size_t(m.set) * config_.ways + m.way];
-  if (line.valid && line.ready == kPending && line.miss == id) line.ready = ready;
+  Block& b = block_at(m.set, m.way, m.block);
+  if (b.valid && b.ready == kPending && b.miss == id) {
+    b.ready = ready;
+    b.miss = kNone;
+  }
   ReadCharge first = m.charge;
   first += charge;
   // Completing a waiter only notifies its client; nothing here adds a waiter or a miss.
@@ -211,7 +311,7 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   for (uint32_t w = head; w != kNone;) {
     Waiter waiter = waiters_[w];
     free_waiters_.push_back(w);
-    waiter.client->read_done(waiter.token, std::max(ready, waiter.earliest),
+    waiter.client->read_done(waiter.token, std::max(ready + waiter.replay, waiter.earliest),
                              w == head ? first : ReadCharge{});
     w = waiter.next;
   }
@@ -231,12 +331,13 @@ void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charg
   Request& q = requests_[request];
   q.ready = std::max(q.ready, ready);
   q.charge += charge;
-  if (--q.lines > 0) return;
+  if (--q.blocks > 0) return;
   free_requests_.push_back(request);
   q.client->read_done(q.token, q.ready, q.charge);
 }
 
-uint32_t Cache::install(uint32_t set, Line* ways, const Line& line) {
+uint32_t Cache::allocate(uint32_t set, uint64_t tag, Cycle at) {
+  Line* ways = &lines_[size_t(set) * config_.ways];
   uint32_t victim = config_.ways;
   for (uint32_t w = 0; w < config_.ways && victim == config_.ways; ++w)
     if (!ways[w].valid) victim = w;
@@ -244,7 +345,18 @@ uint32_t Cache::install(uint32_t set, Line* ways, const Line& line) {
     victim = policy_->victim(set);
     stats_.evictions++;
   }
-  ways[victim] = line;
+  Line& line = ways[victim];
+  Block* blocks = &blocks_[(size_t(set) * config_.ways + victim) << sector_shift_];
+  for (uint64_t s = 0; s <= sector_mask_; ++s) {
+    if (line.valid && blocks[s].valid && blocks[s].dirty) {
+      stats_.writebacks++;
+      stats_.writeback_bytes += block_bytes();
+      uint64_t old_block = ((line.tag * sets_ + set) << sector_shift_) + s;
+      below_->write(old_block << block_shift_, block_bytes(), at + config_.hit_latency);
+    }
+    blocks[s] = Block{};
+  }
+  line = Line{tag, true};
   policy_->insert(set, victim);
   return victim;
 }

@@ -1,16 +1,23 @@
-// Set-associative cache with MSHRs (miss merging): one level of the RT unit's memory hierarchy
-// (the per-unit L1 for nodes, triangles and stack refills; the shared L2).
-// Timing: a hit is ready hit_latency cycles after the request. A miss is sent below after the
-// tag check (hit_latency), when it has an MSHR: with all MSHRs busy it waits until the first of
-// them is freed by its data, counted as MSHR stall cycles; its line is ready when the level
-// below delivers it. A request to a line whose miss is still in flight merges into that MSHR
-// and is ready with it (not before its own tag check). MSHR occupancy is kept per MSHR as the
-// cycle its data arrives, so a request sees the MSHRs busy at its own cycle, not later ones.
-// The level below may answer at once or later (MemoryTarget); so may this cache: a read that
-// waits for data of unknown time returns kPending and completes through its client.
-// Requests spanning several lines access them in the same cycle. Allocate on miss; reads only:
-// writes (stack spills) pass below without allocation (write-around), hit_latency cycles
-// after they arrive, as a miss does.
+// Set-associative cache with banks, a data port, sectors and MSHRs (miss merging): one level of
+// the RT unit's memory hierarchy (the per-unit L1 for nodes, triangles and stack refills; the
+// shared L2).
+// Timing. A request to a line first takes a port of the line's bank (lines are interleaved over
+// `banks`; each bank takes `bank_ports` lookups a cycle, a further one waits for the next cycle)
+// and passes the level's data port (`bytes_per_cycle`: the bytes it moves within the line, one
+// request after the other). From that cycle a hit is ready hit_latency cycles later. A miss is
+// sent below after the tag check (hit_latency), when it has an MSHR: with all MSHRs busy it waits
+// until the first of them is freed by its data, counted as MSHR stall cycles; its block is
+// ready when the level below delivers it. A request to a block whose miss is still in flight
+// merges into that MSHR and is ready with it (not before its own tag check); once `merge_limit`
+// requests have merged, a further one replays after the data arrives (one more hit_latency).
+// MSHR occupancy is kept per MSHR as the cycle its data arrives, so a request sees the MSHRs
+// busy at its own cycle, not later ones. Lines may be sectored: a miss fetches only the
+// sectors (blocks) a request needs. The level below may answer at once or later (MemoryTarget);
+// so may this cache: a read that waits for data of unknown time returns kPending and completes
+// through its client.
+// Writes (stack spills in local memory) allocate without fetching (write-validate: a spill's
+// refill reads only what the spill wrote). Write-back: a dirty block goes below when its line
+// is evicted; write-through: every write also goes below, hit_latency after it arrives.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +39,13 @@ struct CacheConfig {
   uint32_t ways = 4;                // associativity: lines per set
   std::string replacement = "lru";  // replacement policy: lru, fifo or random
   uint32_t hit_latency = 4;         // cycles: from request to data on a hit
-  uint32_t mshrs = 8;               // count: line misses in flight at once
+  uint32_t mshrs = 8;               // count: block misses in flight at once
+  uint32_t sector_bytes = 0;        // bytes: fetch unit within a line; 0 = the whole line
+  uint32_t merge_limit = 0;         // requests one MSHR takes besides its own; 0 = no limit
+  uint32_t banks = 1;               // count: banks, lines interleaved over them (a power of two)
+  uint32_t bank_ports = 0;          // lookups per bank per cycle; 0 = no limit
+  double bytes_per_cycle = 0;       // bytes/cycle: data port bandwidth; 0 = no limit
+  bool write_back = true;           // false: write-through (writes also go below at once)
 };
 
 // Why the config is impossible (empty if it is fine): sizes, powers of two, known policy.
@@ -43,16 +56,27 @@ std::string cache_config_problem(const CacheConfig& config);
 enum class CacheRole : uint8_t { L1, L2 };
 
 struct CacheStats {
-  uint64_t accesses = 0;           // line accesses (a request spanning 2 lines counts 2)
-  uint64_t hits = 0;               // line present and ready
-  uint64_t misses = 0;             // line absent: a request went below
-  uint64_t cold_misses = 0;        // misses of lines never referenced before (if tracked)
-  uint64_t absent_fills = 0;       // first references served by an absent sharer (counted as hits)
-  uint64_t mshr_merges = 0;        // line in flight: merged into its MSHR
-  uint64_t mshr_stall_cycles = 0;  // cycles misses waited for a free MSHR
-  uint64_t evictions = 0;          // valid lines replaced
-  uint64_t bytes_below = 0;        // bytes requested from the level below
-  uint64_t write_bytes = 0;        // bytes written around this level (stack spills)
+  uint64_t accesses = 0;            // block reads (a request spanning 2 blocks counts 2)
+  uint64_t hits = 0;                // block present and ready
+  uint64_t misses = 0;              // block absent: a request went below
+  uint64_t cold_misses = 0;         // misses of blocks never referenced before (if tracked)
+  uint64_t absent_fills = 0;        // first references served by an absent sharer (as hits)
+  uint64_t mshr_merges = 0;         // block in flight: merged into its MSHR
+  uint64_t merge_limit_stalls = 0;  // of them, past the merge limit: replayed after the data
+  uint64_t mshr_stall_cycles = 0;   // cycles misses waited for a free MSHR
+  uint64_t bank_conflicts = 0;      // line lookups that found their bank's ports taken
+  uint64_t bank_stall_cycles = 0;   // cycles they waited for a port
+  uint64_t port_stall_cycles = 0;   // cycles requests waited for the data port
+  uint64_t evictions = 0;           // valid lines replaced
+  uint64_t bytes_read = 0;          // bytes requested by reads
+  uint64_t bytes_below = 0;         // bytes requested from the level below
+  uint64_t writes = 0;              // block writes
+  uint64_t write_misses = 0;        // of them, to an absent block: allocated without a fetch
+  uint64_t write_bytes = 0;         // bytes written to this level
+  uint64_t writebacks = 0;          // dirty blocks written below on eviction
+  uint64_t writeback_bytes = 0;     // their bytes
+  uint64_t local_reads = 0;         // reads of local memory (stack refills), as requests
+  uint64_t local_misses = 0;        // their block misses
 };
 
 class Cache : public MemoryTarget, private ReadClient {
@@ -67,15 +91,15 @@ class Cache : public MemoryTarget, private ReadClient {
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at);
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
 
-  // Whether the line holding addr is present (in flight counts); changes nothing.
+  // Whether the block holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
-  // Keeps a set of every line referenced, to count cold (compulsory) misses; without it
+  // Keeps a set of every block referenced, to count cold (compulsory) misses; without it
   // cold_misses stays 0. Costs a hash insert per miss: the simulator tracks its L2 only.
   void track_cold_misses() { track_cold_ = true; }
   bool tracks_cold_misses() const { return track_cold_; }
   // For a scale model (model/fidelity/scaled_level.h): this cache stands in for a shared cache
   // of which the simulation drives only `own_share` of the clients. The first reference to a
-  // line then goes below with probability own_share (decided by a hash of the line address);
+  // block then goes below with probability own_share (decided by a hash of its address);
   // otherwise one of the absent clients fetched it earlier, and it is a hit (absent_fills).
   void share_first_references(double own_share) {
     own_share_ = own_share;
@@ -83,34 +107,45 @@ class Cache : public MemoryTarget, private ReadClient {
   }
   const CacheStats& stats() const { return stats_; }
   const CacheConfig& config() const { return config_; }
+  uint32_t block_bytes() const { return 1u << block_shift_; }
 
  private:
   static constexpr uint32_t kNone = ~0u;
   struct Line {
     uint64_t tag = 0;
+    bool valid = false;
+  };
+  struct Block {            // a sector of a line, or the whole line
     Cycle ready = 0;        // kPending: its miss (below) has not learnt its data's cycle
     uint32_t miss = kNone;  // that miss, while ready is kPending
+    uint16_t merges = 0;    // requests merged into its last miss
     bool valid = false;
+    bool dirty = false;
+  };
+  struct Bank {
+    Cycle cycle = 0;    // the cycle its next lookup can start
+    uint32_t used = 0;  // ports taken in that cycle
   };
   struct Waiter {
     ReadClient* client;
     uint64_t token;
-    Cycle earliest;  // its own tag check: the data cannot be ready before
-    uint32_t next;   // the next waiter of the same miss (kNone: the last)
+    Cycle earliest;   // its own tag check: the data cannot be ready before
+    uint32_t replay;  // cycles after the data (past the merge limit: a second lookup)
+    uint32_t next;    // the next waiter of the same miss (kNone: the last)
   };
   struct Miss {
-    uint64_t line = 0;
+    uint64_t block = 0;
     uint32_t set = 0, way = 0;
     Cycle send = 0;  // the cycle it may go below (after the tag check)
     ReadCharge charge;
     uint32_t first = kNone, last = kNone;  // its waiters, in order: the first made the miss
   };
-  // A read of several lines that waits: its client, and the lines it still waits for. Its
-  // lines' misses report to join_, which completes the read with the last of them.
+  // A read of several blocks that waits: its client, and the blocks it still waits for. Its
+  // blocks' misses report to join_, which completes the read with the last of them.
   struct Request {
     ReadClient* client = nullptr;
     uint64_t token = 0;
-    uint32_t lines = 0;
+    uint32_t blocks = 0;
     Cycle ready = 0;
     ReadCharge charge;
   };
@@ -121,23 +156,37 @@ class Cache : public MemoryTarget, private ReadClient {
     }
     Cache& cache;
   };
-  struct Caller {  // the read being served; a read of several lines gets a Request to wait
+  struct Caller {  // the read being served; a read of several blocks gets a Request to wait
     ReadClient* client;
     uint64_t token;
-    bool several_lines;
+    bool several_blocks;
     uint32_t request;
   };
 
-  // A line's ready cycle, or kPending once the caller waits for it.
-  Cycle access_line(uint64_t line, Cycle at, Caller& caller, ReadCharge& charge);
-  void wait_for(uint32_t miss, Caller& caller, Cycle earliest);
+  // The cycle a lookup of `line` moving `bytes` starts: its bank's port and the data port free
+  // (called only if admits_).
+  Cycle admit(uint64_t line, uint64_t bytes, Cycle at);
+  // The bytes of [addr, end) within a line.
+  uint64_t bytes_in(uint64_t line, uint64_t addr, uint64_t end) const;
+  // A block's ready cycle, or kPending once the caller waits for it.
+  Cycle read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge);
+  void write_block(uint64_t block, Cycle at);
+  // Counts a merge into the in-flight block; returns its replay cycles (past the merge limit).
+  uint32_t merge(Block& b);
+  void wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t replay);
   void add_waiter(uint32_t miss, const Waiter& waiter);
-  Cycle miss(uint64_t line, uint32_t set, Line* ways, Cycle at, Caller& caller, ReadCharge& charge);
+  Cycle miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
+             ReadCharge& charge);
   // Sends a miss below at `at` (its MSHR taken); the below's answer: a cycle, or kPending.
   Cycle issue(uint32_t miss, Cycle at);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
-  uint32_t install(uint32_t set, Line* ways, const Line& line);  // evicting a victim if needed
+  uint32_t find(uint32_t set, uint64_t tag) const;  // the way holding tag, or kNone
+  // Gives a way of the set to `tag`, evicting a victim (its dirty blocks written back at `at`).
+  uint32_t allocate(uint32_t set, uint64_t tag, Cycle at);
+  Block& block_at(uint32_t set, uint32_t way, uint64_t block) {
+    return blocks_[((size_t(set) * config_.ways + way) << sector_shift_) + (block & sector_mask_)];
+  }
   template <class T>
   static uint32_t take(std::vector<T>& pool, std::vector<uint32_t>& free);
 
@@ -152,9 +201,16 @@ class Cache : public MemoryTarget, private ReadClient {
   MemoryTarget* below_;
   CacheRole role_;
   uint32_t sets_;
-  uint32_t set_shift_ = 0;   // log2(sets_) if sets_ is a power of two above 1, else 0
-  uint32_t line_shift_ = 0;  // log2(line_bytes)
-  std::vector<Line> lines_;  // sets_ x ways, set-major
+  uint32_t set_shift_ = 0;     // log2(sets_) if sets_ is a power of two above 1, else 0
+  uint32_t line_shift_ = 0;    // log2(line_bytes)
+  uint32_t block_shift_ = 0;   // log2(bytes of a block: the sector, or the line)
+  uint32_t sector_shift_ = 0;  // log2(blocks per line)
+  uint64_t sector_mask_ = 0;
+  bool admits_ = false;        // banks or the data port limit lookups
+  std::vector<Line> lines_;    // sets_ x ways, set-major
+  std::vector<Block> blocks_;  // lines_ x blocks per line
+  std::vector<Bank> banks_;
+  double port_free_ = 0;  // cycle (fractional) the data port is free from
   std::unique_ptr<ReplacementPolicy> policy_;
   // The cycles the MSHRs not holding a miss are free from, earliest first. An MSHR whose miss
   // has not learnt its data's cycle is in none of them.
@@ -167,7 +223,7 @@ class Cache : public MemoryTarget, private ReadClient {
   std::vector<Request> requests_;
   std::vector<uint32_t> free_requests_;
   Join join_{*this};
-  std::unordered_set<uint64_t> held_lines_;  // every line ever referenced: tells cold misses
+  std::unordered_set<uint64_t> held_blocks_;  // every block ever referenced: tells cold misses
   bool track_cold_ = false;
   double own_share_ = 1.0;
   CacheStats stats_;

@@ -10,6 +10,8 @@ std::string dram_config_problem(const DramConfig& c) {
   if (!(c.bytes_per_cycle > 0) || !std::isfinite(c.bytes_per_cycle))
     return "bytes_per_cycle must be positive";
   if (c.queue_depth == 0) return "queue_depth must be at least 1";
+  if (c.burst_bytes == 0 || (c.burst_bytes & (c.burst_bytes - 1)) != 0)
+    return "burst_bytes must be a power of two";
   return {};
 }
 
@@ -18,7 +20,12 @@ Dram::Dram(const DramConfig& config) : config_(config) {
   if (!problem.empty()) throw std::invalid_argument(problem);
 }
 
-Cycle Dram::read(uint64_t, uint32_t bytes, Cycle now) {
+Cycle Dram::read(uint64_t addr, uint32_t requested, Cycle now) {
+  // Whole bursts move: the bursts that [addr, addr + requested) touches.
+  uint64_t burst = config_.burst_bytes;
+  uint64_t begin = addr & ~(burst - 1);
+  uint64_t end = (addr + std::max<uint32_t>(requested, 1) + burst - 1) & ~(burst - 1);
+  uint64_t bytes = end - begin;
   // Requests whose transfer has started have left the queue.
   while (!waiting_.empty() && waiting_.top() <= double(now)) waiting_.pop();
   double arrival = double(now);
@@ -42,8 +49,9 @@ Cycle Dram::read(uint64_t, uint32_t bytes, Cycle now) {
 }
 
 void Dram::write(uint64_t addr, uint32_t bytes, Cycle now) {
+  uint64_t before = stats_.bytes;
   read(addr, bytes, now);
-  stats_.write_bytes += bytes;
+  stats_.write_bytes += stats_.bytes - before;
 }
 
 }  // namespace rtsim

@@ -1,5 +1,5 @@
 // DRAM behind the last cache level: one data bus of fixed peak bandwidth, a fixed access
-// latency, and a bounded request queue.
+// latency, and a bounded request queue. Transfers move whole bursts (burst_bytes).
 // Timing: a request takes the bus when it is free (first come, first served) for
 // bytes / bytes_per_cycle cycles, and its data is ready `latency` cycles after its transfer
 // ends. Bandwidth is never exceeded: transfers never overlap. When queue_depth requests are
@@ -24,13 +24,14 @@ struct DramConfig {
   double bytes_per_cycle = 32.0;  // bytes/cycle: peak bandwidth of the data bus
   uint32_t latency = 200;         // cycles: from the end of a transfer to data ready
   uint32_t queue_depth = 64;      // count: requests that may wait for the bus
+  uint32_t burst_bytes = 32;      // bytes: the smallest transfer, a power of two
 };
 
 std::string dram_config_problem(const DramConfig& config);
 
 struct DramStats {
   uint64_t requests = 0;
-  uint64_t bytes = 0;                 // reads and writes
+  uint64_t bytes = 0;                 // reads and writes, in whole bursts
   uint64_t write_bytes = 0;           // of them written
   double busy_cycles = 0;             // cycles the data bus was transferring
   uint64_t queue_stall_cycles = 0;    // cycles requests waited for room in the queue

@@ -53,7 +53,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   }
   for (uint32_t i = 0; i < config.rt_units; ++i) {
     std::string name = "rt" + std::to_string(i);
-    units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, config.l1,
+    units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, l1_as_built(config),
                                                     traversal_, clock_, config.sim.quantum_cycles,
                                                     control_));
     units_.back()->supply.bind(*supply);

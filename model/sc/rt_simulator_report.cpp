@@ -17,10 +17,21 @@ void report_cache(StatsRegistry& r, const std::string& p, const Cache& cache) {
     r.ratio(p + ".compulsory_share", p + ".cold_misses", p + ".misses");
   }
   r.counter(p + ".mshr_merges", s.mshr_merges);
+  r.counter(p + ".merge_limit_stalls", s.merge_limit_stalls);
   r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
+  r.counter(p + ".bank_conflicts", s.bank_conflicts);
+  r.counter(p + ".bank_stall_cycles", s.bank_stall_cycles);
+  r.counter(p + ".port_stall_cycles", s.port_stall_cycles);
   r.counter(p + ".evictions", s.evictions);
+  r.counter(p + ".bytes_read", s.bytes_read);
   r.counter(p + ".bytes_below", s.bytes_below);
+  r.counter(p + ".writes", s.writes);
+  r.counter(p + ".write_misses", s.write_misses);
   r.counter(p + ".write_bytes", s.write_bytes);
+  r.counter(p + ".writebacks", s.writebacks);
+  r.counter(p + ".writeback_bytes", s.writeback_bytes);
+  r.counter(p + ".local_reads", s.local_reads);
+  r.counter(p + ".local_misses", s.local_misses);
   r.ratio(p + ".hit_rate", p + ".hits", p + ".accesses");
   r.counter(p + ".served", s.hits + s.mshr_merges);
   r.ratio(p + ".served_rate", p + ".served", p + ".accesses");

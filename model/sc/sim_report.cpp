@@ -145,7 +145,13 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   double rays = double(std::max<uint64_t>(sim.rays(), 1));
   doc["stack"] = {{"spill_entries", r.value("rt.stack.spill_entries")},
                   {"refill_entries", r.value("rt.stack.refill_entries")},
-                  {"spills_per_ray", r.value("rt.stack.spill_entries") / rays}};
+                  {"spills_per_ray", r.value("rt.stack.spill_entries") / rays},
+                  {"refill_l1_reads", sum(r, c.rt_units, ".l1.local_reads")},
+                  {"refill_l1_misses", sum(r, c.rt_units, ".l1.local_misses")},
+                  {"refill_l2_misses", r.value("l2.local_misses")},
+                  {"l1_writeback_bytes", sum(r, c.rt_units, ".l1.writeback_bytes")},
+                  {"l2_writeback_bytes", r.value("l2.writeback_bytes")},
+                  {"dram_write_bytes", r.value("dram.write_bytes")}};
   doc["verify"] = info.verify ? verify_json(*info.verify) : Json{{"skipped", true}};
   const PixelBuffers& px = sim.collected().pixels();
   if (!px.cycles.empty())

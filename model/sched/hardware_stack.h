@@ -2,7 +2,10 @@
 // Timing assumptions: a step that pushes the on-chip stack past its depth writes the oldest
 // entries out (one posted write per step, entry_bytes each, to the ray's spill region); a pop
 // that finds the on-chip stack empty while entries are spilled reads back exactly what it needs
-// (one read per step, which the step waits for). The functional stack in TraversalState stays
+// (one read per step, which the step waits for). Spills live in local memory, cached like any
+// data: in a region per ray slot of the unit (the next ray in the slot reuses it, as GPU local
+// memory is reused), or, in treelet mode, where a ray moves between units, per ray context (its
+// entry in the ray buffer). The functional stack in TraversalState stays
 // whole: this model only counts where its entries live and what moving them costs.
 // Spill traffic as in Aila & Karras (HPG 2010), who name stack traffic the main auxiliary cost.
 #pragma once
@@ -30,16 +33,18 @@ struct StackTransfer {
 
 class HardwareStack {
  public:
-  // Spill regions: one per ray context, kRegionBytes each (entries wrap around within it).
+  // Spill regions: kRegionBytes each (entries wrap around within it).
   // Regions are one 64-byte line more than that apart: with a stride of exactly 4 KB the same
   // depth of every ray fell into the same few cache sets (1/64 of them with 64-byte lines),
   // and those sets thrashed.
-  static constexpr uint64_t kSpillBase = 0x7000'0000'0000ull;
+  static constexpr uint64_t kSpillBase = kLocalMemoryBase;
   static constexpr uint64_t kRegionBytes = 4096;
   static constexpr uint64_t kRegionStride = kRegionBytes + 64;
   static uint64_t region(uint32_t context) { return kSpillBase + context * kRegionStride; }
 
-  explicit HardwareStack(const StackConfig& config) : config_(config) {}
+  // slots_per_unit: regions per ray slot of a unit with that many slots; 0: per ray context.
+  HardwareStack(const StackConfig& config, uint32_t slots_per_unit)
+      : config_(config), slots_per_unit_(slots_per_unit) {}
 
   // A ray starts with its root entry on chip.
   void start(RayContext& ray) const {
@@ -56,9 +61,11 @@ class HardwareStack {
 
  private:
   uint64_t address(const RayContext& ray, uint32_t entry) const {
-    return region(ray.id) + (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
+    uint32_t owner = slots_per_unit_ ? ray.unit * slots_per_unit_ + ray.slot : ray.id;
+    return region(owner) + (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
   }
   StackConfig config_;
+  uint32_t slots_per_unit_;
 };
 
 }  // namespace rtsim

@@ -18,7 +18,7 @@ namespace rtsim {
 struct RayCost {
   uint32_t l1_accesses = 0, l1_hits = 0;  // line accesses of this ray's fetches at its L1
   uint32_t l2_accesses = 0, l2_hits = 0;  // and at the L2, for the L1's misses
-  uint64_t dram_bytes = 0;                // bytes the L2 fetched from DRAM, plus spill writes
+  uint64_t dram_bytes = 0;                // bytes the L2 fetched from DRAM for its reads
   uint32_t stack_spills = 0;              // entries written out of the hardware stack
   uint32_t stack_refills = 0;             // entries read back
   uint32_t postponed = 0;                 // times it waited in a treelet queue
@@ -27,7 +27,7 @@ struct RayCost {
 struct RayContext {
   Ray ray;
   uint64_t sequence = 0;  // position in the ray stream
-  uint32_t id = 0;        // index in the pool; names the ray's stack spill region
+  uint32_t id = 0;        // index in the pool; in treelet mode names its stack spill region
   TraversalState state;
   bool begun = false;           // ray setup done (TraversalUnit::begin)
   Cycle dispatched = 0;         // cycle the dispatcher handed the ray out

@@ -41,7 +41,8 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
       traversal_(traversal),
       node_treelet_(traversal.image().node_treelet),
       memory_(memory),
-      stack_(config.stack),
+      stack_(config.stack,
+             config.mode == TraversalMode::Treelet ? 0 : config.warps * config.warp_size),
       box_(config.box),
       triangle_(config.triangle) {
   std::string problem = rt_core_config_problem(config);

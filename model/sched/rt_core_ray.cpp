@@ -109,7 +109,6 @@ void RtCore::settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cy
   StackTransfer spill = stack_.settle(ray, kept, total);
   if (spill.bytes > 0) {
     memory_.write(spill.addr, spill.bytes, now);
-    ray.cost.dram_bytes += spill.bytes;  // spills are written around the caches
     stats_.spill_writes++;
     stats_.spill_entries += spill.entries;
   }

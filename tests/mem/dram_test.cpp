@@ -63,6 +63,18 @@ TEST(Dram, FullQueueDelaysArrivals) {
   EXPECT_EQ(dram.stats().queue_stall_cycles, 64u);
 }
 
+TEST(Dram, TransfersMoveWholeBursts) {
+  DramConfig c{32.0, 100, 8};
+  c.burst_bytes = 32;
+  Dram dram(c);
+  dram.write(0x1004, 8, 0);
+  EXPECT_EQ(dram.stats().write_bytes, 32u);
+  dram.write(0x101c, 40, 10);  // 0x101c..0x1043 touches the bursts at 0x1000, 0x1020, 0x1040
+  EXPECT_EQ(dram.stats().write_bytes, 32u + 96);
+  EXPECT_EQ(dram.read(0x2000, 64, 1000), 1000u + 2 + 100) << "aligned lines are whole bursts";
+  EXPECT_EQ(dram.stats().bytes, 32u + 96 + 64);
+}
+
 TEST(Dram, RejectsImpossibleConfigs) {
   EXPECT_EQ(dram_config_problem(config(0, 10, 4)), "bytes_per_cycle must be positive");
   EXPECT_EQ(dram_config_problem(config(4, 10, 0)), "queue_depth must be at least 1");

@@ -85,42 +85,51 @@ TEST(SimReport, WritesStatsConfigAndPixelFiles) {
   std::filesystem::remove_all(dir);
 }
 
-// Writes 1 KiB, then reads a line, through its L1 at cycle 0.
+// Writes `bytes` of local memory, then reads its first line back, through its L1 at cycle 0.
 struct Writer : sc_core::sc_module {
   L1Module l1;
   test::RecordingClient client;
+  uint32_t bytes;
   SC_HAS_PROCESS(Writer);
-  Writer(sc_core::sc_module_name name, const Clock& clock)
-      : sc_module(name), l1("l1", CacheConfig{1024, 64, 2, "lru", 2, 4}, clock) {
+  Writer(sc_core::sc_module_name name, const Clock& clock, uint32_t bytes)
+      : sc_module(name), l1("l1", CacheConfig{1024, 64, 2, "lru", 2, 4}, clock), bytes(bytes) {
     SC_METHOD(run);
   }
   void run() {
-    l1.cache().write(0x8000, 1024, 0);
+    l1.cache().write(kLocalMemoryBase, bytes, 0);
     ReadCharge charge;
-    l1.cache().read(0x1000, 64, 0, &client, 0, charge);
+    l1.cache().read(kLocalMemoryBase, 64, 0, &client, 0, charge);
   }
 };
 
-TEST(SimReport, SpillWritesGoAroundTheCachesAndTakeTheBus) {
-  std::string result = run_in_child([] {
+// "L1 write-backs, L2 write-backs, DRAM bytes written, L2 hits, ready cycle of the read".
+std::string write_then_read(uint32_t bytes) {
+  return run_in_child([bytes] {
     Clock clock;
-    Writer writer("writer", clock);
+    Writer writer("writer", clock, bytes);
     SharedCacheModule l2("l2", CacheConfig{4096, 64, 4, "lru", 10, 4}, clock);
     DramModule dram("dram", DramConfig{16.0, 100, 8}, clock);
     writer.l1.out.bind(l2.in);
     l2.out.bind(dram.in);
     sc_core::sc_start();
-    const Cache& l1 = writer.l1.cache();
-    return std::to_string(l1.stats().write_bytes) + " " +
-           std::to_string(dram.dram().stats().write_bytes) + " " +
-           std::to_string(l1.stats().accesses) + " " + std::to_string(l2.cache().stats().accesses) +
-           " " + std::to_string(writer.client.done.at(0).ready);
+    const CacheStats& s1 = writer.l1.cache().stats();
+    const CacheStats& s2 = l2.cache().stats();
+    return std::to_string(s1.writebacks) + " " + std::to_string(s2.writebacks) + " " +
+           std::to_string(dram.dram().stats().write_bytes) + " " + std::to_string(s2.hits) + " " +
+           std::to_string(writer.client.done.at(0).ready);
   });
-  // The write passed both caches (no access counted; it takes each level's 2 and 10 cycles)
-  // and holds the bus for 1024 / 16 = 64 cycles from cycle 12, so the read's miss, at the DRAM
-  // at cycle 2 + 10 too but after it, waits: its 4-cycle transfer ends at 80, its data is ready
-  // 100 cycles later.
-  EXPECT_EQ(result, "1024 1024 1 1 " + std::to_string(12 + 64 + 4 + 100));
+}
+
+TEST(SimReport, SpillsAreWrittenBackThroughTheCachesToDram) {
+  // 2 KiB through a 1 KiB L1 (8 sets of 2 ways): its first 16 lines are written back to the
+  // L2 (after the L1's 2-cycle tag check), and the read's miss evicts one more; the L2 holds
+  // them all, and the read finds its line there: ready at 2 + 10.
+  EXPECT_EQ(write_then_read(2048), "17 0 0 1 12");
+  // 8 KiB: 113 lines reach the 4 KiB L2 (16 sets of 4 ways), 8 in set 0 and 7 in each other
+  // set, so it writes 4 + 15 x 3 back to DRAM, and one more for the read's miss in set 0:
+  // 50 lines, 3200 bytes.
+  std::string big = write_then_read(8192);
+  EXPECT_EQ(big.substr(0, big.rfind(' ')), "113 50 3200 0");
 }
 
 }  // namespace

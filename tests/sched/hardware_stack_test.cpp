@@ -10,7 +10,7 @@ namespace rtsim {
 namespace {
 
 TEST(HardwareStack, SpillsTheOldestEntriesPastTheDepth) {
-  HardwareStack stack({4, 8});
+  HardwareStack stack({4, 8}, 0);
   RayContext ray;
   ray.id = 3;
   stack.start(ray);
@@ -24,8 +24,23 @@ TEST(HardwareStack, SpillsTheOldestEntriesPastTheDepth) {
   EXPECT_EQ(ray.cost.stack_spills, 3u);
 }
 
+TEST(HardwareStack, SlotRegionsBelongToTheSlotNotTheRay) {
+  HardwareStack stack({4, 8}, 256);  // units of 256 ray slots
+  RayContext first, next;
+  first.id = 3;
+  next.id = 9;
+  for (RayContext* ray : {&first, &next}) {
+    ray->unit = 2;
+    ray->slot = 5;
+    stack.start(*ray);
+  }
+  uint64_t slot_region = HardwareStack::region(2 * 256 + 5);
+  EXPECT_EQ(stack.settle(first, 0, 7).addr, slot_region);
+  EXPECT_EQ(stack.settle(next, 0, 7).addr, slot_region) << "the next ray in the slot reuses it";
+}
+
 TEST(HardwareStack, RefillsExactlyWhatAPopNeeds) {
-  HardwareStack stack({4, 8});
+  HardwareStack stack({4, 8}, 0);
   RayContext ray;
   stack.start(ray);
   stack.settle(ray, 0, 7);  // 4 on chip, 3 spilled
@@ -45,7 +60,7 @@ TEST(HardwareStack, RegionsSpreadOverCacheSets) {
 }
 
 TEST(HardwareStack, DeepStackNeverSpillsAndClearFreesAll) {
-  HardwareStack stack({64, 8});
+  HardwareStack stack({64, 8}, 0);
   RayContext ray;
   stack.start(ray);
   EXPECT_EQ(stack.settle(ray, 0, 40).bytes, 0u);
