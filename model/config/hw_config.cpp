@@ -126,7 +126,19 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
       uint32_t(tq.integer("dequeue_latency", c.treelet_queues.dequeue_latency, "cycles",
                           "from a unit taking a ray to its next step", 0, 100000));
 
-  read_cache(r.section("l2"), c.l2, "the shared L2");
+  ConfigReader l2 = r.section("l2");
+  read_cache(l2, c.l2, "the shared L2 (all slices)");
+  c.l2_layout.slices = uint32_t(l2.integer(
+      "slices", c.l2_layout.slices, "slices",
+      "address-hashed slices of size_bytes / slices each; mshrs, banks and bandwidth are per slice",
+      1, 1024));
+  ConfigReader xbar = r.section("xbar");
+  c.l2_layout.crossbar.latency =
+      uint32_t(xbar.integer("latency", c.l2_layout.crossbar.latency, "cycles",
+                            "crossbar between L1s and L2 slices, each way", 0, 100000));
+  c.l2_layout.crossbar.bytes_per_cycle = xbar.real(
+      "bytes_per_cycle", c.l2_layout.crossbar.bytes_per_cycle, "bytes/cycle",
+      "each crossbar port (one per RT unit, one per slice), each direction; 0 = no limit", 0, 1e6);
 
   ConfigReader dram = r.section("dram");
   c.dram.bytes_per_cycle = dram.real("bytes_per_cycle", c.dram.bytes_per_cycle, "bytes/cycle",
@@ -199,6 +211,7 @@ std::string hw_config_problem(const HwConfig& c) {
   std::string p = section("rt", rt_core_config_problem(c.rt));
   if (p.empty()) p = section("rt.l1", cache_config_problem(c.l1));
   if (p.empty()) p = section("l2", cache_config_problem(c.l2));
+  if (p.empty()) p = section("l2", l2_layout_problem(c.l2, c.l2_layout));
   if (p.empty()) p = section("dram", dram_config_problem(c.dram));
   if (p.empty()) p = section("dispatch", dispatch_config_problem(c.dispatch));
   if (p.empty()) p = section("treelet_queues", treelet_queue_config_problem(c.treelet_queues));

@@ -12,6 +12,7 @@
 
 #include "model/bvh/bvh_config.h"
 #include "model/mem/cache.h"
+#include "model/mem/crossbar.h"
 #include "model/mem/dram.h"
 #include "model/sched/dispatcher.h"
 #include "model/sched/rt_core.h"
@@ -35,6 +36,7 @@ struct HwConfig {
   CacheConfig l1{32 * 1024, 64, 4, "lru", 20, 16};
   TreeletQueueConfig treelet_queues;
   CacheConfig l2{2 * 1024 * 1024, 64, 16, "lru", 80, 128};
+  L2Layout l2_layout;  // slices and the crossbar in front of them
   DramConfig dram{64.0, 200, 128};
   BvhConfig bvh;
 };

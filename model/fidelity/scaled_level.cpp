@@ -215,7 +215,7 @@ FidelityResult run_scaled_level(const HwConfig& config, const BvhImage& image,
 
   // First references, shared out over the ray types: the fetched ones by their L2 misses,
   // the absent units' ones by their L2 accesses.
-  const CacheStats& l2 = sim.l2_stats();
+  CacheStats l2 = sim.l2_stats();
   double line = double(config.l2.line_bytes);
   const auto& totals = collector.totals();
   double misses = 0, accesses = 0;

@@ -22,6 +22,33 @@ bool fetched_here(uint64_t block, double share) {
 
 }  // namespace
 
+CacheStats& CacheStats::operator+=(const CacheStats& o) {
+  for (auto [mine, theirs] : {std::pair{&accesses, o.accesses},
+                              {&hits, o.hits},
+                              {&misses, o.misses},
+                              {&cold_misses, o.cold_misses},
+                              {&absent_fills, o.absent_fills},
+                              {&mshr_merges, o.mshr_merges},
+                              {&merge_limit_stalls, o.merge_limit_stalls},
+                              {&mshr_stall_cycles, o.mshr_stall_cycles},
+                              {&bank_conflicts, o.bank_conflicts},
+                              {&bank_stall_cycles, o.bank_stall_cycles},
+                              {&port_stall_cycles, o.port_stall_cycles},
+                              {&evictions, o.evictions},
+                              {&bytes_read, o.bytes_read},
+                              {&bytes_below, o.bytes_below},
+                              {&writes, o.writes},
+                              {&write_misses, o.write_misses},
+                              {&write_bytes, o.write_bytes},
+                              {&writebacks, o.writebacks},
+                              {&writeback_bytes, o.writeback_bytes},
+                              {&local_reads, o.local_reads},
+                              {&local_misses, o.local_misses}})
+    *mine += theirs;
+  static_assert(sizeof(CacheStats) == 21 * sizeof(uint64_t), "a counter is missing above");
+  return *this;
+}
+
 std::string cache_config_problem(const CacheConfig& c) {
   if (!power_of_two(c.line_bytes)) return "line_bytes must be a power of two";
   if (c.sector_bytes != 0 &&
@@ -50,8 +77,8 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   sector_shift_ = line_shift_ - block_shift_;
   sector_mask_ = (uint64_t(1) << sector_shift_) - 1;
   admits_ = config.bank_ports > 0 || config.bytes_per_cycle > 0;
-  lines_.resize(size_t(sets_) * config.ways);
-  blocks_.resize(lines_.size() << sector_shift_);
+  tags_.assign(size_t(sets_) * config.ways, kNoTag);
+  blocks_.resize(tags_.size() << sector_shift_);
   banks_.resize(config.banks);
   policy_ = make_replacement_policy(config.replacement, sets_, config.ways);
   for (uint32_t i = 0; i < config.mshrs; ++i) free_mshrs_.push(0);
@@ -155,9 +182,9 @@ bool Cache::contains(uint64_t addr) const {
 }
 
 uint32_t Cache::find(uint32_t set, uint64_t tag) const {
-  const Line* ways = &lines_[size_t(set) * config_.ways];
+  const uint64_t* ways = &tags_[size_t(set) * config_.ways];
   for (uint32_t w = 0; w < config_.ways; ++w)
-    if (ways[w].valid && ways[w].tag == tag) return w;
+    if (ways[w] == tag) return w;
   return kNone;
 }
 
@@ -182,7 +209,7 @@ Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& ch
 
   if (way != kNone) {
     policy_->touch(set, way);
-    Block& b = block_at(set, way, block);
+    Block& b = block_of_line(size_t(set) * config_.ways + way, block);
     if (b.valid && (b.ready == kPending || b.ready > at)) {
       uint32_t replay = merge(b);
       if (b.ready != kPending) return std::max(b.ready + replay, hit_ready);
@@ -337,26 +364,26 @@ void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charg
 }
 
 uint32_t Cache::allocate(uint32_t set, uint64_t tag, Cycle at) {
-  Line* ways = &lines_[size_t(set) * config_.ways];
+  uint64_t* ways = &tags_[size_t(set) * config_.ways];
   uint32_t victim = config_.ways;
   for (uint32_t w = 0; w < config_.ways && victim == config_.ways; ++w)
-    if (!ways[w].valid) victim = w;
+    if (ways[w] == kNoTag) victim = w;
   if (victim == config_.ways) {
     victim = policy_->victim(set);
     stats_.evictions++;
   }
-  Line& line = ways[victim];
+  uint64_t& line_tag = ways[victim];
   Block* blocks = &blocks_[(size_t(set) * config_.ways + victim) << sector_shift_];
   for (uint64_t s = 0; s <= sector_mask_; ++s) {
-    if (line.valid && blocks[s].valid && blocks[s].dirty) {
+    if (line_tag != kNoTag && blocks[s].valid && blocks[s].dirty) {
       stats_.writebacks++;
       stats_.writeback_bytes += block_bytes();
-      uint64_t old_block = ((line.tag * sets_ + set) << sector_shift_) + s;
+      uint64_t old_block = ((line_tag * sets_ + set) << sector_shift_) + s;
       below_->write(old_block << block_shift_, block_bytes(), at + config_.hit_latency);
     }
     blocks[s] = Block{};
   }
-  line = Line{tag, true};
+  line_tag = tag;
   policy_->insert(set, victim);
   return victim;
 }

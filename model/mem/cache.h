@@ -77,6 +77,7 @@ struct CacheStats {
   uint64_t writeback_bytes = 0;     // their bytes
   uint64_t local_reads = 0;         // reads of local memory (stack refills), as requests
   uint64_t local_misses = 0;        // their block misses
+  CacheStats& operator+=(const CacheStats& o);
 };
 
 class Cache : public MemoryTarget, private ReadClient {
@@ -111,11 +112,8 @@ class Cache : public MemoryTarget, private ReadClient {
 
  private:
   static constexpr uint32_t kNone = ~0u;
-  struct Line {
-    uint64_t tag = 0;
-    bool valid = false;
-  };
-  struct Block {            // a sector of a line, or the whole line
+  static constexpr uint64_t kNoTag = ~uint64_t(0);  // the tag of an invalid line: no address has it
+  struct Block {                                    // a sector of a line, or the whole line
     Cycle ready = 0;        // kPending: its miss (below) has not learnt its data's cycle
     uint32_t miss = kNone;  // that miss, while ready is kPending
     uint16_t merges = 0;    // requests merged into its last miss
@@ -185,7 +183,10 @@ class Cache : public MemoryTarget, private ReadClient {
   // Gives a way of the set to `tag`, evicting a victim (its dirty blocks written back at `at`).
   uint32_t allocate(uint32_t set, uint64_t tag, Cycle at);
   Block& block_at(uint32_t set, uint32_t way, uint64_t block) {
-    return blocks_[((size_t(set) * config_.ways + way) << sector_shift_) + (block & sector_mask_)];
+    return block_of_line(size_t(set) * config_.ways + way, block);
+  }
+  Block& block_of_line(size_t line_index, uint64_t block) {
+    return blocks_[(line_index << sector_shift_) + (block & sector_mask_)];
   }
   template <class T>
   static uint32_t take(std::vector<T>& pool, std::vector<uint32_t>& free);
@@ -206,9 +207,9 @@ class Cache : public MemoryTarget, private ReadClient {
   uint32_t block_shift_ = 0;   // log2(bytes of a block: the sector, or the line)
   uint32_t sector_shift_ = 0;  // log2(blocks per line)
   uint64_t sector_mask_ = 0;
-  bool admits_ = false;        // banks or the data port limit lookups
-  std::vector<Line> lines_;    // sets_ x ways, set-major
-  std::vector<Block> blocks_;  // lines_ x blocks per line
+  bool admits_ = false;         // banks or the data port limit lookups
+  std::vector<uint64_t> tags_;  // of the lines, sets_ x ways, set-major
+  std::vector<Block> blocks_;   // tags_ x blocks per line
   std::vector<Bank> banks_;
   double port_free_ = 0;  // cycle (fractional) the data port is free from
   std::unique_ptr<ReplacementPolicy> policy_;

@@ -31,9 +31,10 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);
   // The L1s send misses and writes after their tag check: the L2 may serve that far ahead.
-  l2_ = std::make_unique<SharedCacheModule>("l2", config.l2, clock_, config.l1.hit_latency,
+  l2_ = std::make_unique<SharedCacheModule>("l2", config.l2, clock_, config.l2_layout,
+                                            config.l1.hit_latency,
                                             [this](std::exception_ptr e) { control_.fail(e); });
-  l2_->cache().track_cold_misses();
+  l2_->track_cold_misses();
   if (bind_memory) {
     bind_memory(l2_->out);
   } else {
@@ -77,12 +78,12 @@ void RtSimulator::run() {
         " units unfinished (a unit slept with nothing to wake it); state:\n" + dump());
 }
 
-const CacheStats& RtSimulator::l2_stats() const {
-  return l2_->cache().stats();
+CacheStats RtSimulator::l2_stats() const {
+  return l2_->stats();
 }
 
 void RtSimulator::share_l2_first_references(double own_share) {
-  l2_->cache().share_first_references(own_share);
+  l2_->share_first_references(own_share);
 }
 
 Cycle RtSimulator::cycles() const {

@@ -53,7 +53,7 @@ class RtSimulator {
   uint64_t rays() const { return collector_.rays(); }
   const SimStatsCollector& collected() const { return collector_; }
   const HwConfig& config() const { return config_; }
-  const CacheStats& l2_stats() const;
+  CacheStats l2_stats() const;  // summed over the slices
   // Before run(): the L2 stands in for that of a machine of which this one has own_share of the
   // RT units (Cache::share_first_references).
   void share_l2_first_references(double own_share);

@@ -7,12 +7,11 @@
 namespace rtsim {
 namespace {
 
-void report_cache(StatsRegistry& r, const std::string& p, const Cache& cache) {
-  const CacheStats& s = cache.stats();
+void report_cache(StatsRegistry& r, const std::string& p, const CacheStats& s, bool cold) {
   r.counter(p + ".accesses", s.accesses);
   r.counter(p + ".hits", s.hits);
   r.counter(p + ".misses", s.misses);
-  if (cache.tracks_cold_misses()) {
+  if (cold) {
     r.counter(p + ".cold_misses", s.cold_misses);
     r.ratio(p + ".compulsory_share", p + ".cold_misses", p + ".misses");
   }
@@ -35,6 +34,42 @@ void report_cache(StatsRegistry& r, const std::string& p, const Cache& cache) {
   r.ratio(p + ".hit_rate", p + ".hits", p + ".accesses");
   r.counter(p + ".served", s.hits + s.mshr_merges);
   r.ratio(p + ".served_rate", p + ".served", p + ".accesses");
+}
+
+void report_link(StatsRegistry& r, const std::string& p, const Link& link, double peak) {
+  const LinkStats& s = link.stats();
+  r.counter(p + ".transfers", s.transfers);
+  r.counter(p + ".bytes", s.bytes);
+  r.counter(p + ".stall_cycles", s.stall_cycles);
+  if (peak > 0) r.ratio(p + ".utilisation", p + ".bytes", "cycles", 1.0 / peak);
+}
+
+// Per slice: its own counts, and the crossbar port in front of it; per unit: its port.
+void report_l2(StatsRegistry& r, const SharedCacheModule& l2) {
+  report_cache(r, "l2", l2.stats(), l2.tracks_cold_misses());
+  const Crossbar& xbar = l2.crossbar();
+  double peak = xbar.config().bytes_per_cycle;
+  if (l2.slice_count() > 1)
+    for (uint32_t i = 0; i < l2.slice_count(); ++i) {
+      const CacheStats& s = l2.slice(i).stats();
+      std::string p = "l2.slice" + std::to_string(i);
+      r.counter(p + ".accesses", s.accesses);
+      r.counter(p + ".misses", s.misses);
+      r.counter(p + ".bank_stall_cycles", s.bank_stall_cycles);
+      r.counter(p + ".port_stall_cycles", s.port_stall_cycles);
+      r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
+    }
+  if (xbar.config().latency == 0 && peak == 0) return;  // no crossbar modelled
+  for (uint32_t i = 0; i < xbar.slices(); ++i) {
+    std::string p = "xbar.slice" + std::to_string(i);
+    report_link(r, p + ".in", xbar.slice_in(i), peak);
+    report_link(r, p + ".out", xbar.slice_out(i), peak);
+  }
+  for (uint32_t i = 0; i < xbar.units(); ++i) {
+    std::string p = "xbar.rt" + std::to_string(i);
+    report_link(r, p + ".up", xbar.unit_up(i), peak);
+    report_link(r, p + ".down", xbar.unit_down(i), peak);
+  }
 }
 
 void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPool& pool) {
@@ -115,7 +150,7 @@ void RtSimulator::report(StatsRegistry& r) const {
             1.0 / config_.rt.issue_per_cycle);
     report_test_units(r, p + ".box", core.box());
     report_test_units(r, p + ".triangle", core.triangle());
-    report_cache(r, p + ".l1", unit->l1.cache());
+    report_cache(r, p + ".l1", unit->l1.cache().stats(), false);
     total.steps += steps;
     total.warp_steps += s.warp_steps;
     total.active_lanes += s.active_lanes;
@@ -142,7 +177,7 @@ void RtSimulator::report(StatsRegistry& r) const {
   r.ratio("rt.slot_occupancy", "rt.ray_slot_cycles", "cycles",
           1.0 / (double(slots) * config_.rt_units));
 
-  report_cache(r, "l2", l2_->cache());
+  report_l2(r, *l2_);
   if (dram_) {
     const DramStats& s = dram_->dram().stats();
     r.counter("dram.requests", s.requests);

@@ -8,20 +8,57 @@
 
 namespace rtsim {
 
+namespace {
+
+CacheConfig slice_config(const CacheConfig& config, uint32_t slices) {
+  CacheConfig c = config;
+  c.size_bytes = config.size_bytes / std::max<uint32_t>(slices, 1);
+  return c;
+}
+
+}  // namespace
+
 SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config,
-                                     const Clock& clock, uint32_t lookahead,
+                                     const Clock& clock, const L2Layout& layout, uint32_t lookahead,
                                      std::function<void(std::exception_ptr)> on_error)
     : sc_module(name),
       in("in"),
       out("out"),
       clock_(clock),
-      lookahead_(std::max<uint32_t>(lookahead, 1)),
+      lookahead_(std::max<uint32_t>(lookahead + layout.crossbar.latency, 1)),
       on_error_(std::move(on_error)),
-      cache_(config, this, CacheRole::L2) {
+      crossbar_(layout.crossbar, layout.slices) {
+  std::string problem = l2_layout_problem(config, layout);
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  MemoryTarget* below = this;
+  for (uint32_t i = 0; i < layout.slices; ++i)
+    slices_.push_back(
+        std::make_unique<Cache>(slice_config(config, layout.slices), below, CacheRole::L2));
+  line_shift_ = uint32_t(__builtin_ctz(config.line_bytes));
   in.register_nb_transport_fw(this, &SharedCacheModule::nb_transport_fw);
   SC_METHOD(serve);
   sensitive << wake_;
   dont_initialize();
+}
+
+uint32_t SharedCacheModule::slice_of(uint64_t addr) const {
+  if (slices_.size() == 1) return 0;
+  uint64_t h = (addr >> line_shift_) * 0x9e3779b97f4a7c15ull;  // Fibonacci hashing of the line
+  return uint32_t((h >> 32) % slices_.size());
+}
+
+CacheStats SharedCacheModule::stats() const {
+  CacheStats sum;
+  for (const auto& slice : slices_) sum += slice->stats();
+  return sum;
+}
+
+void SharedCacheModule::track_cold_misses() {
+  for (auto& slice : slices_) slice->track_cold_misses();
+}
+
+void SharedCacheModule::share_first_references(double own_share) {
+  for (auto& slice : slices_) slice->share_first_references(own_share);
 }
 
 void SharedCacheModule::add_job(const Job& job, Cycle at) {
@@ -49,7 +86,16 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
     trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
     return tlm::TLM_COMPLETED;
   }
-  Cycle at = clock_.cycles(sc_core::sc_time_stamp() + delay);
+  Job job;
+  job.kind = write ? JobKind::Write : JobKind::Read;
+  job.port = port;
+  job.slice = slice_of(trans.get_address());
+  job.trans = write ? nullptr : &trans;
+  job.addr = trans.get_address();
+  job.bytes = trans.get_data_length();
+  Cycle sent = clock_.cycles(sc_core::sc_time_stamp() + delay);
+  Cycle at = crossbar_.to_slice(uint32_t(port), job.slice, sent,
+                                write ? job.bytes : Crossbar::kRequestBytes);
   // During serve() an L1 may send a miss that waited for an MSHR freed by a response: dated at
   // or after the job being served, it joins the calendar in order. From outside, a request
   // dated inside the window already served breaks the initiators' promise.
@@ -58,12 +104,6 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
                            " came after cycle " + std::to_string(served_until_) +
                            " was served: its initiator breaks the lookahead of " +
                            std::to_string(lookahead_) + " cycles");
-  Job job;
-  job.kind = write ? JobKind::Write : JobKind::Read;
-  job.port = port;
-  job.trans = write ? nullptr : &trans;
-  job.addr = trans.get_address();
-  job.bytes = trans.get_data_length();
   add_job(job, at);
   if (write) {
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
@@ -98,14 +138,14 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
   switch (job.kind) {
     case JobKind::Read: {
       ReadCharge charge;
-      Cycle ready = cache_.read(job.addr, job.bytes, at, this, id, charge);
+      Cycle ready = slices_[job.slice]->read(job.addr, job.bytes, at, this, id, charge);
       jobs_[id].charge += charge;
       if (ready != kPending) respond(id, ready);
       return;
     }
     case JobKind::Write:
       free_jobs_.push_back(id);
-      cache_.write(job.addr, job.bytes, at);
+      slices_[job.slice]->write(job.addr, job.bytes, at);
       return;
     case JobKind::DramRead: {
       free_jobs_.push_back(id);
@@ -153,7 +193,8 @@ void SharedCacheModule::respond(uint32_t id, Cycle ready) {
   if (extension) extension->charge = job.charge;
   job.trans->set_response_status(tlm::TLM_OK_RESPONSE);
   tlm::tlm_phase phase = tlm::BEGIN_RESP;
-  sc_core::sc_time delay = clock_.time(ready) - stamp_;  // serve() runs at stamp_
+  Cycle arrived = crossbar_.to_unit(job.slice, uint32_t(job.port), ready, job.bytes);
+  sc_core::sc_time delay = clock_.time(arrived) - stamp_;  // serve() runs at stamp_
   in[job.port]->nb_transport_bw(*job.trans, phase, delay);
 }
 

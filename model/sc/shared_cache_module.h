@@ -1,4 +1,5 @@
-// The shared L2 as an sc_module that serves its requests in simulated-time order.
+// The shared L2 as an sc_module that serves its requests in simulated-time order: the crossbar
+// from the RT units' L1s (model/mem/crossbar.h) and the L2's address-hashed slices behind it.
 // Initiators (the RT units' L1s, model/sc/tlm_memory.h) bind to `in` and send TLM-2.0
 // approximately-timed transactions: BEGIN_REQ dated by its delay, answered END_REQ at once
 // (the request queue has no bound); the response is BEGIN_RESP, sent as soon as the data's
@@ -11,6 +12,10 @@
 // non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
 // The DRAM is reached through `out` by the base protocol's blocking transport (loosely timed),
 // called at the request's own cycle, so any loosely-timed TLM memory can be bound there.
+// A request crosses the crossbar to its slice (slice_of: a hash of the line address) when it
+// arrives, and is queued for the cycle it reaches the slice; its data crosses back when its
+// cycle is known. Crossbar links accept bookings in any order of their cycles, so neither
+// direction delays a request by one dated later.
 // One SC_METHOD, woken only at cycles that have requests or DRAM accesses to serve. With a
 // lookahead of L cycles (every initiator dates its requests at least L cycles after the
 // current simulated time: an L1 sends a miss after its tag check) it wakes at the cycle c of
@@ -22,6 +27,8 @@
 
 #include <exception>
 #include <functional>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include <systemc>
@@ -30,6 +37,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 
 #include "model/mem/cache.h"
+#include "model/mem/crossbar.h"
 #include "model/sc/clock.h"
 #include "model/sched/event_queue.h"
 
@@ -43,11 +51,19 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   SC_HAS_PROCESS(SharedCacheModule);
   // on_error receives what serving a request threw (a failed DRAM access); without it the
   // exception leaves the SystemC kernel.
-  // lookahead: see above (0 for initiators that promise nothing).
+  // lookahead: see above (0 for initiators that promise nothing); the crossbar's latency adds
+  // to it. Throws std::invalid_argument for an impossible config or layout.
   SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
-                    uint32_t lookahead = 0, std::function<void(std::exception_ptr)> on_error = {});
-  Cache& cache() { return cache_; }
-  const Cache& cache() const { return cache_; }
+                    const L2Layout& layout = {}, uint32_t lookahead = 0,
+                    std::function<void(std::exception_ptr)> on_error = {});
+  uint32_t slice_count() const { return uint32_t(slices_.size()); }
+  const Cache& slice(uint32_t i) const { return *slices_[i]; }
+  uint32_t slice_of(uint64_t addr) const;
+  CacheStats stats() const;  // summed over the slices
+  const Crossbar& crossbar() const { return crossbar_; }
+  void track_cold_misses();
+  bool tracks_cold_misses() const { return slices_[0]->tracks_cold_misses(); }
+  void share_first_references(double own_share);
   size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served
 
  private:
@@ -55,6 +71,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   struct Job {
     JobKind kind = JobKind::Read;
     int port = 0;
+    uint32_t slice = 0;
     tlm::tlm_generic_payload* trans = nullptr;  // Read: the initiator's transaction
     uint64_t addr = 0;
     uint32_t bytes = 0;
@@ -80,7 +97,9 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   Clock clock_;
   uint32_t lookahead_;  // at least 1: a wake-up at cycle c serves what is dated before c + it
   std::function<void(std::exception_ptr)> on_error_;
-  Cache cache_;
+  std::vector<std::unique_ptr<Cache>> slices_;
+  uint32_t line_shift_ = 0;
+  Crossbar crossbar_;
   EventQueue events_;  // job ids at their cycles
   std::vector<Job> jobs_;
   std::vector<uint32_t> free_jobs_;

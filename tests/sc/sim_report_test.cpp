@@ -113,7 +113,7 @@ std::string write_then_read(uint32_t bytes) {
     l2.out.bind(dram.in);
     sc_core::sc_start();
     const CacheStats& s1 = writer.l1.cache().stats();
-    const CacheStats& s2 = l2.cache().stats();
+    CacheStats s2 = l2.stats();
     return std::to_string(s1.writebacks) + " " + std::to_string(s2.writebacks) + " " +
            std::to_string(dram.dram().stats().write_bytes) + " " + std::to_string(s2.hits) + " " +
            std::to_string(writer.client.done.at(0).ready);

@@ -4,6 +4,7 @@
 // TLM memory bound where the DRAM would be.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <memory>
 
@@ -80,8 +81,8 @@ CacheConfig l2_config(uint32_t hit_latency, uint32_t mshrs) {
 
 // An approximately-timed requester straight at an L2 (10-cycle tag check) in front of a DRAM.
 struct L2Bench {
-  L2Bench(uint32_t mshrs, const DramConfig& dram_config)
-      : l2("l2", l2_config(10, mshrs), clock), dram("dram", dram_config, clock) {
+  L2Bench(uint32_t mshrs, const DramConfig& dram_config, const L2Layout& layout = {})
+      : l2("l2", l2_config(10, mshrs), clock, layout), dram("dram", dram_config, clock) {
     cpu.out.bind(l2.in);
     l2.out.bind(dram.in);
   }
@@ -114,7 +115,33 @@ TEST(TlmMemory, ManyIndependentMissesSaturateTheDramBandwidth) {
   double span = double(last - 100 - 10);
   double achieved = double(bench.dram.dram().stats().bytes) / span;
   EXPECT_NEAR(achieved / 16.0, 1.0, 0.05) << "bytes per cycle against the configured peak";
-  EXPECT_GT(bench.l2.cache().stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
+  EXPECT_GT(bench.l2.stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
+}
+
+TEST(TlmMemory, TheCrossbarAddsItsLatencyBothWaysAndItsPortsBoundTheBandwidth) {
+  L2Layout layout;
+  layout.slices = 4;
+  layout.crossbar = {5, 16.0};  // a 64-byte line holds a link for 4 cycles
+  L2Bench bench(8, DramConfig{64.0, 300, 64}, layout);
+  AtRequester& cpu = bench.cpu;
+  cpu.script = {{0x0, 100}};
+  for (uint64_t line = 0; line < 8; ++line) cpu.script.push_back({line * 64, 2000 + line});
+  for (uint64_t line = 1; line < 8; ++line) cpu.script.push_back({line * 64, 5000});
+  sc_core::sc_start();
+  // The request (8 bytes, one cycle on each link) crosses in 5 cycles; the L2's tag check, the
+  // DRAM's cycle and latency; the line crosses back: 3 more cycles on each link and 5 between.
+  EXPECT_EQ(cpu.ready[0], 100u + 5 + 10 + 1 + 300 + 3 + 5 + 3);
+  // Eight misses to the four slices, one a cycle, come back through the unit's one port.
+  std::vector<Cycle> back(cpu.ready.begin() + 9, cpu.ready.end());
+  std::sort(back.begin(), back.end());
+  EXPECT_EQ(back.front(), 5000u + 5 + 10 + 3 + 5 + 3) << "L2 hits, unloaded";
+  EXPECT_EQ(back.back() - back.front(), 6u * 4) << "seven lines through one port: 4 cycles each";
+  CacheStats sum;
+  for (uint32_t i = 0; i < 4; ++i) sum += bench.l2.slice(i).stats();
+  EXPECT_EQ(sum.accesses, bench.l2.stats().accesses);
+  uint32_t used = 0;
+  for (uint32_t i = 0; i < 4; ++i) used += bench.l2.slice(i).stats().accesses > 0;
+  EXPECT_EQ(used, 4u) << "lines hash over all slices";
 }
 
 // Reads through an L1 from a thread at given cycles; records each read's ready cycle.
@@ -184,7 +211,7 @@ TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   ASSERT_EQ(other.ready.size(), 1u);
   EXPECT_EQ(other.ready[0], 300u + 2 + 10) << "another unit's L1 miss hits in the L2";
   EXPECT_EQ(other.charge[0].l2_hits, 1u);
-  EXPECT_EQ(l2.cache().stats().misses, 1u);
+  EXPECT_EQ(l2.stats().misses, 1u);
   EXPECT_EQ(dram.dram().stats().bytes, 64u);
 
   ASSERT_EQ(foreign_cpu.ready.size(), 1u);

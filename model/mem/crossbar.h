@@ -1,0 +1,92 @@
+// The interconnect between the RT units' L1s and the L2's slices: a crossbar with one port per
+// unit and one per slice, each port a link in each direction that moves `bytes_per_cycle` bytes
+// a cycle, and `latency` cycles through the switch.
+// Timing: a transfer of b bytes from a source port to a destination port takes the source's
+// outgoing link from its cycle on, crosses the switch in `latency` cycles, then takes the
+// destination's incoming link; it has arrived in the cycle its last byte passes. An unloaded
+// transfer of at most bytes_per_cycle bytes therefore takes exactly `latency` cycles. Each link
+// keeps the bytes booked in each cycle of a calendar, so transfers may be booked in any order of
+// their cycles (responses are known out of order): one is delayed only by transfers already
+// booked into its own cycles, never by those of later cycles. Bookings more than
+// kCalendarCycles apart share an entry; the earlier cycle then counts as full (conservative;
+// counted as calendar_conflicts).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/mem/cache.h"
+#include "model/mem/memory_level.h"
+
+namespace rtsim {
+
+struct CrossbarConfig {
+  uint32_t latency = 0;        // cycles: through the switch, each way
+  double bytes_per_cycle = 0;  // bytes/cycle: each port's link in each direction; 0 = no limit
+};
+
+std::string crossbar_config_problem(const CrossbarConfig& config);
+
+// How the shared L2 is split and reached: `slices` slices of size_bytes / slices each (every
+// other key of the cache config is per slice), behind a crossbar.
+struct L2Layout {
+  uint32_t slices = 1;
+  CrossbarConfig crossbar;
+};
+
+// Why the layout is impossible for this L2 (empty if fine).
+std::string l2_layout_problem(const CacheConfig& config, const L2Layout& layout);
+
+struct LinkStats {
+  uint64_t transfers = 0;
+  uint64_t bytes = 0;
+  uint64_t stall_cycles = 0;        // cycles transfers waited for the link to have room
+  uint64_t calendar_conflicts = 0;  // cycles taken as full because a later one held the entry
+};
+
+// One direction of one port.
+class Link {
+ public:
+  static constexpr uint32_t kCalendarCycles = 1u << 12;
+  explicit Link(double bytes_per_cycle);
+  // Books `bytes` from cycle `at` on; returns the cycle the last byte passes.
+  Cycle transfer(Cycle at, uint32_t bytes);
+  const LinkStats& stats() const { return stats_; }
+
+ private:
+  struct Slot {
+    Cycle cycle = kPending;  // the cycle this entry counts for (kPending: none yet)
+    double used = 0;         // bytes booked in it
+  };
+  double capacity_;
+  std::vector<Slot> calendar_;
+  LinkStats stats_;
+};
+
+class Crossbar {
+ public:
+  // Requests carry this many bytes (address and command); writes and data carry their bytes.
+  static constexpr uint32_t kRequestBytes = 8;
+
+  Crossbar(const CrossbarConfig& config, uint32_t slices);  // throws std::invalid_argument
+  // Unit `unit` to slice `slice`: the cycle the transfer has arrived. Units' ports are created
+  // as units first send.
+  Cycle to_slice(uint32_t unit, uint32_t slice, Cycle at, uint32_t bytes);
+  Cycle to_unit(uint32_t slice, uint32_t unit, Cycle at, uint32_t bytes);
+
+  uint32_t units() const { return uint32_t(unit_up_.size()); }
+  uint32_t slices() const { return uint32_t(slice_in_.size()); }
+  const Link& unit_up(uint32_t unit) const { return unit_up_[unit]; }      // unit to switch
+  const Link& unit_down(uint32_t unit) const { return unit_down_[unit]; }  // switch to unit
+  const Link& slice_in(uint32_t slice) const { return slice_in_[slice]; }
+  const Link& slice_out(uint32_t slice) const { return slice_out_[slice]; }
+  const CrossbarConfig& config() const { return config_; }
+
+ private:
+  void add_units(uint32_t count);
+  CrossbarConfig config_;
+  std::vector<Link> unit_up_, unit_down_, slice_in_, slice_out_;
+};
+
+}  // namespace rtsim
