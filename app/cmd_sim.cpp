@@ -42,6 +42,17 @@ void print_summary(const nlohmann::ordered_json& doc) {
   fmt::print("cycles     {}  ({:.3f} rays/cycle, {:.1f} MRays/s at {} GHz)\n",
              s["cycles"].get<uint64_t>(), s["rays_per_cycle"].get<double>(),
              s["mrays_per_second"].get<double>(), s["clock_ghz"].get<double>());
+  if (s["warmup_rays"] != 0 || s["warmup_frames"] != 0)
+    fmt::print("warm-up    {} rays, {} frames: stats from cycle {} on\n",
+               s["warmup_rays"].get<uint64_t>(), s["warmup_frames"].get<uint64_t>(),
+               s["measured_from_cycle"].get<uint64_t>());
+  for (const auto& f : doc["frames"])
+    fmt::print("frame {:<4} {:>9} rays  {:>10} cycles  L2 hit {:.1f}%  compulsory {:.1f}%  DRAM "
+               "{:.0f} B/ray\n",
+               f["frame"].get<uint64_t>(), f["rays"].get<double>(), f["cycles"].get<double>(),
+               100 * f["memory"]["l2_hit_rate"].get<double>(),
+               100 * f["memory"]["l2_compulsory_share"].get<double>(),
+               f["memory"]["dram_bytes_per_ray"].get<double>());
   for (const auto& [type, t] : doc["ray_types"].items())
     fmt::print(
         "{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  nodes {:.1f}  tris {:.1f}  "
@@ -56,10 +67,10 @@ void print_summary(const nlohmann::ordered_json& doc) {
     return v.is_null() ? std::string("n/a") : fmt::format("{:.1f}%", 100 * v.get<double>());
   };
   fmt::print(
-      "memory     L1 hit {} served {}  L2 hit {} served {}  compulsory {} of L2 misses  "
-      "(served: hits and merges into misses in flight)\n",
-      percent(m["l1_hit_rate"]), percent(m["l1_served_rate"]), percent(m["l2_hit_rate"]),
-      percent(m["l2_served_rate"]), percent(m["l2_compulsory_share"]));
+      "memory     L1 hit {} served {} compulsory {}  L2 hit {} served {} compulsory {}  "
+      "(served: hits and merges into misses in flight; compulsory: share of misses)\n",
+      percent(m["l1_hit_rate"]), percent(m["l1_served_rate"]), percent(m["l1_compulsory_share"]),
+      percent(m["l2_hit_rate"]), percent(m["l2_served_rate"]), percent(m["l2_compulsory_share"]));
   const auto& u = doc["utilisation"]["mean"];
   fmt::print(
       "busy       box {:.1f}%  triangle {:.1f}%  control {:.1f}%  ray slots {:.1f}%  "

@@ -83,6 +83,7 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
             {"dram_utilisation", Json()},
             {"l1_served_rate", Json()},
             {"l2_served_rate", Json()},
+            {"l1_compulsory_share", Json()},
             {"l2_compulsory_share", Json()}};
   Json by_type = Json::object();
   for (int t = 0; t < kRayTypeCount; ++t) {
@@ -97,12 +98,14 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
     b["l2_bytes_per_ray"] = sum_units(counters, c.rt_units, ".l1.bytes_below") / rays;
     b["dram_bytes_per_cycle"] = stats["memory"]["dram_bytes_per_cycle"];
     b["dram_utilisation"] = stats["utilisation"]["dram"];
-    for (const char* key : {"l1_served_rate", "l2_served_rate", "l2_compulsory_share"})
+    for (const char* key :
+         {"l1_served_rate", "l2_served_rate", "l1_compulsory_share", "l2_compulsory_share"})
       b[key] = stats["memory"][key];
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
       entry["l1_bytes_per_ray"] =
-          counters["type." + name + ".l1_accesses"].get<double>() * c.l1.line_bytes / n;
+          counters["type." + name + ".l1_accesses"].get<double>() *
+          (c.l1.sector_bytes ? c.l1.sector_bytes : c.l1.line_bytes) / n;
       entry["l2_bytes_per_ray"] =
           counters["type." + name + ".l2_accesses"].get<double>() * c.l2.line_bytes / n;
     }

@@ -64,6 +64,13 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.sim.stall_cycles =
       sim.integer("stall_cycles", c.sim.stall_cycles, "cycles",
                   "no progress for this long stops the run with a stall error", 1, 1ull << 40);
+  c.sim.warmup_rays = sim.integer(
+      "warmup_rays", c.sim.warmup_rays, "rays",
+      "the stream's first rays run with full timing but are left out of every stat", 0,
+      1ull << 40);
+  c.sim.warmup_frames = uint32_t(sim.integer(
+      "warmup_frames", c.sim.warmup_frames, "frames",
+      "the stream's first frames, likewise (with warmup_rays: whichever ends later)", 0, 100000));
 
   ConfigReader dispatch = r.section("dispatch");
   c.dispatch.rays_per_cycle =

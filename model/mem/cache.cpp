@@ -188,6 +188,23 @@ uint32_t Cache::find(uint32_t set, uint64_t tag) const {
   return kNone;
 }
 
+void Cache::track_cold_misses(uint64_t dense_begin, uint64_t dense_end) {
+  track_cold_ = true;
+  if (dense_end <= dense_begin) return;
+  dense_first_ = dense_begin >> block_shift_;
+  dense_blocks_ = ((dense_end - 1) >> block_shift_) - dense_first_ + 1;
+  dense_held_.assign((dense_blocks_ + 63) / 64, 0);
+}
+
+bool Cache::first_reference(uint64_t block) {
+  uint64_t i = block - dense_first_;
+  if (i >= dense_blocks_) return held_blocks_.insert(block).second;
+  uint64_t bit = uint64_t(1) << (i & 63);
+  bool first = !(dense_held_[i >> 6] & bit);
+  dense_held_[i >> 6] |= bit;
+  return first;
+}
+
 uint32_t Cache::merge(Block& b) {
   stats_.mshr_merges++;
   if (config_.merge_limit > 0 && b.merges >= config_.merge_limit) {
@@ -223,7 +240,7 @@ Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& ch
     }
   }
 
-  bool first = track_cold_ && held_blocks_.insert(block).second;
+  bool first = track_cold_ && first_reference(block);
   if (first && own_share_ < 1.0 && !fetched_here(block, own_share_)) {
     stats_.hits++;
     stats_.absent_fills++;
@@ -249,7 +266,7 @@ void Cache::write_block(uint64_t block, Cycle at) {
   if (!b.valid) {
     stats_.write_misses++;
     b = Block{at, kNone, 0, true, false};  // a read from `at` on finds it, after its tag check
-    if (track_cold_) held_blocks_.insert(block);
+    if (track_cold_) first_reference(block);
   }
   b.dirty = config_.write_back;
 }

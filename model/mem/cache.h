@@ -95,8 +95,9 @@ class Cache : public MemoryTarget, private ReadClient {
   // Whether the block holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
   // Keeps a set of every block referenced, to count cold (compulsory) misses; without it
-  // cold_misses stays 0. Costs a hash insert per miss: the simulator tracks its L2 only.
-  void track_cold_misses() { track_cold_ = true; }
+  // cold_misses stays 0. Blocks in [dense_begin, dense_end) (the BVH) are kept in a bitmap, a
+  // bit test per miss; others (local memory) in a hash set.
+  void track_cold_misses(uint64_t dense_begin = 0, uint64_t dense_end = 0);
   bool tracks_cold_misses() const { return track_cold_; }
   // For a scale model (model/fidelity/scaled_level.h): this cache stands in for a shared cache
   // of which the simulation drives only `own_share` of the clients. The first reference to a
@@ -224,7 +225,11 @@ class Cache : public MemoryTarget, private ReadClient {
   std::vector<Request> requests_;
   std::vector<uint32_t> free_requests_;
   Join join_{*this};
-  std::unordered_set<uint64_t> held_blocks_;  // every block ever referenced: tells cold misses
+  // Marks a block referenced; true the first time.
+  bool first_reference(uint64_t block);
+  std::vector<uint64_t> dense_held_;          // a bit per block of the dense range
+  uint64_t dense_first_ = 0, dense_blocks_ = 0;
+  std::unordered_set<uint64_t> held_blocks_;  // the other blocks ever referenced
   bool track_cold_ = false;
   double own_share_ = 1.0;
   CacheStats stats_;

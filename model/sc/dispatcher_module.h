@@ -20,6 +20,7 @@ public:
   RaySupply& supply() override { return dispatcher_; }
   const sc_core::sc_event& work_event() const override { return never_; }
   const RayDispatcher& dispatcher() const { return dispatcher_; }
+  RayDispatcher& dispatcher() { return dispatcher_; }
 
 private:
   RayDispatcher dispatcher_;

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <sstream>
 
+#include <fmt/format.h>
+
+#include "traces/error.h"
+
 namespace rtsim {
 
 uint32_t ray_slots(const HwConfig& c) {
@@ -34,7 +38,9 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   l2_ = std::make_unique<SharedCacheModule>("l2", config.l2, clock_, config.l2_layout,
                                             config.l1.hit_latency,
                                             [this](std::exception_ptr e) { control_.fail(e); });
-  l2_->track_cold_misses();
+  // Compulsory misses at every level; the BVH's blocks in bitmaps.
+  uint64_t bvh_begin = image.node_base, bvh_end = image.triangle_base + image.triangles.size();
+  l2_->track_cold_misses(bvh_begin, bvh_end);
   if (bind_memory) {
     bind_memory(l2_->out);
   } else {
@@ -43,6 +49,8 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   }
   dispatch_ =
       std::make_unique<DispatcherModule>("dispatch", config.dispatch, source, pool_, &fanout_);
+  collector_.measure_from(config.sim.warmup_rays, config.sim.warmup_frames);
+  dispatch_->dispatcher().watch([this](const RayContext& ray) { on_dispatch(ray); });
   RaySupplyIf* supply = dispatch_.get();
   if (config.rt.mode == TraversalMode::Treelet) {
     uint32_t root = image.node_treelet.empty() ? 0 : image.node_treelet[0];
@@ -57,6 +65,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, l1_as_built(config),
                                                     traversal_, clock_, config.sim.quantum_cycles,
                                                     control_));
+    units_.back()->l1.cache().track_cold_misses(bvh_begin, bvh_end);
     units_.back()->supply.bind(*supply);
     units_.back()->l1.out.bind(l2_->in);
   }
@@ -76,6 +85,41 @@ void RtSimulator::run() {
     throw SimStallError(
         "the simulation ran out of events with " + std::to_string(control_.units_running) +
         " units unfinished (a unit slept with nothing to wake it); state:\n" + dump());
+  if (!measuring_)
+    throw InputError(fmt::format(
+        "[sim] warmup_rays = {} and warmup_frames = {} leave none of the stream's {} rays to "
+        "measure",
+        config_.sim.warmup_rays, config_.sim.warmup_frames, dispatch_->dispatcher().stats().rays));
+}
+
+void RtSimulator::on_dispatch(const RayContext& ray) {
+  if (ray.sequence < config_.sim.warmup_rays || ray.ray.frame < config_.sim.warmup_frames) return;
+  if (!measuring_) {
+    measuring_ = true;
+    measure_start_ = ray.dispatched;
+    if (warmup()) report_all(before_measuring_, ray.dispatched);
+  }
+  if (!frame_marks_.empty() && frame_marks_.back().frame == ray.ray.frame) return;
+  FrameStats mark{ray.ray.frame, ray.dispatched, {}};
+  if (frame_marks_.empty())
+    mark.stats = before_measuring_;
+  else
+    report_all(mark.stats, ray.dispatched);
+  frame_marks_.push_back(std::move(mark));
+}
+
+std::vector<RtSimulator::FrameStats> RtSimulator::frame_stats() const {
+  std::vector<FrameStats> frames;
+  for (size_t i = 0; i < frame_marks_.size(); ++i) {
+    FrameStats f{frame_marks_[i].frame, frame_marks_[i].start, {}};
+    if (i + 1 < frame_marks_.size())
+      f.stats = frame_marks_[i + 1].stats;
+    else
+      report_all(f.stats, cycles());
+    f.stats.subtract(frame_marks_[i].stats);
+    frames.push_back(std::move(f));
+  }
+  return frames;
 }
 
 CacheStats RtSimulator::l2_stats() const {

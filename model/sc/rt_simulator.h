@@ -57,11 +57,27 @@ class RtSimulator {
   // Before run(): the L2 stands in for that of a machine of which this one has own_share of the
   // RT units (Cache::share_first_references).
   void share_l2_first_references(double own_share);
-  // Every counter under its dotted name, and the derived ratios.
+  // Every counter under its dotted name, and the derived ratios; with a warm-up
+  // (sim.warmup_rays, sim.warmup_frames) what accrued from the dispatch of the first measured
+  // ray on ("cycles" too), the snapshot-and-subtract of ChampSim. Rays of the warm-up are left
+  // out of the per-ray stats (collected()); work they still do after it counts.
   void report(StatsRegistry& stats) const;
+  // Per frame of the measured part, from the dispatch of its first ray to that of the next
+  // frame's (the last: to the end): its frame index, start cycle and stats (as report()).
+  struct FrameStats {
+    uint32_t frame = 0;
+    Cycle start = 0;
+    StatsRegistry stats;
+  };
+  std::vector<FrameStats> frame_stats() const;
+  Cycle measured_from() const { return measure_start_; }
   std::string dump() const;  // every module's state
 
  private:
+  void on_dispatch(const RayContext& ray);
+  void report_all(StatsRegistry& stats, Cycle end) const;  // the whole run's stats so far
+  bool warmup() const { return config_.sim.warmup_rays > 0 || config_.sim.warmup_frames > 0; }
+
   HwConfig config_;
   Clock clock_;
   TraversalUnit traversal_;
@@ -75,6 +91,10 @@ class RtSimulator {
   std::unique_ptr<TreeletQueueModule> treelets_;
   std::vector<std::unique_ptr<RtUnitModule>> units_;
   std::unique_ptr<StallWatchdog> watchdog_;
+  bool measuring_ = false;  // the first measured ray has been dispatched
+  Cycle measure_start_ = 0;
+  StatsRegistry before_measuring_;  // the snapshot at measure_start_
+  std::vector<FrameStats> frame_marks_;  // per measured frame: the snapshot at its start
 };
 
 }  // namespace rtsim

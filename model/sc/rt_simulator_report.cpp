@@ -92,7 +92,12 @@ struct UnitTotals {
 }  // namespace
 
 void RtSimulator::report(StatsRegistry& r) const {
-  r.counter("cycles", cycles());
+  report_all(r, cycles());
+  if (warmup()) r.subtract(before_measuring_);
+}
+
+void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
+  r.counter("cycles", end);
   r.counter("rays", collector_.rays());
   r.ratio("rays_per_cycle", "rays", "cycles");
   r.ratio("mrays_per_second", "rays", "cycles", config_.clock_ghz * 1e3);
@@ -113,8 +118,8 @@ void RtSimulator::report(StatsRegistry& r) const {
     r.counter(p + ".fresh_visits", t.fresh_visits);
     r.counter(p + ".postponed", t.postponed);
     r.counter(p + ".refused", t.refused);
-    r.counter(p + ".max_queued", t.max_queued);
-    r.counter(p + ".max_queue_length", t.max_queue_length);
+    r.gauge(p + ".max_queued", t.max_queued);
+    r.gauge(p + ".max_queue_length", t.max_queue_length);
     r.real(p + ".queued_ray_cycles", t.queued_ray_cycles);
     r.ratio(p + ".rays_per_visit", p + ".visit_rays", p + ".visits");
     r.ratio(p + ".mean_queued", p + ".queued_ray_cycles", "cycles");
@@ -150,7 +155,7 @@ void RtSimulator::report(StatsRegistry& r) const {
             1.0 / config_.rt.issue_per_cycle);
     report_test_units(r, p + ".box", core.box());
     report_test_units(r, p + ".triangle", core.triangle());
-    report_cache(r, p + ".l1", unit->l1.cache().stats(), false);
+    report_cache(r, p + ".l1", unit->l1.cache().stats(), true);
     total.steps += steps;
     total.warp_steps += s.warp_steps;
     total.active_lanes += s.active_lanes;

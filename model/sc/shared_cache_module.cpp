@@ -53,8 +53,8 @@ CacheStats SharedCacheModule::stats() const {
   return sum;
 }
 
-void SharedCacheModule::track_cold_misses() {
-  for (auto& slice : slices_) slice->track_cold_misses();
+void SharedCacheModule::track_cold_misses(uint64_t dense_begin, uint64_t dense_end) {
+  for (auto& slice : slices_) slice->track_cold_misses(dense_begin, dense_end);
 }
 
 void SharedCacheModule::share_first_references(double own_share) {

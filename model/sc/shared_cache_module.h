@@ -61,7 +61,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   uint32_t slice_of(uint64_t addr) const;
   CacheStats stats() const;  // summed over the slices
   const Crossbar& crossbar() const { return crossbar_; }
-  void track_cold_misses();
+  void track_cold_misses(uint64_t dense_begin = 0, uint64_t dense_end = 0);  // Cache's
   bool tracks_cold_misses() const { return slices_[0]->tracks_cold_misses(); }
   void share_first_references(double own_share);
   size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served

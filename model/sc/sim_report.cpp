@@ -84,6 +84,39 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
           {"dram", r.value("dram.utilisation")}};
 }
 
+Json memory_json(const HwConfig& c, const StatsRegistry& r) {
+  double l1_accesses = sum(r, c.rt_units, ".l1.accesses");
+  auto l1_share = [&](const char* counter) {
+    return l1_accesses ? sum(r, c.rt_units, counter) / l1_accesses : 0;
+  };
+  return {{"l1_hit_rate", l1_share(".l1.hits")},
+          {"l2_hit_rate", r.value("l2.hit_rate")},
+          {"l1_served_rate", l1_share(".l1.served")},
+          {"l2_served_rate", r.value("l2.served_rate")},
+          {"l1_compulsory_share", sum(r, c.rt_units, ".l1.cold_misses") /
+                                      std::max(1.0, sum(r, c.rt_units, ".l1.misses"))},
+          {"l2_compulsory_share", r.value("l2.compulsory_share")},
+          {"dram_bytes", r.value("dram.bytes")},
+          {"dram_bytes_per_ray", r.value("dram.bytes_per_ray")},
+          {"dram_bytes_per_cycle", r.value("dram.bytes_per_cycle")}};
+}
+
+// Per measured frame (only for more than one): what each frame cost, from the dispatch of its
+// first ray to that of the next frame's.
+Json frames_json(const RtSimulator& sim) {
+  std::vector<RtSimulator::FrameStats> frames = sim.frame_stats();
+  Json list = Json::array();
+  if (frames.size() < 2) return list;
+  for (const RtSimulator::FrameStats& f : frames)
+    list.push_back({{"frame", f.frame},
+                    {"start_cycle", f.start},
+                    {"cycles", f.stats.value("cycles")},
+                    {"rays", f.stats.value("dispatch.rays")},
+                    {"memory", memory_json(sim.config(), f.stats)},
+                    {"dram_utilisation", f.stats.value("dram.utilisation")}});
+  return list;
+}
+
 }  // namespace
 
 Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRunInfo& info) {
@@ -108,7 +141,10 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
                     {"cycles", sim.cycles()},
                     {"rays_per_cycle", r.value("rays_per_cycle")},
                     {"clock_ghz", c.clock_ghz},
-                    {"mrays_per_second", r.value("mrays_per_second")}};
+                    {"mrays_per_second", r.value("mrays_per_second")},
+                    {"warmup_rays", c.sim.warmup_rays},
+                    {"warmup_frames", c.sim.warmup_frames},
+                    {"measured_from_cycle", sim.measured_from()}};
   Json types = Json::object();
   for (int t = 0; t < kRayTypeCount; ++t) {
     const RayTypeStats& s = sim.collected().by_type()[t];
@@ -117,18 +153,8 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
     types[name] = ray_type_json(s, r, "type." + name);
   }
   doc["ray_types"] = types;
-  double l1_accesses = sum(r, c.rt_units, ".l1.accesses");
-  auto l1_share = [&](const char* counter) {
-    return l1_accesses ? sum(r, c.rt_units, counter) / l1_accesses : 0;
-  };
-  doc["memory"] = {{"l1_hit_rate", l1_share(".l1.hits")},
-                   {"l2_hit_rate", r.value("l2.hit_rate")},
-                   {"l1_served_rate", l1_share(".l1.served")},
-                   {"l2_served_rate", r.value("l2.served_rate")},
-                   {"l2_compulsory_share", r.value("l2.compulsory_share")},
-                   {"dram_bytes", r.value("dram.bytes")},
-                   {"dram_bytes_per_ray", r.value("dram.bytes_per_ray")},
-                   {"dram_bytes_per_cycle", r.value("dram.bytes_per_cycle")}};
+  doc["memory"] = memory_json(c, r);
+  doc["frames"] = frames_json(sim);
   doc["utilisation"] = utilisation_json(c, r);
   // Coherence figures exist only in the mode that produces them; elsewhere they are null.
   bool packet = c.rt.mode == TraversalMode::Packet, treelet = c.rt.mode == TraversalMode::Treelet;

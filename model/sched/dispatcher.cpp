@@ -29,7 +29,7 @@ size_t RayDispatcher::take(uint32_t unit, Cycle now, size_t max, std::vector<Ray
       break;
     }
     ray->ray = next_;
-    ray->sequence = stats_.rays++;
+    ray->sequence = stats_.rays;
     ray->begun = false;
     ray->unit = unit;
     ray->cost = {};
@@ -38,6 +38,8 @@ size_t RayDispatcher::take(uint32_t unit, Cycle now, size_t max, std::vector<Ray
     double slot = start + double(given) / config_.rays_per_cycle;
     ray->dispatched = Cycle(std::floor(slot));
     ray->ready = ray->dispatched + config_.latency;
+    if (watcher_) watcher_(*ray);  // before it counts as handed out
+    stats_.rays++;
     out.push_back(ray);
     ++given;
     read_ahead();

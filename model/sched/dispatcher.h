@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "model/sched/ray_source.h"
@@ -41,6 +42,8 @@ public:
 
   const DispatchStats& stats() const { return stats_; }
   uint64_t in_flight() const { return stats_.rays - stats_.retired; }
+  // Called with every ray as it is handed out (the simulator marks warm-up and frames by it).
+  void watch(std::function<void(const RayContext&)> watcher) { watcher_ = std::move(watcher); }
 
 private:
   void read_ahead();
@@ -49,6 +52,7 @@ private:
   RaySource& source_;
   RayContextPool& pool_;
   RayRetireListener* listener_;
+  std::function<void(const RayContext&)> watcher_;
   Ray next_;
   bool has_next_ = false;
   double port_free_ = 0;  // cycle (fractional) the delivery port is next free

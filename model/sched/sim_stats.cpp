@@ -14,6 +14,8 @@ SimStatsCollector::SimStatsCollector(uint32_t width, uint32_t height) {
 }
 
 void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
+  last_retire_ = std::max(last_retire_, now);
+  if (ray.sequence < first_sequence_ || ray.ray.frame < first_frame_) return;
   RayTypeStats& s = by_type_[size_t(ray.ray.type) % kRayTypeCount];
   const RayCost& cost = ray.cost;
   uint64_t latency = now - std::min(now, ray.dispatched);
@@ -30,7 +32,6 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
   s.postponed += cost.postponed;
   s.latency.add(latency);
   rays_++;
-  last_retire_ = std::max(last_retire_, now);
   if (pixels_.cycles.empty()) return;
   if (ray.ray.pixel >= pixels_.cycles.size()) {
     pixels_.outside++;

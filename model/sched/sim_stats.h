@@ -34,6 +34,12 @@ public:
   // width x height: the stream's pixel grid (0 x 0: no pixel buffers).
   SimStatsCollector(uint32_t width, uint32_t height);
   void retired(const RayContext& ray, Cycle now) override;
+  // Rays before stream position `sequence` or of frames before `frame` are a warm-up: they
+  // count for last_retire() only.
+  void measure_from(uint64_t sequence, uint32_t frame) {
+    first_sequence_ = sequence;
+    first_frame_ = frame;
+  }
 
   const std::array<RayTypeStats, kRayTypeCount>& by_type() const { return by_type_; }
   const PixelBuffers& pixels() const { return pixels_; }
@@ -45,6 +51,8 @@ private:
   PixelBuffers pixels_;
   uint64_t rays_ = 0;
   Cycle last_retire_ = 0;
+  uint64_t first_sequence_ = 0;
+  uint32_t first_frame_ = 0;
 };
 
 // Several listeners in turn.

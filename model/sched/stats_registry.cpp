@@ -4,16 +4,33 @@
 
 namespace rtsim {
 
-void StatsRegistry::counter(const std::string& name, uint64_t value) {
+void StatsRegistry::add(const std::string& name, double value, Kind kind) {
   if (has(name)) throw std::logic_error("stat " + name + " reported twice");
-  values_.emplace_back(name, double(value));
-  integral_.push_back(true);
+  index_.emplace(name, values_.size());
+  values_.emplace_back(name, value);
+  kinds_.push_back(kind);
 }
 
-void StatsRegistry::real(const std::string& name, double value) {
-  if (has(name)) throw std::logic_error("stat " + name + " reported twice");
-  values_.emplace_back(name, value);
-  integral_.push_back(false);
+void StatsRegistry::counter(const std::string& name, uint64_t value) {
+  add(name, double(value), Kind::Counter);
+}
+
+void StatsRegistry::real(const std::string& name, double value) { add(name, value, Kind::Real); }
+
+void StatsRegistry::gauge(const std::string& name, uint64_t value) {
+  add(name, double(value), Kind::Gauge);
+}
+
+void StatsRegistry::subtract(const StatsRegistry& before) {
+  for (size_t i = 0; i < values_.size(); ++i) {
+    if (kinds_[i] == Kind::Gauge) continue;
+    // Snapshots list their stats in the same order; look a name up only where they part.
+    const auto& [name, value] = values_[i];
+    const std::pair<std::string, double>* old =
+        i < before.values_.size() && before.values_[i].first == name ? &before.values_[i]
+                                                                     : before.find(name);
+    if (old) values_[i].second = value - old->second;
+  }
 }
 
 void StatsRegistry::ratio(const std::string& name, const std::string& numerator,
@@ -22,9 +39,8 @@ void StatsRegistry::ratio(const std::string& name, const std::string& numerator,
 }
 
 const std::pair<std::string, double>* StatsRegistry::find(const std::string& name) const {
-  for (const auto& v : values_)
-    if (v.first == name) return &v;
-  return nullptr;
+  auto it = index_.find(name);
+  return it == index_.end() ? nullptr : &values_[it->second];
 }
 
 bool StatsRegistry::has(const std::string& name) const {
@@ -47,7 +63,7 @@ double StatsRegistry::value(const std::string& name) const {
 nlohmann::ordered_json StatsRegistry::to_json() const {
   nlohmann::ordered_json counters = nlohmann::ordered_json::object();
   for (size_t i = 0; i < values_.size(); ++i) {
-    if (integral_[i])
+    if (kinds_[i] != Kind::Real)
       counters[values_[i].first] = uint64_t(values_[i].second);
     else
       counters[values_[i].first] = values_[i].second;

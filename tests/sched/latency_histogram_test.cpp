@@ -40,5 +40,29 @@ TEST(StatsRegistry, RatiosAreDerivedWhenWritten) {
   EXPECT_THROW(r.counter("rt0.l1.hits", 1), std::logic_error) << "one name, one counter";
 }
 
+TEST(StatsRegistry, SubtractLeavesWhatAccruedSinceASnapshotAndKeepsGauges) {
+  auto report = [](uint64_t hits, uint64_t accesses, uint64_t peak, bool port) {
+    StatsRegistry r;
+    r.counter("cycles", accesses * 2);
+    r.counter("l2.hits", hits);
+    r.counter("l2.accesses", accesses);
+    r.real("dram.busy_cycles", double(hits) / 2);
+    r.gauge("treelet_queues.max_queued", peak);
+    if (port) r.counter("xbar.rt7.up.bytes", 64);  // created after the snapshot
+    r.ratio("l2.hit_rate", "l2.hits", "l2.accesses");
+    return r;
+  };
+  StatsRegistry warm = report(10, 40, 500, false);
+  StatsRegistry end = report(70, 100, 900, true);
+  end.subtract(warm);
+  EXPECT_EQ(end.value("cycles"), 120.0);
+  EXPECT_EQ(end.value("l2.hits"), 60.0);
+  EXPECT_DOUBLE_EQ(end.value("l2.hit_rate"), 1.0) << "60 of 60 since the snapshot";
+  EXPECT_DOUBLE_EQ(end.value("dram.busy_cycles"), 30.0);
+  EXPECT_EQ(end.value("treelet_queues.max_queued"), 900.0) << "a level, not an accumulation";
+  EXPECT_EQ(end.value("xbar.rt7.up.bytes"), 64.0) << "absent from the snapshot: from 0";
+  EXPECT_EQ(end.to_json()["counters"]["treelet_queues.max_queued"], 900);
+}
+
 }  // namespace
 }  // namespace rtsim
