@@ -47,12 +47,13 @@ void print_summary(const nlohmann::ordered_json& doc) {
                s["warmup_rays"].get<uint64_t>(), s["warmup_frames"].get<uint64_t>(),
                s["measured_from_cycle"].get<uint64_t>());
   for (const auto& f : doc["frames"])
-    fmt::print("frame {:<4} {:>9} rays  {:>10} cycles  L2 hit {:.1f}%  compulsory {:.1f}%  DRAM "
-               "{:.0f} B/ray\n",
-               f["frame"].get<uint64_t>(), f["rays"].get<double>(), f["cycles"].get<double>(),
-               100 * f["memory"]["l2_hit_rate"].get<double>(),
-               100 * f["memory"]["l2_compulsory_share"].get<double>(),
-               f["memory"]["dram_bytes_per_ray"].get<double>());
+    fmt::print(
+        "frame {:<4} {:>9} rays  {:>10} cycles  L2 hit {:.1f}%  compulsory {:.1f}%  DRAM "
+        "{:.0f} B/ray\n",
+        f["frame"].get<uint64_t>(), f["rays"].get<double>(), f["cycles"].get<double>(),
+        100 * f["memory"]["l2_hit_rate"].get<double>(),
+        100 * f["memory"]["l2_compulsory_share"].get<double>(),
+        f["memory"]["dram_bytes_per_ray"].get<double>());
   for (const auto& [type, t] : doc["ray_types"].items())
     fmt::print(
         "{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  nodes {:.1f}  tris {:.1f}  "

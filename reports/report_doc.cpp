@@ -103,9 +103,8 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
       b[key] = stats["memory"][key];
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
-      entry["l1_bytes_per_ray"] =
-          counters["type." + name + ".l1_accesses"].get<double>() *
-          (c.l1.sector_bytes ? c.l1.sector_bytes : c.l1.line_bytes) / n;
+      entry["l1_bytes_per_ray"] = counters["type." + name + ".l1_accesses"].get<double>() *
+                                  (c.l1.sector_bytes ? c.l1.sector_bytes : c.l1.line_bytes) / n;
       entry["l2_bytes_per_ray"] =
           counters["type." + name + ".l2_accesses"].get<double>() * c.l2.line_bytes / n;
     }

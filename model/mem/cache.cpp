@@ -196,15 +196,6 @@ void Cache::track_cold_misses(uint64_t dense_begin, uint64_t dense_end) {
   dense_held_.assign((dense_blocks_ + 63) / 64, 0);
 }
 
-bool Cache::first_reference(uint64_t block) {
-  uint64_t i = block - dense_first_;
-  if (i >= dense_blocks_) return held_blocks_.insert(block).second;
-  uint64_t bit = uint64_t(1) << (i & 63);
-  bool first = !(dense_held_[i >> 6] & bit);
-  dense_held_[i >> 6] |= bit;
-  return first;
-}
-
 uint32_t Cache::merge(Block& b) {
   stats_.mshr_merges++;
   if (config_.merge_limit > 0 && b.merges >= config_.merge_limit) {

@@ -226,8 +226,15 @@ class Cache : public MemoryTarget, private ReadClient {
   std::vector<uint32_t> free_requests_;
   Join join_{*this};
   // Marks a block referenced; true the first time.
-  bool first_reference(uint64_t block);
-  std::vector<uint64_t> dense_held_;          // a bit per block of the dense range
+  bool first_reference(uint64_t block) {
+    uint64_t i = block - dense_first_;
+    if (i >= dense_blocks_) return held_blocks_.insert(block).second;
+    uint64_t bit = uint64_t(1) << (i & 63);
+    bool first = !(dense_held_[i >> 6] & bit);
+    dense_held_[i >> 6] |= bit;
+    return first;
+  }
+  std::vector<uint64_t> dense_held_;  // a bit per block of the dense range
   uint64_t dense_first_ = 0, dense_blocks_ = 0;
   std::unordered_set<uint64_t> held_blocks_;  // the other blocks ever referenced
   bool track_cold_ = false;

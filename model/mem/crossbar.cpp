@@ -52,7 +52,8 @@ Cycle Link::transfer(Cycle at, uint32_t bytes) {
   }
 }
 
-Crossbar::Crossbar(const CrossbarConfig& config, uint32_t slices) : config_(config) {
+Crossbar::Crossbar(const CrossbarConfig& config, uint32_t slices)
+    : config_(config), modelled_(config.latency > 0 || config.bytes_per_cycle > 0) {
   std::string problem = crossbar_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
   for (uint32_t s = 0; s < slices; ++s) {
@@ -68,16 +69,9 @@ void Crossbar::add_units(uint32_t count) {
   }
 }
 
-Cycle Crossbar::to_slice(uint32_t unit, uint32_t slice, Cycle at, uint32_t bytes) {
-  add_units(unit + 1);
-  Cycle sent = unit_up_[unit].transfer(at, bytes);
-  return slice_in_[slice].transfer(sent + config_.latency, bytes);
-}
-
-Cycle Crossbar::to_unit(uint32_t slice, uint32_t unit, Cycle at, uint32_t bytes) {
-  add_units(unit + 1);
-  Cycle sent = slice_out_[slice].transfer(at, bytes);
-  return unit_down_[unit].transfer(sent + config_.latency, bytes);
+Cycle Crossbar::cross(Link& from, Link& to, Cycle at, uint32_t bytes) {
+  Cycle sent = from.transfer(at, bytes);
+  return to.transfer(sent + config_.latency, bytes);
 }
 
 }  // namespace rtsim

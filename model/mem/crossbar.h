@@ -70,11 +70,19 @@ class Crossbar {
   static constexpr uint32_t kRequestBytes = 8;
 
   Crossbar(const CrossbarConfig& config, uint32_t slices);  // throws std::invalid_argument
-  // Unit `unit` to slice `slice`: the cycle the transfer has arrived. Units' ports are created
-  // as units first send.
-  Cycle to_slice(uint32_t unit, uint32_t slice, Cycle at, uint32_t bytes);
-  Cycle to_unit(uint32_t slice, uint32_t unit, Cycle at, uint32_t bytes);
+  // Gives the crossbar a port for each of `count` units (before any transfer).
+  void add_units(uint32_t count);
+  // Unit `unit` to slice `slice`: the cycle the transfer has arrived.
+  Cycle to_slice(uint32_t unit, uint32_t slice, Cycle at, uint32_t bytes) {
+    return modelled_ ? cross(unit_up_[unit], slice_in_[slice], at, bytes) : at;
+  }
+  Cycle to_unit(uint32_t slice, uint32_t unit, Cycle at, uint32_t bytes) {
+    return modelled_ ? cross(slice_out_[slice], unit_down_[unit], at, bytes) : at;
+  }
 
+  // Whether there is a crossbar to model (a latency or a bandwidth); without, transfers are free
+  // and uncounted.
+  bool modelled() const { return modelled_; }
   uint32_t units() const { return uint32_t(unit_up_.size()); }
   uint32_t slices() const { return uint32_t(slice_in_.size()); }
   const Link& unit_up(uint32_t unit) const { return unit_up_[unit]; }      // unit to switch
@@ -84,8 +92,10 @@ class Crossbar {
   const CrossbarConfig& config() const { return config_; }
 
  private:
-  void add_units(uint32_t count);
+  // From one link, through the switch, onto the other.
+  Cycle cross(Link& from, Link& to, Cycle at, uint32_t bytes);
   CrossbarConfig config_;
+  bool modelled_;
   std::vector<Link> unit_up_, unit_down_, slice_in_, slice_out_;
 };
 

@@ -1,5 +1,7 @@
-// Cache replacement policies behind one interface; implementations in impl/.
-// A policy sees only (set, way) events; it may change only its own per-set state.
+// Cache replacement policies: LRU and FIFO evict the way with the oldest stamp and differ in
+// when a stamp is set (LRU on every touch, FIFO only on insert); random is a seeded xorshift,
+// so runs are repeatable. A policy sees only (set, way) events. One concrete class, so the
+// cache's hot path calls it without indirection.
 #pragma once
 
 #include <cstdint>
@@ -10,14 +12,27 @@
 namespace rtsim {
 
 class ReplacementPolicy {
-public:
-  virtual ~ReplacementPolicy() = default;
+ public:
+  enum class Kind : uint8_t { Lru, Fifo, Random };
+  ReplacementPolicy(Kind kind, uint32_t sets, uint32_t ways, uint64_t seed);
+
   // A hit on (set, way).
-  virtual void touch(uint32_t set, uint32_t way) = 0;
+  void touch(uint32_t set, uint32_t way) {
+    if (kind_ == Kind::Lru) stamps_[size_t(set) * ways_ + way] = ++clock_;
+  }
   // A line was just installed in (set, way).
-  virtual void insert(uint32_t set, uint32_t way) = 0;
+  void insert(uint32_t set, uint32_t way) {
+    if (kind_ != Kind::Random) stamps_[size_t(set) * ways_ + way] = ++clock_;
+  }
   // The way to evict from a full set.
-  virtual uint32_t victim(uint32_t set) = 0;
+  uint32_t victim(uint32_t set);
+
+ private:
+  Kind kind_;
+  uint32_t ways_;
+  std::vector<uint64_t> stamps_;
+  uint64_t clock_ = 0;
+  uint64_t state_;  // random: the xorshift state
 };
 
 // "lru", "fifo" or "random" (seeded, deterministic); nullptr for an unknown name.

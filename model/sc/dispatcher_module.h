@@ -11,7 +11,7 @@
 namespace rtsim {
 
 class DispatcherModule : public sc_core::sc_module, public RaySupplyIf {
-public:
+ public:
   sc_core::sc_export<RaySupplyIf> out;
 
   DispatcherModule(sc_core::sc_module_name name, const DispatchConfig& config, RaySource& source,
@@ -22,7 +22,7 @@ public:
   const RayDispatcher& dispatcher() const { return dispatcher_; }
   RayDispatcher& dispatcher() { return dispatcher_; }
 
-private:
+ private:
   RayDispatcher dispatcher_;
   sc_core::sc_event never_;  // rays never come later than asked: the pool fits every slot
 };

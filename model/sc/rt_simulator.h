@@ -93,7 +93,7 @@ class RtSimulator {
   std::unique_ptr<StallWatchdog> watchdog_;
   bool measuring_ = false;  // the first measured ray has been dispatched
   Cycle measure_start_ = 0;
-  StatsRegistry before_measuring_;  // the snapshot at measure_start_
+  StatsRegistry before_measuring_;       // the snapshot at measure_start_
   std::vector<FrameStats> frame_marks_;  // per measured frame: the snapshot at its start
 };
 

@@ -59,7 +59,7 @@ void report_l2(StatsRegistry& r, const SharedCacheModule& l2) {
       r.counter(p + ".port_stall_cycles", s.port_stall_cycles);
       r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
     }
-  if (xbar.config().latency == 0 && peak == 0) return;  // no crossbar modelled
+  if (!xbar.modelled()) return;
   for (uint32_t i = 0; i < xbar.slices(); ++i) {
     std::string p = "xbar.slice" + std::to_string(i);
     report_link(r, p + ".in", xbar.slice_in(i), peak);

@@ -41,6 +41,10 @@ SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheCo
   dont_initialize();
 }
 
+void SharedCacheModule::end_of_elaboration() {
+  crossbar_.add_units(uint32_t(in.size()));
+}
+
 uint32_t SharedCacheModule::slice_of(uint64_t addr) const {
   if (slices_.size() == 1) return 0;
   uint64_t h = (addr >> line_shift_) * 0x9e3779b97f4a7c15ull;  // Fibonacci hashing of the line

@@ -80,6 +80,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
     ReadCharge charge;
   };
 
+  void end_of_elaboration() override;  // gives the crossbar a port per bound initiator
   tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
                                      tlm::tlm_phase& phase, sc_core::sc_time& delay);
   // Below the cache: its misses and writes become DRAM accesses at their own cycle.

@@ -93,8 +93,8 @@ Json memory_json(const HwConfig& c, const StatsRegistry& r) {
           {"l2_hit_rate", r.value("l2.hit_rate")},
           {"l1_served_rate", l1_share(".l1.served")},
           {"l2_served_rate", r.value("l2.served_rate")},
-          {"l1_compulsory_share", sum(r, c.rt_units, ".l1.cold_misses") /
-                                      std::max(1.0, sum(r, c.rt_units, ".l1.misses"))},
+          {"l1_compulsory_share",
+           sum(r, c.rt_units, ".l1.cold_misses") / std::max(1.0, sum(r, c.rt_units, ".l1.misses"))},
           {"l2_compulsory_share", r.value("l2.compulsory_share")},
           {"dram_bytes", r.value("dram.bytes")},
           {"dram_bytes_per_ray", r.value("dram.bytes_per_ray")},

@@ -17,7 +17,9 @@ RayDispatcher::RayDispatcher(const DispatchConfig& config, RaySource& source, Ra
   read_ahead();
 }
 
-void RayDispatcher::read_ahead() { has_next_ = source_.next(next_); }
+void RayDispatcher::read_ahead() {
+  has_next_ = source_.next(next_);
+}
 
 size_t RayDispatcher::take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) {
   size_t given = 0;

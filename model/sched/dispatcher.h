@@ -32,7 +32,7 @@ struct DispatchStats {
 };
 
 class RayDispatcher : public RaySupply {
-public:
+ public:
   RayDispatcher(const DispatchConfig& config, RaySource& source, RayContextPool& pool,
                 RayRetireListener* listener);
 
@@ -45,7 +45,7 @@ public:
   // Called with every ray as it is handed out (the simulator marks warm-up and frames by it).
   void watch(std::function<void(const RayContext&)> watcher) { watcher_ = std::move(watcher); }
 
-private:
+ private:
   void read_ahead();
 
   DispatchConfig config_;

@@ -30,7 +30,7 @@ struct PixelBuffers {
 };
 
 class SimStatsCollector : public RayRetireListener {
-public:
+ public:
   // width x height: the stream's pixel grid (0 x 0: no pixel buffers).
   SimStatsCollector(uint32_t width, uint32_t height);
   void retired(const RayContext& ray, Cycle now) override;
@@ -46,7 +46,7 @@ public:
   uint64_t rays() const { return rays_; }
   Cycle last_retire() const { return last_retire_; }
 
-private:
+ private:
   std::array<RayTypeStats, kRayTypeCount> by_type_;
   PixelBuffers pixels_;
   uint64_t rays_ = 0;
@@ -57,13 +57,13 @@ private:
 
 // Several listeners in turn.
 class RetireFanout : public RayRetireListener {
-public:
+ public:
   void add(RayRetireListener* listener) { listeners_.push_back(listener); }
   void retired(const RayContext& ray, Cycle now) override {
     for (RayRetireListener* l : listeners_) l->retired(ray, now);
   }
 
-private:
+ private:
   std::vector<RayRetireListener*> listeners_;
 };
 

@@ -15,7 +15,9 @@ void StatsRegistry::counter(const std::string& name, uint64_t value) {
   add(name, double(value), Kind::Counter);
 }
 
-void StatsRegistry::real(const std::string& name, double value) { add(name, value, Kind::Real); }
+void StatsRegistry::real(const std::string& name, double value) {
+  add(name, value, Kind::Real);
+}
 
 void StatsRegistry::gauge(const std::string& name, uint64_t value) {
   add(name, double(value), Kind::Gauge);

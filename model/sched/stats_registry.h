@@ -14,7 +14,7 @@
 namespace rtsim {
 
 class StatsRegistry {
-public:
+ public:
   // A counter (integer) or an accumulated quantity (real, e.g. fractional busy cycles).
   void counter(const std::string& name, uint64_t value);
   void real(const std::string& name, double value);
@@ -33,7 +33,7 @@ public:
   // {"counters": {...}, "derived": {...}}, each in the order added.
   nlohmann::ordered_json to_json() const;
 
-private:
+ private:
   struct Ratio {
     std::string name, numerator, denominator;
     double scale;

@@ -31,6 +31,7 @@ TEST(Link, WithoutALimitTransfersTakeNoTime) {
 
 TEST(Crossbar, AnUnloadedTransferTakesTheLatency) {
   Crossbar xbar({5, 32.0}, 2);
+  xbar.add_units(1);
   EXPECT_EQ(xbar.to_slice(0, 1, 100, 8), 105u);
   EXPECT_EQ(xbar.to_unit(1, 0, 200, 32), 205u);
   EXPECT_EQ(xbar.units(), 1u);
@@ -38,6 +39,7 @@ TEST(Crossbar, AnUnloadedTransferTakesTheLatency) {
 
 TEST(Crossbar, TransfersToOneDestinationShareItsPort) {
   Crossbar xbar({2, 32.0}, 2);
+  xbar.add_units(2);
   // Two slices send a 128-byte line each to unit 0 in the same cycle: their own ports are free,
   // the unit's is not.
   EXPECT_EQ(xbar.to_unit(0, 0, 100, 128), 100u + 3 + 2 + 3);

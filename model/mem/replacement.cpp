@@ -1,0 +1,36 @@
+#include "model/mem/replacement.h"
+
+#include <algorithm>
+
+namespace rtsim {
+
+ReplacementPolicy::ReplacementPolicy(Kind kind, uint32_t sets, uint32_t ways, uint64_t seed)
+    : kind_(kind), ways_(ways), state_(seed | 1) {
+  if (kind != Kind::Random) stamps_.assign(size_t(sets) * ways, 0);
+}
+
+uint32_t ReplacementPolicy::victim(uint32_t set) {
+  if (kind_ == Kind::Random) {
+    state_ ^= state_ << 13;
+    state_ ^= state_ >> 7;
+    state_ ^= state_ << 17;
+    return uint32_t(state_ % ways_);
+  }
+  auto first = stamps_.begin() + long(size_t(set) * ways_);
+  return uint32_t(std::min_element(first, first + ways_) - first);
+}
+
+std::unique_ptr<ReplacementPolicy> make_replacement_policy(const std::string& name, uint32_t sets,
+                                                           uint32_t ways, uint64_t seed) {
+  using Kind = ReplacementPolicy::Kind;
+  if (name == "lru") return std::make_unique<ReplacementPolicy>(Kind::Lru, sets, ways, seed);
+  if (name == "fifo") return std::make_unique<ReplacementPolicy>(Kind::Fifo, sets, ways, seed);
+  if (name == "random") return std::make_unique<ReplacementPolicy>(Kind::Random, sets, ways, seed);
+  return nullptr;
+}
+
+std::vector<std::string> replacement_policy_names() {
+  return {"lru", "fifo", "random"};
+}
+
+}  // namespace rtsim
