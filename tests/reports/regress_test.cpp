@@ -61,7 +61,7 @@ TEST_F(Regress, PassesAgainstItsOwnBaseline) {
 }
 
 TEST_F(Regress, FailsWhenAConfigChangeSlowsTheDesign) {
-  change_config("mshrs = 8", "mshrs = 2");  // the L1's
+  change_config("mshrs = 16", "mshrs = 2");  // the L1's
   test::RunResult r = regress();
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("regressed"), std::string::npos) << r.out;
@@ -72,7 +72,7 @@ TEST_F(Regress, FailsWhenAConfigChangeSlowsTheDesign) {
 }
 
 TEST_F(Regress, AFasterDesignPassesAsImproved) {
-  change_config("mshrs = 8", "mshrs = 32");  // the L1's
+  change_config("mshrs = 16", "mshrs = 64");  // the L1's
   test::RunResult r = regress();
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("improved"), std::string::npos) << r.out;
