@@ -138,11 +138,12 @@ void SharedCacheModule::serve() {
 }
 
 void SharedCacheModule::run_job(uint32_t id, Cycle at) {
-  Job job = jobs_[id];  // a copy: serving it may add jobs
+  const Job& job = jobs_[id];  // read before anything that may add jobs (and move jobs_)
   switch (job.kind) {
     case JobKind::Read: {
       ReadCharge charge;
-      Cycle ready = slices_[job.slice]->read(job.addr, job.bytes, at, this, id, charge);
+      Cache& slice = *slices_[job.slice];
+      Cycle ready = slice.read(job.addr, job.bytes, at, this, id, charge);
       jobs_[id].charge += charge;
       if (ready != kPending) respond(id, ready);
       return;
@@ -153,8 +154,10 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
       return;
     case JobKind::DramRead: {
       free_jobs_.push_back(id);
+      ReadClient* client = job.client;
+      uint64_t token = job.token;
       Cycle ready = send_below(tlm::TLM_READ_COMMAND, job.addr, job.bytes, at);
-      job.client->read_done(job.token, ready, {});
+      client->read_done(token, ready, {});
       return;
     }
     case JobKind::DramWrite:
@@ -190,16 +193,16 @@ void SharedCacheModule::read_done(uint64_t job, Cycle ready, const ReadCharge& c
 }
 
 void SharedCacheModule::respond(uint32_t id, Cycle ready) {
-  Job job = jobs_[id];
-  free_jobs_.push_back(id);
-  ReadChargeExtension* extension = nullptr;
-  job.trans->get_extension(extension);
-  if (extension) extension->charge = job.charge;
-  job.trans->set_response_status(tlm::TLM_OK_RESPONSE);
+  const Job& job = jobs_[id];
+  tlm::tlm_generic_payload& trans = *job.trans;
+  int port = job.port;
+  if (auto* extension = trans.get_extension<ReadChargeExtension>()) extension->charge = job.charge;
+  trans.set_response_status(tlm::TLM_OK_RESPONSE);
+  Cycle arrived = crossbar_.to_unit(job.slice, uint32_t(port), ready, job.bytes);
+  free_jobs_.push_back(id);  // the response below may add jobs
   tlm::tlm_phase phase = tlm::BEGIN_RESP;
-  Cycle arrived = crossbar_.to_unit(job.slice, uint32_t(job.port), ready, job.bytes);
   sc_core::sc_time delay = clock_.time(arrived) - stamp_;  // serve() runs at stamp_
-  in[job.port]->nb_transport_bw(*job.trans, phase, delay);
+  in[port]->nb_transport_bw(trans, phase, delay);
 }
 
 Cycle SharedCacheModule::send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes,
