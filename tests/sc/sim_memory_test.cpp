@@ -11,12 +11,6 @@
 namespace rtsim {
 namespace {
 
-double counter(const nlohmann::json& doc, const std::string& name) {
-  const nlohmann::json& stats = doc["stats"];
-  return stats["counters"].contains(name) ? stats["counters"][name].get<double>()
-                                          : stats["derived"][name].get<double>();
-}
-
 TEST(SimMemory, LightlyLoadedDramHasItsUnloadedLatencyOnEveryPreset) {
   test::SimScene s;
   std::vector<Ray> rays = test::mixed_rays(s.scene, 4000, 7);
@@ -27,11 +21,11 @@ TEST(SimMemory, LightlyLoadedDramHasItsUnloadedLatencyOnEveryPreset) {
     HwConfig config = load_hw_config(entry.path().string(), {});
     nlohmann::json doc = test::simulate(config, s.scene, rays);
     std::string name = entry.path().filename().string();
-    double utilisation = counter(doc, "dram.utilisation");
+    double utilisation = test::stat(doc, "dram.utilisation");
     ASSERT_LT(utilisation, 0.10) << name << ": the stream must load the DRAM lightly";
     uint32_t block = config.l2.sector_bytes ? config.l2.sector_bytes : config.l2.line_bytes;
     double unloaded = config.dram.latency + block / config.dram.bytes_per_cycle;
-    double mean = counter(doc, "dram.mean_latency");
+    double mean = test::stat(doc, "dram.mean_latency");
     EXPECT_NEAR(mean / unloaded, 1.0, 0.10)
         << name << ": mean DRAM latency " << mean << " at " << utilisation * 100
         << "% utilisation, unloaded " << unloaded;
@@ -51,8 +45,8 @@ TEST(SimMemory, L1MissesWaitingForMshrsJoinTheL2InOrderWhateverTheLatencies) {
   config.dram.latency = 0;
   nlohmann::json doc = test::simulate(config, s.scene, rays, true);
   EXPECT_EQ(doc["verify"]["unexplained"], 0);
-  EXPECT_EQ(counter(doc, "rays"), double(rays.size()));
-  EXPECT_GT(counter(doc, "rt0.l1.mshr_stall_cycles"), 0.0) << "misses waited for MSHRs";
+  EXPECT_EQ(test::stat(doc, "rays"), double(rays.size()));
+  EXPECT_GT(test::stat(doc, "rt0.l1.mshr_stall_cycles"), 0.0) << "misses waited for MSHRs";
 }
 
 }  // namespace

@@ -8,10 +8,6 @@
 namespace rtsim {
 namespace {
 
-double counter(const nlohmann::json& doc, const std::string& name) {
-  return doc["stats"]["counters"][name].get<double>();
-}
-
 class SimRun : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(SimRun, EveryRayRetiresWithEmbreesAnswer) {
@@ -26,13 +22,13 @@ TEST_P(SimRun, EveryRayRetiresWithEmbreesAnswer) {
   EXPECT_EQ(doc["summary"]["rays"], rays.size());
   EXPECT_EQ(doc["verify"]["rays"], rays.size());
   EXPECT_EQ(doc["verify"]["unexplained"], 0) << doc["verify"].dump();
-  EXPECT_EQ(counter(doc, "dispatch.rays"), double(rays.size()));
-  EXPECT_EQ(counter(doc, "rt0.rays") + counter(doc, "rt1.rays"), double(rays.size()));
+  EXPECT_EQ(test::stat(doc, "dispatch.rays"), double(rays.size()));
+  EXPECT_EQ(test::stat(doc, "rt0.rays") + test::stat(doc, "rt1.rays"), double(rays.size()));
   double typed = 0;
   for (auto& [name, t] : doc["ray_types"].items()) typed += t["rays"].get<double>();
   EXPECT_EQ(typed, double(rays.size())) << "per-type counts add up";
   // DRAM never exceeds its bandwidth: its bus was busy at most every cycle.
-  EXPECT_LE(counter(doc, "dram.bytes") / 16.0, counter(doc, "cycles") + 1);
+  EXPECT_LE(test::stat(doc, "dram.bytes") / 16.0, test::stat(doc, "cycles") + 1);
   EXPECT_GT(doc["summary"]["rays_per_cycle"].get<double>(), 0.0);
 }
 
@@ -60,7 +56,7 @@ TEST(SimQuantum, DecouplingChangesCyclesOnlySlightly) {
   double c1 = exact["summary"]["cycles"].get<double>(),
          c32 = fast["summary"]["cycles"].get<double>();
   EXPECT_NEAR(c32 / c1, 1.0, 0.03) << "quantum 32 vs exact order";
-  EXPECT_NEAR(counter(fast, "dram.bytes") / counter(exact, "dram.bytes"), 1.0, 0.03);
+  EXPECT_NEAR(test::stat(fast, "dram.bytes") / test::stat(exact, "dram.bytes"), 1.0, 0.03);
 }
 
 }  // namespace

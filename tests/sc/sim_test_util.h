@@ -68,6 +68,13 @@ inline nlohmann::json simulate(const HwConfig& config, const Scene& scene,
   return nlohmann::json::parse(text);
 }
 
+// A counter or derived stat of a stats document by its registry name.
+inline double stat(const nlohmann::json& doc, const std::string& name) {
+  const nlohmann::json& stats = doc["stats"];
+  return stats["counters"].contains(name) ? stats["counters"][name].get<double>()
+                                          : stats["derived"][name].get<double>();
+}
+
 // Camera and diffuse rays of a scene, seeded.
 inline std::vector<Ray> mixed_rays(const Scene& scene, size_t diffuse, uint64_t seed) {
   std::vector<Ray> rays = sample_camera_rays(scene.mesh, 32, 24);
