@@ -158,17 +158,18 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
 
 void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
   uint64_t end = addr + std::max<uint32_t>(bytes, 1);
-  uint64_t first = addr >> block_shift_;
-  uint64_t last = (end - 1) >> block_shift_;
   stats_.write_bytes += bytes;
-  Cycle start = at;
-  for (uint64_t block = first; block <= last; ++block) {
-    uint64_t line = block >> sector_shift_;
-    if (admits_ && (block == first || (block & sector_mask_) == 0))
-      start = admit(line, bytes_in(line, addr, end), at);
-    write_block(block, start);
+  // Line by line: each takes its bank and port, and goes below on its own (the level below may
+  // place lines apart: the slices of the L2).
+  for (uint64_t line = addr >> line_shift_; line <= (end - 1) >> line_shift_; ++line) {
+    uint64_t begin = std::max(addr, line << line_shift_);
+    uint64_t stop = std::min(end, (line + 1) << line_shift_);
+    Cycle start = admits_ ? admit(line, stop - begin, at) : at;
+    for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block)
+      write_block(block, start);
+    if (!config_.write_back)
+      below_->write(begin, uint32_t(stop - begin), start + config_.hit_latency);
   }
-  if (!config_.write_back) below_->write(addr, bytes, start + config_.hit_latency);
 }
 
 bool Cache::contains(uint64_t addr) const {

@@ -12,7 +12,8 @@
 // non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
 // The DRAM is reached through `out` by the base protocol's blocking transport (loosely timed),
 // called at the request's own cycle, so any loosely-timed TLM memory can be bound there.
-// A request crosses the crossbar to its slice (slice_of: a hash of the line address) when it
+// A request crosses the crossbar to its slice (slice_of: a hash of the line address; a request
+// must not span lines, as an L1's blocks and line-by-line writes never do) when it
 // arrives, and is queued for the cycle it reaches the slice; its data crosses back when its
 // cycle is known. Crossbar links accept bookings in any order of their cycles, so neither
 // direction delays a request by one dated later.

@@ -70,6 +70,19 @@ TEST(CacheWrites, WriteThroughSendsEveryWriteBelowAtOnce) {
   EXPECT_EQ(mem.writes.size(), 1u) << "nothing dirty to write back";
 }
 
+TEST(CacheWrites, AWriteThroughSpanningTwoLinesGoesBelowAsTwo) {
+  test::MockMemory mem(100);
+  CacheConfig c = small_cache();
+  c.write_back = false;
+  Cache cache(c, &mem);
+  cache.write(kLocal + 56, 16, 0);  // 8 bytes in each of two lines
+  ASSERT_EQ(mem.writes.size(), 2u) << "a sliced level below places the lines apart";
+  EXPECT_EQ(mem.writes[0].addr, kLocal + 56);
+  EXPECT_EQ(mem.writes[0].bytes, 8u);
+  EXPECT_EQ(mem.writes[1].addr, kLocal + 64);
+  EXPECT_EQ(mem.writes[1].bytes, 8u);
+}
+
 TEST(CacheWrites, SectoredLinesWriteBackOnlyTheirDirtySectors) {
   test::MockMemory mem(100);
   CacheConfig c = small_cache();

@@ -49,5 +49,23 @@ TEST(SimMemory, L1MissesWaitingForMshrsJoinTheL2InOrderWhateverTheLatencies) {
   EXPECT_GT(test::stat(doc, "rt0.l1.mshr_stall_cycles"), 0.0) << "misses waited for MSHRs";
 }
 
+TEST(SimMemory, DepthFirstAndTreeletModesMissTheSameBlocksCompulsorily) {
+  // Spilled stacks live in cached local memory and refill from there, so the compulsory misses
+  // of both modes are the BVH blocks the rays touch, whatever the stack traffic.
+  test::SimScene s;
+  std::vector<Ray> rays = test::mixed_rays(s.scene, 3000, 9);
+  HwConfig config = test::small_machine();
+  config.rt.stack.entries = 1;
+  config.l2_layout.slices = 4;  // lines written through to the L2 go to their own slice
+  nlohmann::json depth_first = test::simulate(config, s.scene, rays);
+  config.rt.mode = TraversalMode::Treelet;
+  config.treelet_queues.max_rays = 4096;  // many ray contexts, each spilling into fresh lines
+  nlohmann::json treelet = test::simulate(config, s.scene, rays);
+  ASSERT_GT(test::stat(depth_first, "rt.stack.spill_entries"), 0.0);
+  ASSERT_GT(test::stat(treelet, "rt.stack.spill_entries"), 0.0);
+  ASSERT_GT(test::stat(treelet, "rt.postponed"), 0.0);
+  EXPECT_EQ(test::stat(depth_first, "l2.cold_misses"), test::stat(treelet, "l2.cold_misses"));
+}
+
 }  // namespace
 }  // namespace rtsim
