@@ -11,11 +11,16 @@ namespace rtsim {
 namespace {
 
 constexpr const char* kRayTypeNames[kRayTypeCount] = {
-    "camera", "shadow", "reflection", "reflected_shadow",
-    "diffuse_gi", "ao", "refraction", "translucency"};
+    "camera",     "shadow", "reflection", "reflected_shadow",
+    "diffuse_gi", "ao",     "refraction", "translucency"};
 
 bool finite3(const glm::vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool in_range(const glm::vec3& v) {
+  return std::fabs(v.x) <= kMaxRayComponent && std::fabs(v.y) <= kMaxRayComponent &&
+         std::fabs(v.z) <= kMaxRayComponent;
 }
 
 }  // namespace
@@ -39,14 +44,15 @@ bool Ray::operator==(const Ray& o) const {
   // Bitwise: -0 and +0 differ, as they do in the file.
   auto same = [](const void* a, const void* b, size_t n) { return std::memcmp(a, b, n) == 0; };
   return same(&org, &o.org, sizeof org) && same(&dir, &o.dir, sizeof dir) &&
-         same(&tmin, &o.tmin, sizeof tmin) && same(&tmax, &o.tmax, sizeof tmax) &&
-         type == o.type && query == o.query && sample == o.sample && pixel == o.pixel &&
-         frame == o.frame;
+         same(&tmin, &o.tmin, sizeof tmin) && same(&tmax, &o.tmax, sizeof tmax) && type == o.type &&
+         query == o.query && sample == o.sample && pixel == o.pixel && frame == o.frame;
 }
 
 std::string ray_problem(const Ray& ray) {
   if (!finite3(ray.org)) return "origin is NaN or Inf";
   if (!finite3(ray.dir)) return "direction is NaN or Inf";
+  if (!in_range(ray.org)) return "an origin component is beyond +-1.844e18 (Embree's range)";
+  if (!in_range(ray.dir)) return "a direction component is beyond +-1.844e18 (Embree's range)";
   if (ray.dir.x == 0.0f && ray.dir.y == 0.0f && ray.dir.z == 0.0f) return "direction is zero";
   if (!std::isfinite(ray.tmin)) return "tmin is NaN or Inf";
   if (std::isnan(ray.tmax) || ray.tmax == -std::numeric_limits<float>::infinity())

@@ -50,8 +50,13 @@ struct Ray {
   bool operator==(const Ray& o) const;
 };
 
-// Why a ray cannot be traced (NaN or Inf fields, zero direction, tmin > tmax); empty if fine.
-// tmax = +inf is allowed; denormal directions are allowed.
+// The largest origin or direction component a ray may have: Embree's valid range (FLT_LARGE;
+// its ray.valid() assertion aborts the process beyond it).
+constexpr float kMaxRayComponent = 1.844e18f;
+
+// Why a ray cannot be traced (NaN or Inf fields, components beyond kMaxRayComponent, zero
+// direction, tmin > tmax); empty if fine. tmax = +inf is allowed; denormal directions are
+// allowed.
 std::string ray_problem(const Ray& ray);
 
 constexpr uint32_t kNoHit = std::numeric_limits<uint32_t>::max();

@@ -2,6 +2,7 @@
 // scene passes before anyone else sees it.
 #include "workloads/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -62,8 +63,16 @@ void finalize_scene(Scene& scene) {
   const TriangleMesh& mesh = scene.mesh;
   if (mesh.triangle_count() == 0) throw_input_error(scene.source, "", "the scene has no triangles");
   for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    if (!finite(mesh.positions[v]))
+    const glm::vec3& p = mesh.positions[v];
+    if (!finite(p))
       throw_input_error(scene.source, "vertex " + std::to_string(v), "position is NaN or Inf");
+    float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    if (largest > kMaxSceneCoordinate)
+      throw_input_error(
+          scene.source, "vertex " + std::to_string(v),
+          fmt::format("coordinate {:g} is beyond +-{:g}, the range rtsim traces (cameras and ray "
+                      "offsets must stay inside Embree's +-1.8e18); scale the scene down",
+                      largest, kMaxSceneCoordinate));
   }
   for (size_t t = 0; t < mesh.triangle_count(); ++t) {
     for (uint32_t index : mesh.triangles[t])

@@ -17,13 +17,13 @@ namespace rtsim {
 struct Material {
   std::string name;
   glm::vec3 base_color{0.8f};
-  float roughness = 0.5f;      // GGX alpha = roughness^2
-  float metalness = 0.0f;      // 0 dielectric, 1 conductor
-  int layers = 1;              // >1: clear-coat layers over the base (one ray for the stack)
-  float transmission = 0.0f;   // >0: refractive (glass)
-  float ior = 1.5f;            // index of refraction for transmission and Fresnel
-  float translucency = 0.0f;   // >0: light scatters through (translucency rays)
-  glm::vec3 emission{0.0f};    // emitted radiance
+  float roughness = 0.5f;     // GGX alpha = roughness^2
+  float metalness = 0.0f;     // 0 dielectric, 1 conductor
+  int layers = 1;             // >1: clear-coat layers over the base (one ray for the stack)
+  float transmission = 0.0f;  // >0: refractive (glass)
+  float ior = 1.5f;           // index of refraction for transmission and Fresnel
+  float translucency = 0.0f;  // >0: light scatters through (translucency rays)
+  glm::vec3 emission{0.0f};   // emitted radiance
 };
 
 struct Scene {
@@ -58,8 +58,12 @@ std::vector<std::string> builtin_scene_names();
 // File extensions load_scene imports (lowercase, with the dot: ".obj", ".gltf", ...).
 std::vector<std::string> scene_file_extensions();
 
-// Fills fingerprint and bounds, and checks the invariants (ids in range, finite vertices,
-// at least one triangle); throws InputError naming source.
+// The largest vertex coordinate a scene may have: far below Embree's ray range (1.844e18), so
+// that cameras placed around the scene and the rays' offsets stay inside it.
+constexpr float kMaxSceneCoordinate = 1e15f;
+
+// Fills fingerprint and bounds, and checks the invariants (ids in range, finite vertices within
+// +-kMaxSceneCoordinate, at least one triangle); throws InputError naming source.
 void finalize_scene(Scene& scene);
 
 }  // namespace rtsim

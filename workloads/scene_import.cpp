@@ -63,14 +63,21 @@ void check_raw_meshes(const std::string& path, const aiScene& scene) {
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) polygons += mesh.mFaces[f].mNumIndices >= 3;
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D& p = mesh.mVertices[v];
-      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+      bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+      float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+      if (finite && largest <= kMaxSceneCoordinate) continue;
       std::string where;
       if (scene.mNumMeshes > 1 || mesh.mName.length > 0) {
         where = mesh.mName.length > 0 ? "mesh '" + std::string(mesh.mName.C_Str()) + "' "
                                       : "mesh " + std::to_string(m) + " ";
       }
       throw_input_error(path, where + "vertex " + std::to_string(v),
-                        "position " + format_vertex(p) + " is NaN or Inf");
+                        "position " + format_vertex(p) +
+                            (finite ? fmt::format(" is beyond +-{:g}, the range rtsim traces "
+                                                  "(cameras and ray offsets must stay inside "
+                                                  "Embree's +-1.8e18); scale the scene down",
+                                                  kMaxSceneCoordinate)
+                                    : std::string(" is NaN or Inf")));
     }
   }
   if (polygons == 0) throw_input_error(path, "", "the file has no triangles");
@@ -87,7 +94,7 @@ void check_log(const std::string& path, const std::string& ext, const AssimpErro
 
 // Appends the triangles of every mesh under node, transformed to world space.
 class Flattener {
-public:
+ public:
   Flattener(const aiScene& scene, Scene& out, bool use_materials, std::string fallback_name)
       : scene_(scene),
         out_(out),
@@ -101,7 +108,7 @@ public:
     for (unsigned c = 0; c < node.mNumChildren; ++c) walk(*node.mChildren[c], transform);
   }
 
-private:
+ private:
   // An object is the named node (OBJ o/g groups, glTF nodes), else the mesh, else the file.
   std::string object_name(const aiNode& node, unsigned i) const {
     if (&node != scene_.mRootNode && node.mName.length > 0) return node.mName.C_Str();

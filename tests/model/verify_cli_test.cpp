@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -39,7 +40,7 @@ std::string write_stream(const std::string& name, const std::string& scene_name)
 }
 
 class VerifyCli : public ::testing::Test {
-protected:
+ protected:
   static void SetUpTestSuite() { stream_ = write_stream("hard.rays", "hardcases"); }
   static void TearDownTestSuite() { std::remove(stream_.c_str()); }
   static std::string stream_;
@@ -113,6 +114,43 @@ TEST(VerifyCliInput, NanRayInStreamIsRejected) {
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("NaN"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("OK:"), std::string::npos) << "no ray was traced";
+}
+
+// A one-ray stream whose origin lies beyond Embree's range (it aborted the process): exit 2
+// naming the ray and its byte offset, and nothing traced.
+TEST(VerifyCliInput, ARayBeyondEmbreesRangeIsRejected) {
+  Scene scene = load_scene("cornell");
+  StreamHeader header;
+  header.scene_source = scene.source;
+  header.scene_fingerprint = scene.fingerprint;
+  std::string path = temp_path("far.rays");
+  RayStreamWriter writer(path, header);
+  writer.write(sample_camera_rays(scene.mesh, 1, 1)[0]);
+  writer.finish();
+  std::ifstream in(path, std::ios::binary);
+  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), {});
+  in.close();
+  uint32_t header_bytes;
+  std::memcpy(&header_bytes, bytes.data() + 12, 4);
+  float far = 2e18f;
+  std::memcpy(bytes.data() + header_bytes + 4 + 4, &far, 4);  // count, then org.x, org.y
+  uint32_t crc = crc32(bytes.data() + header_bytes, 4 + kRayRecordBytes);
+  std::memcpy(bytes.data() + header_bytes + 4 + kRayRecordBytes, &crc, 4);
+  std::ofstream(path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  std::string out = temp_path("far-out");
+  for (const std::string& command :
+       {std::string("verify "), "sim --no-verify -q -o " + out + " "}) {
+    auto r = test::run_rtsim(command + path);
+    EXPECT_EQ(r.exit_code, 2) << command << r.out << r.err;
+    EXPECT_NE(r.err.find("offset " + std::to_string(header_bytes + 4) +
+                         ": ray 0: an origin component is beyond +-1.844e18"),
+              std::string::npos)
+        << command << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out + "/stats.json")) << "nothing simulated";
+  std::filesystem::remove_all(out);
+  std::remove(path.c_str());
 }
 
 TEST(BenchCli, RunsOnABuiltinScene) {

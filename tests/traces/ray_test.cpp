@@ -27,6 +27,11 @@ TEST(RayProblem, RejectsEachBadField) {
   EXPECT_EQ(problem([&](Ray& r) { r.org.x = inf; }), "origin is NaN or Inf");
   EXPECT_EQ(problem([&](Ray& r) { r.dir.z = nan; }), "direction is NaN or Inf");
   EXPECT_EQ(problem([&](Ray& r) { r.dir = glm::vec3(0.0f); }), "direction is zero");
+  EXPECT_EQ(problem([&](Ray& r) { r.org.y = -1.9e18f; }),
+            "an origin component is beyond +-1.844e18 (Embree's range)");
+  EXPECT_EQ(problem([&](Ray& r) { r.dir.x = 2e18f; }),
+            "a direction component is beyond +-1.844e18 (Embree's range)");
+  EXPECT_EQ(problem([&](Ray& r) { r.org.z = 1.8e18f; }), "") << "inside the range";
   EXPECT_EQ(problem([&](Ray& r) { r.tmin = nan; }), "tmin is NaN or Inf");
   EXPECT_EQ(problem([&](Ray& r) { r.tmax = nan; }), "tmax is NaN or -Inf");
   EXPECT_EQ(problem([&](Ray& r) { r.tmin = -1.0f; }), "tmin is negative");

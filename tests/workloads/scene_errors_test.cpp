@@ -32,6 +32,14 @@ TEST(SceneErrors, UnsupportedExtensionListsTheSupportedOnes) {
   EXPECT_EQ(scene_file_extensions().size(), 6u);
 }
 
+TEST(SceneErrors, AVertexBeyondTheTracedRangeNamesTheVertexAndTheBound) {
+  TempDir dir;
+  expect_input_error(dir.write("huge.obj", "v 0 0 0\nv 1 0 0\nv 1e19 1 0\nf 1 2 3\n"),
+                     "vertex 2: position (1e+19, 1, 0) is beyond +-1e+15");
+  expect_input_error(dir.write("far.obj", "v 0 0 0\nv 1 0 0\nv 0 -1e18 0\nf 1 2 3\n"),
+                     "vertex 2: position (0, -1e+18, 0) is beyond +-1e+15");
+}
+
 TEST(SceneErrors, NanOrInfVertexNamesTheVertex) {
   TempDir dir;
   expect_input_error(dir.write("nan.obj", "v 0 0 0\nv 1 0 0\nv nan 1 0\nf 1 2 3\n"),
