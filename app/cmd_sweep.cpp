@@ -18,12 +18,13 @@ namespace {
 struct SweepOptions {
   std::string spec, output;
   uint32_t jobs = 0;
+  uint64_t max_points = reports::kDefaultMaxSweepPoints;
   bool no_charts = false, quiet = false;
 };
 
 int run_sweep_command(const SweepOptions& o) {
   if (o.output.empty()) throw InputError("sweep: -o DIR is required");
-  reports::SweepSpec spec = reports::read_sweep_spec(o.spec);
+  reports::SweepSpec spec = reports::read_sweep_spec(o.spec, o.max_points);
   create_output_folder(o.output);
   std::vector<reports::PointRun> points = reports::run_sweep(spec, {o.output, o.jobs, o.quiet});
   nlohmann::ordered_json doc = reports::sweep_json(spec, points);
@@ -53,6 +54,9 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_option("spec", o->spec, "Sweep spec (.toml; see reports/examples/)")->required();
   cmd->add_option("-o,--output", o->output, "Sweep folder (results, points, traces)");
   cmd->add_option("-j,--jobs", o->jobs, "Points run at once (default: the spec's, else all cores)");
+  cmd->add_option("--max-points", o->max_points,
+                  "Refuse a grid of more points than this (counted before it is expanded)")
+      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
   cmd->add_flag("--no-charts", o->no_charts, "Write the pages without running Python");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");
   cmd->callback([o, &exit_code] { exit_code = run_sweep_command(*o); });

@@ -39,13 +39,24 @@ void flatten(const toml::table& t, const std::string& prefix,
   }
 }
 
-void add_grid(const SpecReader& r, const toml::table& grid, SweepSpec& spec) {
+void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points, SweepSpec& spec) {
   std::vector<std::pair<std::string, const toml::node*>> axes;
   flatten(grid, "", axes);
-  spec.points.push_back({Json::object(), {}});
+  uint64_t count = 1;
+  std::string product;
   for (const auto& [key, node] : axes) {
     const toml::array* values = node->as_array();
     if (!values || values->empty()) r.fail(*node, "grid key '" + key + "' needs a list of values");
+    count = std::min<uint64_t>(count * values->size(), uint64_t(1) << 62);
+    product += (product.empty() ? "" : " x ") + std::to_string(values->size());
+  }
+  if (count > max_points)
+    r.fail(grid, fmt::format("the grid has {} points ({}), more than the limit of {}: narrow it, "
+                             "or pass --max-points {} to run them all",
+                             count, product, max_points, count));
+  spec.points.push_back({Json::object(), {}});
+  for (const auto& [key, node] : axes) {
+    const toml::array* values = node->as_array();
     spec.keys.push_back(key);
     std::vector<SweepPoint> next;
     for (const SweepPoint& p : spec.points)
@@ -121,7 +132,7 @@ void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) 
 
 }  // namespace
 
-SweepSpec read_sweep_spec(const std::string& path) {
+SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points) {
   SpecReader r{path};
   toml::table root = parse_config_file(path, "sweep spec");
   r.only(root,
@@ -137,7 +148,7 @@ SweepSpec read_sweep_spec(const std::string& path) {
   bool grid = root["grid"].is_table(), list = root["point"].is_array();
   if (grid && list) throw_input_error(path, "", "give either [grid] or [[point]] lists, not both");
   if (!grid && !list) throw_input_error(path, "", "no [grid] table or [[point]] list to sweep");
-  if (grid) add_grid(r, *root["grid"].as_table(), spec);
+  if (grid) add_grid(r, *root["grid"].as_table(), max_points, spec);
   if (list)
     for (const toml::node& n : *root["point"].as_array()) {
       if (!n.is_table()) r.fail(n, "[[point]] must be a table");

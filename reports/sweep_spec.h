@@ -31,18 +31,22 @@ struct SweepChart {
 
 struct SweepSpec {
   std::string file, name, description;
-  std::string config;               // base hardware config file ("" = defaults)
-  std::vector<std::string> sets;    // applied to every point, before the point's own
+  std::string config;             // base hardware config file ("" = defaults)
+  std::vector<std::string> sets;  // applied to every point, before the point's own
   std::vector<SweepWorkload> workloads;
-  std::vector<std::string> keys;    // swept keys, in spec order
+  std::vector<std::string> keys;  // swept keys, in spec order
   std::vector<SweepPoint> points;
   std::string fidelity = "cycle";
   SamplingConfig sampling;
   bool verify = true;
-  uint32_t jobs = 0;                // parallel runs; 0: every local core
-  std::vector<SweepChart> charts;   // empty: curves of cycles and DRAM bytes per swept key
+  uint32_t jobs = 0;               // parallel runs; 0: every local core
+  std::vector<SweepChart> charts;  // empty: curves of cycles and DRAM bytes per swept key
 };
 
-SweepSpec read_sweep_spec(const std::string& path);
+// The most grid points a sweep expands unless asked for more (`rtsim sweep --max-points`): a
+// grid is counted before it is expanded, so a mistyped one is refused at once.
+constexpr uint64_t kDefaultMaxSweepPoints = 10000;
+
+SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points = kDefaultMaxSweepPoints);
 
 }  // namespace rtsim::reports

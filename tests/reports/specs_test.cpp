@@ -64,6 +64,25 @@ workload = "pica"
   EXPECT_EQ(s.keys.size(), 2u);
 }
 
+TEST(SweepSpec, AGridIsCountedBeforeItIsExpandedAndRefusedAboveTheLimit) {
+  std::string grid = "[[workload]]\n[grid]\n\"rt.count\" = [1, 2]\n\"rt.warps\" = [1, 2, 4]\n";
+  EXPECT_EQ(read_sweep_spec(write("s.toml", grid), 6).points.size(), 6u);
+  std::string error = error_of([&] { read_sweep_spec(write("s.toml", grid), 5); });
+  EXPECT_NE(error.find("line 2: the grid has 6 points (2 x 3), more than the limit of 5"),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("--max-points 6"), std::string::npos) << error;
+  // A million points: refused from the count alone, with nothing expanded.
+  std::string values = "[";
+  for (int i = 1; i <= 100; ++i) values += std::to_string(i) + (i < 100 ? ", " : "]");
+  std::string huge = "[[workload]]\n[grid]\n\"rt.count\" = " + values +
+                     "\n\"rt.warps\" = " + values + "\n\"rt.warp_size\" = " + values + "\n";
+  EXPECT_NE(error_of([&] {
+              read_sweep_spec(write("s.toml", huge));
+            }).find("the grid has 1000000 points (100 x 100 x 100), more than the limit of 10000"),
+            std::string::npos);
+}
+
 TEST(SweepSpec, MistakesNameTheFileAndLine) {
   EXPECT_NE(error_of([] {
               read_sweep_spec(write("s.toml",
