@@ -104,7 +104,7 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
       entry["l1_bytes_per_ray"] = counters["type." + name + ".l1_accesses"].get<double>() *
-                                  (c.l1.sector_bytes ? c.l1.sector_bytes : c.l1.line_bytes) / n;
+                                  block_bytes(c.l1) / n;
       entry["l2_bytes_per_ray"] =
           counters["type." + name + ".l2_accesses"].get<double>() * c.l2.line_bytes / n;
     }

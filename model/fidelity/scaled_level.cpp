@@ -216,7 +216,7 @@ FidelityResult run_scaled_level(const HwConfig& config, const BvhImage& image,
   // First references, shared out over the ray types: the fetched ones by their L2 misses,
   // the absent units' ones by their L2 accesses.
   CacheStats l2 = sim.l2_stats();
-  double line = double(config.l2.sector_bytes ? config.l2.sector_bytes : config.l2.line_bytes);
+  double line = double(block_bytes(config.l2));
   const auto& totals = collector.totals();
   double misses = 0, accesses = 0;
   for (const CostTotals& c : totals) {

@@ -73,7 +73,7 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   sets_ = uint32_t(config.size_bytes / (uint64_t(config.line_bytes) * config.ways));
   if (sets_ > 1 && power_of_two(sets_)) set_shift_ = uint32_t(__builtin_ctz(sets_));
   line_shift_ = uint32_t(__builtin_ctz(config.line_bytes));
-  block_shift_ = config.sector_bytes ? uint32_t(__builtin_ctz(config.sector_bytes)) : line_shift_;
+  block_shift_ = uint32_t(__builtin_ctz(rtsim::block_bytes(config)));
   sector_shift_ = line_shift_ - block_shift_;
   sector_mask_ = (uint64_t(1) << sector_shift_) - 1;
   admits_ = config.bank_ports > 0 || config.bytes_per_cycle > 0;
@@ -118,27 +118,25 @@ Cycle Cache::admit(uint64_t line, uint64_t bytes, Cycle at) {
   return start;
 }
 
-uint64_t Cache::bytes_in(uint64_t line, uint64_t addr, uint64_t end) const {
-  uint64_t begin = line << line_shift_;
-  return std::min(end, begin + config_.line_bytes) - std::max(addr, begin);
-}
-
 Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
                   ReadCharge& charge) {
-  uint64_t end = addr + std::max<uint32_t>(bytes, 1);
   uint64_t first = addr >> block_shift_;
-  uint64_t last = (end - 1) >> block_shift_;
+  uint64_t last = (addr + std::max<uint32_t>(bytes, 1) - 1) >> block_shift_;
   stats_.bytes_read += bytes;
   if (addr >= kLocalMemoryBase) stats_.local_reads++;
   Caller caller{client, token, last > first, kNone};
   if (!caller.several_blocks)
     return read_block(first, admits_ ? admit(first >> sector_shift_, bytes, at) : at, caller,
                       charge);
+  // Block by block, the hot path (a node's several lines); a line's first block takes its bank
+  // and port for the part of the read inside the line.
   Cycle ready = at, start = at;
   for (uint64_t block = first; block <= last; ++block) {
     uint64_t line = block >> sector_shift_;
-    if (admits_ && (block == first || (block & sector_mask_) == 0))
-      start = admit(line, bytes_in(line, addr, end), at);
+    if (admits_ && (block == first || (block & sector_mask_) == 0)) {
+      uint64_t begin = std::max(addr, line << line_shift_);
+      start = admit(line, std::min(addr + bytes, (line + 1) << line_shift_) - begin, at);
+    }
     Cycle r = read_block(block, start, caller, charge);
     if (r != kPending) ready = std::max(ready, r);
   }
@@ -157,19 +155,16 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
 }
 
 void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
-  uint64_t end = addr + std::max<uint32_t>(bytes, 1);
   stats_.write_bytes += bytes;
   // Line by line: each takes its bank and port, and goes below on its own (the level below may
   // place lines apart: the slices of the L2).
-  for (uint64_t line = addr >> line_shift_; line <= (end - 1) >> line_shift_; ++line) {
-    uint64_t begin = std::max(addr, line << line_shift_);
-    uint64_t stop = std::min(end, (line + 1) << line_shift_);
+  for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
     Cycle start = admits_ ? admit(line, stop - begin, at) : at;
     for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block)
       write_block(block, start);
     if (!config_.write_back)
       below_->write(begin, uint32_t(stop - begin), start + config_.hit_latency);
-  }
+  });
 }
 
 bool Cache::contains(uint64_t addr) const {
@@ -177,9 +172,7 @@ bool Cache::contains(uint64_t addr) const {
   uint64_t line = block >> sector_shift_;
   uint32_t set = set_of(line);
   uint32_t way = find(set, tag_of(line));
-  if (way == kNone) return false;
-  return blocks_[((size_t(set) * config_.ways + way) << sector_shift_) + (block & sector_mask_)]
-      .valid;
+  return way != kNone && blocks_[block_index(set, way, block)].valid;
 }
 
 uint32_t Cache::find(uint32_t set, uint64_t tag) const {
@@ -218,7 +211,7 @@ Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& ch
 
   if (way != kNone) {
     policy_->touch(set, way);
-    Block& b = block_of_line(size_t(set) * config_.ways + way, block);
+    Block& b = block_at(set, way, block);
     if (b.valid && (b.ready == kPending || b.ready > at)) {
       uint32_t replay = merge(b);
       if (b.ready != kPending) return std::max(b.ready + replay, hit_ready);

@@ -20,6 +20,7 @@
 // is evicted; write-through: every write also goes below, hit_latency after it arrives.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -50,6 +51,11 @@ struct CacheConfig {
 
 // Why the config is impossible (empty if it is fine): sizes, powers of two, known policy.
 std::string cache_config_problem(const CacheConfig& config);
+
+// What a miss fetches and an MSHR tracks: the sector, or the whole line when unsectored.
+inline uint32_t block_bytes(const CacheConfig& c) {
+  return c.sector_bytes ? c.sector_bytes : c.line_bytes;
+}
 
 // Which counters of a ReadCharge a level fills: its own accesses and hits; the L2, as the last
 // cache level, also the bytes it fetches from DRAM.
@@ -165,8 +171,14 @@ class Cache : public MemoryTarget, private ReadClient {
   // The cycle a lookup of `line` moving `bytes` starts: its bank's port and the data port free
   // (called only if admits_).
   Cycle admit(uint64_t line, uint64_t bytes, Cycle at);
-  // The bytes of [addr, end) within a line.
-  uint64_t bytes_in(uint64_t line, uint64_t addr, uint64_t end) const;
+  // Calls f(line, begin, stop) for each line [addr, addr + bytes) touches, with the part of
+  // the range inside it.
+  template <class F>
+  void for_each_line(uint64_t addr, uint32_t bytes, F f) const {
+    uint64_t end = addr + std::max<uint32_t>(bytes, 1);
+    for (uint64_t line = addr >> line_shift_; line <= (end - 1) >> line_shift_; ++line)
+      f(line, std::max(addr, line << line_shift_), std::min(end, (line + 1) << line_shift_));
+  }
   // A block's ready cycle, or kPending once the caller waits for it.
   Cycle read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge);
   void write_block(uint64_t block, Cycle at);
@@ -183,11 +195,11 @@ class Cache : public MemoryTarget, private ReadClient {
   uint32_t find(uint32_t set, uint64_t tag) const;  // the way holding tag, or kNone
   // Gives a way of the set to `tag`, evicting a victim (its dirty blocks written back at `at`).
   uint32_t allocate(uint32_t set, uint64_t tag, Cycle at);
-  Block& block_at(uint32_t set, uint32_t way, uint64_t block) {
-    return block_of_line(size_t(set) * config_.ways + way, block);
+  size_t block_index(uint32_t set, uint32_t way, uint64_t block) const {
+    return ((size_t(set) * config_.ways + way) << sector_shift_) + (block & sector_mask_);
   }
-  Block& block_of_line(size_t line_index, uint64_t block) {
-    return blocks_[(line_index << sector_shift_) + (block & sector_mask_)];
+  Block& block_at(uint32_t set, uint32_t way, uint64_t block) {
+    return blocks_[block_index(set, way, block)];
   }
   template <class T>
   static uint32_t take(std::vector<T>& pool, std::vector<uint32_t>& free);

@@ -87,14 +87,13 @@ TEST_F(VerifyCli, BadInputExitsTwo) {
   EXPECT_NE(r.err.find("max_leaf_size"), std::string::npos) << r.err;
 }
 
-// A one-ray stream whose ray direction is patched to NaN, with its chunk CRC fixed up: the
-// reader must reject the ray with a clear error before anything is traced.
-TEST(VerifyCliInput, NanRayInStreamIsRejected) {
+// A one-ray stream of cornell whose float at byte `field` of the ray record is `value`, with
+// its chunk CRC fixed up, so that only the ray itself is wrong. Returns the record's offset.
+uint64_t write_patched_ray_stream(const std::string& path, size_t field, float value) {
   Scene scene = load_scene("cornell");
   StreamHeader header;
   header.scene_source = scene.source;
   header.scene_fingerprint = scene.fingerprint;
-  std::string path = temp_path("nan.rays");
   RayStreamWriter writer(path, header);
   writer.write(sample_camera_rays(scene.mesh, 1, 1)[0]);
   writer.finish();
@@ -103,12 +102,19 @@ TEST(VerifyCliInput, NanRayInStreamIsRejected) {
   in.close();
   uint32_t header_bytes;
   std::memcpy(&header_bytes, bytes.data() + 12, 4);
-  float nan = std::numeric_limits<float>::quiet_NaN();
-  std::memcpy(bytes.data() + header_bytes + 4 + 12, &nan, 4);  // count, then org, then dir.x
+  uint64_t record = header_bytes + 4;  // the chunk's ray count, then the record
+  std::memcpy(bytes.data() + record + field, &value, 4);
   uint32_t crc = crc32(bytes.data() + header_bytes, 4 + kRayRecordBytes);
   std::memcpy(bytes.data() + header_bytes + 4 + kRayRecordBytes, &crc, 4);
   std::ofstream(path, std::ios::binary)
       .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  return record;
+}
+
+// The reader must reject a NaN direction with a clear error before anything is traced.
+TEST(VerifyCliInput, NanRayInStreamIsRejected) {
+  std::string path = temp_path("nan.rays");
+  write_patched_ray_stream(path, 12, std::numeric_limits<float>::quiet_NaN());  // dir.x
   auto r = test::run_rtsim("verify " + path);
   std::remove(path.c_str());
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
@@ -116,34 +122,17 @@ TEST(VerifyCliInput, NanRayInStreamIsRejected) {
   EXPECT_EQ(r.out.find("OK:"), std::string::npos) << "no ray was traced";
 }
 
-// A one-ray stream whose origin lies beyond Embree's range (it aborted the process): exit 2
-// naming the ray and its byte offset, and nothing traced.
+// An origin beyond Embree's range (it aborted the process): exit 2 naming the ray and its byte
+// offset, and nothing traced.
 TEST(VerifyCliInput, ARayBeyondEmbreesRangeIsRejected) {
-  Scene scene = load_scene("cornell");
-  StreamHeader header;
-  header.scene_source = scene.source;
-  header.scene_fingerprint = scene.fingerprint;
   std::string path = temp_path("far.rays");
-  RayStreamWriter writer(path, header);
-  writer.write(sample_camera_rays(scene.mesh, 1, 1)[0]);
-  writer.finish();
-  std::ifstream in(path, std::ios::binary);
-  std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), {});
-  in.close();
-  uint32_t header_bytes;
-  std::memcpy(&header_bytes, bytes.data() + 12, 4);
-  float far = 2e18f;
-  std::memcpy(bytes.data() + header_bytes + 4 + 4, &far, 4);  // count, then org.x, org.y
-  uint32_t crc = crc32(bytes.data() + header_bytes, 4 + kRayRecordBytes);
-  std::memcpy(bytes.data() + header_bytes + 4 + kRayRecordBytes, &crc, 4);
-  std::ofstream(path, std::ios::binary)
-      .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  uint64_t record = write_patched_ray_stream(path, 4, 2e18f);  // org.y
   std::string out = temp_path("far-out");
   for (const std::string& command :
        {std::string("verify "), "sim --no-verify -q -o " + out + " "}) {
     auto r = test::run_rtsim(command + path);
     EXPECT_EQ(r.exit_code, 2) << command << r.out << r.err;
-    EXPECT_NE(r.err.find("offset " + std::to_string(header_bytes + 4) +
+    EXPECT_NE(r.err.find("offset " + std::to_string(record) +
                          ": ray 0: an origin component is beyond +-1.844e18"),
               std::string::npos)
         << command << r.err;

@@ -23,7 +23,7 @@ TEST(SimMemory, LightlyLoadedDramHasItsUnloadedLatencyOnEveryPreset) {
     std::string name = entry.path().filename().string();
     double utilisation = test::stat(doc, "dram.utilisation");
     ASSERT_LT(utilisation, 0.10) << name << ": the stream must load the DRAM lightly";
-    uint32_t block = config.l2.sector_bytes ? config.l2.sector_bytes : config.l2.line_bytes;
+    uint32_t block = block_bytes(config.l2);
     double unloaded = config.dram.latency + block / config.dram.bytes_per_cycle;
     double mean = test::stat(doc, "dram.mean_latency");
     EXPECT_NEAR(mean / unloaded, 1.0, 0.10)
