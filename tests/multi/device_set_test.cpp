@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "model/multi/device_set.h"
+#include "tests/temp_dir.h"
 #include "traces/error.h"
 
 namespace rtsim::multi {
@@ -16,9 +17,7 @@ namespace {
 const std::string kConfigs = std::string(RTSIM_SOURCE_DIR) + "/configs";
 
 std::string write_set(const std::string& text) {
-  std::string dir = "/tmp/rtsim-multi-set-" + std::to_string(getpid());
-  std::filesystem::create_directories(dir);
-  std::string path = dir + "/set.toml";
+  std::string path = test::scratch_path("set.toml");
   std::ofstream(path) << text;
   return path;
 }

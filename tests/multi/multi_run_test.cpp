@@ -175,7 +175,7 @@ TEST(MultiRun, OneDeviceIsTheBaseline) {
 }
 
 TEST(MultiRun, RaysOutsideTheImageGoToThePrimary) {
-  std::string path = "/tmp/rtsim-multi-" + std::to_string(getpid()) + "-outside.rays";
+  std::string path = test::scratch_path("outside.rays");
   StreamHeader h;
   h.frame_count = 1;
   h.width = 4;
@@ -196,7 +196,7 @@ TEST(MultiRun, RaysOutsideTheImageGoToThePrimary) {
 }
 
 TEST(MultiRun, RaysOutOfFrameOrderAreAnInputError) {
-  std::string path = "/tmp/rtsim-multi-" + std::to_string(getpid()) + "-order.rays";
+  std::string path = test::scratch_path("order.rays");
   StreamHeader h;
   h.frame_count = 3;
   h.width = h.height = 2;

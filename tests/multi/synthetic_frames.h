@@ -5,8 +5,6 @@
 // sample count does not see).
 #pragma once
 
-#include <unistd.h>
-
 #include <cmath>
 #include <string>
 #include <vector>
@@ -14,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "traces/stream.h"
+#include "tests/temp_dir.h"
 
 namespace rtsim::test {
 
@@ -69,7 +68,7 @@ inline std::vector<Ray> synthetic_frame(const SyntheticFrames& s, uint32_t frame
 inline std::string write_synthetic_stream(const std::string& name, const SyntheticFrames& s,
                                           const std::string& scene_source, uint64_t fingerprint,
                                           const std::vector<uint32_t>& empty_frames = {}) {
-  std::string path = "/tmp/rtsim-multi-" + std::to_string(getpid()) + "-" + name + ".rays";
+  std::string path = scratch_path(name + ".rays");
   StreamHeader h;
   h.scene_source = scene_source;
   h.scene_fingerprint = fingerprint;

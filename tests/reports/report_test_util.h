@@ -16,11 +16,12 @@
 
 #include "reports/page_util.h"
 #include "tests/cli/run_rtsim.h"
+#include "tests/temp_dir.h"
 
 namespace rtsim::test {
 
 inline std::string fresh_dir(const std::string& name) {
-  std::string dir = "/tmp/rtsim-reports-test-" + std::to_string(getpid()) + "-" + name;
+  std::string dir = scratch_path(name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -30,24 +31,26 @@ inline nlohmann::ordered_json read_json(const std::string& path) {
   return nlohmann::ordered_json::parse(slurp(path));
 }
 
-// Runs `rtsim ARGS -o DIR` once for all the tests of this build, whichever test process comes
-// first (ctest runs each test in its own process, maybe in parallel); the others wait on a
-// lock and reuse DIR. Returns DIR, or "" if the run failed.
+// Runs `rtsim ARGS -o DIR` once per build of rtsim for all the tests, whichever test process
+// comes first (ctest runs each test in its own process, maybe in parallel); the others wait on a
+// lock and reuse DIR, which lives in the build folder. Returns DIR, or "" if the run failed.
 inline std::string shared_run(const std::string& name, const std::string& args) {
   std::string exe = RTSIM_EXE;
-  auto stamp = std::filesystem::last_write_time(exe).time_since_epoch().count();
-  std::string base = "/tmp/rtsim-reports-test-" + std::to_string(getuid()) + "-" +
-                     std::to_string(std::hash<std::string>()(exe + args) ^ size_t(stamp));
+  std::string stamp =
+      std::to_string(std::filesystem::last_write_time(exe).time_since_epoch().count());
+  std::filesystem::path base = std::filesystem::path(exe).parent_path().parent_path() /
+                               "test-runs" / std::to_string(std::hash<std::string>()(args));
   std::filesystem::create_directories(base);
-  int lock = open((base + "/lock").c_str(), O_CREAT | O_RDWR, 0644);
+  int lock = open((base / "lock").c_str(), O_CREAT | O_RDWR, 0644);
   flock(lock, LOCK_EX);
-  std::string dir = base + "/" + name;
-  if (!std::filesystem::exists(dir + "/done")) {
+  std::string dir = (base / name).string();
+  std::string done = dir + "/done";
+  if (!std::filesystem::exists(done) || slurp(done) != stamp) {
     std::filesystem::remove_all(dir);
     RunResult r = run_rtsim(args + " -o " + dir);
-    if (r.exit_code == 0) std::ofstream(dir + "/done") << "ok\n";
+    if (r.exit_code == 0) std::ofstream(done) << stamp;
   }
-  bool ok = std::filesystem::exists(dir + "/done");
+  bool ok = std::filesystem::exists(done) && slurp(done) == stamp;
   flock(lock, LOCK_UN);
   close(lock);
   return ok ? dir : "";

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "model/config/hw_config.h"
+#include "tests/temp_dir.h"
 #include "traces/error.h"
 
 namespace rtsim {
@@ -15,8 +16,7 @@ namespace {
 
 std::string write_toml(const std::string& text) {
   static int n = 0;
-  std::string path = ::testing::TempDir() + "rtsim-hw-" + std::to_string(getpid()) + "-" +
-                     std::to_string(n++) + ".toml";
+  std::string path = test::scratch_path(std::to_string(n++) + ".toml");
   std::ofstream(path) << text;
   return path;
 }

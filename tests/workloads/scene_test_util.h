@@ -1,5 +1,5 @@
-// Helpers shared by the scene tests: a private temp folder, file writing, and an assertion that
-// loading a spec fails with an InputError naming it.
+// Helpers shared by the scene tests: an assertion that loading a spec fails with an InputError
+// naming it (and the scratch folders of tests/temp_dir.h).
 #pragma once
 
 #include <unistd.h>
@@ -10,35 +10,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/temp_dir.h"
 #include "traces/error.h"
 #include "workloads/scene.h"
 
 namespace rtsim::test {
-
-// A folder under /tmp removed with everything in it when the object dies.
-class TempDir {
-public:
-  TempDir() {
-    static int counter = 0;
-    path_ = std::filesystem::temp_directory_path() /
-            ("rtsim-scenes-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  // Writes contents (text or bytes) to name inside the folder and returns the full path.
-  std::string write(const std::string& name, const std::string& contents) const {
-    std::string file = (path_ / name).string();
-    std::ofstream(file, std::ios::binary) << contents;
-    return file;
-  }
-  std::string path(const std::string& name) const { return (path_ / name).string(); }
-
-private:
-  std::filesystem::path path_;
-};
 
 // Loads spec expecting an InputError whose message starts with "spec: " (or "named: " when
 // given) and contains fragment; returns the message.
