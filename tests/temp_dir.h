@@ -11,7 +11,7 @@
 namespace rtsim::test {
 
 class TempDir {
-public:
+ public:
   TempDir() {
     static int counter = 0;
     path_ = std::filesystem::temp_directory_path() /
@@ -32,7 +32,7 @@ public:
   }
   std::string path(const std::string& name) const { return (path_ / name).string(); }
 
-private:
+ private:
   std::filesystem::path path_;
 };
 

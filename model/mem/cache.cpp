@@ -78,6 +78,7 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   sector_mask_ = (uint64_t(1) << sector_shift_) - 1;
   admits_ = config.bank_ports > 0 || config.bytes_per_cycle > 0;
   tags_.assign(size_t(sets_) * config.ways, kNoTag);
+  filled_.assign(sets_, 0);
   blocks_.resize(tags_.size() << sector_shift_);
   banks_.resize(config.banks);
   policy_ = make_replacement_policy(config.replacement, sets_, config.ways);
@@ -200,7 +201,7 @@ uint32_t Cache::merge(Block& b) {
   return 0;
 }
 
-Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge) {
+inline Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge) {
   stats_.accesses++;
   bool l1 = role_ == CacheRole::L1;
   (l1 ? charge.l1_accesses : charge.l2_accesses)++;
@@ -224,7 +225,14 @@ Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& ch
       return hit_ready;
     }
   }
+  return read_absent(block, set, way, at, caller, charge);
+}
 
+Cycle Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
+                         ReadCharge& charge) {
+  bool l1 = role_ == CacheRole::L1;
+  uint64_t line = block >> sector_shift_;
+  Cycle hit_ready = at + config_.hit_latency;
   bool first = track_cold_ && first_reference(block);
   if (first && own_share_ < 1.0 && !fetched_here(block, own_share_)) {
     stats_.hits++;
@@ -367,25 +375,24 @@ void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charg
 
 uint32_t Cache::allocate(uint32_t set, uint64_t tag, Cycle at) {
   uint64_t* ways = &tags_[size_t(set) * config_.ways];
-  uint32_t victim = config_.ways;
-  for (uint32_t w = 0; w < config_.ways && victim == config_.ways; ++w)
-    if (ways[w] == kNoTag) victim = w;
+  // Lines are never invalidated, so a set's ways fill in order: the first free one is next.
+  uint32_t victim = filled_[set] < config_.ways ? filled_[set]++ : config_.ways;
   if (victim == config_.ways) {
     victim = policy_->victim(set);
     stats_.evictions++;
-  }
-  uint64_t& line_tag = ways[victim];
-  Block* blocks = &blocks_[(size_t(set) * config_.ways + victim) << sector_shift_];
-  for (uint64_t s = 0; s <= sector_mask_; ++s) {
-    if (line_tag != kNoTag && blocks[s].valid && blocks[s].dirty) {
-      stats_.writebacks++;
-      stats_.writeback_bytes += block_bytes();
-      uint64_t old_block = ((line_tag * sets_ + set) << sector_shift_) + s;
-      below_->write(old_block << block_shift_, block_bytes(), at + config_.hit_latency);
+    uint64_t old_line = ways[victim] * sets_ + set;
+    Block* blocks = &blocks_[(size_t(set) * config_.ways + victim) << sector_shift_];
+    for (uint64_t s = 0; s <= sector_mask_; ++s) {
+      if (blocks[s].valid && blocks[s].dirty) {
+        stats_.writebacks++;
+        stats_.writeback_bytes += block_bytes();
+        uint64_t old_block = (old_line << sector_shift_) + s;
+        below_->write(old_block << block_shift_, block_bytes(), at + config_.hit_latency);
+      }
+      blocks[s] = Block{};
     }
-    blocks[s] = Block{};
   }
-  line_tag = tag;
+  ways[victim] = tag;
   policy_->insert(set, victim);
   return victim;
 }

@@ -181,6 +181,10 @@ class Cache : public MemoryTarget, private ReadClient {
   }
   // A block's ready cycle, or kPending once the caller waits for it.
   Cycle read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge);
+  // read_block's path for a block absent from its line (way: the line's, or kNone): the miss
+  // (kept out of line, so the hit path stays short).
+  [[gnu::noinline]] Cycle read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
+                                      Caller& caller, ReadCharge& charge);
   void write_block(uint64_t block, Cycle at);
   // Counts a merge into the in-flight block; returns its replay cycles (past the merge limit).
   uint32_t merge(Block& b);
@@ -220,9 +224,10 @@ class Cache : public MemoryTarget, private ReadClient {
   uint32_t block_shift_ = 0;   // log2(bytes of a block: the sector, or the line)
   uint32_t sector_shift_ = 0;  // log2(blocks per line)
   uint64_t sector_mask_ = 0;
-  bool admits_ = false;         // banks or the data port limit lookups
-  std::vector<uint64_t> tags_;  // of the lines, sets_ x ways, set-major
-  std::vector<Block> blocks_;   // tags_ x blocks per line
+  bool admits_ = false;           // banks or the data port limit lookups
+  std::vector<uint64_t> tags_;    // of the lines, sets_ x ways, set-major
+  std::vector<uint32_t> filled_;  // per set: ways holding a line
+  std::vector<Block> blocks_;     // tags_ x blocks per line
   std::vector<Bank> banks_;
   double port_free_ = 0;  // cycle (fractional) the data port is free from
   std::unique_ptr<ReplacementPolicy> policy_;

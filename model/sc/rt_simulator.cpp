@@ -17,9 +17,7 @@ uint32_t ray_slots(const HwConfig& c) {
 namespace {
 
 Clock clock_of(const HwConfig& c) {
-  Clock clock;
-  clock.period = sc_core::sc_time(1.0 / c.clock_ghz, sc_core::SC_NS);
-  return clock;
+  return Clock(sc_core::sc_time(1.0 / c.clock_ghz, sc_core::SC_NS));
 }
 
 }  // namespace

@@ -5,25 +5,12 @@
 
 namespace rtsim {
 
-EventQueue::EventQueue() : head_(kWheel, kNone), tail_(kWheel, kNone) {}
+EventQueue::EventQueue() : slots_(kWheel) {}
 
 void EventQueue::append(Cycle cycle, uint32_t item) {
-  uint32_t node;
-  if (free_ != kNone) {
-    node = free_;
-    free_ = nodes_[node].next;
-  } else {
-    node = uint32_t(nodes_.size());
-    nodes_.emplace_back();
-  }
-  nodes_[node] = {item, kNone};
   uint32_t slot = uint32_t(cycle % kWheel);
   occupied_[slot / 64] |= 1ull << (slot % 64);
-  if (tail_[slot] == kNone)
-    head_[slot] = node;
-  else
-    nodes_[tail_[slot]].next = node;
-  tail_[slot] = node;
+  slots_[slot].items.push_back(item);
   on_wheel_++;
 }
 
@@ -58,7 +45,7 @@ void EventQueue::pull_far() {
 }
 
 void EventQueue::settle() {
-  while (head_[cursor_ % kWheel] == kNone) {
+  while (!occupied(cursor_)) {
     if (on_wheel_ == 0) {
       cursor_ = far_.top().cycle;  // nothing near: jump to the far events
     } else {
@@ -79,28 +66,32 @@ Cycle EventQueue::next_cycle() const {
 bool EventQueue::pop_before(Cycle until, Event& event) {
   if (size_ == 0) return false;
   // Events left at the cursor's cycle (several in one cycle) need no scan for the next one.
-  Cycle next = on_wheel_ > 0 && head_[cursor_ % kWheel] != kNone ? cursor_ : next_cycle();
-  if (next >= until) return false;
-  if (next != cursor_) {  // turn the wheel to it, as settle() would, without a second scan
-    cursor_ = next;
+  if (on_wheel_ == 0 || !occupied(cursor_)) {
+    Cycle next = next_cycle();
+    if (next >= until) return false;
+    cursor_ = next;  // turn the wheel to it, as settle() would, without a second scan
     pull_far();
+  } else if (cursor_ >= until) {
+    return false;
   }
-  event = pop();
+  event = take_at_cursor();
   return true;
 }
 
 EventQueue::Event EventQueue::pop() {
   settle();
+  return take_at_cursor();
+}
+
+EventQueue::Event EventQueue::take_at_cursor() {
   uint32_t slot = uint32_t(cursor_ % kWheel);
-  uint32_t node = head_[slot];
-  head_[slot] = nodes_[node].next;
-  if (head_[slot] == kNone) {
-    tail_[slot] = kNone;
+  Slot& s = slots_[slot];
+  Event e{cursor_, s.items[s.next++]};
+  if (s.next == s.items.size()) {
+    s.items.clear();  // keeps its capacity for the cycles to come
+    s.next = 0;
     occupied_[slot / 64] &= ~(1ull << (slot % 64));
   }
-  Event e{cursor_, nodes_[node].item};
-  nodes_[node].next = free_;
-  free_ = node;
   size_--;
   on_wheel_--;
   return e;

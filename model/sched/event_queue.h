@@ -2,8 +2,9 @@
 // and in insertion order within a cycle, so a run is deterministic. A unit keeps one queue
 // for all its rays instead of a SystemC thread per ray, and wakes only at the cycles in it.
 // A timing wheel: events within kWheel cycles of the earliest pending cycle sit in per-cycle
-// FIFO lists (constant time per event); later ones wait in a heap and move onto the wheel as
-// it turns. Events must not be scheduled before the last cycle popped.
+// FIFO arrays (constant time per event, and contiguous in memory: a linked list's nodes cost a
+// host cache miss per event); later ones wait in a heap and move onto the wheel as it turns. Events
+// must not be scheduled before the last cycle popped.
 #pragma once
 
 #include <cstddef>
@@ -35,9 +36,9 @@ class EventQueue {
   bool pop_before(Cycle until, Event& event);
 
  private:
-  static constexpr uint32_t kNone = ~0u;
-  struct Node {
-    uint32_t item = 0, next = kNone;
+  struct Slot {
+    std::vector<uint32_t> items;  // the items of one cycle in order; items[next] is the first
+    uint32_t next = 0;
   };
   struct Far {
     Cycle cycle;
@@ -48,15 +49,18 @@ class EventQueue {
     }
   };
   void append(Cycle cycle, uint32_t item);
-  void settle();    // turns the wheel to the earliest pending cycle
-  void pull_far();  // moves far events within kWheel of the cursor onto the wheel
+  void settle();           // turns the wheel to the earliest pending cycle
+  void pull_far();         // moves far events within kWheel of the cursor onto the wheel
+  Event take_at_cursor();  // the first event at the cursor's cycle, which has one
   uint32_t gap(Cycle from) const;
+  bool occupied(Cycle cycle) const {
+    uint32_t slot = uint32_t(cycle % kWheel);
+    return (occupied_[slot / 64] >> (slot % 64)) & 1;
+  }
 
   Cycle cursor_ = 0;                     // no pending event is earlier
-  std::vector<uint32_t> head_, tail_;    // per wheel slot: FIFO list of nodes
+  std::vector<Slot> slots_;              // per wheel slot
   uint64_t occupied_[kWheel / 64] = {};  // bit per wheel slot with events: skips idle cycles
-  std::vector<Node> nodes_;
-  uint32_t free_ = kNone;  // free list of nodes
   size_t size_ = 0, on_wheel_ = 0;
   uint64_t far_order_ = 0;
   std::priority_queue<Far, std::vector<Far>, std::greater<Far>> far_;

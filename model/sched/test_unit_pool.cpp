@@ -50,7 +50,8 @@ Cycle TestUnitPool::find_free(Cycle cycle) {
 }
 
 Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
-  uint32_t issues = (std::max<uint32_t>(tests, 1) + config_.issue_width - 1) / config_.issue_width;
+  uint32_t width = config_.issue_width;
+  uint32_t issues = tests <= width ? 1 : (tests + width - 1) / width;  // most steps: one issue
   stats_.requests++;
   stats_.tests += tests;
   stats_.issues += issues;

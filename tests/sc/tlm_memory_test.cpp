@@ -163,7 +163,7 @@ struct L1Requester : sc_core::sc_module {
       ReadCharge c;
       Cycle done = l1.cache().read(addr, 32, at, &client, ready.size(), c);
       while (done == kPending) {
-        wait(clock.period);
+        wait(clock.period());
         for (const auto& d : client.done) done = d.ready, c += d.charge;
         client.done.clear();
       }
