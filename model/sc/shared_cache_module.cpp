@@ -1,7 +1,5 @@
 #include "model/sc/shared_cache_module.h"
 
-#include "model/sc/tlm_memory.h"
-
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -95,6 +93,8 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
   job.port = port;
   job.slice = slice_of(trans.get_address());
   job.trans = write ? nullptr : &trans;
+  // Looked up now, while the initiator's transaction is in the host's cache.
+  job.charge_out = write ? nullptr : trans.get_extension<ReadChargeExtension>();
   job.addr = trans.get_address();
   job.bytes = trans.get_data_length();
   Cycle sent = clock_.cycles(sc_core::sc_time_stamp() + delay);
@@ -196,7 +196,7 @@ void SharedCacheModule::respond(uint32_t id, Cycle ready) {
   const Job& job = jobs_[id];
   tlm::tlm_generic_payload& trans = *job.trans;
   int port = job.port;
-  if (auto* extension = trans.get_extension<ReadChargeExtension>()) extension->charge = job.charge;
+  if (job.charge_out) job.charge_out->charge = job.charge;
   trans.set_response_status(tlm::TLM_OK_RESPONSE);
   Cycle arrived = crossbar_.to_unit(job.slice, uint32_t(port), ready, job.bytes);
   free_jobs_.push_back(id);  // the response below may add jobs

@@ -40,6 +40,7 @@
 #include "model/mem/cache.h"
 #include "model/mem/crossbar.h"
 #include "model/sc/clock.h"
+#include "model/sc/tlm_memory.h"
 #include "model/sched/event_queue.h"
 
 namespace rtsim {
@@ -74,6 +75,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
     int port = 0;
     uint32_t slice = 0;
     tlm::tlm_generic_payload* trans = nullptr;  // Read: the initiator's transaction
+    ReadChargeExtension* charge_out = nullptr;   // and its charge extension, if it has one
     uint64_t addr = 0;
     uint32_t bytes = 0;
     ReadClient* client = nullptr;  // DramRead: the cache, and its token
