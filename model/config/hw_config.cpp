@@ -63,7 +63,7 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
       1 << 20));
   c.sim.stall_cycles =
       sim.integer("stall_cycles", c.sim.stall_cycles, "cycles",
-                  "no progress for this long stops the run with a stall error", 1, 1ull << 40);
+                  "no progress for this long, with nothing scheduled, stops the run with a stall error", 1, 1ull << 40);
   c.sim.warmup_rays = sim.integer(
       "warmup_rays", c.sim.warmup_rays, "rays",
       "the stream's first rays run with full timing but are left out of every stat", 0,

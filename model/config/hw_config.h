@@ -22,7 +22,7 @@ namespace rtsim {
 
 struct SimulationConfig {
   uint32_t quantum_cycles = 16;    // cycles: how far a unit runs ahead of SystemC time
-  uint64_t stall_cycles = 200000;  // cycles: no progress for this long stops with a stall error
+  uint64_t stall_cycles = 200000;  // cycles: no progress (nor anything scheduled) for this long: a stall
   uint64_t warmup_rays = 0;        // rays: the stream's first rays, timed but not measured
   uint32_t warmup_frames = 0;      // frames: the stream's first frames, likewise
 };

@@ -67,8 +67,9 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     units_.back()->supply.bind(*supply);
     units_.back()->l1.out.bind(l2_->in);
   }
-  watchdog_ = std::make_unique<StallWatchdog>("watchdog", config.sim.stall_cycles, clock_, control_,
-                                              [this] { return dump(); });
+  watchdog_ = std::make_unique<StallWatchdog>(
+      "watchdog", config.sim.stall_cycles, clock_, control_, [this] { return next_delivery(); },
+      [this] { return dump(); });
 }
 
 RtSimulator::~RtSimulator() = default;
@@ -132,6 +133,13 @@ Cycle RtSimulator::cycles() const {
   Cycle last = collector_.last_retire();
   for (const auto& unit : units_) last = std::max(last, unit->core().stats().last_cycle);
   return last;
+}
+
+Cycle RtSimulator::next_delivery() const {
+  Cycle next = l2_->next_job();
+  for (const auto& unit : units_)
+    if (unit->core().has_event()) next = std::min(next, unit->core().next_event());
+  return next;
 }
 
 std::string RtSimulator::dump() const {

@@ -75,6 +75,10 @@ class RtSimulator {
 
  private:
   void on_dispatch(const RayContext& ray);
+  // The earliest cycle the L2 serves a queued request or a unit has an event, such as data a
+  // read was promised (kPending: none): what the stall watchdog waits for before calling a run
+  // stuck.
+  Cycle next_delivery() const;
   void report_all(StatsRegistry& stats, Cycle end) const;  // the whole run's stats so far
   bool warmup() const { return config_.sim.warmup_rays > 0 || config_.sim.warmup_frames > 0; }
 

@@ -67,6 +67,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   bool tracks_cold_misses() const { return slices_[0]->tracks_cold_misses(); }
   void share_first_references(double own_share);
   size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served
+  Cycle next_job() const { return events_.empty() ? kPending : events_.next_cycle(); }
 
  private:
   enum class JobKind : uint8_t { Read, Write, DramRead, DramWrite };

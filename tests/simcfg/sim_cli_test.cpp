@@ -54,6 +54,20 @@ TEST(SimCli, WritesResultsAndVerifiesEveryRay) {
   std::filesystem::remove(stream);
 }
 
+TEST(SimCli, ASlowMemoryIsNotAStall) {
+  // A DRAM of one byte per thousand cycles: rays wait for data far longer than
+  // sim.stall_cycles, but the data's cycle is known, so the run finishes.
+  std::string stream = write_stream(), out = temp("slow");
+  test::RunResult r =
+      test::run_rtsim("sim " + stream + " --config " RTSIM_SOURCE_DIR
+                      "/configs/mobile.toml --set dram.bytes_per_cycle=0.001 -q -o " + out);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
+  EXPECT_GT(doc["summary"]["cycles"].get<double>(), 1e6) << "far beyond the stall cycles";
+  std::filesystem::remove_all(out);
+  std::filesystem::remove(stream);
+}
+
 TEST(SimCli, BadConfigIsOneLineAndExitCode2) {
   std::string stream = write_stream(), config = temp("bad.toml");
   { std::ofstream(config) << "[rt]\nwarps = 2\nwrap_size = 8\n"; }
