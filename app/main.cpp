@@ -9,6 +9,7 @@
 
 #include "app/commands.h"
 #include "traces/error.h"
+#include "traces/output_file.h"
 
 namespace {
 
@@ -33,6 +34,7 @@ std::string usage_problem(const CLI::App& app, int argc, char** argv, const CLI:
 int main(int argc, char** argv) {
   // SystemC's banner would precede every simulation's output; children inherit this.
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
+  rtsim::remove_temporaries_on_signals();
   CLI::App app{"rtsim " RTSIM_VERSION ": cycle-approximate simulator of ray-tracing hardware"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rtsim " RTSIM_VERSION);

@@ -1,9 +1,14 @@
 #include "traces/output_file.h"
 
+#include <limits.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include "traces/error.h"
@@ -11,6 +16,69 @@
 namespace rtsim {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The temporaries being written, readable from a signal handler: an entry's owner is 0 when
+// free, -1 while its path is filled in, else the pid of the process writing it (a forked child
+// inherits the table and must not remove its parent's files).
+struct Pending {
+  std::atomic<pid_t> owner{0};
+  char path[PATH_MAX];
+};
+constexpr int kPendingSlots = 64;
+Pending g_pending[kPendingSlots];
+
+int remember(const std::string& path) {
+  if (path.size() >= PATH_MAX) return -1;
+  for (int i = 0; i < kPendingSlots; ++i) {
+    pid_t free = 0;
+    if (!g_pending[i].owner.compare_exchange_strong(free, -1)) continue;
+    std::memcpy(g_pending[i].path, path.c_str(), path.size() + 1);
+    g_pending[i].owner.store(getpid());
+    return i;
+  }
+  return -1;  // more at once than the table holds: the destructor still removes it
+}
+
+void forget(int slot) {
+  if (slot >= 0) g_pending[slot].owner.store(0);
+}
+
+void remove_pending_and_die(int signal_number) {
+  pid_t self = getpid();
+  for (Pending& p : g_pending)
+    if (p.owner.load() == self) ::unlink(p.path);
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
+
+bool process_exists(pid_t pid) {
+  return ::kill(pid, 0) == 0 || errno != ESRCH;
+}
+
+// Removes NAME.tmp-PID beside target for every PID that is not a running process.
+void remove_stale_temporaries(const fs::path& target) {
+  std::string prefix = target.filename().string() + ".tmp-";
+  fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code error;
+  for (fs::directory_iterator it(dir, error), end; !error && it != end; it.increment(error)) {
+    std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) continue;
+    std::string digits = name.substr(prefix.size());
+    if (digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (!process_exists(pid_t(std::stol(digits)))) fs::remove(it->path(), error);
+  }
+}
+
+}  // namespace
+
+void remove_temporaries_on_signals() {
+  struct sigaction action {};
+  action.sa_handler = remove_pending_and_die;
+  sigemptyset(&action.sa_mask);
+  for (int signal_number : {SIGINT, SIGTERM, SIGHUP}) ::sigaction(signal_number, &action, nullptr);
+}
 
 void create_output_folder(const std::string& dir) {
   std::error_code error;
@@ -37,14 +105,28 @@ OutputFile::OutputFile(const std::string& path) : target_(path) {
   renames_ = !exists || S_ISREG(info.st_mode);
   sequential_ = exists && (S_ISFIFO(info.st_mode) || S_ISSOCK(info.st_mode));
   write_path_ = renames_ ? target_ + ".tmp-" + std::to_string(getpid()) : target_;
+  if (!renames_) return;
+  remove_stale_temporaries(target);
+  pending_ = remember(write_path_);
+}
+
+OutputFile::~OutputFile() {
+  discard();
 }
 
 bool OutputFile::commit() {
-  return !renames_ || std::rename(write_path_.c_str(), target_.c_str()) == 0;
+  if (!renames_ || done_) return !renames_;
+  if (std::rename(write_path_.c_str(), target_.c_str()) != 0) return false;
+  done_ = true;
+  forget(pending_);
+  return true;
 }
 
 void OutputFile::discard() {
-  if (renames_) std::remove(write_path_.c_str());
+  if (!renames_ || done_) return;
+  std::remove(write_path_.c_str());
+  done_ = true;
+  forget(pending_);
 }
 
 }  // namespace rtsim

@@ -3,6 +3,10 @@
 // done. A symbolic link is followed: the file it names is replaced, and the link stays. A
 // character or block device, a FIFO or a socket is written in place: renaming over it would
 // replace the device itself (as root, `-o /dev/null` would replace /dev/null).
+// A temporary never outlives its process: an OutputFile destroyed uncommitted removes it, so do
+// SIGINT, SIGTERM and SIGHUP once remove_temporaries_on_signals() is installed, and a new
+// OutputFile for PATH removes the PATH.tmp-PID files of processes that no longer exist (killed
+// with SIGKILL, or a crashed machine).
 #pragma once
 
 #include <string>
@@ -14,23 +18,33 @@ namespace rtsim {
 // is one line and exit 2 at once, not an error after hours of simulation.
 void create_output_folder(const std::string& dir);
 
+// Installs handlers for SIGINT, SIGTERM and SIGHUP that remove this process's temporaries,
+// then end it by the same signal (so its parent sees how it ended). Called once, by main().
+void remove_temporaries_on_signals();
+
 class OutputFile {
  public:
   explicit OutputFile(const std::string& path);
+  ~OutputFile();
+  OutputFile(const OutputFile&) = delete;
+  OutputFile& operator=(const OutputFile&) = delete;
   // The path to open for writing now.
   const std::string& write_path() const { return write_path_; }
   // Whether it is a temporary file renamed by commit() (false: the target itself).
   bool renames() const { return renames_; }
   // Whether the target is a FIFO or socket: written in order only, no seeking back.
   bool sequential() const { return sequential_; }
-  // Makes the written file the output (renames it over the target). False if that failed.
+  // Makes the written file the output (renames it over the target). False if that failed (or
+  // it was discarded).
   bool commit();
-  // Removes what was written, if it went to a temporary file.
+  // Removes what was written, if it went to a temporary file and was not committed.
   void discard();
 
  private:
   std::string write_path_, target_;
   bool renames_, sequential_;
+  bool done_ = false;  // committed or discarded
+  int pending_ = -1;   // this temporary's entry in the table the signal handlers clean up
 };
 
 }  // namespace rtsim

@@ -4,6 +4,7 @@ Agg backend; PNGs carry no Software tag and no timestamp, so the same data gives
 bytes. Files are written to a temporary name and renamed.
 """
 import os
+import signal
 import sys
 import traceback
 
@@ -32,10 +33,21 @@ def color(ray_type):
 
 
 def save(fig, path):
+    """Writes the chart whole or not at all: to PATH.tmp-PID, renamed over PATH."""
     tmp = path + ".tmp-%d" % os.getpid()
-    fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None})
-    os.replace(tmp, path)
-    plt.close(fig)
+    try:
+        fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None})
+        os.replace(tmp, path)
+    except BaseException:  # also Ctrl-C and SIGTERM (see below): no temporary is left behind
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        raise
+    finally:
+        plt.close(fig)
+
+
+# SIGTERM ends the script through the exception path, so save() cleans up as for Ctrl-C.
+signal.signal(signal.SIGTERM, lambda number, frame: sys.exit(128 + number))
 
 
 def new(width=7.0, height=3.6, **kwargs):
