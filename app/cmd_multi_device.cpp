@@ -110,6 +110,7 @@ int run_multi(const MultiOptions& o) {
     throw InputError("multi-device: WORKLOAD_OR_STREAM and -o DIR are required (or --list-keys)");
   multi::DeviceSet set = device_set(o);
   create_output_folder(o.output);
+  lock_output_folder(o.output, "rtsim multi-device");
   multi::DeviceConfigs configs(set, o.hw_sets);
   bool stream_input = is_stream(o.input);
   if (stream_input &&

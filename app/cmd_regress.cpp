@@ -100,7 +100,9 @@ int run_regress(const RegressOptions& o) {
   if (o.baseline.empty()) throw InputError("regress: --baseline DIR is required");
   reports::RegressSuite suite = reports::read_regress_suite(o.suite);
   create_output_folder(o.output);
+  lock_output_folder(o.output, "rtsim regress");
   if (o.update) create_output_folder(o.baseline);
+  if (o.update) lock_output_folder(o.baseline, "rtsim regress --update-baseline");
   if (!o.junit.empty())
     create_output_folder(fs::path(o.junit).parent_path().empty()
                              ? std::string(".")

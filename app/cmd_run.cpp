@@ -80,6 +80,8 @@ int run(const RunOptions& o) {
   if (o.report != "full" && o.report != "json") throw InputError("run: --report: 'full' or 'json'");
   HwConfig config = load_hw_config(o.config, o.sets);
   create_output_folder(o.output);
+  lock_output_folder(o.output, "rtsim run");
+  reports::clear_run_folder(o.output, o.from_trace);
   reports::TraceOutcome trace = o.from_trace.empty()
                                     ? reports::trace_into(o.workload, o.output + "/trace", o.quiet)
                                     : reports::read_trace_dir(o.from_trace);

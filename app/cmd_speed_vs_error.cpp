@@ -82,7 +82,10 @@ int run_speed_error(const SpeedErrorOptions& o) {
     if (rate < 2 || rate > 1024) throw InputError("speed-vs-error: --rates: 2 to 1024");
   HwConfig config = load_hw_config(o.config, o.sets);
   std::vector<LevelRequest> runs = requests(o);
-  if (!o.output.empty()) create_output_folder(o.output);
+  if (!o.output.empty()) {
+    create_output_folder(o.output);
+    lock_output_folder(o.output, "rtsim speed-vs-error");
+  }
   std::string work = o.output.empty() ? (std::filesystem::temp_directory_path() /
                                          ("rtsim-speed-vs-error-" + std::to_string(getpid())))
                                             .string()

@@ -26,6 +26,7 @@ int run_sweep_command(const SweepOptions& o) {
   if (o.output.empty()) throw InputError("sweep: -o DIR is required");
   reports::SweepSpec spec = reports::read_sweep_spec(o.spec, o.max_points);
   create_output_folder(o.output);
+  lock_output_folder(o.output, "rtsim sweep");
   std::vector<reports::PointRun> points = reports::run_sweep(spec, {o.output, o.jobs, o.quiet});
   nlohmann::ordered_json doc = reports::sweep_json(spec, points);
   reports::ReportOutcome out = reports::write_sweep_report(doc, o.output, {!o.no_charts, true});

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "traces/child_process.h"
+
 namespace rtsim::reports {
 namespace {
 
@@ -40,9 +42,11 @@ ChartRun run_chart_script(const std::string& script, const std::vector<std::stri
   int fds[2];
   if (pipe(fds) != 0) return {false, "pipe failed"};
   std::fflush(nullptr);
+  pid_t parent = getpid();
   pid_t pid = fork();
   if (pid < 0) return {false, "fork failed"};
   if (pid == 0) {
+    end_with_parent(parent);
     close(fds[0]);
     dup2(fds[1], STDERR_FILENO);
     dup2(fds[1], STDOUT_FILENO);

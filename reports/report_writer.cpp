@@ -1,5 +1,6 @@
 #include "reports/report_writer.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "model/sc/sim_report.h"
@@ -49,6 +50,28 @@ ReportOutcome finish(Json& report, const std::string& run_dir, const ReportOptio
 }
 
 }  // namespace
+
+void clear_run_folder(const std::string& run_dir, const std::string& keep) {
+  std::error_code ignored;
+  fs::path kept = fs::weakly_canonical(keep, ignored);
+  auto holds_or_is_in_kept = [&](const fs::path& p) {
+    if (keep.empty()) return false;
+    fs::path own = fs::weakly_canonical(p, ignored);
+    auto [o, k] = std::mismatch(own.begin(), own.end(), kept.begin(), kept.end());
+    return o == own.end() || k == kept.end();
+  };
+  for (const char* name :
+       {"report.json", "report.html", "report.md", "stats.json", "fidelity.json", "config.toml",
+        "pixel_cycles.f32", "pixel_nodes.f32", "pixel_dram_bytes.f32", "images", "trace"}) {
+    fs::path p = fs::path(run_dir) / name;
+    std::error_code error;
+    if (!fs::exists(p, error) || holds_or_is_in_kept(p)) continue;
+    fs::remove_all(p, error);
+    if (error)
+      throw_input_error(p.string(), "",
+                        "cannot remove the earlier run's output: " + error.message());
+  }
+}
 
 ReportOutcome write_report(Json& report, const std::string& run_dir, const std::string& trace_dir,
                            const ReportOptions& options) {

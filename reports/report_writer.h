@@ -23,6 +23,11 @@ struct ReportOutcome {
 ReportOutcome write_report(nlohmann::ordered_json& report, const std::string& run_dir,
                            const std::string& trace_dir, const ReportOptions& options);
 
+// Removes what an earlier `rtsim run` wrote into run_dir (results, report, images, and its
+// trace unless `keep` lies inside it, as a --from-trace of that trace does), so the folder never
+// mixes two runs, even if this one is interrupted. Files rtsim does not write are left alone.
+void clear_run_folder(const std::string& run_dir, const std::string& keep);
+
 // `rtsim report RUN_DIR`: redraws the charts and rewrites the pages from report.json.
 ReportOutcome rewrite_report(const std::string& run_dir, const ReportOptions& options);
 

@@ -1,7 +1,9 @@
 #include "traces/output_file.h"
 
+#include <fcntl.h>
 #include <limits.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -10,6 +12,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <set>
 
 #include "traces/error.h"
 
@@ -88,6 +92,29 @@ void create_output_folder(const std::string& dir) {
     throw_input_error(dir, "", "cannot create the output folder: a file of that name exists");
   if (::access(dir.c_str(), W_OK) != 0)
     throw_input_error(dir, "", "the output folder is not writable");
+}
+
+void lock_output_folder(const std::string& dir, const std::string& command) {
+  static std::set<std::string> held;  // canonical paths of the folders this process locked
+  std::error_code error;
+  std::string key = fs::weakly_canonical(dir, error).string();
+  if (held.count(key)) return;
+  std::string path = (fs::path(dir) / ".rtsim.lock").string();
+  int fd = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw_input_error(dir, "", "cannot create the folder's lock file " + path);
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    std::string owner;
+    std::getline(std::ifstream(path), owner);
+    ::close(fd);
+    throw_input_error(dir, "",
+                      "another rtsim (pid " + (owner.empty() ? "unknown" : owner) +
+                          ") is writing this folder; wait for it to finish, or give " + command +
+                          " another -o");
+  }
+  // The pid is only for another process's message: the lock holds without it.
+  std::string pid = std::to_string(getpid()) + "\n";
+  if (::ftruncate(fd, 0) == 0) (void)!::write(fd, pid.data(), pid.size());
+  held.insert(key);  // fd stays open: the lock lasts as long as the process
 }
 
 OutputFile::OutputFile(const std::string& path) : target_(path) {

@@ -18,6 +18,12 @@ namespace rtsim {
 // is one line and exit 2 at once, not an error after hours of simulation.
 void create_output_folder(const std::string& dir);
 
+// Takes `dir`'s lock (the file DIR/.rtsim.lock, which holds the owner's pid) for the rest of
+// this process, so two commands never write one folder at once: if another process holds it,
+// InputError naming the folder, that process and `command`. Taking a lock this process already
+// holds does nothing. Forked children share it; programs they exec do not.
+void lock_output_folder(const std::string& dir, const std::string& command);
+
 // Installs handlers for SIGINT, SIGTERM and SIGHUP that remove this process's temporaries,
 // then end it by the same signal (so its parent sees how it ended). Called once, by main().
 void remove_temporaries_on_signals();

@@ -10,6 +10,7 @@
 #include <exception>
 #include <stdexcept>
 
+#include "traces/child_process.h"
 #include "traces/error.h"
 
 namespace rtsim {
@@ -37,9 +38,11 @@ Child start_child(const std::function<std::string()>& fn, size_t task) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("run_in_children: pipe failed");
   std::fflush(nullptr);  // no buffered output is written twice
+  pid_t parent = getpid();
   pid_t pid = fork();
   if (pid < 0) throw std::runtime_error("run_in_children: fork failed");
   if (pid == 0) {
+    end_with_parent(parent);
     close(fds[0]);
     int code = kDone;
     std::string text;

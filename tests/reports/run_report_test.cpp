@@ -3,9 +3,15 @@
 // charts are reproducible byte for byte.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <thread>
 
 #include "tests/reports/report_test_util.h"
 
@@ -143,6 +149,39 @@ TEST(RunCommand, AFromTraceRunRefusesWhatWouldTraceAnew) {
     EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   }
   std::filesystem::remove_all(dir);
+}
+
+TEST(RunCommand, AFolderNeverMixesTwoRuns) {
+  namespace fs = std::filesystem;
+  std::string dir = test::fresh_dir("rerun");
+  ASSERT_EQ(test::run_rtsim("run cornell --resolution 16x9 --no-charts -q -o " + dir).exit_code, 0);
+  ASSERT_TRUE(fs::exists(dir + "/report.html"));
+  std::ofstream(dir + "/notes.txt") << "the user's own file";
+  // A second run, interrupted while it traces: nothing of the first run is left beside it.
+  pid_t pid = fork();
+  if (pid == 0) {
+    execl(RTSIM_EXE, RTSIM_EXE, "run", "pica", "--frames", "3", "-q", "-o", dir.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::string temporary = dir + "/trace/rays.rays.tmp-" + std::to_string(pid);
+  for (int i = 0; i < 3000 && !fs::exists(temporary); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  kill(pid, SIGINT);
+  waitpid(pid, nullptr, 0);
+  for (const char* earlier :
+       {"report.html", "report.json", "report.md", "stats.json", "fidelity.json", "config.toml",
+        "pixel_cycles.f32", "images", "trace/rays.rays", "trace/trace.json", "trace/preview.png"})
+    EXPECT_FALSE(fs::exists(dir + "/" + earlier)) << earlier << " of the first run is left";
+  EXPECT_TRUE(fs::exists(dir + "/notes.txt")) << "files rtsim does not write stay";
+  // A run that reuses the folder's own trace keeps it.
+  ASSERT_EQ(test::run_rtsim("run cornell --resolution 16x9 --no-charts -q -o " + dir).exit_code, 0);
+  test::RunResult again =
+      test::run_rtsim("run --from-trace " + dir + "/trace --no-charts -q -o " + dir);
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_TRUE(fs::exists(dir + "/trace/rays.rays"));
+  EXPECT_TRUE(fs::exists(dir + "/report.html"));
+  fs::remove_all(dir);
 }
 
 TEST(OutputFolders, AnUnusableOutputFolderIsBadInputBeforeAnyWork) {

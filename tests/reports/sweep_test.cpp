@@ -1,6 +1,7 @@
 // `rtsim sweep` over 8 points: it finishes with the CSV, JSON, charts and pages; killed half
 // way it resumes without redoing finished points; with some results deleted it redoes only
-// those.
+// those. Killed with SIGKILL its `rtsim run` children end too, and a second sweep on a folder in
+// use is refused (issue 16, defect 9).
 #include <gtest/gtest.h>
 
 #include <fmt/core.h>
@@ -10,7 +11,9 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <set>
 #include <thread>
 
 #include "tests/reports/report_test_util.h"
@@ -21,7 +24,9 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
-std::string spec() { return test::source_path("tests/reports/sweep-tiny.toml"); }
+std::string spec() {
+  return test::source_path("tests/reports/sweep-tiny.toml");
+}
 
 std::map<std::string, fs::file_time_type> finished_points(const std::string& dir) {
   std::map<std::string, fs::file_time_type> out;
@@ -91,6 +96,93 @@ TEST(Sweep, ResumesAfterBeingKilledWithoutRedoingPoints) {
   EXPECT_EQ(after.size(), 8u);
   for (const auto& [id, time] : before) EXPECT_EQ(after[id], time) << id << " was not redone";
   EXPECT_EQ(test::count_lines(test::slurp(dir + "/sweep.csv")), 9);
+  fs::remove_all(dir);
+}
+
+// Starts `rtsim sweep -j 2` of points that take seconds into dir, in its own process group.
+pid_t start_sweep(const std::string& dir) {
+  std::string slow = test::source_path("tests/reports/sweep-slow.toml");
+  pid_t pid = fork();
+  if (pid == 0) {
+    setpgid(0, 0);
+    execl(RTSIM_EXE, RTSIM_EXE, "sweep", slow.c_str(), "-o", dir.c_str(), "-j", "2", "-q",
+          "--no-charts", nullptr);
+    _exit(127);
+  }
+  setpgid(pid, pid);
+  return pid;
+}
+
+// The processes whose parent is `parent` (from /proc).
+std::set<pid_t> children_of(pid_t parent) {
+  std::set<pid_t> out;
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    std::string name = entry.path().filename();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::ifstream stat(entry.path() / "stat");
+    std::string line;
+    std::getline(stat, line);
+    size_t close = line.rfind(')');  // the command name may hold spaces
+    if (close == std::string::npos) continue;
+    char state = 0;
+    int ppid = 0;
+    if (sscanf(line.c_str() + close + 1, " %c %d", &state, &ppid) == 2 && ppid == parent &&
+        state != 'Z')
+      out.insert(pid_t(std::stoi(name)));
+  }
+  return out;
+}
+
+bool running(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return false;
+  size_t close = line.rfind(')');
+  return close != std::string::npos && line.size() > close + 2 && line[close + 2] != 'Z';
+}
+
+TEST(Sweep, ItsChildrenEndWhenItIsKilled) {
+  std::string dir = test::fresh_dir("sweep-orphans");
+  pid_t pid = start_sweep(dir);
+  std::set<pid_t> children;
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (children.empty() && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    children = children_of(pid);
+  }
+  ASSERT_FALSE(children.empty()) << "the sweep started no child";
+  kill(pid, SIGKILL);  // the sweep alone, as the OOM killer would
+  waitpid(pid, nullptr, 0);
+  // A point takes seconds; ended with their parent, the children are gone well before.
+  deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(1500);
+  auto alive = [&] {
+    int n = 0;
+    for (pid_t c : children) n += running(c);
+    return n;
+  };
+  while (alive() > 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  EXPECT_EQ(alive(), 0) << "children outlived the sweep";
+  kill(-pid, SIGKILL);  // whatever is left, so the test cleans up either way
+  fs::remove_all(dir);
+}
+
+TEST(Sweep, ASecondSweepOnAFolderInUseIsRefused) {
+  std::string dir = test::fresh_dir("sweep-twice");
+  pid_t pid = start_sweep(dir);
+  std::string owner = std::to_string(pid) + "\n";
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (test::slurp(dir + "/.rtsim.lock") != owner && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  test::RunResult r =
+      test::run_rtsim("sweep " + test::source_path("tests/reports/sweep-slow.toml") + " -o " + dir +
+                      " -q --no-charts");
+  kill(-pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_EQ(r.err, "rtsim: error: " + dir + ": another rtsim (pid " + std::to_string(pid) +
+                       ") is writing this folder; wait for it to finish, or give rtsim sweep "
+                       "another -o\n");
   fs::remove_all(dir);
 }
 
