@@ -194,7 +194,7 @@ void add_multi_device_command(CLI::App& app, int& exit_code) {
                   "Frames a traced workload's renderer runs before frame 0, writing no rays")
       ->each([o](const std::string&) { o->warmup_set = true; });
   cmd->add_option("-j,--jobs", o->jobs, "Device simulations at once (default: CPU count)");
-  cmd->add_flag("--no-chart", o->no_chart, "Skip chart.png (no Python needed)");
+  cmd->add_flag("--no-charts,--no-chart", o->no_chart, "Skip chart.png (no Python needed)");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");
   cmd->add_flag("--list-keys", o->list_keys, "List every device-set key and exit");
   cmd->callback([o, &exit_code] { exit_code = run_multi(*o); });

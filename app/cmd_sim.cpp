@@ -106,10 +106,15 @@ int run_sim(const SimOptions& o) {
   StreamHeader header = reader.header();
   Scene scene = load_stream_scene(o.stream, header, o.scene);
   BvhImage image = build_bvh_image(scene.mesh, config.bvh);
-  if (!o.quiet)
+  if (!o.quiet) {
     fmt::print("sim        {} rays of {} on '{}' ({}, {} RT units, {})\n", header.total_rays(),
                o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
                describe(config.bvh));
+    if (o.config.empty())
+      fmt::print(
+          "config     built in (no --config): the defaults rtsim sim --list-keys shows; presets "
+          "are in configs/\n");
+  }
   StreamSim sim(config, image, scene.mesh, reader, !o.no_verify, !o.quiet);
   std::fflush(stdout);  // the header before the progress lines, also in a pipe
   double start = wall_seconds();

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include <fmt/core.h>
 
@@ -90,6 +91,19 @@ Scene load_stream_scene(const std::string& stream, const StreamHeader& header,
                         const std::string& scene_override) {
   std::string spec = scene_override.empty() ? header.scene_source : scene_override;
   if (spec.empty()) throw_input_error(stream, "header", "no scene named; pass --scene");
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if (scene_override.empty() && !is_builtin_scene(spec) && !fs::exists(spec, error)) {
+    // A relative path was relative to where the stream was traced: try beside the stream too.
+    fs::path beside = fs::path(stream).parent_path() / spec;
+    if (fs::path(spec).is_relative() && fs::exists(beside, error))
+      spec = beside.string();
+    else
+      throw_input_error(stream, "header",
+                        "its scene " + spec + " is not found (from this folder" +
+                            (fs::path(spec).is_relative() ? " nor from the stream's" : "") +
+                            "); pass --scene FILE to name it");
+  }
   Scene scene = load_scene(spec);
   if (scene.fingerprint != header.scene_fingerprint)
     throw_input_error(stream, "header",

@@ -24,7 +24,7 @@ TEST(CliMultiDevice, ThirtyFramesOfPicaOnFourDevices) {
       test::run_rtsim("multi-device " + kSource +
                       "/tests/multi/pica-tiny.toml "
                       "--devices-file " +
-                      kSource + "/configs/multi/four-mobile.toml -j 2 --no-chart -o " + dir);
+                      kSource + "/configs/multi/four-mobile.toml -j 2 --no-charts -o " + dir);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   std::printf("%s", r.out.c_str());  // the deviation figures, in the test log
   EXPECT_NE(r.out.find("avg max dev"), std::string::npos) << r.out;

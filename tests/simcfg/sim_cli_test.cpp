@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -39,8 +40,9 @@ std::string write_stream() {
 
 TEST(SimCli, WritesResultsAndVerifiesEveryRay) {
   std::string stream = write_stream(), out = temp("out");
-  test::RunResult r = test::run_rtsim("sim " + stream + " --config " RTSIM_SOURCE_DIR
-                                      "/configs/mobile.toml --set rt.count=2 -o " + out);
+  test::RunResult r = test::run_rtsim(
+      "sim " + stream + " --config " RTSIM_SOURCE_DIR "/configs/mobile.toml --set rt.count=2 -o " +
+      out);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("verify     428 rays against Embree: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(" mismatches, 0 unexplained"), std::string::npos) << r.out;
@@ -58,9 +60,10 @@ TEST(SimCli, ASlowMemoryIsNotAStall) {
   // A DRAM of one byte per thousand cycles: rays wait for data far longer than
   // sim.stall_cycles, but the data's cycle is known, so the run finishes.
   std::string stream = write_stream(), out = temp("slow");
-  test::RunResult r =
-      test::run_rtsim("sim " + stream + " --config " RTSIM_SOURCE_DIR
-                      "/configs/mobile.toml --set dram.bytes_per_cycle=0.001 -q -o " + out);
+  test::RunResult r = test::run_rtsim(
+      "sim " + stream +
+      " --config " RTSIM_SOURCE_DIR "/configs/mobile.toml --set dram.bytes_per_cycle=0.001 -q -o " +
+      out);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
   EXPECT_GT(doc["summary"]["cycles"].get<double>(), 1e6) << "far beyond the stall cycles";
@@ -68,11 +71,51 @@ TEST(SimCli, ASlowMemoryIsNotAStall) {
   std::filesystem::remove(stream);
 }
 
+// A one-triangle OBJ scene in dir, and a stream of one ray at it whose header names the scene
+// as `scene_source`.
+std::string write_obj_stream(const std::string& dir, const std::string& scene_source) {
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  Scene scene = load_scene(dir + "/tri.obj");
+  StreamHeader header;
+  header.scene_source = scene_source;
+  header.scene_fingerprint = scene.fingerprint;
+  std::string path = dir + "/one.rays";
+  RayStreamWriter writer(path, header);
+  Ray ray;
+  ray.org = {0.2f, 0.2f, 1.0f};
+  ray.dir = {0.0f, 0.0f, -1.0f};
+  writer.write(ray);
+  writer.finish();
+  return path;
+}
+
+TEST(SimCli, AStreamsRelativeScenePathIsAlsoTriedBesideTheStream) {
+  std::string dir = temp("beside");
+  std::string stream = write_obj_stream(dir, "tri.obj");  // relative to where it was traced
+  test::RunResult r = test::run_rtsim("sim " + stream + " -q -o " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(SimCli, AMissingStreamSceneSaysToPassScene) {
+  std::string dir = temp("missing");
+  std::string stream = write_obj_stream(dir, "gone/tri.obj");
+  test::RunResult r = test::run_rtsim("sim " + stream + " -q -o " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "rtsim: error: " + stream +
+                       ": header: its scene gone/tri.obj is not found (from this folder nor "
+                       "from the stream's); pass --scene FILE to name it\n");
+  r = test::run_rtsim("sim " + stream + " --scene " + dir + "/tri.obj -q -o " + dir + "/out");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(SimCli, BadConfigIsOneLineAndExitCode2) {
   std::string stream = write_stream(), config = temp("bad.toml");
   { std::ofstream(config) << "[rt]\nwarps = 2\nwrap_size = 8\n"; }
-  test::RunResult r = test::run_rtsim("sim " + stream + " --config " + config + " -o " +
-                                      temp("never"));
+  test::RunResult r =
+      test::run_rtsim("sim " + stream + " --config " + config + " -o " + temp("never"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(config + ": line 3: unknown key 'rt.wrap_size'"), std::string::npos)
