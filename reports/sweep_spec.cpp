@@ -11,6 +11,8 @@
 #include "model/fidelity/fidelity_result.h"
 #include "reports/spec_reader.h"
 #include "traces/error.h"
+#include "workloads/pipeline/spec.h"
+#include "workloads/scene.h"
 
 namespace rtsim::reports {
 namespace fs = std::filesystem;
@@ -54,7 +56,7 @@ void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points,
     r.fail(grid, fmt::format("the grid has {} points ({}), more than the limit of {}: narrow it, "
                              "or pass --max-points {} to run them all",
                              count, product, max_points, count));
-  spec.points.push_back({Json::object(), {}});
+  spec.points.push_back({Json::object(), {}, {}});
   for (const auto& [key, node] : axes) {
     const toml::array* values = node->as_array();
     spec.keys.push_back(key);
@@ -65,6 +67,7 @@ void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points,
         auto [set, json] = scalar(r, v);
         q.values[key] = json;
         q.sets.push_back(key + "=" + set);
+        q.lines.push_back(v.source().begin.line);
         next.push_back(q);
       }
     spec.points = next;
@@ -74,11 +77,12 @@ void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points,
 void add_point(const SpecReader& r, const toml::table& table, SweepSpec& spec) {
   std::vector<std::pair<std::string, const toml::node*>> keys;
   flatten(table, "", keys);
-  SweepPoint p{Json::object(), {}};
+  SweepPoint p{Json::object(), {}, {}};
   for (const auto& [key, node] : keys) {
     auto [set, json] = scalar(r, *node);
     p.values[key] = json;
     p.sets.push_back(key + "=" + set);
+    p.lines.push_back(node->source().begin.line);
     if (std::find(spec.keys.begin(), spec.keys.end(), key) == spec.keys.end())
       spec.keys.push_back(key);
   }
@@ -95,7 +99,16 @@ void read_workloads(const SpecReader& r, const toml::table& root, SweepSpec& spe
     SweepWorkload w;
     w.trace.workload = r.resolve(r.text(*t, "workload", "pica"));
     w.name = r.text(*t, "name", fs::path(w.trace.workload).stem().string());
+    if (!is_builtin_scene(w.trace.workload) && !fs::exists(w.trace.workload))
+      r.fail(*t->get("workload"), "workload '" + w.trace.workload +
+                                      "': no such workload spec (.toml), scene file or built-in "
+                                      "scene");
     w.trace.resolution = r.text(*t, "resolution");
+    uint32_t width = 0, height = 0;
+    if (!w.trace.resolution.empty() &&
+        !pipeline::parse_resolution(w.trace.resolution, width, height))
+      r.fail(*t->get("resolution"),
+             "resolution '" + w.trace.resolution + "': expected WxH, e.g. \"1920x1080\"");
     w.trace.frames = uint32_t(r.integer(*t, "frames", 0, 0, 1 << 20));
     if (t->get("seed")) w.trace.seed = uint64_t(r.integer(*t, "seed", 1, 0, INT64_MAX));
     w.trace.scene = r.text(*t, "scene");
@@ -130,6 +143,32 @@ void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) 
   }
 }
 
+// Loads a point's config; if that fails, blames the spec's line of the first setting (the
+// spec's `set`, then the point's) that makes it fail, not --set or the preset file.
+void check_point_config(const SweepSpec& spec, const SweepPoint& p, uint32_t set_line) {
+  std::vector<std::string> sets = spec.sets;
+  std::vector<uint32_t> lines(spec.sets.size(), set_line);
+  sets.insert(sets.end(), p.sets.begin(), p.sets.end());
+  lines.insert(lines.end(), p.lines.begin(), p.lines.end());
+  try {
+    load_hw_config(spec.config, sets);
+    return;
+  } catch (const InputError& whole) {
+    for (size_t n = 0; n < sets.size(); ++n) {
+      try {
+        load_hw_config(spec.config, {sets.begin(), sets.begin() + long(n) + 1});
+      } catch (const InputError& e) {
+        std::string why = e.what();
+        std::string key = sets[n].substr(0, sets[n].find('='));
+        for (const std::string& prefix : {"--set " + key + ": ", spec.config + ": "})
+          if (why.rfind(prefix, 0) == 0) why = why.substr(prefix.size());
+        throw_input_error(spec.file, fmt::format("line {}", lines[n]), sets[n] + ": " + why);
+      }
+    }
+    throw;  // the config fails without any of the spec's settings: the preset file's own line
+  }
+}
+
 }  // namespace
 
 SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points) {
@@ -156,11 +195,8 @@ SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points) {
     }
   if (const toml::table* run = root["run"].as_table()) read_run(r, *run, spec);
   read_charts(r, root, spec);
-  for (const SweepPoint& p : spec.points) {
-    std::vector<std::string> sets = spec.sets;
-    sets.insert(sets.end(), p.sets.begin(), p.sets.end());
-    load_hw_config(spec.config, sets);
-  }
+  uint32_t set_line = root.get("set") ? root.get("set")->source().begin.line : 0;
+  for (const SweepPoint& p : spec.points) check_point_config(spec, p, set_line);
   return spec;
 }
 

@@ -23,6 +23,7 @@ struct SweepWorkload {
 struct SweepPoint {
   nlohmann::ordered_json values;  // config key -> value, in spec order
   std::vector<std::string> sets;  // the same as --set KEY=VALUE (TOML syntax values)
+  std::vector<uint32_t> lines;    // the spec's line of each of them
 };
 
 struct SweepChart {

@@ -118,6 +118,31 @@ TEST(SweepSpec, MistakesNameTheFileAndLine) {
       << "checked when read, not point by point";
 }
 
+TEST(SweepSpec, BadWorkloadsAndSettingsBlameTheSpecsLineNotAnOptionOrThePreset) {
+  auto error = [](const std::string& text) {
+    std::string path = write("s.toml", text);
+    std::string e = error_of([&] { read_sweep_spec(path); });
+    return e.substr(std::min(e.size(), path.size() + 2));  // after "PATH: "
+  };
+  EXPECT_EQ(error("config = \"hw.toml\"\n[[workload]]\nresolution = \"8xx8\"\n[grid]\n"),
+            "line 3: resolution '8xx8': expected WxH, e.g. \"1920x1080\"");
+  EXPECT_EQ(error("[[workload]]\nworkload = \"gone.toml\"\n[grid]\n"),
+            "line 2: workload 'gone.toml': no such workload spec (.toml), scene file or built-in "
+            "scene");
+  EXPECT_EQ(error("config = \"hw.toml\"\n[[workload]]\n[grid]\n\"l2.size_bytes\" = [65536, "
+                  "65537]\n"),
+            "line 4: l2.size_bytes=65537: [l2] size_bytes must be a positive multiple of "
+            "line_bytes * ways");
+  EXPECT_EQ(error("config = \"hw.toml\"\nset = [\"rt.count=2\", \"l2.nope=1\"]\n[[workload]]\n"
+                  "[grid]\n")
+                .substr(0, 40),
+            "line 2: l2.nope=1: unknown key 'l2.nope'");
+  EXPECT_EQ(error("config = \"hw.toml\"\n[[workload]]\n[[point]]\n\"rt.count\" = 2\n\n[[point]]\n"
+                  "\"rt.count\" = 0\n")
+                .substr(0, 19),
+            "line 7: rt.count=0:");
+}
+
 TEST(RegressSuite, AToleranceOnAnUnknownMetricNamesItsLine) {
   auto suite = [](const std::string& tolerances) {
     return "[[case]]\nname = \"a\"\n[tolerance]\ncycles = 0.02\n" + tolerances;
