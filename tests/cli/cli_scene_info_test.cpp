@@ -67,5 +67,39 @@ TEST(CliSceneInfo, UnsupportedFormatIsOneLineAndExit2) {
   std::remove(path.c_str());
 }
 
+// Runs rtsim with RTSIM_MAX_MEMORY set (what memory planning plans against).
+RunResult run_with_memory(const std::string& bytes, const std::string& args) {
+  setenv("RTSIM_MAX_MEMORY", bytes.c_str(), 1);
+  RunResult r = run_rtsim(args);
+  unsetenv("RTSIM_MAX_MEMORY");
+  return r;
+}
+
+TEST(CliMemoryPlan, ASceneBeyondTheMemoryIsRefusedWithTheEstimate) {
+  RunResult r = run_with_memory("100000000", "scene-info grid:10000000");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "rtsim: error: builtin:grid:10000000: a scene of 10000000 triangles needs about 0.3 GB "
+            "of memory, more than the 0.1 GB available; ask for fewer triangles\n");
+  EXPECT_EQ(run_with_memory("100000000", "scene-info grid:1000000").exit_code, 0) << "28 MB fits";
+}
+
+TEST(CliMemoryPlan, ATraceBeyondTheMemoryIsRefusedBeforeItStarts) {
+  RunResult r = run_with_memory("500000000", "trace cornell --resolution 4096x4096 -o /dev/null");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("rtsim: error: cornell: tracing 4096 x 4096 pixels of a ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("needs about 1.7 GB of memory, more than the 0.5 GB available; lower the "
+                       "resolution"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(count_lines(r.err), 1);
+}
+
+TEST(CliMemoryPlan, ABadLimitIsOneLine) {
+  RunResult r = run_with_memory("lots", "scene-info grid:1000");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "rtsim: error: RTSIM_MAX_MEMORY: expected a number of bytes, got 'lots'\n");
+}
+
 }  // namespace
 }  // namespace rtsim::test

@@ -2,8 +2,11 @@
 
 #include <memory>
 
+#include <fmt/core.h>
+
 #include "traces/embree_scene.h"
 #include "traces/host_clock.h"
+#include "traces/memory_plan.h"
 #include "traces/stream.h"
 #include "workloads/pipeline/preview.h"
 #include "workloads/scene.h"
@@ -12,6 +15,14 @@ namespace rtsim::pipeline {
 TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options) {
   double start = wall_seconds();
   Scene scene = load_scene(spec.scene);
+  // Measured peaks of rtsim trace: 144 B a triangle (the scene, Embree's BVH, the pipeline's
+  // scene data) and 87 B a pixel (G-buffer, lighting and denoiser buffers, the ray queues).
+  uint64_t pixels = uint64_t(spec.width) * spec.height;
+  require_memory(scene.triangle_count() * 160 + pixels * 96 + (uint64_t(100) << 20),
+                 spec.file.empty() ? spec.name : spec.file,
+                 fmt::format("tracing {} x {} pixels of a {}-triangle scene", spec.width,
+                             spec.height, scene.triangle_count()),
+                 "lower the resolution");
   double load_seconds = wall_seconds() - start;
   start = wall_seconds();
   EmbreeScene embree(scene.mesh, options.embree_threads);
