@@ -113,17 +113,30 @@ std::string html_cell(const Json& doc, const std::string& key, Style style) {
                      html_escape(show(v, style)));
 }
 
+namespace {
+
+bool hidden(const Json& doc, const Row& r) {
+  if (!r.exact_hides) return false;
+  const Json& v = at_key(doc, r.key);
+  return v.is_null() || (v.is_number() && v.get<double>() == 0);
+}
+
+}  // namespace
+
 std::string html_rows(const Json& doc, const std::vector<Row>& rows) {
   std::string out = "<table class=\"kv\">\n";
   for (const Row& r : rows)
-    out += "<tr><th>" + html_escape(r.label) + "</th>" + html_cell(doc, r.key, r.style) + "</tr>\n";
+    if (!hidden(doc, r))
+      out +=
+          "<tr><th>" + html_escape(r.label) + "</th>" + html_cell(doc, r.key, r.style) + "</tr>\n";
   return out + "</table>\n";
 }
 
 std::string markdown_rows(const Json& doc, const std::vector<Row>& rows) {
   std::string out = "| | |\n|---|---|\n";
   for (const Row& r : rows)
-    if (r.brief) out += "| " + r.label + " | " + show(at_key(doc, r.key), r.style) + " |\n";
+    if (r.brief && !hidden(doc, r))
+      out += "| " + r.label + " | " + show(at_key(doc, r.key), r.style) + " |\n";
   return out;
 }
 

@@ -39,7 +39,8 @@ std::string html_cell(const nlohmann::ordered_json& doc, const std::string& key,
 struct Row {
   std::string label, key;
   Style style;
-  bool brief = true;  // also in the Markdown pages (markdown_rows skips the others)
+  bool brief = true;         // also in the Markdown pages (markdown_rows skips the others)
+  bool exact_hides = false;  // left out where the value is 0 or null (an interval of an exact run)
 };
 std::string html_rows(const nlohmann::ordered_json& doc, const std::vector<Row>& rows);
 

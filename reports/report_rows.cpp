@@ -56,7 +56,7 @@ const std::vector<Row>& timing_rows() {
       {"fidelity level", "timing.level", Style::Text, false},
       {"time model", "timing.time_model", Style::Text},
       {"cycles", "timing.cycles", Style::Integer},
-      {"cycles, 95% interval (±)", "timing.cycles_ci95", Style::Integer},
+      {"cycles, 95% interval (±)", "timing.cycles_ci95", Style::Integer, true, true},
       {"clock (GHz)", "timing.clock_ghz", Style::Real},
       {"MRays/s at the clock", "timing.mrays_per_second", Style::Real},
       {"rays per cycle", "timing.rays_per_cycle", Style::Real, false},

@@ -123,6 +123,24 @@ TEST_F(RunReport, ChartsAreReproducibleByteForByte) {
   std::filesystem::remove_all(copy);
 }
 
+TEST_F(RunReport, AFullModelRunShowsNoIntervalRow) {
+  EXPECT_EQ(report_["timing"]["cycles_ci95"], 0) << "the JSON keeps it";
+  EXPECT_EQ(html_.find("95% interval"), std::string::npos) << "an exact run has no interval";
+  EXPECT_EQ(markdown_.find("95% interval"), std::string::npos);
+}
+
+TEST(RunCommand, ASampledRunShowsItsInterval) {
+  std::string dir = test::fresh_dir("sampled");
+  test::RunResult r = test::run_rtsim(
+      "run pica --resolution 64x36 --fidelity sampled --no-charts "
+      "-q -o " +
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(test::slurp(dir + "/report.md").find("| cycles, 95% interval (±) | "),
+            std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(RunCommand, BadInputIsOneLineAndExitTwo) {
   std::string dir = test::fresh_dir("bad");
   test::RunResult r = test::run_rtsim("run pica --resolution 16x9 --set rt.l1.bogus=1 -o " + dir);
