@@ -1,6 +1,7 @@
 #include "reports/page_util.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -103,7 +104,13 @@ std::string show(const Json& v, Style style) {
   if (style == Style::Percent) return fmt::format("{:.2f}%", 100 * v.get<double>());
   if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
   if (style == Style::Integer) return fmt::format("{:.0f}", v.get<double>());
-  return fmt::format("{:.4g}", v.get<double>());
+  double x = v.get<double>();
+  if (std::isfinite(x) && std::abs(x) >= 1000) {  // plain, in thousands: 11,603 not 1.16e+04
+    std::string digits = fmt::format("{:.0f}", std::abs(x));
+    for (size_t i = digits.size(); i > 3; i -= 3) digits.insert(i - 3, ",");
+    return (x < 0 ? "-" : "") + digits;
+  }
+  return fmt::format("{:.4g}", x);
 }
 
 std::string html_cell(const Json& doc, const std::string& key, Style style) {

@@ -35,6 +35,10 @@ TEST(Pages, ShowsNumbersByStyle) {
   EXPECT_EQ(show(Json(975104), Style::Integer), "975104");
   EXPECT_EQ(show(Json(975104.0), Style::Integer), "975104");
   EXPECT_EQ(show(Json(209.70255), Style::Real), "209.7");
+  EXPECT_EQ(show(Json(11603.4), Style::Real), "11,603") << "plain, not 1.16e+04";
+  EXPECT_EQ(show(Json(-1234567.0), Style::Real), "-1,234,567");
+  EXPECT_EQ(show(Json(999.94), Style::Real), "999.9");
+  EXPECT_EQ(show(Json(0.05772), Style::Real), "0.05772");
   EXPECT_EQ(show(Json(0.86088), Style::Percent), "86.09%");
   EXPECT_EQ(show(Json(), Style::Real), "n/a");
   EXPECT_EQ(show(Json(true), Style::Text), "true");

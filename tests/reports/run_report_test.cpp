@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -71,7 +72,9 @@ TEST_F(RunReport, EveryNumberOnThePageIsTheJsons) {
     const Json& value = reports::at_key(report_, c.key);
     EXPECT_EQ(Json::parse(c.value), value) << c.key << " carries the JSON's value";
     if (value.is_number()) {
-      double shown = std::stod(c.shown);
+      std::string plain = c.shown;  // thousands are grouped: 11,603
+      plain.erase(std::remove(plain.begin(), plain.end(), ','), plain.end());
+      double shown = std::stod(plain);
       double v = value.get<double>() * (c.shown.back() == '%' ? 100.0 : 1.0);
       EXPECT_NEAR(shown, v, 1e-3 * std::abs(v) + 0.006) << c.key << " shows " << c.shown;
     }
