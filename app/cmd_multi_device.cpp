@@ -34,7 +34,7 @@ namespace {
 
 struct MultiOptions {
   std::string input, output, devices_file, config, resolution;
-  std::vector<std::string> device_configs, sets, hw_sets, split;
+  std::vector<std::string> device_configs, device_sets, hw_sets, split;
   uint32_t devices = 0, frames = 0, jobs = 0, warmup_frames = 0;
   uint64_t seed = 0;
   float orbit = 0;
@@ -73,8 +73,21 @@ std::string trace_input(const MultiOptions& o) {
   return options.output;
 }
 
+// A device-set key given with --set (hardware keys) says where it belongs.
+void check_hardware_sets(const MultiOptions& o) {
+  for (const std::string& assignment : o.hw_sets) {
+    std::string key = assignment.substr(0, assignment.find('='));
+    for (const ConfigKeyDoc& k : multi::device_set_keys())
+      if (k.key == key)
+        throw_input_error(
+            "--set " + key, "",
+            "a device-set key, not a hardware key: pass it as --device-set " + assignment);
+  }
+}
+
 multi::DeviceSet device_set(const MultiOptions& o) {
-  multi::DeviceSet set = multi::load_device_set(o.devices_file, o.sets);
+  check_hardware_sets(o);
+  multi::DeviceSet set = multi::load_device_set(o.devices_file, o.device_sets);
   if (!o.devices_file.empty() && (!o.config.empty() || !o.device_configs.empty()))
     throw InputError(
         "multi-device: give devices by --devices-file or by --config/--device-config"
@@ -176,9 +189,11 @@ void add_multi_device_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--split", o->split, "Strategies to compare: static,balanced,cost,current")
       ->delimiter(',')
       ->allow_extra_args(false);
-  cmd->add_option("--set", o->sets, "Override a device-set key: --set link.bandwidth_gbps=32")
+  cmd->add_option("--set,--hw-set", o->hw_sets,
+                  "Override a hardware key of every device, as in rtsim sim: --set rt.count=2")
       ->allow_extra_args(false);
-  cmd->add_option("--hw-set", o->hw_sets, "Override a hardware key of every device")
+  cmd->add_option("--device-set", o->device_sets,
+                  "Override a device-set key: --device-set link.bandwidth_gbps=32")
       ->allow_extra_args(false);
   cmd->add_option("--frames", o->frames, "Frames: of the stream, or to trace")
       ->check(reports::frame_range());

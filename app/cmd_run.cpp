@@ -57,6 +57,8 @@ void print_summary(const nlohmann::ordered_json& r) {
                    ? fmt::format(" ±{}", reports::show(t["cycles_ci95"], Style::Integer))
                    : "",
                t["mrays_per_second"].get<double>(), t["clock_ghz"].get<double>());
+  if (t["bottleneck"]["text"].is_string())
+    fmt::print("limit      {}\n", t["bottleneck"]["text"].get<std::string>());
   const auto& b = r["bandwidth"];
   fmt::print("memory     L1 {}  L2 {}  DRAM {} B/ray\n",
              reports::show(b["l1_hit_rate"], Style::Percent),

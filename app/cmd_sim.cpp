@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "app/commands.h"
+#include "reports/phase_progress.h"
 #include "model/config/hw_config.h"
 #include "model/sc/sim_report.h"
 #include "model/sc/stream_sim.h"
@@ -63,6 +64,8 @@ void print_summary(const nlohmann::ordered_json& doc) {
         t["nodes_per_ray"].get<double>(), t["triangles_per_ray"].get<double>(),
         100 * t["l1_hit_rate"].get<double>(), 100 * t["l2_hit_rate"].get<double>(),
         t["dram_bytes_per_ray"].get<double>());
+  if (doc["bottleneck"]["text"].is_string())
+    fmt::print("limit      {}\n", doc["bottleneck"]["text"].get<std::string>());
   const auto& m = doc["memory"];
   auto percent = [](const nlohmann::ordered_json& v) {
     return v.is_null() ? std::string("n/a") : fmt::format("{:.1f}%", 100 * v.get<double>());
@@ -105,7 +108,7 @@ int run_sim(const SimOptions& o) {
   RayStreamReader reader(o.stream);
   StreamHeader header = reader.header();
   Scene scene = load_stream_scene(o.stream, header, o.scene);
-  BvhImage image = build_bvh_image(scene.mesh, config.bvh);
+  BvhImage image = reports::build_bvh_with_progress(scene.mesh, config.bvh, o.quiet);
   if (!o.quiet) {
     fmt::print("sim        {} rays of {} on '{}' ({}, {} RT units, {})\n", header.total_rays(),
                o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,

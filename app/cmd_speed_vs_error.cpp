@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 
 #include "app/commands.h"
+#include "reports/phase_progress.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/level_runner.h"
 #include "model/sc/sim_report.h"
@@ -100,7 +101,7 @@ int run_speed_error(const SpeedErrorOptions& o) {
                         fmt::format("{} rays, too few to sample 1 in {} (at least {} needed)", rays,
                                     r.sampling.rate, 2 * r.sampling.rate));
   Scene scene = load_stream_scene(trace.stream, RayStreamReader(trace.stream).header());
-  BvhImage image = build_bvh_image(scene.mesh, config.bvh);
+  BvhImage image = reports::build_bvh_with_progress(scene.mesh, config.bvh, false);
   fmt::print("reference  full cycle-approximate model, {} rays, '{}'\n", rays, config.name);
   reports::LevelRun reference{
       "cycle", best_of(o, {FidelityLevel::Cycle, {}}, config, image, trace.stream), {}};

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "app/commands.h"
+#include "reports/phase_progress.h"
 #include "reports/cli_options.h"
 #include "traces/error.h"
 #include "workloads/pipeline/summary.h"
@@ -28,25 +29,6 @@ void print_keys() {
     fmt::print("{:<34} {:<22} default {}{}\n    {}\n", k.key, k.type,
                k.default_value.empty() ? "-" : k.default_value,
                k.unit.empty() ? "" : " (" + k.unit + ")", k.description);
-}
-
-// A bar on a terminal, one line per frame and pass otherwise.
-std::function<void(uint32_t, uint32_t, pipeline::PassId)> progress_printer() {
-  bool tty = isatty(fileno(stderr)) != 0;
-  return [tty](uint32_t frame, uint32_t frames, pipeline::PassId pass) {
-    const char* name = pipeline::pass_name(pass);
-    if (!tty) {
-      fmt::print(stderr, "trace: frame {}/{}: {}\n", frame + 1, frames, name);
-      return;
-    }
-    double done = (double(frame) * pipeline::kPassCount + double(pass)) /
-                  (double(frames) * pipeline::kPassCount);
-    int filled = int(done * 30.0);
-    fmt::print(stderr, "\r[{:<30}] {:3.0f}%  frame {}/{}  {:<16}", std::string(filled, '#'),
-               100.0 * done, frame + 1, frames, name);
-    if (frame + 1 == frames && pass == pipeline::PassId::Translucency)
-      fmt::print(stderr, "\r{:<80}\r", "");
-  };
 }
 
 }  // namespace
@@ -87,7 +69,7 @@ void add_trace_command(CLI::App& app, int& exit_code) {
     options.output = a->output;
     options.preview = a->preview;
     options.generator = "rtsim " RTSIM_VERSION;
-    if (!a->quiet) options.progress = progress_printer();
+    if (!a->quiet) options.progress = reports::trace_progress();
     pipeline::TraceResult result = pipeline::trace_workload(spec, options);
     if (!a->quiet) {
       fmt::print("{}", pipeline::format_summary(result.summary));

@@ -1,6 +1,8 @@
 // rtsim verify STREAM: traces every ray of a stream with the model and with Embree, classifies
 // each disagreement with the double-precision arbiter, prints a summary, and exits 1 when a
-// disagreement is unexplained. Also defines the BVH options shared with `rtsim bench`.
+// disagreement is unexplained. The BVH is the built-in config's (that of `rtsim sim` without
+// --config), a hardware config's (--config, --set), or given by the BVH options, which are
+// shared with `rtsim bench`.
 #include <fmt/core.h>
 
 #include <chrono>
@@ -9,7 +11,9 @@
 #include <memory>
 
 #include "app/commands.h"
+#include "reports/phase_progress.h"
 #include "model/bvh/bvh_image.h"
+#include "model/config/hw_config.h"
 #include "model/units/traversal.h"
 #include "model/verify/verifier.h"
 #include "traces/embree_scene.h"
@@ -21,7 +25,9 @@ namespace rtsim::app {
 namespace {
 
 struct VerifyOptions {
-  std::string stream, scene;
+  std::string stream, scene, config;
+  std::vector<std::string> sets;
+  bool bvh_flags = false;  // a BVH option was given
   size_t max_print = 10;
   double t_tolerance = 1e-5;
   BvhConfig bvh;
@@ -90,8 +96,15 @@ void print_examples(const std::vector<Mismatch>& examples, const char* what) {
   }
 }
 
-int run_verify(const VerifyOptions& o) {
+int run_verify(VerifyOptions& o) {
   auto start = std::chrono::steady_clock::now();
+  if (!o.config.empty() || !o.sets.empty()) {
+    if (o.bvh_flags)
+      throw InputError(
+          "verify: --config takes the BVH from the hardware config; change it there or with "
+          "--set bvh.KEY=VALUE, not with the BVH options");
+    o.bvh = load_hw_config(o.config, o.sets).bvh;
+  }
   std::string problem = validate(o.bvh);
   if (!problem.empty()) throw_input_error("bvh config", "", problem);
   RayStreamReader reader(o.stream);
@@ -101,7 +114,7 @@ int run_verify(const VerifyOptions& o) {
              header.workload);
   fmt::print("scene      {} ({} triangles, fingerprint {:016x})\n", scene.source,
              scene.triangle_count(), scene.fingerprint);
-  BvhImage image = build_bvh_image(scene.mesh, o.bvh);
+  BvhImage image = reports::build_bvh_with_progress(scene.mesh, o.bvh, false);
   print_bvh(image);
   EmbreeScene embree(scene.mesh);
   TraversalUnit model(image);
@@ -162,8 +175,17 @@ void add_verify_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--t-tolerance", options->t_tolerance, "Relative t difference that agrees")
       ->capture_default_str();
+  cmd->add_option("--config", options->config,
+                  "Verify the BVH this hardware config simulates (.toml; configs/)");
+  cmd->add_option("--set", options->sets, "Override a config key: --set bvh.width=4")
+      ->allow_extra_args(false);
   add_bvh_options(*cmd, options->bvh);
-  cmd->callback([options, &exit_code] { exit_code = run_verify(*options); });
+  cmd->callback([cmd, options, &exit_code] {
+    for (const char* flag : {"--width", "--format", "--triangles", "--layout", "--treelet-bytes",
+                             "--leaf-size", "--bins"})
+      options->bvh_flags |= cmd->count(flag) > 0;
+    exit_code = run_verify(*options);
+  });
 }
 
 }  // namespace rtsim::app

@@ -68,6 +68,9 @@ Json timing_json(const FidelityResult& f, const Json& stats) {
             {"rays_per_cycle", f.cycles.known ? Json(double(f.rays) / f.cycles.value) : Json()},
             {"host_seconds", f.host_seconds}};
   if (!stats.is_null()) t["rays_per_host_second"] = stats["host"]["rays_per_second"];
+  t["bottleneck"] = stats.is_null()
+                        ? Json{{"text", Json()}, {"resource", Json()}, {"utilisation", Json()}}
+                        : stats["bottleneck"];
   return t;
 }
 
@@ -103,8 +106,8 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
       b[key] = stats["memory"][key];
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
-      entry["l1_bytes_per_ray"] = counters["type." + name + ".l1_accesses"].get<double>() *
-                                  block_bytes(c.l1) / n;
+      entry["l1_bytes_per_ray"] =
+          counters["type." + name + ".l1_accesses"].get<double>() * block_bytes(c.l1) / n;
       entry["l2_bytes_per_ray"] =
           counters["type." + name + ".l2_accesses"].get<double>() * c.l2.line_bytes / n;
     }

@@ -8,6 +8,7 @@ const std::vector<Row>& summary_rows() {
   static const std::vector<Row> rows{
       {"workload", "workload.name", Style::Text, false},
       {"hardware", "hardware.name", Style::Text, false},
+      {"what limits it (busiest resource)", "timing.bottleneck.text", Style::Text},
       {"fidelity level", "timing.level", Style::Text},
       {"rays", "timing.rays", Style::Integer},
       {"cycles", "timing.cycles", Style::Integer},

@@ -1,4 +1,5 @@
 #include "reports/run_job.h"
+#include "reports/phase_progress.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -43,7 +44,7 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
 RunResult run_job(const RunJob& job) {
   create_output_folder(job.output);
   Scene scene = load_stream_scene(job.stream, RayStreamReader(job.stream).header());
-  BvhImage image = build_bvh_image(scene.mesh, job.config.bvh);
+  BvhImage image = build_bvh_with_progress(scene.mesh, job.config.bvh, !job.progress);
   if (job.level.level == FidelityLevel::Cycle) return run_cycle(job, scene, image);
   RunResult result;
   result.fidelity = run_level(job.level, job.config, image, job.stream);

@@ -1,6 +1,7 @@
 #include "reports/sweep_runner.h"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 
 #include <fmt/core.h>
@@ -67,6 +68,14 @@ std::vector<PointRun> run_sweep(const SweepSpec& spec, const SweepRunOptions& o)
   std::vector<PointRun> points;
   std::vector<ProcessJob> jobs;
   std::vector<size_t> job_point;
+  if (!o.quiet) {
+    size_t configs = spec.points.size(), workloads = spec.workloads.size();
+    fmt::print(
+        "sweep      {}: {} config{} x {} workload{}; tracing the workloads, then finding "
+        "the points done before\n",
+        spec.name, configs, configs == 1 ? "" : "s", workloads, workloads == 1 ? "" : "s");
+    std::fflush(stdout);
+  }
   for (const SweepWorkload& w : spec.workloads) {
     std::string trace_dir = o.output + "/traces/" + w.name;
     TraceOutcome trace = trace_into(w.trace, trace_dir, o.quiet);

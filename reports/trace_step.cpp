@@ -1,11 +1,13 @@
 #include "reports/trace_step.h"
 
+#include <cstdio>
 #include <filesystem>
 
 #include <fmt/core.h>
 
 #include "model/sc/sim_report.h"
 #include "reports/page_util.h"
+#include "reports/phase_progress.h"
 #include "traces/output_file.h"
 #include "traces/error.h"
 #include "traces/hash.h"
@@ -93,6 +95,12 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   options.output = dir + "/rays.rays";
   options.preview = dir + "/preview.png";
   options.generator = "rtsim " RTSIM_VERSION;
+  if (!quiet) {
+    fmt::print("trace      {} at {}x{}, {} frame(s), into {}\n", spec.name, spec.width, spec.height,
+               spec.frames, dir);
+    std::fflush(stdout);  // before the progress lines on stderr, also in a pipe
+    options.progress = trace_progress();
+  }
   pipeline::TraceResult result = pipeline::trace_workload(spec, options);
   Json summary;
   summary["schema"] = kTraceSchema;
@@ -103,10 +111,11 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   summary["preview"] = "preview.png";
   write_file_atomic(dir + "/trace.json", summary.dump(2) + "\n");
   if (!quiet)
-    fmt::print("trace      {}: {} rays of {} on {} ({} triangles), {}x{}, {} frame(s) -> {}\n",
-               result.summary.workload, result.summary.total_rays(), request.workload,
-               result.summary.scene_source, result.summary.triangles, result.summary.width,
-               result.summary.height, result.summary.frames, dir);
+    fmt::print(
+        "trace      {} rays of {} on {} ({} triangles) in {:.1f} s\n", result.summary.total_rays(),
+        request.workload, result.summary.scene_source, result.summary.triangles,
+        result.summary.load_seconds + result.summary.build_seconds + result.summary.trace_seconds);
+  std::fflush(stdout);
   TraceOutcome out{dir, options.output, options.preview, summary};
   return out;
 }

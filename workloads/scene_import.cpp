@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include "traces/error.h"
+#include "workloads/scene_file_check.h"
 #include "workloads/scene_import.h"
 #include "workloads/scene_import_log.h"
 
@@ -164,6 +165,8 @@ std::vector<std::string> scene_file_extensions() {
 
 Scene import_scene_file(const std::string& path) {
   const std::string ext = checked_extension(path);
+  if (ext == ".obj") check_obj_indices(path);
+  if (ext == ".gltf" || ext == ".glb") check_gltf_container(path, ext == ".glb");
   Assimp::Importer importer;
   // Only positions matter; dropping the rest lets the weld merge vertices by position alone.
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,

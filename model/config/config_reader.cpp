@@ -52,7 +52,7 @@ ConfigReader ConfigReader::section(const std::string& name) {
 void ConfigReader::fail(const std::string& key, const std::string& what) const {
   const toml::node* node = table_ && !key.empty() ? table_->get(key) : table_;
   std::string full = full_key(key);
-  std::string file = contains(ctx_.set_keys, full) ? "--set " + full : ctx_.file;
+  std::string file = contains(ctx_.set_keys, full) ? ctx_.set_option + " " + full : ctx_.file;
   throw_input_error(file, line_of(node), fmt::format("key '{}': {}", full, what));
 }
 
@@ -172,11 +172,10 @@ toml::table parse_config_file(const std::string& path, const std::string& what) 
   }
 }
 
-void apply_override(toml::table& root, const std::string& assignment,
-                    std::vector<std::string>& set_keys) {
+void apply_override(toml::table& root, const std::string& assignment, ConfigReadContext& ctx) {
   size_t eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw_input_error("--set " + assignment, "", "expected KEY=VALUE, e.g. rt.l1.size_bytes=65536");
+    throw_input_error(ctx.set_option + " " + assignment, "", "expected KEY=VALUE");
   std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   // The value in TOML syntax; anything that does not parse is taken as a string.
   toml::table parsed;
@@ -191,7 +190,8 @@ void apply_override(toml::table& root, const std::string& assignment,
     toml::node* node = table->get(part);
     if (!node) node = &table->insert_or_assign(part, toml::table{}).first->second;
     if (!node->is_table())
-      throw_input_error("--set " + key, "", fmt::format("'{}' is a value, not a section", part));
+      throw_input_error(ctx.set_option + " " + key, "",
+                        fmt::format("'{}' is a value, not a section", part));
     table = node->as_table();
     start = dot + 1;
   }
@@ -200,7 +200,7 @@ void apply_override(toml::table& root, const std::string& assignment,
     table->insert_or_assign(leaf, *value);
   else
     table->insert_or_assign(leaf, text);
-  set_keys.push_back(key);
+  ctx.set_keys.push_back(key);
 }
 
 namespace {
@@ -248,7 +248,7 @@ void check_unknown_keys(const toml::table& root, const ConfigReadContext& ctx) {
   std::string what = fmt::format("unknown key '{}'", u.key);
   if (!known.empty())
     what += fmt::format(" (keys of [{}]: {})", u.section.empty() ? "top level" : u.section, known);
-  if (set != unknown.end()) throw_input_error("--set " + u.key, "", what);
+  if (set != unknown.end()) throw_input_error(ctx.set_option + " " + u.key, "", what);
   throw_input_error(ctx.file, u.line ? fmt::format("line {}", u.line) : "", what);
 }
 

@@ -27,7 +27,8 @@ struct ConfigKeyDoc {
 
 struct ConfigReadContext {
   std::string file;                   // for error messages
-  std::vector<std::string> set_keys;  // keys given with --set
+  std::string set_option = "--set";   // the command-line option that overrides keys
+  std::vector<std::string> set_keys;  // keys given with it
   std::vector<ConfigKeyDoc> docs;     // every key read, in read order, with its default
   std::vector<std::pair<std::string, nlohmann::ordered_json>> values;  // resolved, read order
   std::vector<std::string> known;                                      // every key read, dotted
@@ -68,9 +69,9 @@ class ConfigReader {
 toml::table parse_config_file(const std::string& path, const std::string& what);
 
 // Applies "key=value" (value in TOML syntax; a bare word is a string) to the document,
-// creating sections as needed; throws InputError naming the --set for a malformed one.
-void apply_override(toml::table& root, const std::string& assignment,
-                    std::vector<std::string>& set_keys);
+// creating sections as needed, and notes the key in ctx.set_keys; throws InputError naming
+// ctx.set_option for a malformed one.
+void apply_override(toml::table& root, const std::string& assignment, ConfigReadContext& ctx);
 
 // Throws InputError for the first key of the document (by line) or of --set that was never
 // read, naming the file, the line and the keys that section does know.

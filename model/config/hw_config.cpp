@@ -61,13 +61,13 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
       "quantum_cycles", c.sim.quantum_cycles, "cycles",
       "how far a unit may run ahead of SystemC time (TLM temporal decoupling; 1 = exact order)", 1,
       1 << 20));
-  c.sim.stall_cycles =
-      sim.integer("stall_cycles", c.sim.stall_cycles, "cycles",
-                  "no progress for this long, with nothing scheduled, stops the run with a stall error", 1, 1ull << 40);
+  c.sim.stall_cycles = sim.integer(
+      "stall_cycles", c.sim.stall_cycles, "cycles",
+      "no progress for this long, with nothing scheduled, stops the run with a stall error", 1,
+      1ull << 40);
   c.sim.warmup_rays = sim.integer(
       "warmup_rays", c.sim.warmup_rays, "rays",
-      "the stream's first rays run with full timing but are left out of every stat", 0,
-      1ull << 40);
+      "the stream's first rays run with full timing but are left out of every stat", 0, 1ull << 40);
   c.sim.warmup_frames = uint32_t(sim.integer(
       "warmup_frames", c.sim.warmup_frames, "frames",
       "the stream's first frames, likewise (with warmup_rays: whichever ends later)", 0, 100000));
@@ -237,7 +237,7 @@ HwConfig load_hw_config(const std::string& path, const std::vector<std::string>&
   std::string file = path.empty() ? "(defaults)" : path;
   ConfigReadContext ctx;
   ctx.file = file;
-  for (const std::string& assignment : overrides) apply_override(root, assignment, ctx.set_keys);
+  for (const std::string& assignment : overrides) apply_override(root, assignment, ctx);
   HwConfig config;
   ConfigReader reader(&root, "", ctx);
   read_hw_config(reader, config);

@@ -175,7 +175,8 @@ DeviceSet load_device_set(const std::string& path, const std::vector<std::string
   toml::table root = parse_config_file(path, "device set");
   ConfigReadContext ctx;
   ctx.file = path.empty() ? "(defaults)" : path;
-  for (const std::string& assignment : overrides) apply_override(root, assignment, ctx.set_keys);
+  ctx.set_option = "--device-set";
+  for (const std::string& assignment : overrides) apply_override(root, assignment, ctx);
   DeviceSet s = read_set(&root, ctx);
   check_unknown_keys(root, ctx);
   s.file = path;

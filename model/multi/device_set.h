@@ -50,7 +50,7 @@ struct DeviceSet {
 };
 
 // Reads a device set file (path empty: the defaults, with no devices) and applies "key=value"
-// overrides of its single keys. Throws InputError naming the file (or --set) and line for a
+// overrides of its single keys. Throws InputError naming the file (or --device-set) and line for a
 // syntax error, a wrong type, a value out of range, an unknown key, or a change that names a
 // device that does not exist. Device hardware configs are not read here (DeviceConfigs does).
 DeviceSet load_device_set(const std::string& path, const std::vector<std::string>& overrides = {});

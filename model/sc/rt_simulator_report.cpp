@@ -7,7 +7,9 @@
 namespace rtsim {
 namespace {
 
-void report_cache(StatsRegistry& r, const std::string& p, const CacheStats& s, bool cold) {
+// port_peak: bytes per cycle of all the level's data ports together (0: no limit).
+void report_cache(StatsRegistry& r, const std::string& p, const CacheStats& s, bool cold,
+                  double port_peak) {
   r.counter(p + ".accesses", s.accesses);
   r.counter(p + ".hits", s.hits);
   r.counter(p + ".misses", s.misses);
@@ -21,6 +23,10 @@ void report_cache(StatsRegistry& r, const std::string& p, const CacheStats& s, b
   r.counter(p + ".bank_conflicts", s.bank_conflicts);
   r.counter(p + ".bank_stall_cycles", s.bank_stall_cycles);
   r.counter(p + ".port_stall_cycles", s.port_stall_cycles);
+  if (port_peak > 0) {
+    r.counter(p + ".port_bytes", s.bytes_read + s.write_bytes);
+    r.ratio(p + ".port_utilisation", p + ".port_bytes", "cycles", 1.0 / port_peak);
+  }
   r.counter(p + ".evictions", s.evictions);
   r.counter(p + ".bytes_read", s.bytes_read);
   r.counter(p + ".bytes_below", s.bytes_below);
@@ -46,7 +52,8 @@ void report_link(StatsRegistry& r, const std::string& p, const Link& link, doubl
 
 // Per slice: its own counts, and the crossbar port in front of it; per unit: its port.
 void report_l2(StatsRegistry& r, const SharedCacheModule& l2) {
-  report_cache(r, "l2", l2.stats(), l2.tracks_cold_misses());
+  report_cache(r, "l2", l2.stats(), l2.tracks_cold_misses(),
+               l2.slice(0).config().bytes_per_cycle * l2.slice_count());
   const Crossbar& xbar = l2.crossbar();
   double peak = xbar.config().bytes_per_cycle;
   if (l2.slice_count() > 1)
@@ -155,7 +162,8 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
             1.0 / config_.rt.issue_per_cycle);
     report_test_units(r, p + ".box", core.box());
     report_test_units(r, p + ".triangle", core.triangle());
-    report_cache(r, p + ".l1", unit->l1.cache().stats(), true);
+    report_cache(r, p + ".l1", unit->l1.cache().stats(), true,
+                 unit->l1.cache().config().bytes_per_cycle);
     total.steps += steps;
     total.warp_steps += s.warp_steps;
     total.active_lanes += s.active_lanes;

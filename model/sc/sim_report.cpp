@@ -2,9 +2,14 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "model/verify/arbiter.h"
 #include "traces/error.h"
@@ -64,6 +69,18 @@ double sum(const StatsRegistry& r, uint32_t units, const std::string& suffix) {
   return total;
 }
 
+// The busiest crossbar link (0 without a crossbar).
+double busiest_link(const HwConfig& c, const StatsRegistry& r) {
+  double most = 0;
+  for (uint32_t i = 0; i < c.rt_units; ++i)
+    for (const char* dir : {".up", ".down"})
+      most = std::max(most, r.value("xbar.rt" + std::to_string(i) + dir + ".utilisation"));
+  for (uint32_t i = 0; r.has("xbar.slice" + std::to_string(i) + ".in.utilisation"); ++i)
+    for (const char* dir : {".in", ".out"})
+      most = std::max(most, r.value("xbar.slice" + std::to_string(i) + dir + ".utilisation"));
+  return most;
+}
+
 Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
   Json units = Json::object();
   for (uint32_t i = 0; i < c.rt_units; ++i) {
@@ -71,6 +88,7 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
     units[p] = {{"box", r.value(p + ".box.utilisation")},
                 {"triangle", r.value(p + ".triangle.utilisation")},
                 {"control", r.value(p + ".control.utilisation")},
+                {"l1_port", r.value(p + ".l1.port_utilisation")},
                 {"ray_slots", r.value(p + ".slot_occupancy")}};
   }
   auto mean = [&](const char* suffix) { return sum(r, c.rt_units, suffix) / c.rt_units; };
@@ -78,10 +96,45 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
            {{"box", mean(".box.utilisation")},
             {"triangle", mean(".triangle.utilisation")},
             {"control", mean(".control.utilisation")},
+            {"l1_port", mean(".l1.port_utilisation")},
             {"ray_slots", r.value("rt.slot_occupancy")}}},
           {"units", units},
           {"dispatch", r.value("dispatch.utilisation")},
+          {"l2_port", r.value("l2.port_utilisation")},
+          {"xbar_busiest_link", busiest_link(c, r)},
           {"dram", r.value("dram.utilisation")}};
+}
+
+// What limits the design: the throughput resources by utilisation, the busiest first. Below
+// half busy, none of them does: rays wait on latency (memory), which the slots' occupancy shows.
+Json bottleneck_json(const Json& u) {
+  static const std::pair<const char*, const char*> kResources[] = {
+      {"box", "box-test units"},      {"triangle", "triangle-test units"},
+      {"control", "traversal issue"}, {"l1_port", "L1 data ports"},
+      {"l2_port", "L2 data ports"},   {"xbar_busiest_link", "busiest crossbar link"},
+      {"dram", "DRAM data bus"},      {"dispatch", "ray dispatch"}};
+  const Json none = Json::object();
+  const Json& mean = u.contains("mean") ? u["mean"] : none;
+  auto value = [&](const char* key) {
+    const Json& v = mean.contains(key) ? mean[key] : u.contains(key) ? u[key] : none;
+    return v.is_number() ? v.get<double>() : -1.0;
+  };
+  std::vector<std::pair<double, const char*>> busy;
+  for (const auto& [key, label] : kResources)
+    if (value(key) >= 0) busy.push_back({value(key), label});
+  std::stable_sort(busy.begin(), busy.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  if (busy.size() < 2) return {{"text", Json()}, {"resource", Json()}, {"utilisation", Json()}};
+  auto pct = [](double x) { return fmt::format("{:.0f}%", 100 * x); };
+  std::string text =
+      busy[0].first >= 0.5
+          ? fmt::format("{} {} busy; next: {} {}", busy[0].second, pct(busy[0].first),
+                        busy[1].second, pct(busy[1].first))
+          : fmt::format(
+                "latency: no unit, port or bus is half busy (busiest: {} {}; ray slots {} "
+                "occupied)",
+                busy[0].second, pct(busy[0].first), pct(std::max(0.0, value("ray_slots"))));
+  return {{"text", text}, {"resource", busy[0].second}, {"utilisation", busy[0].first}};
 }
 
 Json memory_json(const HwConfig& c, const StatsRegistry& r) {
@@ -156,6 +209,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   doc["memory"] = memory_json(c, r);
   doc["frames"] = frames_json(sim);
   doc["utilisation"] = utilisation_json(c, r);
+  doc["bottleneck"] = bottleneck_json(doc["utilisation"]);
   // Coherence figures exist only in the mode that produces them; elsewhere they are null.
   bool packet = c.rt.mode == TraversalMode::Packet, treelet = c.rt.mode == TraversalMode::Treelet;
   auto when = [&](bool applies, const char* name) {

@@ -36,7 +36,9 @@ def save(fig, path):
     """Writes the chart whole or not at all: to PATH.tmp-PID, renamed over PATH."""
     tmp = path + ".tmp-%d" % os.getpid()
     try:
-        fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None})
+        # Tight bounding box: rotated tick labels and legends are never cut off at the edge.
+        fig.savefig(tmp, format="png", dpi=100, metadata={"Software": None},
+                    bbox_inches="tight", pad_inches=0.1)
         os.replace(tmp, path)
     except BaseException:  # also Ctrl-C and SIGTERM (see below): no temporary is left behind
         if os.path.exists(tmp):
@@ -51,8 +53,9 @@ signal.signal(signal.SIGTERM, lambda number, frame: sys.exit(128 + number))
 
 
 def new(width=7.0, height=3.6, **kwargs):
+    """A figure whose constrained layout keeps titles, labels and legends from overlapping."""
     setup()
-    return plt.subplots(figsize=(width, height), **kwargs)
+    return plt.subplots(figsize=(width, height), layout="constrained", **kwargs)
 
 
 def draw_all(items, draw, outdir):

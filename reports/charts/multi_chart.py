@@ -70,7 +70,6 @@ def main(folder):
         ax.legend(fontsize="small")
     for i in range(len(panels), columns):
         axes[1][i].axis("off")
-    fig.tight_layout()
     chart_style.save(fig, os.path.join(folder, "chart.png"))
 
 

@@ -101,8 +101,9 @@ def time_chart(report, run_dir, image):
         axes[k].bar(list(util), [100 * v for v in util.values()], color="#8172b2")
         axes[k].set_ylim(0, 100)
         axes[k].set_ylabel("busy (%)")
-        axes[k].set_title("units")
-        axes[k].tick_params(axis="x", rotation=30)
+        axes[k].set_title("units, ports and buses")
+        axes[k].set_xticks(range(len(util)))
+        axes[k].set_xticklabels(list(util), rotation=30, ha="right")
         k += 1
     if time["timeline"] is not None:
         line = time["timeline"]
@@ -117,7 +118,6 @@ def time_chart(report, run_dir, image):
         axes[k].set_title("over time")
         axes[k].legend(fontsize=6, loc="upper right")
     fig.suptitle(image["title"])
-    fig.tight_layout()
     return fig
 
 

@@ -54,7 +54,6 @@ def main(path, outdir):
     right.legend(fontsize=7)
     ctx = doc["context"]
     fig.suptitle("%s on %s: %d rays" % (ctx["workload"], ctx["config"], ctx["rays"]))
-    fig.tight_layout()
     chart_style.save(fig, os.path.join(outdir, "speed_vs_error.png"))
 
 

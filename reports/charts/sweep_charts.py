@@ -83,7 +83,6 @@ def curve(doc, chart):
     ax.set_title(chart["title"])
     handles, _ = ax.get_legend_handles_labels()
     ax.legend(handles=handles + legend, fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1))
-    fig.tight_layout()
     return fig
 
 

@@ -43,4 +43,8 @@ inline int count_lines(const std::string& s) {
   return n;
 }
 
+inline std::string first_line(const std::string& s) {
+  return s.substr(0, s.find('\n'));
+}
+
 }  // namespace rtsim::test

@@ -71,6 +71,27 @@ TEST_F(VerifyCli, PrintsSummaryCountersAndHexMismatches) {
   }
 }
 
+// verify checks the BVH a hardware config simulates, as rtsim sim builds it.
+TEST_F(VerifyCli, ConfigGivesTheBvhThePresetSimulates) {
+  std::string mobile = std::string(RTSIM_SOURCE_DIR) + "/configs/mobile.toml";
+  auto r = test::run_rtsim("verify " + stream_ + " --config " + mobile);
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("bvh4 aabb32 raw treelet"), std::string::npos) << r.out;
+  r = test::run_rtsim("verify " + stream_ + " --config " + mobile + " --set bvh.width=2");
+  EXPECT_NE(r.out.find("bvh2 aabb32 raw treelet"), std::string::npos) << r.out;
+  r = test::run_rtsim("verify " + stream_);
+  EXPECT_NE(r.out.find("bvh8 aabb32 raw treelet"), std::string::npos) << r.out;
+  r = test::run_rtsim("verify " + stream_ + " --config " + mobile + " --width 8");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_EQ(test::first_line(r.err),
+            "rtsim: error: verify: --config takes the BVH from the hardware config; change it "
+            "there or with --set bvh.KEY=VALUE, not with the BVH options");
+  r = test::run_rtsim("verify " + stream_ + " --set bvh.nope=1");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(test::first_line(r.err).find("--set bvh.nope: unknown key"), std::string::npos)
+      << r.err;
+}
+
 TEST_F(VerifyCli, SceneFingerprintMismatchIsBadInput) {
   auto r = test::run_rtsim("verify " + stream_ + " --scene cornell");
   EXPECT_EQ(r.exit_code, 2);

@@ -77,17 +77,39 @@ TEST(CliMultiDevice, BadInputIsOneLineAndExitTwo) {
   std::string set = kSource + "/configs/multi/four-mobile.toml";
   std::string missing = "multi-device /nonexistent.rays --devices-file " + set + " -o /tmp/x";
   std::string bad_split = "multi-device x.rays --devices-file " + set + " --split static,afr -o x";
-  std::string bad_key = "multi-device x.rays --devices-file " + set + " --set link.nope=1 -o x";
+  std::string bad_key =
+      "multi-device x.rays --devices-file " + set + " --device-set link.nope=1 -o x";
   std::string both = "multi-device x.rays --devices-file " + set + " --config a.toml -o x";
   std::string no_set = "multi-device x.rays --devices-file /nonexistent.toml -o x";
   std::string bad_unit =
-      "multi-device x.rays --devices-file " + set + " --set split.samples=px -o x";
+      "multi-device x.rays --devices-file " + set + " --device-set split.samples=px -o x";
   std::string warmup = "multi-device x.rays --devices-file " + set + " --warmup-frames 3 -o x";
   for (const std::string& args : {missing, bad_split, bad_key, both, no_set, bad_unit, warmup}) {
     test::RunResult r = test::run_rtsim(args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
     EXPECT_EQ(test::count_lines(r.err), 1) << args << "\n" << r.err;
   }
+}
+
+// --set means hardware keys as in every other command; device-set keys have their own option.
+TEST(CliMultiDevice, SetIsForHardwareKeysAndDeviceSetForTheSetsKeys) {
+  std::string set = kSource + "/configs/multi/four-mobile.toml";
+  test::RunResult r = test::run_rtsim("multi-device x.rays --devices-file " + set +
+                                      " --set link.bandwidth_gbps=32 -o x");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::first_line(r.err),
+            "rtsim: error: --set link.bandwidth_gbps: a device-set key, not a hardware key: pass "
+            "it as --device-set link.bandwidth_gbps=32")
+      << r.err;
+  r = test::run_rtsim("multi-device x.rays --devices-file " + set + " --set rt.nope=1 -o x");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(test::first_line(r.err).find("--set rt.nope: unknown key 'rt.nope'"), std::string::npos)
+      << r.err;
+  r = test::run_rtsim("multi-device x.rays --devices-file " + set +
+                      " --device-set link.bandwidth_gbps=-1 -o x");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(test::first_line(r.err).find("--device-set link.bandwidth_gbps"), std::string::npos)
+      << r.err;
 }
 
 TEST(CliMultiDevice, ListKeys) {

@@ -95,7 +95,7 @@ TEST(DeviceSet, BadInputNamesFileLineAndKey) {
   e = error_of("[[device]]\n[[change]]\nframe = 3\ndevice = 4\n");
   EXPECT_NE(e.find("device 4 does not exist"), std::string::npos) << e;
   e = error_of("", {"link.nope=1"});
-  EXPECT_NE(e.find("--set link.nope"), std::string::npos) << e;
+  EXPECT_NE(e.find("--device-set link.nope"), std::string::npos) << e;
   e = error_of("[link\n");
   EXPECT_NE(e.find("line 1"), std::string::npos) << e;
 }

@@ -126,6 +126,23 @@ TEST_F(RunReport, ChartsAreReproducibleByteForByte) {
   std::filesystem::remove_all(copy);
 }
 
+// The summary leads with what limits the design: the busiest resource, right after the names.
+TEST_F(RunReport, LeadsWithWhatLimitsTheDesign) {
+  std::string text = report_["timing"]["bottleneck"]["text"].get<std::string>();
+  EXPECT_NE(text.find("% busy; next: "), std::string::npos) << text;
+  size_t limit = markdown_.find("| what limits it (busiest resource) | " + text + " |");
+  EXPECT_NE(limit, std::string::npos) << markdown_;
+  EXPECT_LT(limit, markdown_.find("| cycles |")) << "before the numbers";
+  EXPECT_LT(html_.find("what limits it"), html_.find("<section id=\"workload\">"));
+  Json stats = test::read_json(dir_ + "/stats.json");
+  double busiest = 0;
+  for (const char* key : {"box", "triangle", "control", "l1_port"})
+    busiest = std::max(busiest, stats["utilisation"]["mean"][key].get<double>());
+  for (const char* key : {"dispatch", "l2_port", "xbar_busiest_link", "dram"})
+    busiest = std::max(busiest, stats["utilisation"][key].get<double>());
+  EXPECT_DOUBLE_EQ(report_["timing"]["bottleneck"]["utilisation"].get<double>(), busiest);
+}
+
 TEST_F(RunReport, AFullModelRunShowsNoIntervalRow) {
   EXPECT_EQ(report_["timing"]["cycles_ci95"], 0) << "the JSON keeps it";
   EXPECT_EQ(html_.find("95% interval"), std::string::npos) << "an exact run has no interval";
@@ -141,6 +158,23 @@ TEST(RunCommand, ASampledRunShowsItsInterval) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(test::slurp(dir + "/report.md").find("| cycles, 95% interval (±) | "),
             std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// The phases before the simulation say what they do: the trace's passes and the BVH build.
+TEST(RunCommand, TheTraceAndBvhPhasesPrintProgress) {
+  std::string dir = test::fresh_dir("progress");
+  test::RunResult r = test::run_rtsim("run pica --resolution 16x9 --no-charts -o " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("trace      pica at 16x9, 1 frame(s), into " + dir + "/trace\n", 0), 0u)
+      << r.out;
+  for (const char* pass : {"camera", "shadow", "diffuse_gi", "translucency"})
+    EXPECT_NE(r.err.find(std::string("trace: frame 1/1: ") + pass + "\n"), std::string::npos)
+        << r.err;
+  EXPECT_NE(r.err.find("bvh: building bvh8 aabb32 raw treelet"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" over 4144 triangles\nbvh: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" MiB, built in "), std::string::npos) << r.err;
+  EXPECT_LT(r.err.find("bvh: building"), r.err.find("sim: ")) << r.err;
   std::filesystem::remove_all(dir);
 }
 

@@ -201,6 +201,10 @@ TEST(Sweep, RedoesOnlyThePointsWhoseResultsAreMissing) {
   test::RunResult r = test::run_rtsim("sweep " + spec() + " -o " + dir + " -j 2 --no-charts");
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("5 done before, 3 to run"), std::string::npos) << r.out;
+  EXPECT_LT(r.out.find("sweep      tiny: 8 configs x 1 workload; tracing the workloads"),
+            r.out.find("5 done before"))
+      << "planning says what it does before it counts: " << r.out;
+  EXPECT_NE(r.out.find("trace      reusing "), std::string::npos) << r.out;
   auto after = finished_points(dir);
   EXPECT_EQ(after.size(), 8u);
   for (const auto& [id, time] : before)

@@ -71,6 +71,34 @@ TEST(SimCli, ASlowMemoryIsNotAStall) {
   std::filesystem::remove(stream);
 }
 
+// The busiest resource leads: a starved DRAM bus is named as the limit, on stdout and in
+// stats.json; with every limit raised far, nothing is half busy and the run is latency-bound.
+TEST(SimCli, NamesWhatLimitsTheDesign) {
+  std::string stream = write_stream(), out = temp("limit");
+  std::string mobile = " --config " RTSIM_SOURCE_DIR "/configs/mobile.toml";
+  test::RunResult r =
+      test::run_rtsim("sim " + stream + mobile + " --set dram.bytes_per_cycle=0.5 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
+  EXPECT_EQ(doc["bottleneck"]["resource"], "DRAM data bus");
+  EXPECT_DOUBLE_EQ(doc["bottleneck"]["utilisation"].get<double>(),
+                   doc["utilisation"]["dram"].get<double>());
+  EXPECT_GT(doc["bottleneck"]["utilisation"].get<double>(), 0.5);
+  EXPECT_NE(r.out.find("limit      DRAM data bus "), std::string::npos) << r.out;
+  r = test::run_rtsim("sim " + stream + mobile +
+                      " --set rt.l1.bytes_per_cycle=0 --set l2.bytes_per_cycle=0 --set "
+                      "xbar.bytes_per_cycle=4096 --set rt.box.count=16 --set rt.triangle.count=16 "
+                      "--set rt.issue_per_cycle=16 --set dram.bytes_per_cycle=4096 -q -o " +
+                      out);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
+  EXPECT_LT(doc["bottleneck"]["utilisation"].get<double>(), 0.5);
+  EXPECT_EQ(doc["bottleneck"]["text"].get<std::string>().rfind("latency: no unit", 0), 0u)
+      << doc["bottleneck"];
+  std::filesystem::remove_all(out);
+  std::filesystem::remove(stream);
+}
+
 // A one-triangle OBJ scene in dir, and a stream of one ray at it whose header names the scene
 // as `scene_source`.
 std::string write_obj_stream(const std::string& dir, const std::string& scene_source) {

@@ -80,10 +80,63 @@ TEST(SceneErrors, ParseFailuresCarryAssimpsMessage) {
   expect_input_error(dir.write("bad.stl", "hello\n"), "cannot import");
   expect_input_error(dir.write("bad.off", "hello, this is no OFF file\n"),
                      "cannot import: OFF: Header is invalid");
-  expect_input_error(dir.write("bad.gltf", "{ not json"), "cannot import");
-  expect_input_error(dir.write("bad.glb", "glTF garbage"), "cannot import");
-  expect_input_error(dir.write("index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
-                     "vertex index out of range");
+  expect_input_error(dir.write("bad.glb", "garbage that is not glTF"),
+                     "offset 0: not a GLB file (it does not begin with 'glTF')");
+}
+
+// OBJ indices are checked before assimp reads the file, so the message names the line.
+TEST(SceneErrors, ObjIndicesOutOfRangeNameTheLine) {
+  TempDir dir;
+  std::string three = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  expect_input_error(dir.write("index.obj", three + "f 1 2 9\n"),
+                     "line 4: '9' refers to vertex 9, but only 3 vertices ('v' lines) are "
+                     "defined above this line");
+  expect_input_error(dir.write("early.obj", "v 0 0 0\nf 1 2 3\nv 1 0 0\nv 0 1 0\n"),
+                     "line 2: '2' refers to vertex 2, but only 1 vertex ('v' lines)");
+  expect_input_error(dir.write("back.obj", three + "# comment\nf -1 -2 -4\n"),
+                     "line 5: '-4' refers to vertex -4");
+  expect_input_error(dir.write("zero.obj", three + "f 0 1 2\n"),
+                     "line 4: vertex index 0 in '0': OBJ indices start at 1");
+  expect_input_error(dir.write("uv.obj", three + "vt 0 0\nf 1/1 2/2 3/1\n"),
+                     "line 5: '2/2' refers to texture coordinate 2, but only 1 texture coordinate");
+  expect_input_error(dir.write("normal.obj", three + "vn 0 0 1\nf 1//1 2//1 3//5\n"),
+                     "line 5: '3//5' refers to normal 5");
+  expect_input_error(dir.write("word.obj", three + "f 1 2 three\n"),
+                     "line 4: 'three' is not an index of the form v, v/vt or v/vt/vn");
+  expect_input_error(dir.write("line.obj", three + "f 1 2 3\nl 1 7\n"), "line 5: '7'");
+  expect_input_error(dir.write("comment.obj", three + "f 1 2 3 # one\n"),
+                     "line 4: a comment after the indices is not read");
+  // Valid forms still load: relative indices, omitted texture coordinates, comments.
+  TempDir ok;
+  EXPECT_EQ(load_scene(ok.write("ok.obj", three + "vn 0 0 1\n# tri\nf -3//-1 -2//-1 -1//-1\n"))
+                .triangle_count(),
+            1u);
+}
+
+// glTF's JSON and the GLB container are checked before assimp, which only says "No suitable
+// reader found" for a truncated document.
+TEST(SceneErrors, GltfJsonAndGlbContainerErrorsNameThePlace) {
+  TempDir dir;
+  std::string msg = expect_input_error(
+      dir.write("bad.gltf", "{\n  \"asset\": {\"version\": \"2.0\"},\n  \"nodes\": [\n"),
+      "line 4: not valid JSON: ");
+  EXPECT_EQ(msg.find("No suitable reader"), std::string::npos) << msg;
+  expect_input_error(dir.write("word.gltf", "{ not json }"), "line 1: not valid JSON");
+  std::string header("glTF\x02\0\0\0", 8);
+  auto word = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  expect_input_error(dir.write("short.glb", header + word(100) + word(10)),
+                     "shorter than its 12-byte header");
+  std::string json = "{\"asset\": {\"version\": \"2.0\"}}";
+  std::string chunk = word(uint32_t(json.size())) + word(0x4E4F534Au) + json;
+  expect_input_error(dir.write("truncated.glb", header + word(500) + chunk),
+                     "offset 8: the header says 500 bytes, the file has 49 (truncated?)");
+  std::string v1 = std::string("glTF\x01\0\0\0", 8) + word(49) + chunk;
+  expect_input_error(dir.write("v1.glb", v1), "offset 4: GLB version 1; rtsim reads glTF 2.0");
+  std::string broken = "{\"asset\": {\"version\": \"2.0\"";
+  std::string broken_chunk = word(uint32_t(broken.size())) + word(0x4E4F534Au) + broken;
+  expect_input_error(
+      dir.write("json.glb", header + word(uint32_t(20 + broken.size())) + broken_chunk),
+      "not valid JSON");
 }
 
 TEST(SceneErrors, GarbageThatAssimpRepairsIsRejected) {
