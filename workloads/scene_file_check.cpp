@@ -2,26 +2,16 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
-#include <iterator>
 #include <string_view>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "traces/error.h"
 
 namespace rtsim {
 namespace {
-
-std::string read_whole(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw_input_error(path, "", "cannot open the scene file");
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -104,57 +94,6 @@ void check_obj_indices(const std::string& path) {
       check_corner(path, line, rest.substr(0, end), counts);
       rest = end == std::string_view::npos ? "" : rest.substr(end);
     }
-  }
-}
-
-void check_gltf_container(const std::string& path, bool glb) {
-  std::string data = read_whole(path);
-  std::string json = data;
-  size_t json_offset = 0;
-  bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
-  if (!binary && glb)
-    throw_input_error(path, "offset 0", "not a GLB file (it does not begin with 'glTF')");
-  if (binary) {
-    auto word = [&](size_t offset) {
-      uint32_t v = 0;
-      std::memcpy(&v, data.data() + offset, 4);  // little-endian, as the container is
-      return v;
-    };
-    if (data.size() < 20)
-      throw_input_error(path, "",
-                        fmt::format("a GLB file of {} bytes is shorter than its 12-byte "
-                                    "header and first chunk header",
-                                    data.size()));
-    if (word(4) != 2)
-      throw_input_error(path, "offset 4",
-                        fmt::format("GLB version {}; rtsim reads glTF 2.0", word(4)));
-    if (word(8) != data.size())
-      throw_input_error(path, "offset 8",
-                        fmt::format("the header says {} bytes, the file has {} (truncated?)",
-                                    word(8), data.size()));
-    uint32_t chunk = word(12);
-    if (word(16) != 0x4E4F534Au)
-      throw_input_error(path, "offset 16", "the first chunk is not the JSON chunk");
-    if (uint64_t(chunk) + 20 > data.size())
-      throw_input_error(
-          path, "offset 12",
-          fmt::format("the JSON chunk of {} bytes runs past the end of the file", chunk));
-    json = data.substr(20, chunk);
-    json_offset = 20;
-  }
-  if (nlohmann::json::accept(json)) return;
-  try {
-    nlohmann::json::parse(json).clear();  // throws: accept() found an error
-  } catch (const nlohmann::json::parse_error& e) {
-    size_t byte = e.byte == 0 ? 0 : e.byte - 1;
-    size_t line =
-        1 + size_t(std::count(json.begin(), json.begin() + std::min(byte, json.size()), '\n'));
-    std::string what = e.what();
-    size_t colon = what.find(": ", what.find("parse error"));
-    std::string reason = colon == std::string::npos ? what : what.substr(colon + 2);
-    std::string place =
-        binary ? fmt::format("offset {}", json_offset + byte) : fmt::format("line {}", line);
-    throw_input_error(path, place, "not valid JSON: " + reason);
   }
 }
 

@@ -1,6 +1,7 @@
 // Checks of scene files that assimp's readers make without saying where: they run before the
 // import, so a broken file is reported by its line (OBJ, glTF JSON) or byte offset (GLB),
-// not by assimp's own text ("No suitable reader found", "vertex index out of range").
+// not by assimp's own text ("No suitable reader found", "vertex index out of range", "has no
+// faces"). OBJ in scene_file_check.cpp, glTF in gltf_check.cpp.
 #pragma once
 
 #include <string>
@@ -12,8 +13,10 @@ namespace rtsim {
 void check_obj_indices(const std::string& path);
 
 // A .gltf file is one JSON document (or a binary container); a .glb file (glb) is the binary
-// container: its header, a length equal to the file's, and a JSON chunk first. Throws
-// InputError naming the line (or the byte offset).
-void check_gltf_container(const std::string& path, bool glb);
+// container: its header, a length equal to the file's, and a JSON chunk first. Every triangle
+// index is below its primitive's POSITION count (where the index data can be read: the GLB's
+// BIN chunk, data: URIs and buffer files beside the scene). Throws InputError naming the line,
+// the byte offset, or the primitive (meshes[M].primitives[P]) and the index.
+void check_gltf(const std::string& path, bool glb);
 
 }  // namespace rtsim

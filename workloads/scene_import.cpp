@@ -166,7 +166,7 @@ std::vector<std::string> scene_file_extensions() {
 Scene import_scene_file(const std::string& path) {
   const std::string ext = checked_extension(path);
   if (ext == ".obj") check_obj_indices(path);
-  if (ext == ".gltf" || ext == ".glb") check_gltf_container(path, ext == ".glb");
+  if (ext == ".gltf" || ext == ".glb") check_gltf(path, ext == ".glb");
   Assimp::Importer importer;
   // Only positions matter; dropping the rest lets the weld merge vertices by position alone.
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,

@@ -190,5 +190,53 @@ TEST(SceneErrors, FinalizeChecksTheInvariants) {
   EXPECT_EQ(s.bounds.hi, glm::vec3(1.0f, 1.0f, 0.0f));
 }
 
+// A triangle whose index is beyond its POSITION accessor: assimp would drop the faces and say
+// only that the mesh "has no faces". The index data comes from a data: URI, a buffer file or
+// the GLB's BIN chunk.
+std::string triangle_gltf(const std::string& uri) {
+  return "{\"asset\": {\"version\": \"2.0\"}, \"scene\": 0, \"scenes\": [{\"nodes\": [0]}],"
+         "\"nodes\": [{\"mesh\": 0}], \"meshes\": [{\"primitives\": [{\"attributes\": "
+         "{\"POSITION\": 0}, \"indices\": 1}]}], \"buffers\": [{\"byteLength\": 44" +
+         (uri.empty() ? "" : ", \"uri\": \"" + uri + "\"") +
+         "}], \"bufferViews\": [{\"buffer\": 0, \"byteLength\": 36}, {\"buffer\": 0, "
+         "\"byteOffset\": 36, \"byteLength\": 6}], \"accessors\": [{\"bufferView\": 0, "
+         "\"componentType\": 5126, \"count\": 3, \"type\": \"VEC3\", \"min\": [0, 0, 0], "
+         "\"max\": [1, 1, 0]}, {\"bufferView\": 1, \"componentType\": 5123, \"count\": 3, "
+         "\"type\": \"SCALAR\"}]}";
+}
+
+TEST(SceneErrors, GltfIndicesBeyondTheirVerticesNameThePrimitive) {
+  TempDir dir;
+  const char* bad = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAUAAAA=";
+  const char* good = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA=";
+  std::string what = "meshes[0].primitives[0]: index 2 of accessor 1 is 5, beyond the 3 vertices";
+  std::string msg = expect_input_error(
+      dir.write("uri.gltf",
+                triangle_gltf(std::string("data:application/octet-stream;base64,") + bad)),
+      what);
+  EXPECT_EQ(msg.find("has no faces"), std::string::npos) << msg;
+  // The same bytes (the triangle (0,0,0) (1,0,0) (0,1,0), indices 0 1 5) as a buffer file beside
+  // the scene, and as a GLB's BIN chunk.
+  const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const uint16_t indices[4] = {0, 1, 5, 0};
+  std::string raw(reinterpret_cast<const char*>(positions), sizeof positions);
+  raw.append(reinterpret_cast<const char*>(indices), sizeof indices);
+  dir.write("tri.bin", raw);
+  expect_input_error(dir.write("file.gltf", triangle_gltf("tri.bin")), what);
+  std::string json = triangle_gltf("");
+  while (json.size() % 4) json += ' ';
+  auto word = [](uint32_t v) { return std::string(reinterpret_cast<const char*>(&v), 4); };
+  std::string glb = word(uint32_t(json.size())) + word(0x4E4F534Au) + json +
+                    word(uint32_t(raw.size())) + word(0x004E4942u) + raw;
+  glb = std::string("glTF\x02\0\0\0", 8) + word(uint32_t(12 + glb.size())) + glb;
+  expect_input_error(dir.write("bin.glb", glb), what);
+  // In range, the same file loads.
+  EXPECT_EQ(load_scene(dir.write("ok.gltf", triangle_gltf(std::string("data:application/"
+                                                                      "octet-stream;base64,") +
+                                                          good)))
+                .triangle_count(),
+            1u);
+}
+
 }  // namespace
 }  // namespace rtsim
