@@ -67,6 +67,26 @@ TEST(CliSceneInfo, UnsupportedFormatIsOneLineAndExit2) {
   std::remove(path.c_str());
 }
 
+// Broken OBJ and glTF files name their line, not assimp's words (scene_errors_test has the rest).
+TEST(CliSceneInfo, BrokenObjAndGltfNameTheirLine) {
+  std::string base = "/tmp/rtsim-cli-broken-" + std::to_string(getpid());
+  std::ofstream(base + ".obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 5\n";
+  std::ofstream(base + ".gltf") << "{\n  \"asset\": {\"version\": \"2.0\"},\n  \"meshes\": [\n";
+  RunResult r = run_rtsim("scene-info " + base + ".obj");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(first_line(r.err), "rtsim: error: " + base +
+                                   ".obj: line 5: '5' refers to vertex 5, but only 4 vertices "
+                                   "('v' lines) are defined above this line");
+  r = run_rtsim("scene-info " + base + ".gltf");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(first_line(r.err).rfind("rtsim: error: " + base + ".gltf: line 4: not valid JSON: ", 0),
+            0u)
+      << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  std::remove((base + ".obj").c_str());
+  std::remove((base + ".gltf").c_str());
+}
+
 // Runs rtsim with RTSIM_MAX_MEMORY set (what memory planning plans against).
 RunResult run_with_memory(const std::string& bytes, const std::string& args) {
   setenv("RTSIM_MAX_MEMORY", bytes.c_str(), 1);
