@@ -96,16 +96,20 @@ void print_examples(const std::vector<Mismatch>& examples, const char* what) {
   }
 }
 
-int run_verify(VerifyOptions& o) {
+// The BVH to check: the options', or with --config/--set the hardware config's.
+BvhConfig bvh_to_check(const VerifyOptions& o) {
+  if (o.config.empty() && o.sets.empty()) return o.bvh;
+  if (o.bvh_flags)
+    throw InputError(
+        "verify: --config takes the BVH from the hardware config; change it there or with "
+        "--set bvh.KEY=VALUE, not with the BVH options");
+  return load_hw_config(o.config, o.sets).bvh;
+}
+
+int run_verify(const VerifyOptions& o) {
   auto start = std::chrono::steady_clock::now();
-  if (!o.config.empty() || !o.sets.empty()) {
-    if (o.bvh_flags)
-      throw InputError(
-          "verify: --config takes the BVH from the hardware config; change it there or with "
-          "--set bvh.KEY=VALUE, not with the BVH options");
-    o.bvh = load_hw_config(o.config, o.sets).bvh;
-  }
-  std::string problem = validate(o.bvh);
+  BvhConfig bvh = bvh_to_check(o);
+  std::string problem = validate(bvh);
   if (!problem.empty()) throw_input_error("bvh config", "", problem);
   RayStreamReader reader(o.stream);
   const StreamHeader& header = reader.header();
@@ -114,7 +118,7 @@ int run_verify(VerifyOptions& o) {
              header.workload);
   fmt::print("scene      {} ({} triangles, fingerprint {:016x})\n", scene.source,
              scene.triangle_count(), scene.fingerprint);
-  BvhImage image = reports::build_bvh_with_progress(scene.mesh, o.bvh, false);
+  BvhImage image = reports::build_bvh_with_progress(scene.mesh, bvh, false);
   print_bvh(image);
   EmbreeScene embree(scene.mesh);
   TraversalUnit model(image);

@@ -26,7 +26,9 @@ std::string last_line(const std::string& text) {
 
 }  // namespace
 
-std::string charts_dir() { return env_or("RTSIM_CHARTS_DIR", RTSIM_CHARTS_DIR); }
+std::string charts_dir() {
+  return env_or("RTSIM_CHARTS_DIR", RTSIM_CHARTS_DIR);
+}
 
 ChartRun run_chart_script(const std::string& script, const std::vector<std::string>& args) {
   std::string python = env_or("RTSIM_PYTHON", "/usr/bin/python3");
@@ -41,12 +43,9 @@ ChartRun run_chart_script(const std::string& script, const std::vector<std::stri
   argv.push_back(nullptr);
   int fds[2];
   if (pipe(fds) != 0) return {false, "pipe failed"};
-  std::fflush(nullptr);
-  pid_t parent = getpid();
-  pid_t pid = fork();
+  pid_t pid = fork_child();
   if (pid < 0) return {false, "fork failed"};
   if (pid == 0) {
-    end_with_parent(parent);
     close(fds[0]);
     dup2(fds[1], STDERR_FILENO);
     dup2(fds[1], STDOUT_FILENO);

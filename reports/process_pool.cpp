@@ -22,11 +22,8 @@ pid_t start(const ProcessJob& job) {
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
-  std::fflush(nullptr);
-  pid_t parent = getpid();
-  pid_t pid = fork();
+  pid_t pid = fork_child();
   if (pid != 0) return pid;
-  end_with_parent(parent);
   int fd = open(job.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (fd >= 0) {
     dup2(fd, STDOUT_FILENO);

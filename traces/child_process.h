@@ -7,12 +7,21 @@
 #include <sys/prctl.h>
 #include <unistd.h>
 
+#include <cstdio>
+
 namespace rtsim {
 
-// Called in the child right after fork(); parent is the pid the parent had before it.
-inline void end_with_parent(pid_t parent) {
-  ::prctl(PR_SET_PDEATHSIG, SIGTERM);
-  if (::getppid() != parent) ::_exit(1);  // the parent died before the request took effect
+// fork(), after flushing stdio (no buffered output is written twice); the child ends when
+// this process does. Returns what fork() returns.
+inline pid_t fork_child() {
+  std::fflush(nullptr);
+  pid_t parent = ::getpid();
+  pid_t pid = ::fork();
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::_exit(1);  // the parent died before the request took effect
+  }
+  return pid;
 }
 
 }  // namespace rtsim

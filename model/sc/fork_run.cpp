@@ -37,12 +37,9 @@ void write_all(int fd, const std::string& text) {
 Child start_child(const std::function<std::string()>& fn, size_t task) {
   int fds[2];
   if (pipe(fds) != 0) throw std::runtime_error("run_in_children: pipe failed");
-  std::fflush(nullptr);  // no buffered output is written twice
-  pid_t parent = getpid();
-  pid_t pid = fork();
+  pid_t pid = fork_child();
   if (pid < 0) throw std::runtime_error("run_in_children: fork failed");
   if (pid == 0) {
-    end_with_parent(parent);
     close(fds[0]);
     int code = kDone;
     std::string text;
