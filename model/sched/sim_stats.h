@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/sched/latency_histogram.h"
+#include "model/mem/latency_histogram.h"
 #include "model/sched/ray_supply.h"
 
 namespace rtsim {

@@ -1,6 +1,6 @@
-// A distribution of ray latencies in constant memory: exact below 1024 cycles, then 64 bins
-// per power of two (values within 1.6% of each other share a bin). Percentiles come out as the
-// upper end of their bin, never above the largest value seen.
+// A distribution of latencies (of rays, of DRAM requests) in constant memory: exact below 1024
+// cycles, then 64 bins per power of two (values within 1.6% of each other share a bin). Percentiles
+// come out as the upper end of their bin, never above the largest value seen.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 namespace rtsim {
 
 class LatencyHistogram {
-public:
+ public:
   LatencyHistogram();
   void add(uint64_t cycles);
   uint64_t count() const { return count_; }
@@ -18,7 +18,7 @@ public:
   // The smallest bin bound below which at least fraction p of the values lie (0 if empty).
   uint64_t percentile(double p) const;
 
-private:
+ private:
   std::vector<uint64_t> bins_;
   uint64_t count_ = 0, sum_ = 0, max_ = 0;
 };

@@ -1,4 +1,4 @@
-#include "model/sched/latency_histogram.h"
+#include "model/mem/latency_histogram.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,321 @@
+#include "model/mem/dram_controller.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace rtsim {
+namespace {
+
+bool same_bank(const DramAddress& x, const DramAddress& y) {
+  return x.rank == y.rank && x.group == y.group && x.bank == y.bank;
+}
+
+constexpr DramCommand column_command(bool write) {
+  return write ? DramCommand::Wr : DramCommand::Rd;
+}
+
+// a * b / c rounded up, without overflow for clocks of any simulation.
+uint64_t mul_div_up(uint64_t a, uint64_t b, uint64_t c) {
+  return uint64_t(((unsigned __int128)a * b + c - 1) / c);
+}
+
+}  // namespace
+
+DramController::DramController(const BankedDramConfig& config, double core_ghz)
+    : config_(config),
+      map_((banked_dram_config_problem(config).empty()
+                ? config
+                : throw std::invalid_argument(banked_dram_config_problem(config)))),
+      core_khz_(uint64_t(core_ghz * 1e6 + 0.5)),
+      dram_khz_(uint64_t(config.clock_mhz * 1e3 + 0.5)) {
+  for (uint32_t c = 0; c < config.channels; ++c) {
+    channels_.emplace_back(config);
+    for (uint32_t r = 0; r < config.ranks; ++r) {  // ranks refresh in turn, tREFI apart in all
+      DramClock interval =
+          config.refresh == DramRefresh::PerBank ? config.timing.tREFIpb : config.timing.tREFI;
+      channels_.back().refresh.push_back({interval * (r + 1) / config.ranks, 0});
+    }
+  }
+}
+
+DramClock DramController::to_dram(Cycle core) const {
+  return mul_div_up(core, dram_khz_, core_khz_);
+}
+
+Cycle DramController::to_core(DramClock clock) const {
+  return mul_div_up(clock, core_khz_, dram_khz_);
+}
+
+size_t DramController::queued() const {
+  size_t n = 0;
+  for (const Channel& ch : channels_) n += ch.reads.size() + ch.writes.size() + ch.waiting.size();
+  return n;
+}
+
+void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at) {
+  uint64_t burst = config_.burst_bytes();
+  uint64_t first = addr / burst, last = (addr + std::max<uint32_t>(bytes, 1) - 1) / burst;
+  uint32_t request;
+  if (free_requests_.empty()) {
+    request = uint32_t(requests_.size());
+    requests_.emplace_back();
+  } else {
+    request = free_requests_.back();
+    free_requests_.pop_back();
+  }
+  requests_[request] = Request{id, at, uint32_t(last - first + 1), 0, write};
+  (write ? stats_.writes : stats_.reads)++;
+  (write ? stats_.write_bytes : stats_.read_bytes) += (last - first + 1) * burst;
+  DramClock arrival = to_dram(at);
+  for (uint64_t b = first; b <= last; ++b) {
+    Burst entry{request, map_.decode(b * burst), arrival};
+    Channel& ch = channels_[entry.a.channel];
+    std::deque<Burst>& queue = write ? ch.writes : ch.reads;
+    uint32_t capacity = write ? config_.write_queue : config_.read_queue;
+    if (ch.waiting.empty() && queue.size() < capacity)
+      queue.push_back(entry);
+    else
+      ch.waiting.push_back(entry);
+    if (ch.next == kNever) {  // asleep: wake at the arrival, or at a refresh missed before it
+      ch.next = arrival;
+      if (config_.refresh != DramRefresh::None)
+        for (const RankRefresh& r : ch.refresh) ch.next = std::min(ch.next, r.due);
+    }
+  }
+}
+
+Cycle DramController::next_event() const {
+  DramClock next = kNever;
+  for (const Channel& ch : channels_) next = std::min(next, ch.next);
+  // A decision at clock d needs the requests up to the last core cycle before it.
+  return next == kNever ? kPending : Cycle((unsigned __int128)next * core_khz_ / dram_khz_);
+}
+
+void DramController::advance(Cycle until, std::vector<DramReadDone>& done) {
+  DramClock last = mul_div_up(until + 1, dram_khz_, core_khz_) - 1;
+  for (Channel& ch : channels_)
+    while (ch.next <= last) step(ch, ch.next, done);
+}
+
+void DramController::admit_waiting(Channel& ch) {
+  while (!ch.waiting.empty()) {
+    const Burst& b = ch.waiting.front();
+    bool write = requests_[b.request].write;
+    std::deque<Burst>& queue = write ? ch.writes : ch.reads;
+    if (queue.size() >= (write ? config_.write_queue : config_.read_queue)) return;
+    queue.push_back(b);
+    ch.waiting.pop_front();
+  }
+}
+
+void DramController::step(Channel& ch, DramClock t, std::vector<DramReadDone>& done) {
+  admit_waiting(ch);
+  summarize_rows(ch, t);
+  DramClock wake = kNever;
+  bool issued = refresh(ch, t, wake);
+  if (!issued) {
+    if (ch.draining && ch.writes.size() <= config_.write_low) ch.draining = false;
+    if (!ch.draining && ch.writes.size() >= config_.write_high) ch.draining = true;
+    bool reads_ready = !ch.reads.empty() && ch.reads.front().arrival <= t;
+    bool write = ch.draining || !reads_ready;
+    issued = schedule(ch, write ? ch.writes : ch.reads, write, t, wake, done);
+    if (!issued) issued = schedule(ch, write ? ch.reads : ch.writes, !write, t, wake, done);
+    for (const std::deque<Burst>* q : {&ch.reads, &ch.writes})
+      if (!q->empty() && q->front().arrival > t) wake = std::min(wake, q->front().arrival);
+  }
+  bool idle = ch.reads.empty() && ch.writes.empty() && ch.waiting.empty();
+  bool refresh_due = config_.refresh != DramRefresh::None &&
+                     std::any_of(ch.refresh.begin(), ch.refresh.end(),
+                                 [&](const RankRefresh& r) { return r.due <= t; });
+  if (issued)
+    ch.next = t + 1;
+  else if (idle && !refresh_due)
+    ch.next = kNever;  // asleep until a request arrives
+  else
+    ch.next = std::max(wake, t + 1);
+}
+
+bool DramController::blocked(const Channel& ch, const Burst& b, DramClock t) const {
+  if (config_.refresh == DramRefresh::None) return false;
+  const RankRefresh& r = ch.refresh[b.a.rank];
+  if (r.due > t || activated_for(ch, b)) return false;
+  return config_.refresh == DramRefresh::AllBank ||
+         r.bank == b.a.group * config_.banks_per_group + b.a.bank;
+}
+
+bool DramController::activated_for(const Channel& ch, const Burst& b) const {
+  return b.opened && ch.device.open_row(b.a) == b.a.row;
+}
+
+void DramController::summarize_rows(Channel& ch, DramClock t) const {
+  ch.rows.assign(size_t(config_.ranks) * config_.banks(), 0);
+  for (const std::deque<Burst>* q : {&ch.reads, &ch.writes})
+    for (const Burst& b : *q)
+      if (b.arrival <= t && ch.device.open_row(b.a) == b.a.row)
+        ch.rows[bank_of(b.a)] |= b.opened ? kWanted | kHeld : kWanted;
+}
+
+void DramController::mark_opened(Channel& ch, const Burst& b) {
+  for (std::deque<Burst>* q : {&ch.reads, &ch.writes, &ch.waiting})
+    for (Burst& o : *q)
+      if (o.request == b.request && same_bank(o.a, b.a) && o.a.row == b.a.row) o.opened = true;
+}
+
+bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake) {
+  if (config_.refresh == DramRefresh::None) return false;
+  bool per_bank = config_.refresh == DramRefresh::PerBank;
+  for (uint32_t rank = 0; rank < config_.ranks; ++rank) {
+    RankRefresh& r = ch.refresh[rank];
+    if (r.due > t) {
+      wake = std::min(wake, r.due);
+      continue;
+    }
+    // Close what is open (the rank's banks, or the one bank), then refresh. A row opened for a
+    // request that waits is closed after it (the refresh is postponed: JEDEC allows several).
+    DramAddress pre{};
+    DramClock pre_at = kNever;
+    bool held = false;
+    uint32_t first = per_bank ? r.bank : 0, count = per_bank ? 1 : config_.banks();
+    for (uint32_t i = first; i < first + count; ++i) {
+      DramAddress a{0, rank, i / config_.banks_per_group, i % config_.banks_per_group, 0, 0};
+      if (ch.device.open_row(a) == DramChannel::kClosed) continue;
+      if (ch.rows[bank_of(a)] & kHeld) {
+        held = true;
+        continue;
+      }
+      DramClock e = ch.device.earliest(DramCommand::Pre, a, t);
+      if (e < pre_at) pre_at = e, pre = a;
+    }
+    if (pre_at != kNever) {
+      if (pre_at > t) {
+        wake = std::min(wake, pre_at);
+        continue;
+      }
+      ch.device.issue(DramCommand::Pre, pre, t);
+      stats_.commands.pre++;
+      return true;
+    }
+    if (held) continue;  // the request's column command lowers wake
+    DramAddress a{0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
+    DramCommand command = per_bank ? DramCommand::RefPb : DramCommand::Ref;
+    DramClock e = ch.device.earliest(command, a, t);
+    if (e > t) {
+      wake = std::min(wake, e);
+      continue;
+    }
+    ch.device.issue(command, a, t);
+    (per_bank ? stats_.commands.ref_pb : stats_.commands.ref)++;
+    bool waited = false;
+    for (const std::deque<Burst>* q : {&ch.reads, &ch.writes})
+      for (const Burst& b : *q) waited = waited || (b.arrival <= t && blocked(ch, b, t));
+    if (waited)
+      stats_.refresh_stall_clocks += per_bank ? config_.timing.tRFCpb : config_.timing.tRFC;
+    r.due += per_bank ? config_.timing.tREFIpb : config_.timing.tREFI;
+    if (per_bank) r.bank = (r.bank + 1) % config_.banks();
+    return true;
+  }
+  return false;
+}
+
+bool DramController::schedule(Channel& ch, std::deque<Burst>& queue, bool write, DramClock t,
+                              DramClock& wake, std::vector<DramReadDone>& done) {
+  DramChannel& dev = ch.device;
+  auto eligible = [&](const Burst& b) { return b.arrival <= t && !blocked(ch, b, t); };
+  size_t oldest = 0;
+  while (oldest < queue.size() && !eligible(queue[oldest])) {
+    if (queue[oldest].arrival > t) {
+      wake = std::min(wake, queue[oldest].arrival);
+      return false;  // the queue is in arrival order: none later has arrived either
+    }
+    ++oldest;
+  }
+  if (oldest == queue.size()) return false;
+  // Past the cap, the oldest request's bank is kept for it: no younger request to that bank
+  // issues, except one whose row was opened for it (so every ACT is used).
+  bool capped = queue[oldest].bypassed >= config_.starvation_cap;
+  auto held_back = [&](size_t i) {
+    return capped && i != oldest && same_bank(queue[i].a, queue[oldest].a) && !queue[i].opened;
+  };
+  size_t end = queue.size();
+  while (end > oldest && queue[end - 1].arrival > t) --end;
+  if (end < queue.size()) wake = std::min(wake, queue[end].arrival);
+  // First ready: the oldest row hit whose column command can issue now.
+  for (size_t i = oldest; i < end; ++i) {
+    const Burst& b = queue[i];
+    if (!eligible(b) || held_back(i) || dev.open_row(b.a) != b.a.row) continue;
+    DramClock e = dev.earliest(column_command(write), b.a, t);
+    if (e > t) {
+      wake = std::min(wake, e);
+      continue;
+    }
+    for (size_t j = oldest; j < i; ++j)
+      if (same_bank(queue[j].a, b.a) && queue[j].a.row != b.a.row) queue[j].bypassed++;
+    serve_column(ch, queue, i, write, t, done);
+    return true;
+  }
+  // First come: the oldest request's next command. A row stays open while a request it was
+  // opened for waits, and, unless this request is past the cap, while any queued request hits it.
+  for (size_t i = oldest; i < end; ++i) {
+    Burst& b = queue[i];
+    if (!eligible(b) || held_back(i)) continue;
+    uint32_t row = dev.open_row(b.a);
+    if (row == b.a.row) continue;  // a hit that cannot issue yet: wake is lowered above
+    DramCommand command = row == DramChannel::kClosed ? DramCommand::Act : DramCommand::Pre;
+    if (command == DramCommand::Pre) {
+      bool past_cap = capped && i == oldest;
+      bool wanted = ch.rows[bank_of(b.a)] & (past_cap ? kHeld : kWanted);
+      if (wanted) continue;
+    }
+    DramClock e = dev.earliest(command, b.a, t);
+    if (e > t) {
+      wake = std::min(wake, e);
+      continue;
+    }
+    dev.issue(command, b.a, t);
+    if (command == DramCommand::Act) {
+      b.needed_act = true;
+      mark_opened(ch, b);
+      stats_.commands.act++;
+    } else {
+      b.needed_pre = true;
+      stats_.commands.pre++;
+    }
+    return true;
+  }
+  return false;
+}
+
+void DramController::serve_column(Channel& ch, std::deque<Burst>& queue, size_t index, bool write,
+                                  DramClock t, std::vector<DramReadDone>& done) {
+  Burst b = queue[index];
+  queue.erase(queue.begin() + long(index));
+  bool close = false;
+  if (config_.page_policy == DramPagePolicy::Closed) {
+    close = true;  // unless another queued request wants the row
+    for (const std::deque<Burst>* q : {&ch.reads, &ch.writes, &ch.waiting})
+      for (const Burst& o : *q) close = close && !(same_bank(o.a, b.a) && o.a.row == b.a.row);
+  }
+  DramClock data_end = ch.device.issue(column_command(write), b.a, t, close);
+  (write ? stats_.commands.wr : stats_.commands.rd)++;
+  if (close) stats_.commands.pre++;
+  if (b.needed_pre)
+    stats_.row_conflicts++;
+  else if (b.needed_act)
+    stats_.row_misses++;
+  else
+    stats_.row_hits++;
+  if (ch.used && write != ch.last_write) stats_.turnarounds++;
+  ch.used = true;
+  ch.last_write = write;
+  stats_.queued_burst_clocks += double(t - b.arrival);
+  Request& r = requests_[b.request];
+  r.data_end = std::max(r.data_end, data_end);
+  if (--r.bursts > 0) return;
+  free_requests_.push_back(b.request);
+  if (r.write) return;
+  Cycle ready = to_core(r.data_end) + config_.controller_latency;
+  stats_.read_latency.add(ready - r.arrival);
+  done.push_back({r.id, ready});
+}
+
+}  // namespace rtsim

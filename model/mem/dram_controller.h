@@ -1,0 +1,135 @@
+// The memory controller of the banked DRAM: per channel a read queue and a write queue of
+// bursts, scheduled FR-FCFS (the oldest row hit that can issue first, else the oldest request's
+// next command) with a starvation cap, open- or closed-page, writes drained between a high and
+// a low watermark, and refresh (all-bank or per-bank) that blocks its rank or bank. Commands go
+// to the channel's DramChannel (dram_device.h), one per clock.
+// Requests arrive in core cycles, in non-decreasing order; a request is split into bursts (a
+// 64-byte line is two GDDR6 bursts), each mapped on its own (dram_address.h). A read completes
+// when its last burst's data has crossed the bus, plus controller_latency. The controller works
+// only at clocks where a command may issue: advance() jumps from one to the next, and a channel
+// with empty queues sleeps; the refreshes it missed while asleep are issued at their own clocks
+// when it wakes.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <vector>
+
+#include "model/mem/dram_address.h"
+#include "model/mem/dram_config.h"
+#include "model/mem/dram_device.h"
+#include "model/mem/latency_histogram.h"
+#include "model/mem/memory_level.h"
+
+namespace rtsim {
+
+struct DramCommandCounts {
+  uint64_t act = 0, pre = 0, rd = 0, wr = 0, ref = 0, ref_pb = 0;
+};
+
+struct BankedDramStats {
+  uint64_t reads = 0, writes = 0;            // requests
+  uint64_t read_bytes = 0, write_bytes = 0;  // in whole bursts
+  uint64_t row_hits = 0;                     // bursts whose row was open
+  uint64_t row_misses = 0;                   // bursts that found their bank closed (ACT)
+  uint64_t row_conflicts = 0;                // bursts that found another row open (PRE, ACT)
+  uint64_t turnarounds = 0;                  // data bus switches between reading and writing
+  uint64_t refresh_stall_clocks = 0;         // clocks a rank or bank refreshed with requests queued
+  double queued_burst_clocks = 0;            // sum over clocks of bursts queued: occupancy * time
+  DramCommandCounts commands;
+  LatencyHistogram read_latency;  // core cycles, arrival to data
+};
+
+struct DramReadDone {
+  uint64_t id;
+  Cycle ready;  // core cycle
+};
+
+class DramController {
+ public:
+  // Throws std::invalid_argument for an impossible config (banked_dram_config_problem).
+  DramController(const BankedDramConfig& config, double core_ghz);
+
+  // A request of `bytes` at `addr` arriving at core cycle `at` (non-decreasing over calls).
+  // Reads report `id` through advance() when their data is ready; writes report nothing.
+  void enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at);
+  // The core cycle from which the next decision may be taken (all requests up to it must have
+  // been enqueued); kPending when every channel sleeps.
+  Cycle next_event() const;
+  // Takes every decision that the requests enqueued so far allow up to core cycle `until`
+  // (inclusive: requests dated until are all in); completed reads are appended to done.
+  void advance(Cycle until, std::vector<DramReadDone>& done);
+
+  const BankedDramConfig& config() const { return config_; }
+  const BankedDramStats& stats() const { return stats_; }
+  uint32_t channels() const { return uint32_t(channels_.size()); }
+  const DramChannel& channel(uint32_t i) const { return channels_[i].device; }
+  size_t queued() const;                 // bursts waiting, all channels
+  Cycle to_core(DramClock clock) const;  // the first core cycle at or after a DRAM clock
+
+ private:
+  static constexpr DramClock kNever = ~DramClock(0);
+  static constexpr uint8_t kWanted = 1, kHeld = 2;
+  struct Burst {
+    uint32_t request;
+    DramAddress a;
+    DramClock arrival;
+    bool needed_act = false, needed_pre = false;  // for it: an ACT, a PRE and an ACT
+    bool opened = false;    // its request's ACT opened its row, which stays open for it
+    uint32_t bypassed = 0;  // younger row hits served before it
+  };
+  struct Request {
+    uint64_t id = 0;
+    Cycle arrival = 0;
+    uint32_t bursts = 0;  // left to serve
+    DramClock data_end = 0;
+    bool write = false;
+  };
+  struct RankRefresh {
+    DramClock due = 0;  // the next refresh's clock
+    uint32_t bank = 0;  // per-bank refresh: the bank whose turn it is
+  };
+  struct Channel {
+    explicit Channel(const BankedDramConfig& c) : device(c) {}
+    DramChannel device;
+    std::deque<Burst> reads, writes;
+    std::deque<Burst> waiting;  // arrived while the queue was full
+    std::vector<RankRefresh> refresh;
+    DramClock next = kNever;  // the clock of its next decision; kNever: asleep
+    bool draining = false;
+    bool last_write = false;    // the direction of the last column command
+    bool used = false;          // a column command has issued
+    std::vector<uint8_t> rows;  // per bank: summarize_rows' flags
+  };
+
+  DramClock to_dram(Cycle core) const;  // the first DRAM clock at or after a core cycle
+  // One decision at clock t: at most one command; sets ch.next.
+  void step(Channel& ch, DramClock t, std::vector<DramReadDone>& done);
+  // A refresh command due at t, if one is; returns whether it issued one, else lowers wake.
+  bool refresh(Channel& ch, DramClock t, DramClock& wake);
+  bool blocked(const Channel& ch, const Burst& b, DramClock t) const;  // by a due refresh
+  bool activated_for(const Channel& ch, const Burst& b) const;  // its open row was opened for it
+  // Per bank of the channel, the open row's takers among the requests arrived by t: kWanted
+  // (some request hits it), kHeld (it was opened for a request that waits).
+  void summarize_rows(Channel& ch, DramClock t) const;
+  size_t bank_of(const DramAddress& a) const {
+    return (size_t(a.rank) * config_.bank_groups + a.group) * config_.banks_per_group + a.bank;
+  }
+  void mark_opened(Channel& ch, const Burst& b);  // b's ACT: its request's bursts in that row
+  // FR-FCFS over one queue; returns whether it issued a command, else lowers wake.
+  bool schedule(Channel& ch, std::deque<Burst>& queue, bool write, DramClock t, DramClock& wake,
+                std::vector<DramReadDone>& done);
+  void serve_column(Channel& ch, std::deque<Burst>& queue, size_t index, bool write, DramClock t,
+                    std::vector<DramReadDone>& done);
+  void admit_waiting(Channel& ch);
+
+  BankedDramConfig config_;
+  DramAddressMap map_;
+  uint64_t core_khz_, dram_khz_;
+  std::vector<Channel> channels_;
+  std::vector<Request> requests_;
+  std::vector<uint32_t> free_requests_;
+  BankedDramStats stats_;
+};
+
+}  // namespace rtsim
