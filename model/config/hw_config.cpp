@@ -1,10 +1,13 @@
 #include "model/config/hw_config.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "model/config/config_reader.h"
+#include "model/config/dram_presets.h"
 #include "traces/error.h"
 
 namespace rtsim {
@@ -38,6 +41,82 @@ void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
                                     "lookups one bank starts per cycle; 0 = no limit", 0, 1024));
   c.bytes_per_cycle = r.real("bytes_per_cycle", c.bytes_per_cycle, "bytes/cycle",
                              "data port bandwidth (reads and writes); 0 = no limit", 0, 1e6);
+}
+
+void read_banked_dram(ConfigReader dram, BankedDramConfig& c) {
+  auto count = [&](const char* key, uint32_t& value, const char* unit, const char* desc,
+                   uint64_t lo,
+                   uint64_t hi) { value = uint32_t(dram.integer(key, value, unit, desc, lo, hi)); };
+  c.clock_mhz = dram.real("clock_mhz", c.clock_mhz, "MHz", "banked: command clock CK", 1, 1e5);
+  count("channels", c.channels, "channels", "banked: independent channels, each with its queues", 1,
+        1024);
+  count("ranks", c.ranks, "ranks", "banked: ranks per channel", 1, 16);
+  count("bank_groups", c.bank_groups, "groups", "banked: bank groups per rank", 1, 64);
+  count("banks_per_group", c.banks_per_group, "banks", "banked: banks per bank group", 1, 64);
+  count("rows", c.rows, "rows", "banked: rows per bank", 1, 1u << 24);
+  count("row_bytes", c.row_bytes, "bytes", "banked: a row (page) of one channel", 8, 1 << 20);
+  count("bus_bits", c.bus_bits, "bits", "banked: data bus width of a channel", 8, 1024);
+  count("burst_length", c.burst_length, "beats", "banked: transfers of one RD or WR", 1, 64);
+  count("beats_per_clock", c.beats_per_clock, "beats",
+        "banked: data transfers per CK (data rate / CK)", 1, 16);
+  c.mapping = dram.text("mapping", c.mapping,
+                        "banked: address mapping: row_bank_column_channel, interleave, xor, or "
+                        "a field order such as row:rank:bank:bankgroup:column:channel");
+  count("interleave_bytes", c.interleave_bytes, "bytes",
+        "banked: bytes of a row one channel takes before the next (interleave, xor)", 1, 1 << 20);
+  std::string page =
+      dram.text("page_policy", c.page_policy == DramPagePolicy::Closed ? "closed" : "open",
+                "banked: open keeps a row open until a conflict; closed "
+                "precharges after the access unless a queued request hits the row",
+                {"open", "closed"});
+  c.page_policy = page == "closed" ? DramPagePolicy::Closed : DramPagePolicy::Open;
+  std::string refresh = dram.text(
+      "refresh",
+      c.refresh == DramRefresh::PerBank ? "per_bank"
+      : c.refresh == DramRefresh::None  ? "none"
+                                        : "all_bank",
+      "banked: all_bank (REFab every tREFI), per_bank (REFpb every tREFIpb, bank after bank) "
+      "or none",
+      {"all_bank", "per_bank", "none"});
+  c.refresh = refresh == "per_bank" ? DramRefresh::PerBank
+              : refresh == "none"   ? DramRefresh::None
+                                    : DramRefresh::AllBank;
+  count("read_queue", c.read_queue, "bursts", "banked: read queue per channel", 1, 4096);
+  count("write_queue", c.write_queue, "bursts", "banked: write queue per channel", 1, 4096);
+  count("write_high", c.write_high, "bursts", "banked: queued writes that start a write drain", 1,
+        4096);
+  count("write_low", c.write_low, "bursts", "banked: a write drain stops at this many", 0, 4096);
+  count("starvation_cap", c.starvation_cap, "requests",
+        "banked: younger row hits served before the oldest request (FR-FCFS cap)", 0, 1 << 20);
+  count("controller_latency", c.controller_latency, "cycles",
+        "banked: controller and PHY, added to every read (core cycles)", 0, 100000);
+  ConfigReader t = dram.section("timing");
+  auto clocks = [&](const char* key, uint32_t& value, const char* desc) {
+    value = uint32_t(t.integer(key, value, "tCK", desc, 0, 1u << 24));
+  };
+  DramTiming& d = c.timing;
+  clocks("tCL", d.tCL, "banked: RD to its first data");
+  clocks("tCWL", d.tCWL, "banked: WR to its first data");
+  clocks("tRCD_RD", d.tRCD_RD, "banked: ACT to RD, same bank");
+  clocks("tRCD_WR", d.tRCD_WR, "banked: ACT to WR, same bank");
+  clocks("tRP", d.tRP, "banked: PRE to ACT, same bank");
+  clocks("tRAS", d.tRAS, "banked: ACT to PRE, same bank");
+  clocks("tRC", d.tRC, "banked: ACT to ACT, same bank");
+  clocks("tCCD_S", d.tCCD_S, "banked: column to column command, other bank group");
+  clocks("tCCD_L", d.tCCD_L, "banked: column to column command, same bank group");
+  clocks("tRRD_S", d.tRRD_S, "banked: ACT to ACT, other bank group");
+  clocks("tRRD_L", d.tRRD_L, "banked: ACT to ACT, same bank group");
+  clocks("tFAW", d.tFAW, "banked: window of at most four ACTs per rank");
+  clocks("tWTR_S", d.tWTR_S, "banked: end of write data to RD, other bank group");
+  clocks("tWTR_L", d.tWTR_L, "banked: end of write data to RD, same bank group");
+  clocks("tWR", d.tWR, "banked: end of write data to PRE, same bank");
+  clocks("tRTP", d.tRTP, "banked: RD to PRE, same bank");
+  clocks("tRTW", d.tRTW, "banked: RD to WR, same rank (read-to-write turnaround)");
+  clocks("tRTRS", d.tRTRS, "banked: data bus gap when it passes to another rank");
+  clocks("tREFI", d.tREFI, "banked: all-bank refresh interval");
+  clocks("tRFC", d.tRFC, "banked: all-bank refresh: the rank is blocked this long");
+  clocks("tREFIpb", d.tREFIpb, "banked: per-bank refresh interval (one bank after the other)");
+  clocks("tRFCpb", d.tRFCpb, "banked: per-bank refresh: the bank is blocked this long");
 }
 
 void read_test_units(ConfigReader r, TestUnitConfig& c, const char* tests) {
@@ -148,14 +227,27 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
       "each crossbar port (one per RT unit, one per slice), each direction; 0 = no limit", 0, 1e6);
 
   ConfigReader dram = r.section("dram");
+  std::string model = dram.text("model", c.dram_model == DramModel::Banked ? "banked" : "simple",
+                                "simple: one bus with a fixed latency; banked: channels, banks, "
+                                "row buffers, refresh and a scheduling controller",
+                                {"simple", "banked"});
+  c.dram_model = model == "banked" ? DramModel::Banked : DramModel::Simple;
   c.dram.bytes_per_cycle = dram.real("bytes_per_cycle", c.dram.bytes_per_cycle, "bytes/cycle",
-                                     "peak bandwidth of the data bus", 0.001, 1e6);
-  c.dram.latency = uint32_t(dram.integer("latency", c.dram.latency, "cycles",
-                                         "from the end of a transfer to data ready", 0, 1000000));
-  c.dram.queue_depth = uint32_t(dram.integer("queue_depth", c.dram.queue_depth, "requests",
-                                             "requests that may wait for the bus", 1, 1 << 20));
+                                     "simple: peak bandwidth of the data bus", 0.001, 1e6);
+  c.dram.latency =
+      uint32_t(dram.integer("latency", c.dram.latency, "cycles",
+                            "simple: from the end of a transfer to data ready", 0, 1000000));
+  c.dram.queue_depth =
+      uint32_t(dram.integer("queue_depth", c.dram.queue_depth, "requests",
+                            "simple: requests that may wait for the bus", 1, 1 << 20));
   c.dram.burst_bytes = uint32_t(dram.integer("burst_bytes", c.dram.burst_bytes, "bytes",
-                                             "smallest transfer, a power of two", 1, 4096));
+                                             "simple: smallest transfer, a power of two", 1, 4096));
+  std::string preset =
+      dram.text("preset", c.banked_dram.preset,
+                "banked: the device and timing preset (configs/dram/); the keys below override it",
+                dram_preset_names());
+  if (preset != c.banked_dram.preset) c.banked_dram = dram_preset_config(preset);
+  read_banked_dram(dram, c.banked_dram);
 
   ConfigReader bvh = r.section("bvh");
   c.bvh.width =
@@ -205,6 +297,39 @@ ConfigReadContext resolve(const HwConfig& config) {
 
 }  // namespace
 
+BankedDramConfig dram_preset_config(const std::string& name) {
+  const auto& presets = dram_presets();
+  auto it = std::find_if(presets.begin(), presets.end(),
+                         [&](const DramPreset& p) { return name == p.name; });
+  std::string file = "configs/dram/" + name + ".toml";
+  if (it == presets.end())
+    throw_input_error("dram.preset", "",
+                      fmt::format("'{}' is not a DRAM preset (known: {})", name,
+                                  fmt::join(dram_preset_names(), ", ")));
+  toml::table root;
+  try {
+    root = toml::parse(it->toml, file);
+  } catch (const toml::parse_error& e) {
+    throw_input_error(file, fmt::format("line {}", e.source().begin.line),
+                      std::string(e.description()));
+  }
+  ConfigReadContext ctx;
+  ctx.file = file;
+  ConfigReader reader(&root, "", ctx);
+  BankedDramConfig c;
+  read_banked_dram(reader.section("dram"), c);
+  check_unknown_keys(root, ctx);
+  c.preset = name;
+  std::string problem = banked_dram_config_problem(c);
+  if (!problem.empty()) throw_input_error(file, "", "[dram] " + problem);
+  return c;
+}
+
+const BankedDramConfig& default_banked_dram() {
+  static const BankedDramConfig config = dram_preset_config("gddr6-16");
+  return config;
+}
+
 CacheConfig l1_as_built(const HwConfig& config) {
   CacheConfig l1 = config.l1;
   l1.write_back = config.rt.mode != TraversalMode::Treelet;
@@ -220,6 +345,8 @@ std::string hw_config_problem(const HwConfig& c) {
   if (p.empty()) p = section("l2", cache_config_problem(c.l2));
   if (p.empty()) p = section("l2", l2_layout_problem(c.l2, c.l2_layout));
   if (p.empty()) p = section("dram", dram_config_problem(c.dram));
+  if (p.empty() && c.dram_model == DramModel::Banked)
+    p = section("dram", banked_dram_config_problem(c.banked_dram));
   if (p.empty()) p = section("dispatch", dispatch_config_problem(c.dispatch));
   if (p.empty()) p = section("treelet_queues", treelet_queue_config_problem(c.treelet_queues));
   if (p.empty()) p = section("bvh", validate(c.bvh));

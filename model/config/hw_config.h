@@ -14,6 +14,7 @@
 #include "model/mem/cache.h"
 #include "model/mem/crossbar.h"
 #include "model/mem/dram.h"
+#include "model/mem/dram_config.h"
 #include "model/sched/dispatcher.h"
 #include "model/sched/rt_core.h"
 #include "model/sched/treelet_scheduler.h"
@@ -21,11 +22,21 @@
 namespace rtsim {
 
 struct SimulationConfig {
-  uint32_t quantum_cycles = 16;    // cycles: how far a unit runs ahead of SystemC time
-  uint64_t stall_cycles = 200000;  // cycles: no progress (nor anything scheduled) for this long: a stall
-  uint64_t warmup_rays = 0;        // rays: the stream's first rays, timed but not measured
-  uint32_t warmup_frames = 0;      // frames: the stream's first frames, likewise
+  uint32_t quantum_cycles = 16;  // cycles: how far a unit runs ahead of SystemC time
+  uint64_t stall_cycles =
+      200000;                // cycles: no progress (nor anything scheduled) for this long: a stall
+  uint64_t warmup_rays = 0;  // rays: the stream's first rays, timed but not measured
+  uint32_t warmup_frames = 0;  // frames: the stream's first frames, likewise
 };
+
+// simple: one data bus, a fixed latency (model/mem/dram.h); banked: channels, banks, row
+// buffers, refresh and a scheduling controller (model/mem/dram_controller.h).
+enum class DramModel : uint8_t { Simple, Banked };
+
+// The banked DRAM of a preset of configs/dram/ (dram_presets.h). Throws InputError naming the
+// preset for an unknown name.
+BankedDramConfig dram_preset_config(const std::string& name);
+const BankedDramConfig& default_banked_dram();  // the gddr6-16 preset
 
 struct HwConfig {
   std::string name = "default";  // the preset's name, carried into results
@@ -39,7 +50,9 @@ struct HwConfig {
   TreeletQueueConfig treelet_queues;
   CacheConfig l2{2 * 1024 * 1024, 64, 16, "lru", 80, 128};
   L2Layout l2_layout;  // slices and the crossbar in front of them
-  DramConfig dram{64.0, 200, 128};
+  DramModel dram_model = DramModel::Simple;
+  DramConfig dram{64.0, 200, 128};                       // the simple model
+  BankedDramConfig banked_dram = default_banked_dram();  // the banked model
   BvhConfig bvh;
 };
 

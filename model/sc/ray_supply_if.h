@@ -11,7 +11,7 @@
 namespace rtsim {
 
 class RaySupplyIf : public virtual sc_core::sc_interface {
-public:
+ public:
   virtual RaySupply& supply() = 0;
   virtual const sc_core::sc_event& work_event() const = 0;
 };

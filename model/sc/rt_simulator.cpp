@@ -41,6 +41,11 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   l2_->track_cold_misses(bvh_begin, bvh_end);
   if (bind_memory) {
     bind_memory(l2_->out);
+  } else if (config.dram_model == DramModel::Banked) {
+    banked_dram_ =
+        std::make_unique<BankedDramModule>("dram", config.banked_dram, clock_, config.clock_ghz);
+    l2_->out.bind(banked_dram_->in);
+    l2_->use_timed_memory(banked_dram_->response_lead());
   } else {
     dram_ = std::make_unique<DramModule>("dram", config.dram, clock_);
     l2_->out.bind(dram_->in);
@@ -137,6 +142,7 @@ Cycle RtSimulator::cycles() const {
 
 Cycle RtSimulator::next_delivery() const {
   Cycle next = l2_->next_job();
+  if (banked_dram_) next = std::min(next, banked_dram_->next_event());
   for (const auto& unit : units_)
     if (unit->core().has_event()) next = std::min(next, unit->core().next_event());
   return next;
@@ -150,6 +156,9 @@ std::string RtSimulator::dump() const {
   if (treelets_) out << treelets_->dump();
   for (const auto& unit : units_) out << unit->core().dump();
   out << "l2: " << l2_->queued() << " requests and DRAM reads queued\n";
+  if (banked_dram_)
+    out << "dram: " << banked_dram_->controller().queued() << " bursts queued, next decision "
+        << banked_dram_->next_event() << "\n";
   return out.str();
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/config/hw_config.h"
+#include "model/sc/banked_dram_module.h"
 #include "model/sc/dispatcher_module.h"
 #include "model/sc/rt_unit_module.h"
 #include "model/sc/shared_cache_module.h"
@@ -90,7 +91,8 @@ class RtSimulator {
   RetireFanout fanout_;
   SimControl control_;
   std::unique_ptr<SharedCacheModule> l2_;
-  std::unique_ptr<DramModule> dram_;
+  std::unique_ptr<DramModule> dram_;               // the simple DRAM, or
+  std::unique_ptr<BankedDramModule> banked_dram_;  // the banked one
   std::unique_ptr<DispatcherModule> dispatch_;
   std::unique_ptr<TreeletQueueModule> treelets_;
   std::vector<std::unique_ptr<RtUnitModule>> units_;

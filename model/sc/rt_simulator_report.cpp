@@ -79,6 +79,65 @@ void report_l2(StatsRegistry& r, const SharedCacheModule& l2) {
   }
 }
 
+// The banked DRAM: the simple model's names where they mean the same (dram.bytes,
+// dram.utilisation: data buses busy, mean over channels), and its own: row buffer outcomes per
+// burst, commands (for an energy model), turnarounds, refresh, queue occupancy, read latency
+// percentiles (gauges: over the whole run, warm-up included) and per-channel and per-bank
+// data bus utilisation.
+void report_banked_dram(StatsRegistry& r, const DramController& dram, uint64_t late_responses,
+                        double core_ghz) {
+  const BankedDramStats& s = dram.stats();
+  const BankedDramConfig& c = dram.config();
+  double core_per_clock = core_ghz * 1000 / c.clock_mhz;
+  r.counter("dram.requests", s.reads + s.writes);
+  r.counter("dram.reads", s.reads);
+  r.counter("dram.writes", s.writes);
+  r.counter("dram.bytes", s.read_bytes + s.write_bytes);
+  r.counter("dram.write_bytes", s.write_bytes);
+  double busy = 0;
+  for (uint32_t ch = 0; ch < dram.channels(); ++ch) busy += double(dram.channel(ch).data_busy());
+  r.real("dram.busy_cycles", busy / dram.channels() * core_per_clock);
+  r.counter("dram.total_latency_cycles",
+            uint64_t(s.read_latency.mean() * double(s.read_latency.count()) + 0.5));
+  r.ratio("dram.utilisation", "dram.busy_cycles", "cycles");
+  r.ratio("dram.bytes_per_cycle", "dram.bytes", "cycles");
+  r.ratio("dram.bytes_per_ray", "dram.bytes", "rays");
+  r.ratio("dram.mean_latency", "dram.total_latency_cycles", "dram.reads");
+  r.gauge("dram.latency_p50", s.read_latency.percentile(0.50));
+  r.gauge("dram.latency_p90", s.read_latency.percentile(0.90));
+  r.gauge("dram.latency_p99", s.read_latency.percentile(0.99));
+  r.gauge("dram.latency_max", s.read_latency.max());
+  r.counter("dram.row_hits", s.row_hits);
+  r.counter("dram.row_misses", s.row_misses);
+  r.counter("dram.row_conflicts", s.row_conflicts);
+  r.counter("dram.cmd.act", s.commands.act);
+  r.counter("dram.cmd.pre", s.commands.pre);
+  r.counter("dram.cmd.rd", s.commands.rd);
+  r.counter("dram.cmd.wr", s.commands.wr);
+  r.counter("dram.cmd.ref", s.commands.ref);
+  r.counter("dram.cmd.ref_pb", s.commands.ref_pb);
+  r.counter("dram.bursts", s.commands.rd + s.commands.wr);
+  r.ratio("dram.row_hit_rate", "dram.row_hits", "dram.bursts");
+  r.ratio("dram.row_conflict_rate", "dram.row_conflicts", "dram.bursts");
+  r.counter("dram.turnarounds", s.turnarounds);
+  r.counter("dram.refresh_stall_clocks", s.refresh_stall_clocks);
+  r.real("dram.queued_burst_clocks", s.queued_burst_clocks);
+  r.counter("dram.late_responses", late_responses);
+  for (uint32_t ch = 0; ch < dram.channels(); ++ch) {
+    const std::string p = "dram.ch" + std::to_string(ch);
+    const DramChannel& channel = dram.channel(ch);
+    r.counter(p + ".busy_clocks", channel.data_busy());
+    r.ratio(p + ".utilisation", p + ".busy_clocks", "cycles", core_per_clock);
+    for (size_t b = 0; b < channel.bank_busy().size(); ++b) {
+      const std::string q = p + ".bank" + std::to_string(b);
+      r.counter(q + ".busy_clocks", channel.bank_busy()[b]);
+      r.ratio(q + ".utilisation", q + ".busy_clocks", "cycles", core_per_clock);
+    }
+  }
+  r.ratio("dram.queue_occupancy", "dram.queued_burst_clocks", "cycles",
+          core_per_clock / c.channels);
+}
+
 void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPool& pool) {
   const TestUnitStats& s = pool.stats();
   r.counter(p + ".requests", s.requests);
@@ -191,6 +250,8 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
           1.0 / (double(slots) * config_.rt_units));
 
   report_l2(r, *l2_);
+  if (banked_dram_)
+    report_banked_dram(r, banked_dram_->controller(), l2_->late_responses(), config_.clock_ghz);
   if (dram_) {
     const DramStats& s = dram_->dram().stats();
     r.counter("dram.requests", s.requests);

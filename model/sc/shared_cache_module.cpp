@@ -24,6 +24,7 @@ SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheCo
       out("out"),
       clock_(clock),
       lookahead_(std::max<uint32_t>(lookahead + layout.crossbar.latency, 1)),
+      window_(lookahead_),
       on_error_(std::move(on_error)),
       crossbar_(layout.crossbar, layout.slices) {
   std::string problem = l2_layout_problem(config, layout);
@@ -34,6 +35,7 @@ SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheCo
         std::make_unique<Cache>(slice_config(config, layout.slices), below, CacheRole::L2));
   line_shift_ = uint32_t(__builtin_ctz(config.line_bytes));
   in.register_nb_transport_fw(this, &SharedCacheModule::nb_transport_fw);
+  out.register_nb_transport_bw(this, &SharedCacheModule::nb_transport_bw);
   SC_METHOD(serve);
   sensitive << wake_;
   dont_initialize();
@@ -61,6 +63,11 @@ void SharedCacheModule::track_cold_misses(uint64_t dense_begin, uint64_t dense_e
 
 void SharedCacheModule::share_first_references(double own_share) {
   for (auto& slice : slices_) slice->share_first_references(own_share);
+}
+
+void SharedCacheModule::use_timed_memory(uint32_t lead) {
+  timed_below_ = true;
+  window_ = std::clamp<uint32_t>(lead, 1, lookahead_);
 }
 
 void SharedCacheModule::add_job(const Job& job, Cycle at) {
@@ -119,7 +126,7 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
 
 void SharedCacheModule::serve() {
   try {
-    served_until_ = clock_.cycles(sc_core::sc_time_stamp()) + lookahead_;
+    served_until_ = clock_.cycles(sc_core::sc_time_stamp()) + window_;
     stamp_ = sc_core::sc_time_stamp();
     serving_ = true;
     EventQueue::Event e;
@@ -154,6 +161,7 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
       return;
     case JobKind::DramRead: {
       free_jobs_.push_back(id);
+      if (timed_below_) return send_timed(job, at);
       ReadClient* client = job.client;
       uint64_t token = job.token;
       Cycle ready = send_below(tlm::TLM_READ_COMMAND, job.addr, job.bytes, at);
@@ -162,8 +170,16 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
     }
     case JobKind::DramWrite:
       free_jobs_.push_back(id);
+      if (timed_below_) return send_timed(job, at);
       send_below(tlm::TLM_WRITE_COMMAND, job.addr, job.bytes, at);
       return;
+    case JobKind::DramDone: {
+      free_jobs_.push_back(id);
+      ReadClient* client = job.client;
+      uint64_t token = job.token;
+      client->read_done(token, at, {});
+      return;
+    }
   }
 }
 
@@ -223,6 +239,71 @@ Cycle SharedCacheModule::send_below(tlm::tlm_command command, uint64_t addr, uin
     throw std::runtime_error("memory access at " + std::to_string(addr) +
                              " failed: " + t.get_response_string());
   return clock_.cycles(stamp_ + delay);
+}
+
+}  // namespace rtsim
+
+namespace rtsim {
+
+void SharedCacheModule::send_timed(const Job& job, Cycle at) {
+  if (below_free_.empty()) {
+    below_pool_.push_back(std::make_unique<BelowTransaction>());
+    below_free_.push_back(below_pool_.back().get());
+  }
+  BelowTransaction& t = *below_free_.back();
+  below_free_.pop_back();
+  bool write = job.kind == JobKind::DramWrite;
+  if (scratch_.size() < job.bytes) scratch_.resize(job.bytes);
+  t.set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
+  t.set_address(job.addr);
+  t.set_data_ptr(scratch_.data());
+  t.set_data_length(job.bytes);
+  t.set_streaming_width(job.bytes);
+  t.set_byte_enable_ptr(nullptr);
+  t.set_dmi_allowed(false);
+  t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  t.client = write ? nullptr : job.client;
+  t.token = job.token;
+  tlm::tlm_phase phase = tlm::BEGIN_REQ;
+  sc_core::sc_time delay = clock_.time(at) - stamp_;
+  tlm::tlm_sync_enum status = out->nb_transport_fw(t, phase, delay);
+  if (status == tlm::TLM_COMPLETED || phase == tlm::BEGIN_RESP) {
+    if (t.is_response_error())
+      throw std::runtime_error("memory access at " + std::to_string(job.addr) +
+                               " failed: " + t.get_response_string());
+    below_done(t, std::max(at, clock_.cycles(stamp_ + delay)));
+  }
+}
+
+tlm::tlm_sync_enum SharedCacheModule::nb_transport_bw(tlm::tlm_generic_payload& trans,
+                                                      tlm::tlm_phase& phase,
+                                                      sc_core::sc_time& delay) {
+  if (phase != tlm::BEGIN_RESP) return tlm::TLM_ACCEPTED;  // END_REQ
+  auto& t = static_cast<BelowTransaction&>(trans);
+  if (t.is_response_error()) {
+    std::string what = "memory access at " + std::to_string(t.get_address()) +
+                       " failed: " + t.get_response_string();
+    if (!on_error_) throw std::runtime_error(what);
+    on_error_(std::make_exception_ptr(std::runtime_error(what)));
+    return tlm::TLM_COMPLETED;
+  }
+  below_done(t, clock_.cycles(sc_core::sc_time_stamp() + delay));
+  return tlm::TLM_COMPLETED;
+}
+
+void SharedCacheModule::below_done(BelowTransaction& t, Cycle ready) {
+  below_free_.push_back(&t);
+  if (!t.client) return;  // a write's response
+  Job job;
+  job.kind = JobKind::DramDone;
+  job.client = t.client;
+  job.token = t.token;
+  // Outside serve(), a response dated inside the window already served breaks the lead.
+  if (!serving_ && ready < served_until_) {
+    late_responses_++;
+    ready = served_until_;
+  }
+  add_job(job, ready);
 }
 
 }  // namespace rtsim

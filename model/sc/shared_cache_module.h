@@ -10,8 +10,13 @@
 // holds them in an event calendar and serves each at its own cycle, when simulated time
 // reaches it; the cache (model/mem/cache.h) and the DRAM below therefore see every request in
 // non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
-// The DRAM is reached through `out` by the base protocol's blocking transport (loosely timed),
-// called at the request's own cycle, so any loosely-timed TLM memory can be bound there.
+// The DRAM is reached through `out`, at the request's own cycle, in one of two protocols. By
+// default the base protocol's blocking transport (loosely timed), so any loosely-timed TLM
+// memory can be bound there. After use_timed_memory(lead), the approximately-timed one (the
+// banked DRAM, model/sc/banked_dram_module.h, or a DRAMSys-class model): BEGIN_REQ through
+// nb_transport_fw, and the data's cycle in the delay of BEGIN_RESP, which must come at least
+// `lead` cycles before it: the module then serves at most that far ahead, so a response never
+// finds its cycle served already (one that does is served at once, counted as late_responses).
 // A request crosses the crossbar to its slice (slice_of: a hash of the line address; a request
 // must not span lines, as an L1's blocks and line-by-line writes never do) when it
 // arrives, and is queued for the cycle it reaches the slice; its data crosses back when its
@@ -67,16 +72,25 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   bool tracks_cold_misses() const { return slices_[0]->tracks_cold_misses(); }
   void share_first_references(double own_share);
   size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served
+  // Before the simulation starts: the memory bound to `out` speaks the approximately-timed
+  // protocol and sends BEGIN_RESP at least `lead` cycles before the data's cycle.
+  void use_timed_memory(uint32_t lead);
+  uint64_t late_responses() const { return late_responses_; }
   Cycle next_job() const { return events_.empty() ? kPending : events_.next_cycle(); }
 
  private:
-  enum class JobKind : uint8_t { Read, Write, DramRead, DramWrite };
+  enum class JobKind : uint8_t { Read, Write, DramRead, DramWrite, DramDone };
+  // A DRAM access in flight under the approximately-timed protocol (DramRead: its reader).
+  struct BelowTransaction : tlm::tlm_generic_payload {
+    ReadClient* client = nullptr;
+    uint64_t token = 0;
+  };
   struct Job {
     JobKind kind = JobKind::Read;
     int port = 0;
     uint32_t slice = 0;
     tlm::tlm_generic_payload* trans = nullptr;  // Read: the initiator's transaction
-    ReadChargeExtension* charge_out = nullptr;   // and its charge extension, if it has one
+    ReadChargeExtension* charge_out = nullptr;  // and its charge extension, if it has one
     uint64_t addr = 0;
     uint32_t bytes = 0;
     ReadClient* client = nullptr;  // DramRead: the cache, and its token
@@ -98,9 +112,19 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   void respond(uint32_t id, Cycle ready);
   void add_job(const Job& job, Cycle at);
   Cycle send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at);
+  // The approximately-timed form: a read's data comes back through nb_transport_bw.
+  void send_timed(const Job& job, Cycle at);
+  tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                     sc_core::sc_time& delay);
+  void below_done(BelowTransaction& t, Cycle ready);  // a read's data at `ready`
 
   Clock clock_;
-  uint32_t lookahead_;  // at least 1: a wake-up at cycle c serves what is dated before c + it
+  uint32_t lookahead_;  // at least 1: the initiators' promise
+  uint32_t window_;     // a wake-up at cycle c serves what is dated before c + it (<= lookahead_)
+  bool timed_below_ = false;
+  uint64_t late_responses_ = 0;
+  std::vector<std::unique_ptr<BelowTransaction>> below_pool_;
+  std::vector<BelowTransaction*> below_free_;
   std::function<void(std::exception_ptr)> on_error_;
   std::vector<std::unique_ptr<Cache>> slices_;
   uint32_t line_shift_ = 0;

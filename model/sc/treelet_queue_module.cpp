@@ -6,7 +6,7 @@ namespace rtsim {
 
 // Forwards to the scheduler and wakes sleeping units when rays may have become available.
 class TreeletQueueModule::Notifying : public RaySupply {
-public:
+ public:
   Notifying(TreeletScheduler& scheduler, sc_core::sc_event& work)
       : scheduler_(scheduler), work_(work) {}
   size_t take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) override {
@@ -23,7 +23,7 @@ public:
   }
   bool exhausted() const override { return scheduler_.exhausted(); }
 
-private:
+ private:
   TreeletScheduler& scheduler_;
   sc_core::sc_event& work_;
 };
@@ -48,7 +48,9 @@ void TreeletQueueModule::end_of_elaboration() {
   notifying_ = std::make_unique<Notifying>(*scheduler_, work_);
 }
 
-RaySupply& TreeletQueueModule::supply() { return *notifying_; }
+RaySupply& TreeletQueueModule::supply() {
+  return *notifying_;
+}
 
 std::string TreeletQueueModule::dump() const {
   std::ostringstream out;

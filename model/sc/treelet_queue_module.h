@@ -14,7 +14,7 @@
 namespace rtsim {
 
 class TreeletQueueModule : public sc_core::sc_module, public RaySupplyIf {
-public:
+ public:
   sc_core::sc_port<RaySupplyIf> in;
   sc_core::sc_export<RaySupplyIf> out;
 
@@ -26,7 +26,7 @@ public:
   const TreeletScheduler& scheduler() const { return *scheduler_; }
   std::string dump() const;
 
-private:
+ private:
   class Notifying;
   void end_of_elaboration() override;
 

@@ -1,0 +1,52 @@
+// The banked DRAM (model/mem/dram_controller.h) as a TLM-2.0 target speaking the
+// approximately-timed base protocol, bound below the shared L2 where the simple DRAM's
+// loosely-timed target binds.
+// Protocol. A read or write comes as BEGIN_REQ through nb_transport_fw, dated by its delay;
+// the target queues it and answers END_REQ at once (TLM_UPDATED; its queues back-pressure
+// inside, so END_REQ is never held back). A write is then complete (posted; TLM_COMPLETED). A
+// read is answered BEGIN_RESP through nb_transport_bw once its data's cycle is known, with a
+// delay saying when the data is there; the initiator completes it (TLM_COMPLETED or END_RESP).
+// Timing. One SC_METHOD, woken only when the controller has a decision to take. It takes the
+// decisions of cycle c at simulated time c + 1, when every request dated c has arrived (the L2
+// sends each request no later than its own cycle), so BEGIN_RESP comes at least
+// response_lead() cycles before the data: the L2 uses that to bound how far ahead it serves.
+#pragma once
+
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/simple_target_socket.h>
+
+#include "model/mem/dram_controller.h"
+#include "model/sc/clock.h"
+
+namespace rtsim {
+
+class BankedDramModule : public sc_core::sc_module {
+ public:
+  tlm_utils::simple_target_socket<BankedDramModule> in;
+
+  SC_HAS_PROCESS(BankedDramModule);
+  // Throws std::invalid_argument for an impossible config.
+  BankedDramModule(sc_core::sc_module_name name, const BankedDramConfig& config, const Clock& clock,
+                   double core_ghz);
+  const DramController& controller() const { return controller_; }
+  // Cycles by which every BEGIN_RESP precedes its data, at the least.
+  uint32_t response_lead() const;
+  Cycle next_event() const { return controller_.next_event(); }
+
+ private:
+  tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                     sc_core::sc_time& delay);
+  void decide();
+  void arm();  // wakes decide() for the controller's next decision
+
+  Clock clock_;
+  DramController controller_;
+  sc_core::sc_event wake_;
+  Cycle armed_ = kPending;  // the cycle wake_ is notified for
+  std::vector<DramReadDone> done_;
+};
+
+}  // namespace rtsim
