@@ -35,6 +35,7 @@ DramController::DramController(const BankedDramConfig& config, double core_ghz)
           config.refresh == DramRefresh::PerBank ? config.timing.tREFIpb : config.timing.tREFI;
       channels_.back().refresh.push_back({interval * (r + 1) / config.ranks, 0});
     }
+    set_refresh_due(channels_.back());
   }
 }
 
@@ -70,7 +71,7 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
   for (uint64_t b = first; b <= last; ++b) {
     Burst entry{request, map_.decode(b * burst), arrival};
     Channel& ch = channels_[entry.a.channel];
-    std::deque<Burst>& queue = write ? ch.writes : ch.reads;
+    std::vector<Burst>& queue = write ? ch.writes : ch.reads;
     uint32_t capacity = write ? config_.write_queue : config_.read_queue;
     if (ch.waiting.empty() && queue.size() < capacity)
       queue.push_back(entry);
@@ -78,9 +79,9 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
       ch.waiting.push_back(entry);
     if (ch.next == kNever) {  // asleep: wake at the arrival, or at a refresh missed before it
       ch.next = arrival;
-      if (config_.refresh != DramRefresh::None)
-        for (const RankRefresh& r : ch.refresh) ch.next = std::min(ch.next, r.due);
+      if (config_.refresh != DramRefresh::None) ch.next = std::min(ch.next, ch.refresh_due);
     }
+    ch.next = std::min(ch.next, arrival);
   }
 }
 
@@ -101,7 +102,7 @@ void DramController::admit_waiting(Channel& ch) {
   while (!ch.waiting.empty()) {
     const Burst& b = ch.waiting.front();
     bool write = requests_[b.request].write;
-    std::deque<Burst>& queue = write ? ch.writes : ch.reads;
+    std::vector<Burst>& queue = write ? ch.writes : ch.reads;
     if (queue.size() >= (write ? config_.write_queue : config_.read_queue)) return;
     queue.push_back(b);
     ch.waiting.pop_front();
@@ -110,33 +111,40 @@ void DramController::admit_waiting(Channel& ch) {
 
 void DramController::step(Channel& ch, DramClock t, std::vector<DramReadDone>& done) {
   admit_waiting(ch);
-  summarize_rows(ch, t);
   DramClock wake = kNever;
-  bool issued = refresh(ch, t, wake);
-  if (!issued) {
-    if (ch.draining && ch.writes.size() <= config_.write_low) ch.draining = false;
-    if (!ch.draining && ch.writes.size() >= config_.write_high) ch.draining = true;
-    bool reads_ready = !ch.reads.empty() && ch.reads.front().arrival <= t;
-    bool write = ch.draining || !reads_ready;
-    issued = schedule(ch, write ? ch.writes : ch.reads, write, t, wake, done);
-    if (!issued) issued = schedule(ch, write ? ch.reads : ch.writes, !write, t, wake, done);
-    for (const std::deque<Burst>* q : {&ch.reads, &ch.writes})
-      if (!q->empty() && q->front().arrival > t) wake = std::min(wake, q->front().arrival);
+  bool issued = decide(ch, t, wake, done, false);
+  if (issued) {  // when the next command may issue, without a decision at each clock between
+    wake = ch.waiting.empty() ? kNever : t + 1;
+    decide(ch, t + 1, wake, done, true);
+    t++;
   }
   bool idle = ch.reads.empty() && ch.writes.empty() && ch.waiting.empty();
-  bool refresh_due = config_.refresh != DramRefresh::None &&
-                     std::any_of(ch.refresh.begin(), ch.refresh.end(),
-                                 [&](const RankRefresh& r) { return r.due <= t; });
-  if (issued)
-    ch.next = t + 1;
-  else if (idle && !refresh_due)
+  bool refresh_due = config_.refresh != DramRefresh::None && ch.refresh_due <= t;
+  if (idle && !refresh_due)
     ch.next = kNever;  // asleep until a request arrives
   else
-    ch.next = std::max(wake, t + 1);
+    ch.next = std::max(wake, issued ? t : t + 1);
+}
+
+bool DramController::decide(Channel& ch, DramClock t, DramClock& wake,
+                            std::vector<DramReadDone>& done, bool dry) {
+  ch.rows_valid = false;
+  if (refresh(ch, t, wake, dry)) return true;
+  if (ch.draining && ch.writes.size() <= config_.write_low) ch.draining = false;
+  if (!ch.draining && ch.writes.size() >= config_.write_high) ch.draining = true;
+  bool reads_ready = !ch.reads.empty() && ch.reads.front().arrival <= t;
+  bool write = ch.draining || !reads_ready;
+  if (schedule(ch, write ? ch.writes : ch.reads, write, t, wake, done, dry) ||
+      schedule(ch, write ? ch.reads : ch.writes, !write, t, wake, done, dry))
+    return true;
+  for (const std::vector<Burst>* q : {&ch.reads, &ch.writes})
+    if (!q->empty() && q->front().arrival > t) wake = std::min(wake, q->front().arrival);
+  return false;
 }
 
 bool DramController::blocked(const Channel& ch, const Burst& b, DramClock t) const {
   if (config_.refresh == DramRefresh::None) return false;
+  if (ch.refresh_due > t) return false;
   const RankRefresh& r = ch.refresh[b.a.rank];
   if (r.due > t || activated_for(ch, b)) return false;
   return config_.refresh == DramRefresh::AllBank ||
@@ -147,22 +155,37 @@ bool DramController::activated_for(const Channel& ch, const Burst& b) const {
   return b.opened && ch.device.open_row(b.a) == b.a.row;
 }
 
-void DramController::summarize_rows(Channel& ch, DramClock t) const {
+const std::vector<uint8_t>& DramController::rows(Channel& ch, DramClock t) const {
+  if (ch.rows_valid) return ch.rows;
+  ch.rows_valid = true;
   ch.rows.assign(size_t(config_.ranks) * config_.banks(), 0);
-  for (const std::deque<Burst>* q : {&ch.reads, &ch.writes})
+  for (const std::vector<Burst>* q : {&ch.reads, &ch.writes})
     for (const Burst& b : *q)
       if (b.arrival <= t && ch.device.open_row(b.a) == b.a.row)
         ch.rows[bank_of(b.a)] |= b.opened ? kWanted | kHeld : kWanted;
+  return ch.rows;
+}
+
+void DramController::set_refresh_due(Channel& ch) const {
+  ch.refresh_due = kNever;
+  for (const RankRefresh& r : ch.refresh) ch.refresh_due = std::min(ch.refresh_due, r.due);
 }
 
 void DramController::mark_opened(Channel& ch, const Burst& b) {
-  for (std::deque<Burst>* q : {&ch.reads, &ch.writes, &ch.waiting})
-    for (Burst& o : *q)
-      if (o.request == b.request && same_bank(o.a, b.a) && o.a.row == b.a.row) o.opened = true;
+  auto mark = [&](Burst& o) {
+    if (o.request == b.request && same_bank(o.a, b.a) && o.a.row == b.a.row) o.opened = true;
+  };
+  for (Burst& o : ch.reads) mark(o);
+  for (Burst& o : ch.writes) mark(o);
+  for (Burst& o : ch.waiting) mark(o);
 }
 
-bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake) {
+bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry) {
   if (config_.refresh == DramRefresh::None) return false;
+  if (ch.refresh_due > t) {
+    wake = std::min(wake, ch.refresh_due);
+    return false;
+  }
   bool per_bank = config_.refresh == DramRefresh::PerBank;
   for (uint32_t rank = 0; rank < config_.ranks; ++rank) {
     RankRefresh& r = ch.refresh[rank];
@@ -179,7 +202,7 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake) {
     for (uint32_t i = first; i < first + count; ++i) {
       DramAddress a{0, rank, i / config_.banks_per_group, i % config_.banks_per_group, 0, 0};
       if (ch.device.open_row(a) == DramChannel::kClosed) continue;
-      if (ch.rows[bank_of(a)] & kHeld) {
+      if (rows(ch, t)[bank_of(a)] & kHeld) {
         held = true;
         continue;
       }
@@ -187,7 +210,7 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake) {
       if (e < pre_at) pre_at = e, pre = a;
     }
     if (pre_at != kNever) {
-      if (pre_at > t) {
+      if (pre_at > t || dry) {
         wake = std::min(wake, pre_at);
         continue;
       }
@@ -199,26 +222,27 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake) {
     DramAddress a{0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
     DramCommand command = per_bank ? DramCommand::RefPb : DramCommand::Ref;
     DramClock e = ch.device.earliest(command, a, t);
-    if (e > t) {
+    if (e > t || dry) {
       wake = std::min(wake, e);
       continue;
     }
     ch.device.issue(command, a, t);
     (per_bank ? stats_.commands.ref_pb : stats_.commands.ref)++;
     bool waited = false;
-    for (const std::deque<Burst>* q : {&ch.reads, &ch.writes})
+    for (const std::vector<Burst>* q : {&ch.reads, &ch.writes})
       for (const Burst& b : *q) waited = waited || (b.arrival <= t && blocked(ch, b, t));
     if (waited)
       stats_.refresh_stall_clocks += per_bank ? config_.timing.tRFCpb : config_.timing.tRFC;
     r.due += per_bank ? config_.timing.tREFIpb : config_.timing.tREFI;
     if (per_bank) r.bank = (r.bank + 1) % config_.banks();
+    set_refresh_due(ch);
     return true;
   }
   return false;
 }
 
-bool DramController::schedule(Channel& ch, std::deque<Burst>& queue, bool write, DramClock t,
-                              DramClock& wake, std::vector<DramReadDone>& done) {
+bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write, DramClock t,
+                              DramClock& wake, std::vector<DramReadDone>& done, bool dry) {
   DramChannel& dev = ch.device;
   auto eligible = [&](const Burst& b) { return b.arrival <= t && !blocked(ch, b, t); };
   size_t oldest = 0;
@@ -244,7 +268,7 @@ bool DramController::schedule(Channel& ch, std::deque<Burst>& queue, bool write,
     const Burst& b = queue[i];
     if (!eligible(b) || held_back(i) || dev.open_row(b.a) != b.a.row) continue;
     DramClock e = dev.earliest(column_command(write), b.a, t);
-    if (e > t) {
+    if (e > t || dry) {
       wake = std::min(wake, e);
       continue;
     }
@@ -263,11 +287,11 @@ bool DramController::schedule(Channel& ch, std::deque<Burst>& queue, bool write,
     DramCommand command = row == DramChannel::kClosed ? DramCommand::Act : DramCommand::Pre;
     if (command == DramCommand::Pre) {
       bool past_cap = capped && i == oldest;
-      bool wanted = ch.rows[bank_of(b.a)] & (past_cap ? kHeld : kWanted);
+      bool wanted = rows(ch, t)[bank_of(b.a)] & (past_cap ? kHeld : kWanted);
       if (wanted) continue;
     }
     DramClock e = dev.earliest(command, b.a, t);
-    if (e > t) {
+    if (e > t || dry) {
       wake = std::min(wake, e);
       continue;
     }
@@ -285,15 +309,17 @@ bool DramController::schedule(Channel& ch, std::deque<Burst>& queue, bool write,
   return false;
 }
 
-void DramController::serve_column(Channel& ch, std::deque<Burst>& queue, size_t index, bool write,
+void DramController::serve_column(Channel& ch, std::vector<Burst>& queue, size_t index, bool write,
                                   DramClock t, std::vector<DramReadDone>& done) {
   Burst b = queue[index];
   queue.erase(queue.begin() + long(index));
   bool close = false;
   if (config_.page_policy == DramPagePolicy::Closed) {
-    close = true;  // unless another queued request wants the row
-    for (const std::deque<Burst>* q : {&ch.reads, &ch.writes, &ch.waiting})
-      for (const Burst& o : *q) close = close && !(same_bank(o.a, b.a) && o.a.row == b.a.row);
+    // unless another queued request wants the row
+    auto wants = [&](const Burst& o) { return same_bank(o.a, b.a) && o.a.row == b.a.row; };
+    close = std::none_of(ch.reads.begin(), ch.reads.end(), wants) &&
+            std::none_of(ch.writes.begin(), ch.writes.end(), wants) &&
+            std::none_of(ch.waiting.begin(), ch.waiting.end(), wants);
   }
   DramClock data_end = ch.device.issue(column_command(write), b.a, t, close);
   (write ? stats_.commands.wr : stats_.commands.rd)++;

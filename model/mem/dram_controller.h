@@ -92,36 +92,43 @@ class DramController {
   struct Channel {
     explicit Channel(const BankedDramConfig& c) : device(c) {}
     DramChannel device;
-    std::deque<Burst> reads, writes;
-    std::deque<Burst> waiting;  // arrived while the queue was full
+    std::vector<Burst> reads, writes;  // in arrival order
+    std::deque<Burst> waiting;         // arrived while their queue was full
     std::vector<RankRefresh> refresh;
     DramClock next = kNever;  // the clock of its next decision; kNever: asleep
     bool draining = false;
     bool last_write = false;    // the direction of the last column command
     bool used = false;          // a column command has issued
     std::vector<uint8_t> rows;  // per bank: summarize_rows' flags
+    bool rows_valid = false;    // rows is of this step
+    DramClock refresh_due = 0;  // the earliest of refresh[].due
   };
 
   DramClock to_dram(Cycle core) const;  // the first DRAM clock at or after a core cycle
-  // One decision at clock t: at most one command; sets ch.next.
+  // One decision at clock t, and the clock of the next one (ch.next).
   void step(Channel& ch, DramClock t, std::vector<DramReadDone>& done);
-  // A refresh command due at t, if one is; returns whether it issued one, else lowers wake.
-  bool refresh(Channel& ch, DramClock t, DramClock& wake);
+  // Issues the command due at t, if one is (refresh first); else lowers wake to the clock the
+  // first command may issue. dry: issues nothing, only lowers wake (to t at the least).
+  bool decide(Channel& ch, DramClock t, DramClock& wake, std::vector<DramReadDone>& done,
+              bool dry);
+  bool refresh(Channel& ch, DramClock t, DramClock& wake, bool dry);
   bool blocked(const Channel& ch, const Burst& b, DramClock t) const;  // by a due refresh
   bool activated_for(const Channel& ch, const Burst& b) const;  // its open row was opened for it
   // Per bank of the channel, the open row's takers among the requests arrived by t: kWanted
   // (some request hits it), kHeld (it was opened for a request that waits).
-  void summarize_rows(Channel& ch, DramClock t) const;
+  const std::vector<uint8_t>& rows(Channel& ch, DramClock t) const;
   size_t bank_of(const DramAddress& a) const {
     return (size_t(a.rank) * config_.bank_groups + a.group) * config_.banks_per_group + a.bank;
   }
   void mark_opened(Channel& ch, const Burst& b);  // b's ACT: its request's bursts in that row
   // FR-FCFS over one queue; returns whether it issued a command, else lowers wake.
-  bool schedule(Channel& ch, std::deque<Burst>& queue, bool write, DramClock t, DramClock& wake,
-                std::vector<DramReadDone>& done);
-  void serve_column(Channel& ch, std::deque<Burst>& queue, size_t index, bool write, DramClock t,
+  bool schedule(Channel& ch, std::vector<Burst>& queue, bool write, DramClock t, DramClock& wake,
+                std::vector<DramReadDone>& done, bool dry);
+  void serve_column(Channel& ch, std::vector<Burst>& queue, size_t index, bool write, DramClock t,
                     std::vector<DramReadDone>& done);
   void admit_waiting(Channel& ch);
+
+  void set_refresh_due(Channel& ch) const;
 
   BankedDramConfig config_;
   DramAddressMap map_;

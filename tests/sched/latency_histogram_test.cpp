@@ -1,7 +1,7 @@
 // Latency percentiles in constant memory: exact below 1024 cycles, within 1.6% above.
 #include <gtest/gtest.h>
 
-#include "model/sched/latency_histogram.h"
+#include "model/mem/latency_histogram.h"
 #include "model/sched/stats_registry.h"
 
 namespace rtsim {
