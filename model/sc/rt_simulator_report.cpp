@@ -84,8 +84,7 @@ void report_l2(StatsRegistry& r, const SharedCacheModule& l2) {
 // burst, commands (for an energy model), turnarounds, refresh, queue occupancy, read latency
 // percentiles (gauges: over the whole run, warm-up included) and per-channel and per-bank
 // data bus utilisation.
-void report_banked_dram(StatsRegistry& r, const DramController& dram, uint64_t late_responses,
-                        double core_ghz) {
+void report_banked_dram(StatsRegistry& r, const DramController& dram, double core_ghz) {
   const BankedDramStats& s = dram.stats();
   const BankedDramConfig& c = dram.config();
   double core_per_clock = core_ghz * 1000 / c.clock_mhz;
@@ -122,7 +121,6 @@ void report_banked_dram(StatsRegistry& r, const DramController& dram, uint64_t l
   r.counter("dram.turnarounds", s.turnarounds);
   r.counter("dram.refresh_stall_clocks", s.refresh_stall_clocks);
   r.real("dram.queued_burst_clocks", s.queued_burst_clocks);
-  r.counter("dram.late_responses", late_responses);
   for (uint32_t ch = 0; ch < dram.channels(); ++ch) {
     const std::string p = "dram.ch" + std::to_string(ch);
     const DramChannel& channel = dram.channel(ch);
@@ -251,7 +249,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
 
   report_l2(r, *l2_);
   if (banked_dram_)
-    report_banked_dram(r, banked_dram_->controller(), l2_->late_responses(), config_.clock_ghz);
+    report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);
   if (dram_) {
     const DramStats& s = dram_->dram().stats();
     r.counter("dram.requests", s.requests);

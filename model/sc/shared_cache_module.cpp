@@ -67,7 +67,7 @@ void SharedCacheModule::share_first_references(double own_share) {
 
 void SharedCacheModule::use_timed_memory(uint32_t lead) {
   timed_below_ = true;
-  window_ = std::clamp<uint32_t>(lead, 1, lookahead_);
+  window_ = std::min(lead + 1, lookahead_);
 }
 
 void SharedCacheModule::add_job(const Job& job, Cycle at) {
@@ -125,15 +125,19 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
 }
 
 void SharedCacheModule::serve() {
+  served_until_ = clock_.cycles(sc_core::sc_time_stamp()) + window_;
+  armed_ = kPending;
+  serve_window();
+}
+
+void SharedCacheModule::serve_window() {
   try {
-    served_until_ = clock_.cycles(sc_core::sc_time_stamp()) + window_;
     stamp_ = sc_core::sc_time_stamp();
     serving_ = true;
     EventQueue::Event e;
     while (events_.pop_before(served_until_, e)) run_job(e.item, e.cycle);
     serving_ = false;
-    armed_ = kPending;
-    if (!events_.empty()) {
+    if (!events_.empty() && events_.next_cycle() < armed_) {  // wake for the next job
       armed_ = events_.next_cycle();
       wake_.notify(clock_.delay_to(armed_));
     }
@@ -298,12 +302,11 @@ void SharedCacheModule::below_done(BelowTransaction& t, Cycle ready) {
   job.kind = JobKind::DramDone;
   job.client = t.client;
   job.token = t.token;
-  // Outside serve(), a response dated inside the window already served breaks the lead.
-  if (!serving_ && ready < served_until_) {
-    late_responses_++;
-    ready = served_until_;
-  }
+  // Outside serve(), a response dated inside the window already served (a memory that answers
+  // with less lead than the window) is served now, in order with what it starts there.
+  bool late = !serving_ && ready < served_until_;
   add_job(job, ready);
+  if (late) serve_window();
 }
 
 }  // namespace rtsim

@@ -14,9 +14,10 @@
 // default the base protocol's blocking transport (loosely timed), so any loosely-timed TLM
 // memory can be bound there. After use_timed_memory(lead), the approximately-timed one (the
 // banked DRAM, model/sc/banked_dram_module.h, or a DRAMSys-class model): BEGIN_REQ through
-// nb_transport_fw, and the data's cycle in the delay of BEGIN_RESP, which must come at least
-// `lead` cycles before it: the module then serves at most that far ahead, so a response never
-// finds its cycle served already (one that does is served at once, counted as late_responses).
+// nb_transport_fw, and the data's cycle in the delay of BEGIN_RESP, sent at least `lead` cycles
+// before it (0: at that cycle). The module then serves at most lead + 1 cycles ahead, so a
+// response is never dated before a job already served; one dated inside the window already
+// served is served at once, with what it starts there, in cycle order.
 // A request crosses the crossbar to its slice (slice_of: a hash of the line address; a request
 // must not span lines, as an L1's blocks and line-by-line writes never do) when it
 // arrives, and is queued for the cycle it reaches the slice; its data crosses back when its
@@ -75,7 +76,6 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   // Before the simulation starts: the memory bound to `out` speaks the approximately-timed
   // protocol and sends BEGIN_RESP at least `lead` cycles before the data's cycle.
   void use_timed_memory(uint32_t lead);
-  uint64_t late_responses() const { return late_responses_; }
   Cycle next_job() const { return events_.empty() ? kPending : events_.next_cycle(); }
 
  private:
@@ -108,6 +108,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   void read_done(uint64_t job, Cycle ready, const ReadCharge& charge) override;
 
   void serve();
+  void serve_window();  // every job dated before served_until_, in order, at this stamp
   void run_job(uint32_t id, Cycle at);
   void respond(uint32_t id, Cycle ready);
   void add_job(const Job& job, Cycle at);
@@ -122,7 +123,6 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   uint32_t lookahead_;  // at least 1: the initiators' promise
   uint32_t window_;     // a wake-up at cycle c serves what is dated before c + it (<= lookahead_)
   bool timed_below_ = false;
-  uint64_t late_responses_ = 0;
   std::vector<std::unique_ptr<BelowTransaction>> below_pool_;
   std::vector<BelowTransaction*> below_free_;
   std::function<void(std::exception_ptr)> on_error_;

@@ -8,8 +8,10 @@
 #include <map>
 #include <memory>
 
+#include <tlm_utils/peq_with_get.h>
 #include <tlm_utils/simple_initiator_socket.h>
 
+#include "model/sc/banked_dram_module.h"
 #include "model/sc/shared_cache_module.h"
 #include "model/sc/tlm_memory.h"
 #include "tests/mem/mock_memory.h"
@@ -28,6 +30,39 @@ struct FixedLatencyMemory : sc_core::sc_module {
     ++reads;
     delay += sc_core::sc_time(50, sc_core::SC_NS);
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
+  }
+};
+
+// A third-party style approximately-timed memory, as DRAMSys-class models are built: a request
+// is accepted at once (END_REQ) and answered BEGIN_RESP through a payload event queue when its
+// data is there, 100 ns after the request's date, with no lead.
+struct TimedMemory : sc_core::sc_module {
+  tlm_utils::simple_target_socket<TimedMemory> in{"in"};
+  tlm_utils::peq_with_get<tlm::tlm_generic_payload> responses{"responses"};
+  int reads = 0;
+  SC_HAS_PROCESS(TimedMemory);
+  explicit TimedMemory(sc_core::sc_module_name name) : sc_module(name) {
+    in.register_nb_transport_fw(this, &TimedMemory::nb_transport_fw);
+    SC_METHOD(respond);
+    sensitive << responses.get_event();
+    dont_initialize();
+  }
+  tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                     sc_core::sc_time& delay) {
+    if (phase != tlm::BEGIN_REQ) return tlm::TLM_COMPLETED;
+    trans.set_response_status(tlm::TLM_OK_RESPONSE);
+    if (trans.is_write()) return tlm::TLM_COMPLETED;
+    ++reads;
+    responses.notify(trans, delay + sc_core::sc_time(100, sc_core::SC_NS));
+    phase = tlm::END_REQ;
+    return tlm::TLM_UPDATED;
+  }
+  void respond() {
+    while (tlm::tlm_generic_payload* trans = responses.get_next_transaction()) {
+      tlm::tlm_phase phase = tlm::BEGIN_RESP;
+      sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
+      in->nb_transport_bw(*trans, phase, delay);
+    }
   }
 };
 
@@ -103,6 +138,49 @@ TEST(TlmMemory, AnEarlierDatedRequestIsNotDelayedByALaterDatedOneSentBefore) {
   EXPECT_EQ(cpu.ready[3], 12u + 10 + 1 + 300);
   EXPECT_EQ(cpu.ready[0], 1000u + 10 + 1 + 300);
   EXPECT_EQ(bench.dram.dram().stats().total_latency_cycles, 4u * 301) << "no request queued";
+}
+
+TEST(TlmMemory, AThirdPartyTimedTargetAnswersBelowTheL2AtItsOwnCycles) {
+  Clock clock;
+  AtRequester cpu("cpu");
+  SharedCacheModule l2("l2", l2_config(10, 8), clock, {}, 20);
+  TimedMemory memory("memory");
+  cpu.out.bind(l2.in);
+  l2.out.bind(memory.in);
+  l2.use_timed_memory(0);  // BEGIN_RESP comes at the data's own cycle
+  cpu.script = {{0x10000, 1000}, {0x0, 10}, {0x40, 11}, {0x0, 50}, {0x40, 200}};
+  sc_core::sc_start();
+  EXPECT_EQ(cpu.ready[1], 10u + 10 + 100);
+  EXPECT_EQ(cpu.ready[2], 11u + 10 + 100);
+  EXPECT_EQ(cpu.ready[3], 10u + 10 + 100) << "merged into the miss in flight";
+  EXPECT_EQ(cpu.ready[4], 200u + 10) << "a hit once the data is in";
+  EXPECT_EQ(cpu.ready[0], 1000u + 10 + 100);
+  EXPECT_EQ(memory.reads, 3);
+}
+
+// The banked DRAM below the L2: one channel, DRAM clock = core clock (1 GHz), so a first read
+// is the L2's tag check, ACT, tRCD, two RDs tCCD_L apart (a 64-byte line is two 32-byte bursts
+// of one bank), tCL and the second burst, and the controller latency.
+TEST(TlmMemory, TheBankedDramSpeaksTheTimedProtocol) {
+  Clock clock;
+  BankedDramConfig config;
+  config.clock_mhz = 1000;
+  config.channels = 1;
+  config.refresh = DramRefresh::None;
+  AtRequester cpu("cpu");
+  SharedCacheModule l2("l2", l2_config(10, 8), clock, {}, 20);
+  BankedDramModule dram("dram", config, clock, 1.0);
+  cpu.out.bind(l2.in);
+  l2.out.bind(dram.in);
+  l2.use_timed_memory(dram.response_lead());
+  cpu.script = {{0x0, 10}, {0x1000, 500}};  // the second: the same bank and row
+  sc_core::sc_start();
+  const DramTiming& t = config.timing;
+  uint32_t bursts = t.tCCD_L + config.burst_clocks();
+  EXPECT_EQ(cpu.ready[0], 10u + 10 + t.tRCD_RD + t.tCL + bursts + config.controller_latency);
+  EXPECT_EQ(cpu.ready[1], 500u + 10 + t.tCL + bursts + config.controller_latency) << "a row hit";
+  EXPECT_EQ(dram.controller().stats().row_hits, 3u) << "the second burst of each line hits too";
+  EXPECT_EQ(dram.controller().stats().row_misses, 1u);
 }
 
 TEST(TlmMemory, ManyIndependentMissesSaturateTheDramBandwidth) {
