@@ -9,7 +9,9 @@ namespace {
 constexpr uint64_t kExact = 1024;  // values below are their own bin
 constexpr int kSubBits = 6;        // 64 bins per power of two above
 
-int top_bit(uint64_t v) { return 63 - __builtin_clzll(v); }
+int top_bit(uint64_t v) {
+  return 63 - __builtin_clzll(v);
+}
 
 size_t bin_of(uint64_t v) {
   if (v < kExact) return size_t(v);

@@ -40,7 +40,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   uint64_t bvh_begin = image.node_base, bvh_end = image.triangle_base + image.triangles.size();
   l2_->track_cold_misses(bvh_begin, bvh_end);
   if (bind_memory) {
-    bind_memory(l2_->out);
+    bind_memory(*l2_);
   } else if (config.dram_model == DramModel::Banked) {
     banked_dram_ =
         std::make_unique<BankedDramModule>("dram", config.banked_dram, clock_, config.clock_ghz);

@@ -1,7 +1,9 @@
 // The whole simulated machine for one run, built from a HwConfig:
 //   dispatch -> [treelet_queues] -> rt0..rtN-1 (each with rtK.l1) -> l2 -> dram
 // plus the stall watchdog. The levels of the memory hierarchy meet at TLM-2.0 sockets; pass
-// bind_memory to put another loosely-timed TLM memory model where the DRAM is.
+// bind_memory to put another TLM memory model where the DRAM is: it binds the model to
+// l2.out, loosely timed, or approximately timed after l2.use_timed_memory(lead)
+// (model/mem/README.md, "Banked DRAM").
 // SystemC allows one elaboration per process: build one RtSimulator per process (tests and
 // benchmarks that compare runs use run_in_child(), model/sc/fork_run.h).
 #pragma once
@@ -37,7 +39,7 @@ uint32_t ray_slots(const HwConfig& config);
 
 class RtSimulator {
  public:
-  using MemoryBinder = std::function<void(tlm_utils::simple_initiator_socket<SharedCacheModule>&)>;
+  using MemoryBinder = std::function<void(SharedCacheModule& l2)>;
 
   // width x height: the pixel grid of the rays (0 x 0: no pixel buffers). listener (optional)
   // also sees every retired ray, after the stats (the verifier).

@@ -248,8 +248,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
           1.0 / (double(slots) * config_.rt_units));
 
   report_l2(r, *l2_);
-  if (banked_dram_)
-    report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);
+  if (banked_dram_) report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);
   if (dram_) {
     const DramStats& s = dram_->dram().stats();
     r.counter("dram.requests", s.requests);

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <sstream>
 
 #include "model/config/hw_config.h"
 #include "tests/sc/sim_test_util.h"
+#include "tests/sc/timed_memory.h"
 
 namespace rtsim {
 namespace {
@@ -31,6 +33,36 @@ TEST(SimMemory, LightlyLoadedDramHasItsUnloadedLatencyOnEveryPreset) {
         << "% utilisation, unloaded " << unloaded;
   }
   EXPECT_GE(presets, 8);
+}
+
+TEST(SimMemory, AThirdPartyTimedMemoryRunsAWholeSimulation) {
+  // A DRAMSys-style approximately-timed target bound where the DRAM is: every ray verified,
+  // and with a 300 ns memory (1 GHz) the run is slower than with the built-in banked DRAM.
+  test::SimScene s;
+  std::vector<Ray> rays = test::mixed_rays(s.scene, 500, 4);
+  HwConfig config = test::small_machine();
+  config.dram_model = DramModel::Banked;
+  nlohmann::json banked = test::simulate(config, s.scene, rays, true);
+  std::string result = run_in_child([&] {
+    BvhImage image = build_bvh_image(s.scene.mesh, config.bvh);
+    VectorRaySource source(rays);
+    test::TimedMemory memory("memory", sc_core::sc_time(300, sc_core::SC_NS));
+    RtSimulator sim(config, image, source, 0, 0, nullptr, [&](SharedCacheModule& l2) {
+      l2.out.bind(memory.in);
+      l2.use_timed_memory(0);
+    });
+    sim.run();
+    return std::to_string(sim.rays()) + " " + std::to_string(sim.cycles()) + " " +
+           std::to_string(memory.reads) + " " + std::to_string(sim.l2_stats().misses);
+  });
+  std::istringstream in(result);
+  uint64_t finished = 0, cycles = 0, reads = 0, misses = 0;
+  in >> finished >> cycles >> reads >> misses;
+  EXPECT_EQ(finished, rays.size());
+  EXPECT_EQ(reads, misses) << "every L2 miss reached the foreign memory";
+  EXPECT_GT(cycles, test::stat(banked, "cycles"));
+  EXPECT_EQ(banked["verify"]["unexplained"], 0);
+  EXPECT_GT(test::stat(banked, "dram.row_hits"), 0.0);
 }
 
 TEST(SimMemory, L1MissesWaitingForMshrsJoinTheL2InOrderWhateverTheLatencies) {

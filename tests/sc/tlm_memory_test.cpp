@@ -8,13 +8,13 @@
 #include <map>
 #include <memory>
 
-#include <tlm_utils/peq_with_get.h>
 #include <tlm_utils/simple_initiator_socket.h>
 
 #include "model/sc/banked_dram_module.h"
 #include "model/sc/shared_cache_module.h"
 #include "model/sc/tlm_memory.h"
 #include "tests/mem/mock_memory.h"
+#include "tests/sc/timed_memory.h"
 
 namespace rtsim {
 namespace {
@@ -30,39 +30,6 @@ struct FixedLatencyMemory : sc_core::sc_module {
     ++reads;
     delay += sc_core::sc_time(50, sc_core::SC_NS);
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
-  }
-};
-
-// A third-party style approximately-timed memory, as DRAMSys-class models are built: a request
-// is accepted at once (END_REQ) and answered BEGIN_RESP through a payload event queue when its
-// data is there, 100 ns after the request's date, with no lead.
-struct TimedMemory : sc_core::sc_module {
-  tlm_utils::simple_target_socket<TimedMemory> in{"in"};
-  tlm_utils::peq_with_get<tlm::tlm_generic_payload> responses{"responses"};
-  int reads = 0;
-  SC_HAS_PROCESS(TimedMemory);
-  explicit TimedMemory(sc_core::sc_module_name name) : sc_module(name) {
-    in.register_nb_transport_fw(this, &TimedMemory::nb_transport_fw);
-    SC_METHOD(respond);
-    sensitive << responses.get_event();
-    dont_initialize();
-  }
-  tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
-                                     sc_core::sc_time& delay) {
-    if (phase != tlm::BEGIN_REQ) return tlm::TLM_COMPLETED;
-    trans.set_response_status(tlm::TLM_OK_RESPONSE);
-    if (trans.is_write()) return tlm::TLM_COMPLETED;
-    ++reads;
-    responses.notify(trans, delay + sc_core::sc_time(100, sc_core::SC_NS));
-    phase = tlm::END_REQ;
-    return tlm::TLM_UPDATED;
-  }
-  void respond() {
-    while (tlm::tlm_generic_payload* trans = responses.get_next_transaction()) {
-      tlm::tlm_phase phase = tlm::BEGIN_RESP;
-      sc_core::sc_time delay = sc_core::SC_ZERO_TIME;
-      in->nb_transport_bw(*trans, phase, delay);
-    }
   }
 };
 
@@ -144,7 +111,7 @@ TEST(TlmMemory, AThirdPartyTimedTargetAnswersBelowTheL2AtItsOwnCycles) {
   Clock clock;
   AtRequester cpu("cpu");
   SharedCacheModule l2("l2", l2_config(10, 8), clock, {}, 20);
-  TimedMemory memory("memory");
+  test::TimedMemory memory("memory", sc_core::sc_time(100, sc_core::SC_NS));
   cpu.out.bind(l2.in);
   l2.out.bind(memory.in);
   l2.use_timed_memory(0);  // BEGIN_RESP comes at the data's own cycle

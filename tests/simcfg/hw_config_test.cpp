@@ -115,3 +115,61 @@ TEST(HwConfig, ImpossibleCombinationIsAnError) {
 
 }  // namespace
 }  // namespace rtsim
+
+namespace rtsim {
+namespace {
+
+TEST(DramPresets, EveryPresetLoadsWithinItsStandardsRelations) {
+  for (std::string name : {"gddr6-16", "lpddr5-6400", "hbm3-6400", "ddr5-4800"}) {
+    BankedDramConfig c = dram_preset_config(name);
+    EXPECT_EQ(banked_dram_config_problem(c), "") << name;
+    EXPECT_EQ(c.preset, name);
+  }
+  BankedDramConfig hbm = dram_preset_config("hbm3-6400");
+  EXPECT_EQ(hbm.channels, 32u);
+  EXPECT_EQ(hbm.timing.tCL, 26u);
+  EXPECT_NEAR(hbm.peak_gb_per_s(), 819.2, 0.1) << "a stack's bandwidth (JESD238)";
+  EXPECT_NEAR(dram_preset_config("gddr6-16").peak_gb_per_s() / 8, 32.0, 1e-9) << "per x16 channel";
+  EXPECT_NEAR(dram_preset_config("lpddr5-6400").peak_gb_per_s() / 4, 12.8, 1e-9);
+  EXPECT_NEAR(dram_preset_config("ddr5-4800").peak_gb_per_s() / 2, 19.2, 1e-9);
+}
+
+TEST(DramPresets, APresetFillsTheKeysAndKeysBesideItOverride) {
+  HwConfig c =
+      load_hw_config(write_toml("[dram]\nmodel = \"banked\"\npreset = \"lpddr5-6400\"\n"
+                                "channels = 8\n[dram.timing]\ntCL = 20\n"));
+  EXPECT_EQ(c.dram_model, DramModel::Banked);
+  EXPECT_EQ(c.banked_dram.preset, "lpddr5-6400");
+  EXPECT_EQ(c.banked_dram.channels, 8u);
+  EXPECT_EQ(c.banked_dram.timing.tCL, 20u);
+  EXPECT_EQ(c.banked_dram.timing.tRCD_RD, 15u) << "the preset's";
+  std::string resolved = resolved_toml(c);
+  EXPECT_EQ(resolved_toml(load_hw_config(write_toml(resolved))), resolved) << "round trip";
+}
+
+TEST(DramPresets, BadDramConfigsNameTheFileAndKey) {
+  std::string unknown = write_toml("[dram]\nmodel = \"banked\"\npreset = \"gddr7\"\n");
+  std::string e = error_of(unknown);
+  EXPECT_NE(e.find(unknown), std::string::npos) << e;
+  EXPECT_NE(e.find("dram.preset"), std::string::npos) << e;
+  EXPECT_NE(e.find("gddr6-16"), std::string::npos) << "lists the known presets: " << e;
+
+  e = error_of("", {"dram.model=banked", "dram.timing.tRC=40"});
+  EXPECT_NE(e.find("[dram] timing.tRC (40) must be at least tRAS + tRP (91)"), std::string::npos)
+      << e;
+  e = error_of("", {"dram.model=banked", "dram.timing.tRRD_L=2"});
+  EXPECT_NE(e.find("timing.tRRD_L (2) must be at least tRRD_S"), std::string::npos) << e;
+  e = error_of("", {"dram.model=banked", "dram.mapping=row:bank:column"});
+  EXPECT_NE(e.find("does not cover the address: it leaves out rank, bankgroup, channel"),
+            std::string::npos)
+      << e;
+  e = error_of("", {"dram.model=banked", "dram.mapping=row:rank:bankgroup:bank:column:chan"});
+  EXPECT_NE(e.find("leaves out channel"), std::string::npos) << e;
+  e = error_of("", {"dram.model=banked", "dram.write_low=30"});
+  EXPECT_NE(e.find("write_low (30) < write_high (24)"), std::string::npos) << e;
+  EXPECT_EQ(error_of("", {"dram.model=simple", "dram.timing.tRC=40"}), "(no error)")
+      << "the simple model does not use the banked keys";
+}
+
+}  // namespace
+}  // namespace rtsim
