@@ -33,10 +33,10 @@ std::string html_tail() {
 }
 
 std::string html_type_table(const Json& doc, const std::string& prefix,
-                            const std::vector<Column>& columns) {
+                            const std::vector<Column>& columns, const std::string& row_title) {
   const Json& rows = at_key(doc, prefix);
   if (!rows.is_object() || rows.empty()) return "<p class=\"na\">n/a</p>\n";
-  std::string out = "<table>\n<tr><th>ray type</th>";
+  std::string out = "<table>\n<tr><th>" + html_escape(row_title) + "</th>";
   for (const Column& c : columns) out += "<th>" + html_escape(c.title) + "</th>";
   out += "</tr>\n";
   for (const auto& [name, row] : rows.items()) {
@@ -50,10 +50,10 @@ std::string html_type_table(const Json& doc, const std::string& prefix,
 }
 
 std::string markdown_type_table(const Json& doc, const std::string& prefix,
-                                const std::vector<Column>& columns) {
+                                const std::vector<Column>& columns, const std::string& row_title) {
   const Json& rows = at_key(doc, prefix);
   if (!rows.is_object() || rows.empty()) return "n/a\n";
-  std::string out = "| ray type |";
+  std::string out = "| " + row_title + " |";
   for (const Column& c : columns) out += " " + c.title + " |";
   out += "\n|---|";
   for (size_t i = 0; i < columns.size(); ++i) out += "---|";

@@ -51,7 +51,10 @@ Json hardware_json(const ReportInputs& in) {
           {"ray_slots", ray_slots(c)},
           {"l1", cache(c.l1)},
           {"l2", cache(c.l2)},
-          {"dram", {{"bytes_per_cycle", c.dram.bytes_per_cycle}, {"latency", c.dram.latency}}},
+          {"dram",
+           {{"model", c.dram_model == DramModel::Banked ? "banked" : "simple"},
+            {"bytes_per_cycle", c.dram.bytes_per_cycle},
+            {"latency", c.dram.latency}}},
           {"bvh", describe(c.bvh)},
           {"on_chip_bytes", on_chip_bytes(c)},
           {"resolved", resolved_json(c)}};
@@ -114,6 +117,38 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
   }
   b["by_type"] = by_type;
   return b;
+}
+
+// The DRAM section: the model and, from a cycle-level run with the banked DRAM, row buffer
+// outcomes, read latency percentiles and per-channel utilisation (null where not known).
+Json dram_json(const Json& stats, const HwConfig& c) {
+  bool banked = c.dram_model == DramModel::Banked;
+  Json d = {{"model", banked ? "banked" : "simple"},
+            {"preset", banked ? Json(c.banked_dram.preset) : Json()},
+            {"channels", banked ? Json(c.banked_dram.channels) : Json(1)},
+            {"peak_gb_per_s",
+             banked ? c.banked_dram.peak_gb_per_s() : c.dram.bytes_per_cycle * c.clock_ghz}};
+  const char* derived[] = {"utilisation", "row_hit_rate", "row_conflict_rate", "mean_latency",
+                           "queue_occupancy"};
+  const char* counted[] = {"turnarounds", "refresh_stall_clocks", "latency_p50",
+                           "latency_p90", "latency_p99",          "latency_max"};
+  for (const char* key : derived) d[key] = Json();
+  for (const char* key : counted) d[key] = Json();
+  d["by_channel"] = Json::object();
+  if (stats.is_null()) return d;
+  const Json& counters = stats["stats"]["counters"];
+  const Json& ratios = stats["stats"]["derived"];
+  for (const char* key : derived)
+    if (ratios.contains(std::string("dram.") + key)) d[key] = ratios[std::string("dram.") + key];
+  for (const char* key : counted)
+    if (counters.contains(std::string("dram.") + key))
+      d[key] = counters[std::string("dram.") + key];
+  for (uint32_t ch = 0; banked && ch < c.banked_dram.channels; ++ch) {
+    std::string p = "dram.ch" + std::to_string(ch);
+    d["by_channel"]["ch" + std::to_string(ch)] = {{"utilisation", ratios[p + ".utilisation"]},
+                                                  {"busy_clocks", counters[p + ".busy_clocks"]}};
+  }
+  return d;
 }
 
 Json coherence_json(const FidelityResult& f, const Json& stats) {
@@ -219,6 +254,7 @@ Json build_report(const ReportInputs& in) {
   r["fidelity"] = f.to_json();
   r["timing"] = timing_json(f, stats);
   r["bandwidth"] = bandwidth_json(f, stats, *in.config);
+  r["dram"] = dram_json(stats, *in.config);
   r["coherence"] = coherence_json(f, stats);
   r["verification"] = verification_json(stats, f.level);
   r["latency"] = latency_json(f, stats, collected);

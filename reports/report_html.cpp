@@ -1,5 +1,5 @@
-// report.html of a run: summary, workload, hardware config, timing, bandwidth, coherence,
-// verification, pictures and charts, in that order.
+// report.html of a run: summary, workload, hardware config, timing, bandwidth, DRAM,
+// coherence, verification, pictures and charts, in that order.
 #include <fmt/core.h>
 
 #include "reports/page_util.h"
@@ -51,6 +51,16 @@ std::string bandwidth(const Json& r) {
                           {"DRAM bytes/ray", "dram_bytes_per_ray", kReal}});
 }
 
+std::string dram(const Json& r) {
+  std::string out = html_rows(r, dram_rows());
+  if (r["dram"]["by_channel"].empty()) return out;
+  return out + "<h3>Per channel</h3>\n" +
+         html_type_table(r, "dram.by_channel",
+                         {{"data bus utilisation", "utilisation", int(Style::Percent)},
+                          {"busy DRAM clocks", "busy_clocks", kInt}},
+                         "channel");
+}
+
 std::string coherence(const Json& r) {
   std::string out = html_rows(
       r, {{"nodes per ray", "coherence.nodes_per_ray", Style::Real},
@@ -81,7 +91,7 @@ std::string verification(const Json& r) {
                        {"unexplained", "verification.unexplained", Style::Integer}});
   if (!v["by_class"].empty())
     out += "<h3>Mismatches by class</h3>\n" +
-           html_type_table(r, "verification.by_class", {{"rays", "", kInt}});
+           html_type_table(r, "verification.by_class", {{"rays", "", kInt}}, "class");
   return out;
 }
 
@@ -107,7 +117,8 @@ std::string report_html(const Json& r, const std::string& run_dir) {
   out +=
       "<nav><a href=\"#summary\">Summary</a><a href=\"#workload\">Workload</a><a "
       "href=\"#hardware\">Hardware</a><a href=\"#timing\">Timing</a><a "
-      "href=\"#bandwidth\">Bandwidth</a><a href=\"#coherence\">Coherence</a><a "
+      "href=\"#bandwidth\">Bandwidth</a><a href=\"#dram\">DRAM</a><a "
+      "href=\"#coherence\">Coherence</a><a "
       "href=\"#verification\">Verification</a><a href=\"#pictures\">Pictures</a><a "
       "href=\"#charts\">Charts</a></nav>\n";
   out += section("summary", "Summary", html_rows(r, summary_rows()));
@@ -117,6 +128,7 @@ std::string report_html(const Json& r, const std::string& run_dir) {
       "timing", "Timing",
       html_rows(r, timing_rows()) + "<h3>Latency per ray type (cycles)</h3>\n" + latency(r));
   out += section("bandwidth", "Bandwidth", bandwidth(r));
+  out += section("dram", "DRAM", dram(r));
   out += section("coherence", "Coherence", coherence(r));
   out += section("verification", "Verification", verification(r));
   out += section("pictures", "Pictures", html_figures(r, run_dir, {"picture", "heatmap"}));

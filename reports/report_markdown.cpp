@@ -69,6 +69,10 @@ std::string report_markdown(const Json& r) {
   out += "\n## Bandwidth\n\n" + markdown_rows(r, bandwidth_rows());
   out += "\n" + markdown_type_table(r, "hit_rates.by_type",
                                     {{"L1 hit rate", "l1", kPct}, {"L2 hit rate", "l2", kPct}});
+  out += "\n## DRAM\n\n" + markdown_rows(r, dram_rows());
+  if (!r["dram"]["by_channel"].empty())
+    out += "\n" + markdown_type_table(r, "dram.by_channel",
+                                      {{"data bus utilisation", "utilisation", kPct}}, "channel");
   out += "\n## Coherence\n\n" +
          markdown_type_table(r, "coherence.by_type",
                              {{"nodes/ray", "nodes_per_ray", kReal},

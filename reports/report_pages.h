@@ -16,24 +16,27 @@ namespace rtsim::reports {
 std::string report_html(const nlohmann::ordered_json& report, const std::string& run_dir);
 std::string report_markdown(const nlohmann::ordered_json& report);
 
-// The labelled values of the summary, workload, hardware, timing and bandwidth sections, for
+// The labelled values of the summary, workload, hardware, timing, bandwidth and DRAM sections, for
 // both pages (report_rows.cpp).
 const std::vector<Row>& summary_rows();
 const std::vector<Row>& workload_rows();
 const std::vector<Row>& hardware_rows();
 const std::vector<Row>& timing_rows();
 const std::vector<Row>& bandwidth_rows();
+const std::vector<Row>& dram_rows();
 
-// A table with one row per key of doc[prefix] (ray types), columns (title, key under the row,
-// style); the HTML cells carry their full keys.
+// A table with one row per key of doc[prefix] (ray types, or what row_title names), columns
+// (title, key under the row, style); the HTML cells carry their full keys.
 struct Column {
   std::string title, key;
   int style;  // a Style
 };
 std::string html_type_table(const nlohmann::ordered_json& doc, const std::string& prefix,
-                            const std::vector<Column>& columns);
+                            const std::vector<Column>& columns,
+                            const std::string& row_title = "ray type");
 std::string markdown_type_table(const nlohmann::ordered_json& doc, const std::string& prefix,
-                                const std::vector<Column>& columns);
+                                const std::vector<Column>& columns,
+                                const std::string& row_title = "ray type");
 
 // The image gallery of one kind list ("picture,heatmap" or "chart").
 std::string html_figures(const nlohmann::ordered_json& report, const std::string& run_dir,

@@ -45,8 +45,9 @@ const std::vector<Row>& hardware_rows() {
       {"L1 hit latency", "hardware.l1.hit_latency", Style::Integer, false},
       {"L2 bytes", "hardware.l2.size_bytes", Style::Integer},
       {"L2 hit latency", "hardware.l2.hit_latency", Style::Integer, false},
-      {"DRAM bytes/cycle", "hardware.dram.bytes_per_cycle", Style::Real, false},
-      {"DRAM latency", "hardware.dram.latency", Style::Integer, false},
+      {"DRAM model", "hardware.dram.model", Style::Text, false},
+      {"DRAM bytes/cycle (simple model)", "hardware.dram.bytes_per_cycle", Style::Real, false},
+      {"DRAM latency (simple model)", "hardware.dram.latency", Style::Integer, false},
       {"BVH", "hardware.bvh", Style::Text},
       {"on-chip bytes", "hardware.on_chip_bytes", Style::Integer}};
   return rows;
@@ -84,6 +85,27 @@ const std::vector<Row>& bandwidth_rows() {
       {"DRAM bytes", "bandwidth.dram_bytes", Style::Integer, false},
       {"DRAM bytes per cycle", "bandwidth.dram_bytes_per_cycle", Style::Real, false},
       {"DRAM utilisation", "bandwidth.dram_utilisation", Style::Percent}};
+  return rows;
+}
+
+const std::vector<Row>& dram_rows() {
+  static const std::vector<Row> rows{
+      {"model", "dram.model", Style::Text},
+      {"preset", "dram.preset", Style::Text},
+      {"channels", "dram.channels", Style::Integer},
+      {"peak GB/s", "dram.peak_gb_per_s", Style::Real},
+      {"data bus utilisation (mean over channels)", "dram.utilisation", Style::Percent},
+      {"row hit rate (bursts whose row was open)", "dram.row_hit_rate", Style::Percent},
+      {"row conflict rate (bursts that found another row open)", "dram.row_conflict_rate",
+       Style::Percent},
+      {"read latency, mean (cycles)", "dram.mean_latency", Style::Real},
+      {"read latency p50 (cycles)", "dram.latency_p50", Style::Integer},
+      {"read latency p90 (cycles)", "dram.latency_p90", Style::Integer, false},
+      {"read latency p99 (cycles)", "dram.latency_p99", Style::Integer},
+      {"read latency max (cycles)", "dram.latency_max", Style::Integer, false},
+      {"bursts queued per channel (mean)", "dram.queue_occupancy", Style::Real, false},
+      {"read-write turnarounds", "dram.turnarounds", Style::Integer, false},
+      {"refresh stall (DRAM clocks)", "dram.refresh_stall_clocks", Style::Integer, false}};
   return rows;
 }
 

@@ -15,7 +15,7 @@
 namespace rtsim::reports {
 
 class RunCollector : public RayRetireListener {
-public:
+ public:
   static constexpr int kBinsPerOctave = 4;
   static constexpr int kLatencyBins = 26 * kBinsPerOctave;  // up to 2^26 cycles
   static constexpr size_t kMaxBuckets = 200;
@@ -26,7 +26,7 @@ public:
   //  "timeline": {"bucket_cycles": B, "retired": {type: [...]}}}; only types with rays.
   nlohmann::ordered_json to_json() const;
 
-private:
+ private:
   void widen();
 
   std::array<std::vector<uint64_t>, kRayTypeCount> latency_{};

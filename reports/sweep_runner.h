@@ -25,9 +25,9 @@ struct SweepRunOptions {
 struct PointRun {
   std::string id, workload, dir;
   const SweepPoint* point = nullptr;
-  bool reused = false;   // done by an earlier, interrupted run
-  bool ok = false;       // report.json present
-  int exit_code = 0;     // of its `rtsim run` (1: verification failed)
+  bool reused = false;  // done by an earlier, interrupted run
+  bool ok = false;      // report.json present
+  int exit_code = 0;    // of its `rtsim run` (1: verification failed)
   nlohmann::ordered_json metrics;
 };
 
