@@ -81,11 +81,12 @@ void read_banked_dram(ConfigReader dram, BankedDramConfig& c) {
   c.refresh = refresh == "per_bank" ? DramRefresh::PerBank
               : refresh == "none"   ? DramRefresh::None
                                     : DramRefresh::AllBank;
-  count("read_queue", c.read_queue, "bursts", "banked: read queue per channel", 1, 4096);
-  count("write_queue", c.write_queue, "bursts", "banked: write queue per channel", 1, 4096);
-  count("write_high", c.write_high, "bursts", "banked: queued writes that start a write drain", 1,
+  count("read_queue", c.read_queue, "entries",
+        "banked: read queue per channel (an entry: a request's bursts in one row)", 1, 4096);
+  count("write_queue", c.write_queue, "entries", "banked: write queue per channel", 1, 4096);
+  count("write_high", c.write_high, "entries", "banked: queued writes that start a write drain", 1,
         4096);
-  count("write_low", c.write_low, "bursts", "banked: a write drain stops at this many", 0, 4096);
+  count("write_low", c.write_low, "entries", "banked: a write drain stops at this many", 0, 4096);
   count("starvation_cap", c.starvation_cap, "requests",
         "banked: younger row hits served before the oldest request (FR-FCFS cap)", 0, 1 << 20);
   count("controller_latency", c.controller_latency, "cycles",

@@ -54,8 +54,8 @@ struct BankedDramConfig {
   uint32_t interleave_bytes = 256;     // bytes: consecutive bytes per channel (interleave, xor)
   DramPagePolicy page_policy = DramPagePolicy::Open;
   DramRefresh refresh = DramRefresh::AllBank;
-  uint32_t read_queue = 32;          // entries (bursts) per channel
-  uint32_t write_queue = 32;         // entries (bursts) per channel
+  uint32_t read_queue = 32;          // entries per channel: a request's bursts in one row
+  uint32_t write_queue = 32;         // entries per channel
   uint32_t write_high = 24;          // writes queued that start a drain
   uint32_t write_low = 8;            // a drain stops at this many
   uint32_t starvation_cap = 16;      // younger row hits served before the oldest request

@@ -68,15 +68,25 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
   (write ? stats_.writes : stats_.reads)++;
   (write ? stats_.write_bytes : stats_.read_bytes) += (last - first + 1) * burst;
   DramClock arrival = to_dram(at);
+  Burst* last_entry = nullptr;
   for (uint64_t b = first; b <= last; ++b) {
     Burst entry{request, map_.decode(b * burst), arrival};
+    if (last_entry && same_bank(last_entry->a, entry.a) && last_entry->a.row == entry.a.row &&
+        last_entry->a.channel == entry.a.channel &&
+        last_entry->a.column + last_entry->columns == entry.a.column) {
+      last_entry->columns++;  // the next burst of the same row: one entry, one more RD
+      continue;
+    }
     Channel& ch = channels_[entry.a.channel];
     std::vector<Burst>& queue = write ? ch.writes : ch.reads;
     uint32_t capacity = write ? config_.write_queue : config_.read_queue;
-    if (ch.waiting.empty() && queue.size() < capacity)
+    if (ch.waiting.empty() && queue.size() < capacity) {
       queue.push_back(entry);
-    else
+      last_entry = &queue.back();
+    } else {
       ch.waiting.push_back(entry);
+      last_entry = &ch.waiting.back();
+    }
     if (ch.next == kNever) {  // asleep: wake at the arrival, or at a refresh missed before it
       ch.next = arrival;
       if (config_.refresh != DramRefresh::None) ch.next = std::min(ch.next, ch.refresh_due);
@@ -312,7 +322,14 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
 void DramController::serve_column(Channel& ch, std::vector<Burst>& queue, size_t index, bool write,
                                   DramClock t, std::vector<DramReadDone>& done) {
   Burst b = queue[index];
-  queue.erase(queue.begin() + long(index));
+  if (b.columns > 1) {  // its next burst stays queued, a row hit to come
+    Burst& rest = queue[index];
+    rest.columns--;
+    rest.a.column++;
+    rest.needed_act = rest.needed_pre = false;
+  } else {
+    queue.erase(queue.begin() + long(index));
+  }
   bool close = false;
   if (config_.page_policy == DramPagePolicy::Closed) {
     // unless another queued request wants the row

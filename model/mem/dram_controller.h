@@ -70,10 +70,13 @@ class DramController {
  private:
   static constexpr DramClock kNever = ~DramClock(0);
   static constexpr uint8_t kWanted = 1, kHeld = 2;
+  // A queue entry: the bursts of one request in one row (a line's two GDDR6 bursts), served by
+  // one column command each.
   struct Burst {
     uint32_t request;
-    DramAddress a;
+    DramAddress a;  // of its next burst
     DramClock arrival;
+    uint32_t columns = 1;                         // bursts left, at consecutive columns
     bool needed_act = false, needed_pre = false;  // for it: an ACT, a PRE and an ACT
     bool opened = false;    // its request's ACT opened its row, which stays open for it
     uint32_t bypassed = 0;  // younger row hits served before it
