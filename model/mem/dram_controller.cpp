@@ -10,6 +10,16 @@ bool same_bank(const DramAddress& x, const DramAddress& y) {
   return x.rank == y.rank && x.group == y.group && x.bank == y.bank;
 }
 
+bool same_row(const DramAddress& x, const DramAddress& y) {
+  return x.channel == y.channel && same_bank(x, y) && x.row == y.row;
+}
+
+const BankedDramConfig& checked(const BankedDramConfig& config) {
+  std::string problem = banked_dram_config_problem(config);
+  if (!problem.empty()) throw std::invalid_argument(problem);
+  return config;
+}
+
 constexpr DramCommand column_command(bool write) {
   return write ? DramCommand::Wr : DramCommand::Rd;
 }
@@ -23,9 +33,7 @@ uint64_t mul_div_up(uint64_t a, uint64_t b, uint64_t c) {
 
 DramController::DramController(const BankedDramConfig& config, double core_ghz)
     : config_(config),
-      map_((banked_dram_config_problem(config).empty()
-                ? config
-                : throw std::invalid_argument(banked_dram_config_problem(config)))),
+      map_(checked(config)),
       core_khz_(uint64_t(core_ghz * 1e6 + 0.5)),
       dram_khz_(uint64_t(config.clock_mhz * 1e3 + 0.5)) {
   for (uint32_t c = 0; c < config.channels; ++c) {
@@ -71,8 +79,7 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
   Burst* last_entry = nullptr;
   for (uint64_t b = first; b <= last; ++b) {
     Burst entry{request, map_.decode(b * burst), arrival};
-    if (last_entry && same_bank(last_entry->a, entry.a) && last_entry->a.row == entry.a.row &&
-        last_entry->a.channel == entry.a.channel &&
+    if (last_entry && same_row(last_entry->a, entry.a) &&
         last_entry->a.column + last_entry->columns == entry.a.column) {
       last_entry->columns++;  // the next burst of the same row: one entry, one more RD
       continue;
@@ -87,10 +94,8 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
       ch.waiting.push_back(entry);
       last_entry = &ch.waiting.back();
     }
-    if (ch.next == kNever) {  // asleep: wake at the arrival, or at a refresh missed before it
-      ch.next = arrival;
-      if (config_.refresh != DramRefresh::None) ch.next = std::min(ch.next, ch.refresh_due);
-    }
+    // Asleep, it wakes at a refresh it missed or at the arrival, whichever comes first.
+    if (ch.next == kNever && config_.refresh != DramRefresh::None) ch.next = ch.refresh_due;
     ch.next = std::min(ch.next, arrival);
   }
 }
@@ -183,7 +188,7 @@ void DramController::set_refresh_due(Channel& ch) const {
 
 void DramController::mark_opened(Channel& ch, const Burst& b) {
   auto mark = [&](Burst& o) {
-    if (o.request == b.request && same_bank(o.a, b.a) && o.a.row == b.a.row) o.opened = true;
+    if (o.request == b.request && same_row(o.a, b.a)) o.opened = true;
   };
   for (Burst& o : ch.reads) mark(o);
   for (Burst& o : ch.writes) mark(o);
@@ -273,13 +278,32 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
   size_t end = queue.size();
   while (end > oldest && queue[end - 1].arrival > t) --end;
   if (end < queue.size()) wake = std::min(wake, queue[end].arrival);
-  // First ready: the oldest row hit whose column command can issue now.
+  // FR-FCFS in one pass, oldest first: the first row hit whose column command can issue now;
+  // failing that, the first other request whose next command (ACT, or PRE for another row) can.
+  // A row stays open while a request it was opened for waits, and, unless this request is past
+  // the cap, while any queued request hits it.
+  size_t first_come = end;
+  DramCommand first_command = DramCommand::Act;
   for (size_t i = oldest; i < end; ++i) {
-    const Burst& b = queue[i];
-    if (!eligible(b) || held_back(i) || dev.open_row(b.a) != b.a.row) continue;
-    DramClock e = dev.earliest(column_command(write), b.a, t);
+    Burst& b = queue[i];
+    if (!eligible(b) || held_back(i)) continue;
+    uint32_t row = dev.open_row(b.a);
+    DramCommand command = row == b.a.row                ? column_command(write)
+                          : row == DramChannel::kClosed ? DramCommand::Act
+                                                        : DramCommand::Pre;
+    if (command == DramCommand::Pre &&
+        (rows(ch, t)[bank_of(b.a)] & (capped && i == oldest ? kHeld : kWanted)))
+      continue;
+    bool hit = row == b.a.row;
+    if (!hit && first_come < end) continue;  // only the first of them can issue
+    DramClock e = dev.earliest(command, b.a, t);
     if (e > t || dry) {
       wake = std::min(wake, e);
+      continue;
+    }
+    if (!hit) {
+      first_come = i;
+      first_command = command;
       continue;
     }
     for (size_t j = oldest; j < i; ++j)
@@ -287,36 +311,18 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
     serve_column(ch, queue, i, write, t, done);
     return true;
   }
-  // First come: the oldest request's next command. A row stays open while a request it was
-  // opened for waits, and, unless this request is past the cap, while any queued request hits it.
-  for (size_t i = oldest; i < end; ++i) {
-    Burst& b = queue[i];
-    if (!eligible(b) || held_back(i)) continue;
-    uint32_t row = dev.open_row(b.a);
-    if (row == b.a.row) continue;  // a hit that cannot issue yet: wake is lowered above
-    DramCommand command = row == DramChannel::kClosed ? DramCommand::Act : DramCommand::Pre;
-    if (command == DramCommand::Pre) {
-      bool past_cap = capped && i == oldest;
-      bool wanted = rows(ch, t)[bank_of(b.a)] & (past_cap ? kHeld : kWanted);
-      if (wanted) continue;
-    }
-    DramClock e = dev.earliest(command, b.a, t);
-    if (e > t || dry) {
-      wake = std::min(wake, e);
-      continue;
-    }
-    dev.issue(command, b.a, t);
-    if (command == DramCommand::Act) {
-      b.needed_act = true;
-      mark_opened(ch, b);
-      stats_.commands.act++;
-    } else {
-      b.needed_pre = true;
-      stats_.commands.pre++;
-    }
-    return true;
+  if (first_come == end) return false;
+  Burst& b = queue[first_come];
+  dev.issue(first_command, b.a, t);
+  if (first_command == DramCommand::Act) {
+    b.needed_act = true;
+    mark_opened(ch, b);
+    stats_.commands.act++;
+  } else {
+    b.needed_pre = true;
+    stats_.commands.pre++;
   }
-  return false;
+  return true;
 }
 
 void DramController::serve_column(Channel& ch, std::vector<Burst>& queue, size_t index, bool write,
@@ -333,7 +339,7 @@ void DramController::serve_column(Channel& ch, std::vector<Burst>& queue, size_t
   bool close = false;
   if (config_.page_policy == DramPagePolicy::Closed) {
     // unless another queued request wants the row
-    auto wants = [&](const Burst& o) { return same_bank(o.a, b.a) && o.a.row == b.a.row; };
+    auto wants = [&](const Burst& o) { return same_row(o.a, b.a); };
     close = std::none_of(ch.reads.begin(), ch.reads.end(), wants) &&
             std::none_of(ch.writes.begin(), ch.writes.end(), wants) &&
             std::none_of(ch.waiting.begin(), ch.waiting.end(), wants);
