@@ -7,20 +7,12 @@ namespace rtsim {
 
 EventQueue::EventQueue() : slots_(kWheel) {}
 
-void EventQueue::append(Cycle cycle, uint32_t item) {
-  uint32_t slot = uint32_t(cycle % kWheel);
-  occupied_[slot / 64] |= 1ull << (slot % 64);
-  slots_[slot].items.push_back(item);
-  on_wheel_++;
+void EventQueue::throw_past() {
+  throw std::logic_error("EventQueue: event scheduled in the past");
 }
 
-void EventQueue::push(Cycle cycle, uint32_t item) {
-  if (cycle < cursor_) throw std::logic_error("EventQueue: event scheduled in the past");
-  size_++;
-  if (cycle < cursor_ + kWheel)
-    append(cycle, item);
-  else
-    far_.push({cycle, far_order_++, item});
+void EventQueue::push_far(Cycle cycle, uint32_t item) {
+  far_.push({cycle, far_order_++, item});
 }
 
 // Cycles from `from` to the next occupied wheel slot (kWheel if none), by the bitmap.
@@ -63,17 +55,11 @@ Cycle EventQueue::next_cycle() const {
   return cursor_ + gap(cursor_);
 }
 
-bool EventQueue::pop_before(Cycle until, Event& event) {
-  if (size_ == 0) return false;
-  // Events left at the cursor's cycle (several in one cycle) need no scan for the next one.
-  if (on_wheel_ == 0 || !occupied(cursor_)) {
-    Cycle next = next_cycle();
-    if (next >= until) return false;
-    cursor_ = next;  // turn the wheel to it, as settle() would, without a second scan
-    pull_far();
-  } else if (cursor_ >= until) {
-    return false;
-  }
+bool EventQueue::turn_before(Cycle until, Event& event) {
+  Cycle next = next_cycle();
+  if (next >= until) return false;
+  cursor_ = next;  // turn the wheel to it, as settle() would, without a second scan
+  pull_far();
   event = take_at_cursor();
   return true;
 }
@@ -81,20 +67,6 @@ bool EventQueue::pop_before(Cycle until, Event& event) {
 EventQueue::Event EventQueue::pop() {
   settle();
   return take_at_cursor();
-}
-
-EventQueue::Event EventQueue::take_at_cursor() {
-  uint32_t slot = uint32_t(cursor_ % kWheel);
-  Slot& s = slots_[slot];
-  Event e{cursor_, s.items[s.next++]};
-  if (s.next == s.items.size()) {
-    s.items.clear();  // keeps its capacity for the cycles to come
-    s.next = 0;
-    occupied_[slot / 64] &= ~(1ull << (slot % 64));
-  }
-  size_--;
-  on_wheel_--;
-  return e;
 }
 
 }  // namespace rtsim

@@ -25,7 +25,14 @@ class EventQueue {
   static constexpr uint32_t kWheel = 512;
 
   EventQueue();
-  void push(Cycle cycle, uint32_t item);
+  void push(Cycle cycle, uint32_t item) {
+    if (cycle < cursor_) throw_past();
+    size_++;
+    if (cycle < cursor_ + kWheel)
+      append(cycle, item);
+    else
+      push_far(cycle, item);
+  }
   bool empty() const { return size_ == 0; }
   size_t size() const { return size_; }
   // The earliest pending cycle (the queue must not be empty). Only pop() turns the wheel, so
@@ -33,7 +40,14 @@ class EventQueue {
   Cycle next_cycle() const;
   Event pop();
   // Pops the earliest event if it is before cycle `until` (then true); else changes nothing.
-  bool pop_before(Cycle until, Event& event);
+  bool pop_before(Cycle until, Event& event) {
+    if (size_ == 0) return false;
+    // Events left at the cursor's cycle (several in one cycle) need no scan for the next one.
+    if (on_wheel_ == 0 || !occupied(cursor_)) return turn_before(until, event);
+    if (cursor_ >= until) return false;
+    event = take_at_cursor();
+    return true;
+  }
 
  private:
   struct Slot {
@@ -48,10 +62,31 @@ class EventQueue {
       return cycle != o.cycle ? cycle > o.cycle : order > o.order;
     }
   };
-  void append(Cycle cycle, uint32_t item);
-  void settle();           // turns the wheel to the earliest pending cycle
-  void pull_far();         // moves far events within kWheel of the cursor onto the wheel
-  Event take_at_cursor();  // the first event at the cursor's cycle, which has one
+  void append(Cycle cycle, uint32_t item) {
+    uint32_t slot = uint32_t(cycle % kWheel);
+    occupied_[slot / 64] |= 1ull << (slot % 64);
+    slots_[slot].items.push_back(item);
+    on_wheel_++;
+  }
+  [[noreturn]] static void throw_past();
+  void push_far(Cycle cycle, uint32_t item);
+  // pop_before when the cursor's cycle has no event left: turns the wheel to the next one.
+  bool turn_before(Cycle until, Event& event);
+  void settle();            // turns the wheel to the earliest pending cycle
+  void pull_far();          // moves far events within kWheel of the cursor onto the wheel
+  Event take_at_cursor() {  // the first event at the cursor's cycle, which has one
+    uint32_t slot = uint32_t(cursor_ % kWheel);
+    Slot& s = slots_[slot];
+    Event e{cursor_, s.items[s.next++]};
+    if (s.next == s.items.size()) {
+      s.items.clear();  // keeps its capacity for the cycles to come
+      s.next = 0;
+      occupied_[slot / 64] &= ~(1ull << (slot % 64));
+    }
+    size_--;
+    on_wheel_--;
+    return e;
+  }
   uint32_t gap(Cycle from) const;
   bool occupied(Cycle cycle) const {
     uint32_t slot = uint32_t(cycle % kWheel);
