@@ -120,7 +120,7 @@ namespace rtsim {
 namespace {
 
 TEST(DramPresets, EveryPresetLoadsWithinItsStandardsRelations) {
-  for (std::string name : {"gddr6-16", "lpddr5-6400", "hbm3-6400", "ddr5-4800"}) {
+  for (std::string name : {"gddr6-14", "gddr6-16", "lpddr5-6400", "hbm3-6400", "ddr5-4800"}) {
     BankedDramConfig c = dram_preset_config(name);
     EXPECT_EQ(banked_dram_config_problem(c), "") << name;
     EXPECT_EQ(c.preset, name);
@@ -130,6 +130,7 @@ TEST(DramPresets, EveryPresetLoadsWithinItsStandardsRelations) {
   EXPECT_EQ(hbm.timing.tCL, 26u);
   EXPECT_NEAR(hbm.peak_gb_per_s(), 819.2, 0.1) << "a stack's bandwidth (JESD238)";
   EXPECT_NEAR(dram_preset_config("gddr6-16").peak_gb_per_s() / 8, 32.0, 1e-9) << "per x16 channel";
+  EXPECT_NEAR(dram_preset_config("gddr6-14").peak_gb_per_s() / 8, 28.0, 1e-9);
   EXPECT_NEAR(dram_preset_config("lpddr5-6400").peak_gb_per_s() / 4, 12.8, 1e-9);
   EXPECT_NEAR(dram_preset_config("ddr5-4800").peak_gb_per_s() / 2, 19.2, 1e-9);
 }
