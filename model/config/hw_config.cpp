@@ -1,6 +1,7 @@
 #include "model/config/hw_config.h"
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -329,6 +330,18 @@ BankedDramConfig dram_preset_config(const std::string& name) {
 const BankedDramConfig& default_banked_dram() {
   static const BankedDramConfig config = dram_preset_config("gddr6-16");
   return config;
+}
+
+DramConfig dram_for_analysis(const HwConfig& config) {
+  if (config.dram_model == DramModel::Simple) return config.dram;
+  const BankedDramConfig& b = config.banked_dram;
+  DramConfig d = config.dram;
+  d.bytes_per_cycle = b.peak_gb_per_s() / config.clock_ghz;
+  double closed_ns = double(b.timing.tRCD_RD + b.timing.tCL) * 1000.0 / b.clock_mhz;
+  d.latency = uint32_t(std::ceil(closed_ns * config.clock_ghz)) + b.controller_latency;
+  d.queue_depth = b.channels * b.read_queue;
+  d.burst_bytes = b.burst_bytes();
+  return d;
 }
 
 CacheConfig l1_as_built(const HwConfig& config) {

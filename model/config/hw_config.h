@@ -78,6 +78,11 @@ std::vector<HwConfigKey> hw_config_keys();
 std::string resolved_toml(const HwConfig& config);
 nlohmann::ordered_json resolved_json(const HwConfig& config);
 
+// The one-bus DRAM the faster fidelity levels (model/fidelity/) reason with: config.dram with
+// the simple model; with the banked one, its peak bandwidth and the unloaded latency of a read
+// to a closed bank (tRCD + tCL + a burst, and controller_latency).
+DramConfig dram_for_analysis(const HwConfig& config);
+
 // Why the combination is impossible (empty if fine), naming the section.
 std::string hw_config_problem(const HwConfig& config);
 

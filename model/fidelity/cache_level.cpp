@@ -181,7 +181,9 @@ FidelityResult run_cache_level(const HwConfig& config, const BvhImage& image,
                                const std::string& stream, AnalyticTime* bounds) {
   HostTimer timer;
   RayStreamReader reader(stream);
-  CacheWalk walk(config, image);
+  HwConfig analysed = config;  // a banked DRAM as its bandwidth and unloaded latency
+  analysed.dram = dram_for_analysis(config);
+  CacheWalk walk(analysed, image);
   walk.run(reader);
   FidelityResult result;
   result.level = FidelityLevel::CacheLevel;
@@ -192,7 +194,7 @@ FidelityResult run_cache_level(const HwConfig& config, const BvhImage& image,
   for (const CostTotals& t : walk.by_type()) latency += t.latency;
   AnalyticInputs inputs{walk.work(), result.rays, walk.dram_bytes(),
                         latency / double(std::max<uint64_t>(result.rays, 1))};
-  AnalyticTime time = analytic_time(config, inputs);
+  AnalyticTime time = analytic_time(analysed, inputs);
   result.cycles = Estimate::exact(time.cycles);
   result.time_model = "roofline, bound by " + time.bound;
   if (bounds) *bounds = time;

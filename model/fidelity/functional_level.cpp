@@ -1,6 +1,5 @@
 #include "model/fidelity/functional_level.h"
 
-
 #include "model/units/traversal.h"
 #include "traces/stream.h"
 

@@ -9,8 +9,8 @@
 
 namespace rtsim {
 
-FidelityResult run_level(const LevelRequest& request, const HwConfig& config,
-                         const BvhImage& image, const std::string& stream) {
+FidelityResult run_level(const LevelRequest& request, const HwConfig& config, const BvhImage& image,
+                         const std::string& stream) {
   switch (request.level) {
     case FidelityLevel::Functional: return run_functional_level(image, stream);
     case FidelityLevel::CacheLevel: return run_cache_level(config, image, stream);
@@ -24,8 +24,8 @@ FidelityResult run_level(const LevelRequest& request, const HwConfig& config,
 
 FidelityResult run_level_in_child(const LevelRequest& request, const HwConfig& config,
                                   const BvhImage& image, const std::string& stream) {
-  std::string text = run_in_child(
-      [&] { return run_level(request, config, image, stream).to_json().dump(); });
+  std::string text =
+      run_in_child([&] { return run_level(request, config, image, stream).to_json().dump(); });
   return FidelityResult::from_json(nlohmann::json::parse(text));
 }
 

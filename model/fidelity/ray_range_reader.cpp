@@ -40,9 +40,9 @@ RayRangeReader::RayRangeReader(const std::string& path) : path_(path) {
     offset += 4 + kRayRecordBytes * count + 4;
   }
   if (rays_ != header_.total_rays())
-    throw_input_error(path, "end marker", "the chunks hold " + std::to_string(rays_) +
-                                              " rays, the header counts " +
-                                              std::to_string(header_.total_rays()));
+    throw_input_error(path, "end marker",
+                      "the chunks hold " + std::to_string(rays_) + " rays, the header counts " +
+                          std::to_string(header_.total_rays()));
 }
 
 void RayRangeReader::read(uint64_t begin, uint64_t end, std::vector<Ray>& out) {

@@ -173,6 +173,7 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   c.l2.mshrs = scaled_count(config.l2.mshrs, m.machine_share);
   c.dram.bytes_per_cycle = config.dram.bytes_per_cycle * m.machine_share;
   c.dram.queue_depth = scaled_count(config.dram.queue_depth, m.machine_share);
+  c.banked_dram.channels = scaled_count(config.banked_dram.channels, m.machine_share);
   c.treelet_queues.max_rays = scaled_count(config.treelet_queues.max_rays, m.machine_share);
   return m;
 }

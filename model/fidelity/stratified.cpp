@@ -26,8 +26,8 @@ Estimate total_estimate(const std::vector<double>& t, double offset) {
   return {true, total, 1.96 * std::sqrt(collapsed_strata_variance(t))};
 }
 
-Estimate ratio_estimate(const std::vector<double>& y, const std::vector<double>& x,
-                        double y_offset, double x_offset) {
+Estimate ratio_estimate(const std::vector<double>& y, const std::vector<double>& x, double y_offset,
+                        double x_offset) {
   double sy = std::accumulate(y.begin(), y.end(), 0.0) + y_offset;
   double sx = std::accumulate(x.begin(), x.end(), 0.0) + x_offset;
   if (sx <= 0) return {};
