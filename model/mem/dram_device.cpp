@@ -1,6 +1,7 @@
 #include "model/mem/dram_device.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace rtsim {
 namespace {
@@ -53,12 +54,16 @@ DramClock DramChannel::earliest(DramCommand command, const DramAddress& a, DramC
   return at;
 }
 
-DramClock DramChannel::book_data(uint32_t rank, DramClock begin) {
+DramClock DramChannel::book_data(const DramAddress& a, DramClock begin) {
   DramClock burst = config_.burst_clocks();
   data_free_ = begin + burst;
-  data_rank_ = rank;
-  data_busy_ += burst;
+  data_rank_ = a.rank;
+  bank_busy_[bank_index(a)] += burst;
   return data_free_;
+}
+
+DramClock DramChannel::data_busy() const {
+  return std::accumulate(bank_busy_.begin(), bank_busy_.end(), DramClock(0));
 }
 
 DramClock DramChannel::issue(DramCommand command, const DramAddress& a, DramClock at,
@@ -92,14 +97,12 @@ DramClock DramChannel::issue(DramCommand command, const DramAddress& a, DramCloc
       at_least(rank.next[kRd], at + t.tCCD_S);
       at_least(rank.next[kWr], at + t.tRTW);
       at_least(b.next[kPre], at + t.tRTP);
-      data_end = book_data(a.rank, at + t.tCL);
-      bank_busy_[bank_index(a)] += config_.burst_clocks();
+      data_end = book_data(a, at + t.tCL);
       break;
     case DramCommand::Wr:
       at_least(group[kWr], at + t.tCCD_L);
       at_least(rank.next[kWr], at + t.tCCD_S);
-      data_end = book_data(a.rank, at + t.tCWL);
-      bank_busy_[bank_index(a)] += config_.burst_clocks();
+      data_end = book_data(a, at + t.tCWL);
       at_least(group[kRd], data_end + t.tWTR_L);
       at_least(rank.next[kRd], data_end + t.tWTR_S);
       at_least(b.next[kPre], data_end + t.tWR);

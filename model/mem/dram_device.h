@@ -38,7 +38,7 @@ class DramChannel {
   bool any_open(uint32_t rank) const;  // a row open in some bank of the rank
   // Data bus clocks per bank (index rank * banks + group * banks_per_group + bank).
   const std::vector<DramClock>& bank_busy() const { return bank_busy_; }
-  DramClock data_busy() const { return data_busy_; }
+  DramClock data_busy() const;  // their sum: the channel's data bus
 
  private:
   static constexpr size_t kCommands = size_t(DramCommand::kCount);
@@ -59,8 +59,8 @@ class DramChannel {
     return size_t(a.rank) * config_.bank_groups + a.group;
   }
   const Bank& bank(const DramAddress& a) const { return banks_[bank_index(a)]; }
-  // Books the data bus for a burst starting at `begin`; returns its end.
-  DramClock book_data(uint32_t rank, DramClock begin);
+  // Books the data bus for a burst of bank `a` starting at `begin`; returns its end.
+  DramClock book_data(const DramAddress& a, DramClock begin);
 
   BankedDramConfig config_;
   std::vector<Bank> banks_;
@@ -70,7 +70,6 @@ class DramChannel {
   DramClock data_free_ = 0;    // the data bus is free from
   uint32_t data_rank_ = 0;     // the rank that used it last
   std::vector<DramClock> bank_busy_;
-  DramClock data_busy_ = 0;
 };
 
 }  // namespace rtsim

@@ -14,6 +14,7 @@ class LatencyHistogram {
   void add(uint64_t cycles);
   uint64_t count() const { return count_; }
   uint64_t max() const { return max_; }
+  uint64_t sum() const { return sum_; }
   double mean() const { return count_ ? double(sum_) / double(count_) : 0.0; }
   // The smallest bin bound below which at least fraction p of the values lie (0 if empty).
   uint64_t percentile(double p) const;

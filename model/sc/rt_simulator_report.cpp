@@ -96,8 +96,7 @@ void report_banked_dram(StatsRegistry& r, const DramController& dram, double cor
   double busy = 0;
   for (uint32_t ch = 0; ch < dram.channels(); ++ch) busy += double(dram.channel(ch).data_busy());
   r.real("dram.busy_cycles", busy / dram.channels() * core_per_clock);
-  r.counter("dram.total_latency_cycles",
-            uint64_t(s.read_latency.mean() * double(s.read_latency.count()) + 0.5));
+  r.counter("dram.total_latency_cycles", s.read_latency.sum());
   r.ratio("dram.utilisation", "dram.busy_cycles", "cycles");
   r.ratio("dram.bytes_per_cycle", "dram.bytes", "cycles");
   r.ratio("dram.bytes_per_ray", "dram.bytes", "rays");

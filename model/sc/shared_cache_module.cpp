@@ -225,10 +225,9 @@ void SharedCacheModule::respond(uint32_t id, Cycle ready) {
   in[port]->nb_transport_bw(trans, phase, delay);
 }
 
-Cycle SharedCacheModule::send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes,
-                                    Cycle at) {
+void SharedCacheModule::prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command,
+                                      uint64_t addr, uint32_t bytes) {
   if (scratch_.size() < bytes) scratch_.resize(bytes);
-  tlm::tlm_generic_payload& t = below_trans_;
   t.set_command(command);
   t.set_address(addr);
   t.set_data_ptr(scratch_.data());
@@ -237,17 +236,22 @@ Cycle SharedCacheModule::send_below(tlm::tlm_command command, uint64_t addr, uin
   t.set_byte_enable_ptr(nullptr);
   t.set_dmi_allowed(false);
   t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-  sc_core::sc_time delay = clock_.time(at) - stamp_;
-  out->b_transport(t, delay);
-  if (t.is_response_error())
-    throw std::runtime_error("memory access at " + std::to_string(addr) +
-                             " failed: " + t.get_response_string());
-  return clock_.cycles(stamp_ + delay);
 }
 
-}  // namespace rtsim
+std::runtime_error SharedCacheModule::below_error(const tlm::tlm_generic_payload& t) {
+  return std::runtime_error("memory access at " + std::to_string(t.get_address()) +
+                            " failed: " + t.get_response_string());
+}
 
-namespace rtsim {
+Cycle SharedCacheModule::send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes,
+                                    Cycle at) {
+  tlm::tlm_generic_payload& t = below_trans_;
+  prepare_below(t, command, addr, bytes);
+  sc_core::sc_time delay = clock_.time(at) - stamp_;
+  out->b_transport(t, delay);
+  if (t.is_response_error()) throw below_error(t);
+  return clock_.cycles(stamp_ + delay);
+}
 
 void SharedCacheModule::send_timed(const Job& job, Cycle at) {
   if (below_free_.empty()) {
@@ -257,24 +261,14 @@ void SharedCacheModule::send_timed(const Job& job, Cycle at) {
   BelowTransaction& t = *below_free_.back();
   below_free_.pop_back();
   bool write = job.kind == JobKind::DramWrite;
-  if (scratch_.size() < job.bytes) scratch_.resize(job.bytes);
-  t.set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
-  t.set_address(job.addr);
-  t.set_data_ptr(scratch_.data());
-  t.set_data_length(job.bytes);
-  t.set_streaming_width(job.bytes);
-  t.set_byte_enable_ptr(nullptr);
-  t.set_dmi_allowed(false);
-  t.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  prepare_below(t, write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, job.addr, job.bytes);
   t.client = write ? nullptr : job.client;
   t.token = job.token;
   tlm::tlm_phase phase = tlm::BEGIN_REQ;
   sc_core::sc_time delay = clock_.time(at) - stamp_;
   tlm::tlm_sync_enum status = out->nb_transport_fw(t, phase, delay);
   if (status == tlm::TLM_COMPLETED || phase == tlm::BEGIN_RESP) {
-    if (t.is_response_error())
-      throw std::runtime_error("memory access at " + std::to_string(job.addr) +
-                               " failed: " + t.get_response_string());
+    if (t.is_response_error()) throw below_error(t);
     below_done(t, std::max(at, clock_.cycles(stamp_ + delay)));
   }
 }
@@ -285,10 +279,8 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_bw(tlm::tlm_generic_payload& 
   if (phase != tlm::BEGIN_RESP) return tlm::TLM_ACCEPTED;  // END_REQ
   auto& t = static_cast<BelowTransaction&>(trans);
   if (t.is_response_error()) {
-    std::string what = "memory access at " + std::to_string(t.get_address()) +
-                       " failed: " + t.get_response_string();
-    if (!on_error_) throw std::runtime_error(what);
-    on_error_(std::make_exception_ptr(std::runtime_error(what)));
+    if (!on_error_) throw below_error(t);
+    on_error_(std::make_exception_ptr(below_error(t)));
     return tlm::TLM_COMPLETED;
   }
   below_done(t, clock_.cycles(sc_core::sc_time_stamp() + delay));

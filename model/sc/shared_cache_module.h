@@ -35,6 +35,7 @@
 #include <exception>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,10 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   void run_job(uint32_t id, Cycle at);
   void respond(uint32_t id, Cycle ready);
   void add_job(const Job& job, Cycle at);
+  // A transaction below of `bytes` at `addr` (the data is a scratch buffer: timing only).
+  void prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command, uint64_t addr,
+                     uint32_t bytes);
+  static std::runtime_error below_error(const tlm::tlm_generic_payload& t);
   Cycle send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at);
   // The approximately-timed form: a read's data comes back through nb_transport_bw.
   void send_timed(const Job& job, Cycle at);
