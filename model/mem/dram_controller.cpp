@@ -85,15 +85,8 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
       continue;
     }
     Channel& ch = channels_[entry.a.channel];
-    std::vector<Burst>& queue = write ? ch.writes : ch.reads;
-    uint32_t capacity = write ? config_.write_queue : config_.read_queue;
-    if (ch.waiting.empty() && queue.size() < capacity) {
-      queue.push_back(entry);
-      last_entry = &queue.back();
-    } else {
-      ch.waiting.push_back(entry);
-      last_entry = &ch.waiting.back();
-    }
+    ch.waiting.push_back(entry);  // it joins its queue at its arrival (admit)
+    last_entry = &ch.waiting.back();
     // Asleep, it wakes at a refresh it missed or at the arrival, whichever comes first.
     if (ch.next == kNever && config_.refresh != DramRefresh::None) ch.next = ch.refresh_due;
     ch.next = std::min(ch.next, arrival);
@@ -104,17 +97,25 @@ Cycle DramController::next_event() const {
   DramClock next = kNever;
   for (const Channel& ch : channels_) next = std::min(next, ch.next);
   // A decision at clock d needs the requests up to the last core cycle before it.
-  return next == kNever ? kPending : Cycle((unsigned __int128)next * core_khz_ / dram_khz_);
+  return next == kNever ? kPending : core_of(next);
+}
+
+Cycle DramController::core_of(DramClock clock) const {
+  return Cycle((unsigned __int128)clock * core_khz_ / dram_khz_);
 }
 
 void DramController::advance(Cycle until, std::vector<DramReadDone>& done) {
   DramClock last = mul_div_up(until + 1, dram_khz_, core_khz_) - 1;
+  size_t first = done.size();
   for (Channel& ch : channels_)
     while (ch.next <= last) step(ch, ch.next, done);
+  if (done.size() - first > 1)
+    std::stable_sort(done.begin() + long(first), done.end(),
+                     [](const DramReadDone& x, const DramReadDone& y) { return x.decided < y.decided; });
 }
 
-void DramController::admit_waiting(Channel& ch) {
-  while (!ch.waiting.empty()) {
+void DramController::admit(Channel& ch, DramClock t) {
+  while (!ch.waiting.empty() && ch.waiting.front().arrival <= t) {
     const Burst& b = ch.waiting.front();
     bool write = requests_[b.request].write;
     std::vector<Burst>& queue = write ? ch.writes : ch.reads;
@@ -125,11 +126,15 @@ void DramController::admit_waiting(Channel& ch) {
 }
 
 void DramController::step(Channel& ch, DramClock t, std::vector<DramReadDone>& done) {
-  admit_waiting(ch);
+  admit(ch, t);
   DramClock wake = kNever;
   bool issued = decide(ch, t, wake, done, false);
+  if (issued) wake = kNever;  // the dry decision below finds it
+  if (!ch.waiting.empty()) {  // the next arrival, or room for one its full queue holds back
+    DramClock arrival = ch.waiting.front().arrival;
+    if (arrival > t || issued) wake = std::min(wake, std::max(arrival, t + 1));
+  }
   if (issued) {  // when the next command may issue, without a decision at each clock between
-    wake = ch.waiting.empty() ? kNever : t + 1;
     decide(ch, t + 1, wake, done, true);
     t++;
   }
@@ -147,14 +152,9 @@ bool DramController::decide(Channel& ch, DramClock t, DramClock& wake,
   if (refresh(ch, t, wake, dry)) return true;
   if (ch.draining && ch.writes.size() <= config_.write_low) ch.draining = false;
   if (!ch.draining && ch.writes.size() >= config_.write_high) ch.draining = true;
-  bool reads_ready = !ch.reads.empty() && ch.reads.front().arrival <= t;
-  bool write = ch.draining || !reads_ready;
-  if (schedule(ch, write ? ch.writes : ch.reads, write, t, wake, done, dry) ||
-      schedule(ch, write ? ch.reads : ch.writes, !write, t, wake, done, dry))
-    return true;
-  for (const std::vector<Burst>* q : {&ch.reads, &ch.writes})
-    if (!q->empty() && q->front().arrival > t) wake = std::min(wake, q->front().arrival);
-  return false;
+  bool write = ch.draining || ch.reads.empty();
+  return schedule(ch, write ? ch.writes : ch.reads, write, t, wake, done, dry) ||
+         schedule(ch, write ? ch.reads : ch.writes, !write, t, wake, done, dry);
 }
 
 bool DramController::blocked(const Channel& ch, const Burst& b, DramClock t) const {
@@ -170,13 +170,13 @@ bool DramController::activated_for(const Channel& ch, const Burst& b) const {
   return b.opened && ch.device.open_row(b.a) == b.a.row;
 }
 
-const std::vector<uint8_t>& DramController::rows(Channel& ch, DramClock t) const {
+const std::vector<uint8_t>& DramController::rows(Channel& ch) const {
   if (ch.rows_valid) return ch.rows;
   ch.rows_valid = true;
   ch.rows.assign(size_t(config_.ranks) * config_.banks(), 0);
   for (const std::vector<Burst>* q : {&ch.reads, &ch.writes})
     for (const Burst& b : *q)
-      if (b.arrival <= t && ch.device.open_row(b.a) == b.a.row)
+      if (ch.device.open_row(b.a) == b.a.row)
         ch.rows[bank_of(b.a)] |= b.opened ? kWanted | kHeld : kWanted;
   return ch.rows;
 }
@@ -217,7 +217,7 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
     for (uint32_t i = first; i < first + count; ++i) {
       DramAddress a{0, rank, i / config_.banks_per_group, i % config_.banks_per_group, 0, 0};
       if (ch.device.open_row(a) == DramChannel::kClosed) continue;
-      if (rows(ch, t)[bank_of(a)] & kHeld) {
+      if (rows(ch)[bank_of(a)] & kHeld) {
         held = true;
         continue;
       }
@@ -245,7 +245,7 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
     (per_bank ? stats_.commands.ref_pb : stats_.commands.ref)++;
     bool waited = false;
     for (const std::vector<Burst>* q : {&ch.reads, &ch.writes})
-      for (const Burst& b : *q) waited = waited || (b.arrival <= t && blocked(ch, b, t));
+      for (const Burst& b : *q) waited = waited || blocked(ch, b, t);
     if (waited)
       stats_.refresh_stall_clocks += per_bank ? config_.timing.tRFCpb : config_.timing.tRFC;
     r.due += per_bank ? config_.timing.tREFIpb : config_.timing.tREFI;
@@ -259,15 +259,9 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
 bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write, DramClock t,
                               DramClock& wake, std::vector<DramReadDone>& done, bool dry) {
   DramChannel& dev = ch.device;
-  auto eligible = [&](const Burst& b) { return b.arrival <= t && !blocked(ch, b, t); };
+  auto eligible = [&](const Burst& b) { return !blocked(ch, b, t); };
   size_t oldest = 0;
-  while (oldest < queue.size() && !eligible(queue[oldest])) {
-    if (queue[oldest].arrival > t) {
-      wake = std::min(wake, queue[oldest].arrival);
-      return false;  // the queue is in arrival order: none later has arrived either
-    }
-    ++oldest;
-  }
+  while (oldest < queue.size() && !eligible(queue[oldest])) ++oldest;
   if (oldest == queue.size()) return false;
   // Past the cap, the oldest request's bank is kept for it: no younger request to that bank
   // issues, except one whose row was opened for it (so every ACT is used).
@@ -276,8 +270,6 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
     return capped && i != oldest && same_bank(queue[i].a, queue[oldest].a) && !queue[i].opened;
   };
   size_t end = queue.size();
-  while (end > oldest && queue[end - 1].arrival > t) --end;
-  if (end < queue.size()) wake = std::min(wake, queue[end].arrival);
   // FR-FCFS in one pass, oldest first: the first row hit whose column command can issue now;
   // failing that, the first other request whose next command (ACT, or PRE for another row) can.
   // A row stays open while a request it was opened for waits, and, unless this request is past
@@ -292,7 +284,7 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
                           : row == DramChannel::kClosed ? DramCommand::Act
                                                         : DramCommand::Pre;
     if (command == DramCommand::Pre &&
-        (rows(ch, t)[bank_of(b.a)] & (capped && i == oldest ? kHeld : kWanted)))
+        (rows(ch)[bank_of(b.a)] & (capped && i == oldest ? kHeld : kWanted)))
       continue;
     bool hit = row == b.a.row;
     if (!hit && first_come < end) continue;  // only the first of them can issue
@@ -338,8 +330,8 @@ void DramController::serve_column(Channel& ch, std::vector<Burst>& queue, size_t
   }
   bool close = false;
   if (config_.page_policy == DramPagePolicy::Closed) {
-    // unless another queued request wants the row
-    auto wants = [&](const Burst& o) { return same_row(o.a, b.a); };
+    // unless another request that has arrived wants the row
+    auto wants = [&](const Burst& o) { return o.arrival <= t && same_row(o.a, b.a); };
     close = std::none_of(ch.reads.begin(), ch.reads.end(), wants) &&
             std::none_of(ch.writes.begin(), ch.writes.end(), wants) &&
             std::none_of(ch.waiting.begin(), ch.waiting.end(), wants);
@@ -364,7 +356,7 @@ void DramController::serve_column(Channel& ch, std::vector<Burst>& queue, size_t
   if (r.write) return;
   Cycle ready = to_core(r.data_end) + config_.controller_latency;
   stats_.read_latency.add(ready - r.arrival);
-  done.push_back({r.id, ready});
+  done.push_back({r.id, ready, core_of(t)});
 }
 
 }  // namespace rtsim

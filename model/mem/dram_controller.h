@@ -4,7 +4,9 @@
 // a low watermark, and refresh (all-bank or per-bank) that blocks its rank or bank. Commands go
 // to the channel's DramChannel (dram_device.h), one per clock.
 // Requests arrive in core cycles, in non-decreasing order; a request is split into bursts (a
-// 64-byte line is two GDDR6 bursts), each mapped on its own (dram_address.h). A read completes
+// 64-byte line is two GDDR6 bursts), each mapped on its own (dram_address.h), and joins its
+// channel's queue at its arrival clock: a request enqueued ahead of its cycle changes no decision
+// taken before it, so the controller may be advanced late. A read completes
 // when its last burst's data has crossed the bus, plus controller_latency. The controller works
 // only at clocks where a command may issue: advance() jumps from one to the next, and a channel
 // with empty queues sleeps; the refreshes it missed while asleep are issued at their own clocks
@@ -42,7 +44,8 @@ struct BankedDramStats {
 
 struct DramReadDone {
   uint64_t id;
-  Cycle ready;  // core cycle
+  Cycle ready;    // core cycle
+  Cycle decided;  // the core cycle of its last RD
 };
 
 class DramController {
@@ -50,14 +53,16 @@ class DramController {
   // Throws std::invalid_argument for an impossible config (banked_dram_config_problem).
   DramController(const BankedDramConfig& config, double core_ghz);
 
-  // A request of `bytes` at `addr` arriving at core cycle `at` (non-decreasing over calls).
+  // A request of `bytes` at `addr` arriving at core cycle `at` (non-decreasing over calls, and
+  // not before a decision already taken).
   // Reads report `id` through advance() when their data is ready; writes report nothing.
   void enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at);
   // The core cycle from which the next decision may be taken (all requests up to it must have
   // been enqueued); kPending when every channel sleeps.
   Cycle next_event() const;
   // Takes every decision that the requests enqueued so far allow up to core cycle `until`
-  // (inclusive: requests dated until are all in); completed reads are appended to done.
+  // (inclusive: requests dated until are all in); completed reads are appended to done in the
+  // order of the core cycles their last RD was decided in, then of their channels.
   void advance(Cycle until, std::vector<DramReadDone>& done);
 
   const BankedDramConfig& config() const { return config_; }
@@ -95,8 +100,8 @@ class DramController {
   struct Channel {
     explicit Channel(const BankedDramConfig& c) : device(c) {}
     DramChannel device;
-    std::vector<Burst> reads, writes;  // in arrival order
-    std::deque<Burst> waiting;         // arrived while their queue was full
+    std::vector<Burst> reads, writes;  // arrived, in arrival order
+    std::deque<Burst> waiting;         // not arrived yet, or arrived while their queue was full
     std::vector<RankRefresh> refresh;
     DramClock next = kNever;  // the clock of its next decision; kNever: asleep
     bool draining = false;
@@ -108,6 +113,7 @@ class DramController {
   };
 
   DramClock to_dram(Cycle core) const;  // the first DRAM clock at or after a core cycle
+  Cycle core_of(DramClock clock) const;  // the core cycle a DRAM clock falls in
   // One decision at clock t, and the clock of the next one (ch.next).
   void step(Channel& ch, DramClock t, std::vector<DramReadDone>& done);
   // Issues the command due at t, if one is (refresh first); else lowers wake to the clock the
@@ -116,9 +122,9 @@ class DramController {
   bool refresh(Channel& ch, DramClock t, DramClock& wake, bool dry);
   bool blocked(const Channel& ch, const Burst& b, DramClock t) const;  // by a due refresh
   bool activated_for(const Channel& ch, const Burst& b) const;  // its open row was opened for it
-  // Per bank of the channel, the open row's takers among the requests arrived by t: kWanted
-  // (some request hits it), kHeld (it was opened for a request that waits).
-  const std::vector<uint8_t>& rows(Channel& ch, DramClock t) const;
+  // Per bank of the channel, the open row's takers among its queued requests: kWanted (some
+  // request hits it), kHeld (it was opened for a request that waits).
+  const std::vector<uint8_t>& rows(Channel& ch) const;
   size_t bank_of(const DramAddress& a) const {
     return (size_t(a.rank) * config_.bank_groups + a.group) * config_.banks_per_group + a.bank;
   }
@@ -128,7 +134,7 @@ class DramController {
                 std::vector<DramReadDone>& done, bool dry);
   void serve_column(Channel& ch, std::vector<Burst>& queue, size_t index, bool write, DramClock t,
                     std::vector<DramReadDone>& done);
-  void admit_waiting(Channel& ch);
+  void admit(Channel& ch, DramClock t);  // moves what has arrived by t into its queue, in order
 
   void set_refresh_due(Channel& ch) const;
 

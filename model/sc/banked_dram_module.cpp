@@ -13,7 +13,11 @@ BankedDramModule::BankedDramModule(sc_core::sc_module_name name, const BankedDra
   dont_initialize();
 }
 
-uint32_t BankedDramModule::response_lead() const {
+void BankedDramModule::set_response_lead(uint32_t lead) {
+  slack_ = max_response_lead() - std::min(lead, max_response_lead());
+}
+
+uint32_t BankedDramModule::max_response_lead() const {
   // A read's data comes tCL and a burst after its RD, decided at most a cycle after its clock.
   const BankedDramConfig& c = controller_.config();
   Cycle data = controller_.to_core(c.timing.tCL + c.burst_clocks());
@@ -41,8 +45,8 @@ tlm::tlm_sync_enum BankedDramModule::nb_transport_fw(tlm::tlm_generic_payload& t
 
 void BankedDramModule::arm() {
   Cycle next = controller_.next_event();
-  if (next == kPending || next + 1 >= armed_) return;
-  armed_ = next + 1;
+  if (next == kPending || next + 1 + slack_ >= armed_) return;
+  armed_ = next + 1 + slack_;
   wake_.notify(clock_.delay_to(armed_));
 }
 

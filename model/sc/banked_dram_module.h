@@ -7,9 +7,13 @@
 // read is answered BEGIN_RESP through nb_transport_bw once its data's cycle is known, with a
 // delay saying when the data is there; the initiator completes it (TLM_COMPLETED or END_RESP).
 // Timing. One SC_METHOD, woken only when the controller has a decision to take. It takes the
-// decisions of cycle c at simulated time c + 1, when every request dated c has arrived (the L2
-// sends each request no later than its own cycle), so BEGIN_RESP comes at least
-// response_lead() cycles before the data: the L2 uses that to bound how far ahead it serves.
+// decisions of cycle c no earlier than simulated time c + 1, when every request dated c has
+// arrived (the L2 sends each request no later than its own cycle), and no later than c + 1 +
+// slack, so BEGIN_RESP comes at least response_lead() cycles before the data: the L2 uses that to
+// bound how far ahead it serves. The slack (0 unless set_response_lead lowers the lead) lets one
+// wake-up take the decisions of many cycles: the controller decides the same (a request joins its
+// queue at its arrival, however early it was enqueued), only the L2 may see two events of one
+// cycle in another order.
 #pragma once
 
 #include <vector>
@@ -33,7 +37,11 @@ class BankedDramModule : public sc_core::sc_module {
                    double core_ghz);
   const DramController& controller() const { return controller_; }
   // Cycles by which every BEGIN_RESP precedes its data, at the least.
-  uint32_t response_lead() const;
+  uint32_t response_lead() const { return max_response_lead() - slack_; }
+  // Before the simulation: BEGIN_RESP need precede the data by only `lead` cycles (at most
+  // max_response_lead()), so decisions may wait the difference.
+  void set_response_lead(uint32_t lead);
+  uint32_t max_response_lead() const;
   Cycle next_event() const { return controller_.next_event(); }
 
  private:
@@ -45,6 +53,7 @@ class BankedDramModule : public sc_core::sc_module {
   Clock clock_;
   DramController controller_;
   sc_core::sc_event wake_;
+  uint32_t slack_ = 0;      // cycles a decision may be taken late
   Cycle armed_ = kPending;  // the cycle wake_ is notified for
   std::vector<DramReadDone> done_;
 };

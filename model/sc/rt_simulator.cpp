@@ -45,6 +45,8 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     banked_dram_ =
         std::make_unique<BankedDramModule>("dram", config.banked_dram, clock_, config.clock_ghz);
     l2_->out.bind(banked_dram_->in);
+    // A lead beyond what the L2's window needs would only wake the DRAM more often.
+    banked_dram_->set_response_lead(l2_->lookahead());
     l2_->use_timed_memory(banked_dram_->response_lead());
   } else {
     dram_ = std::make_unique<DramModule>("dram", config.dram, clock_);

@@ -77,6 +77,8 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   // Before the simulation starts: the memory bound to `out` speaks the approximately-timed
   // protocol and sends BEGIN_RESP at least `lead` cycles before the data's cycle.
   void use_timed_memory(uint32_t lead);
+  // Cycles ahead of simulated time its initiators date their requests, at the least.
+  uint32_t lookahead() const { return lookahead_; }
   Cycle next_job() const { return events_.empty() ? kPending : events_.next_cycle(); }
 
  private:

@@ -212,5 +212,46 @@ TEST(DramBandwidth, SameInputsGiveTheSameSchedule) {
   EXPECT_EQ(schedule(), schedule());
 }
 
+// A request joins its queue at its arrival, so a controller advanced late, with requests enqueued
+// long before their cycles (as a DRAM module that wakes seldom sees them), takes the decisions
+// of one advanced before each request: reads, writes, both page policies, per-bank refresh.
+TEST(DramBandwidth, AdvancingLateChangesNoDecision) {
+  for (DramPagePolicy policy : {DramPagePolicy::Open, DramPagePolicy::Closed}) {
+    BankedDramConfig c = gddr6_like();
+    c.page_policy = policy;
+    DramController eager(c, 1.5), late(c, 1.5);
+    std::vector<DramReadDone> eager_done, late_done;
+    uint64_t state = 11;
+    Cycle at = 0;
+    for (uint32_t i = 0; i < 20000; ++i) {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      at += (i / 2000 % 2) * ((state >> 60) % 5);  // floods that fill the queues, and gaps
+      if ((state >> 40) % 500 == 0) at += 3000;
+      uint64_t addr = (state >> 22) & ~uint64_t(63);
+      bool write = (state >> 61) == 0;
+      if (at > 0) eager.advance(at - 1, eager_done);
+      eager.enqueue(i, addr, 64, write, at);
+      late.enqueue(i, addr, 64, write, at);
+      if (i % 1000 == 999) late.advance(at - 200, late_done);
+    }
+    for (DramController* dram : {&eager, &late}) {
+      std::vector<DramReadDone>& done = dram == &eager ? eager_done : late_done;
+      for (Cycle next = dram->next_event(); next != kPending; next = dram->next_event())
+        dram->advance(next, done);
+    }
+    ASSERT_EQ(eager_done.size(), late_done.size()) << int(policy);
+    for (size_t i = 0; i < eager_done.size(); ++i) {
+      EXPECT_EQ(eager_done[i].id, late_done[i].id) << i;
+      EXPECT_EQ(eager_done[i].ready, late_done[i].ready) << i;
+    }
+    const BankedDramStats &e = eager.stats(), &l = late.stats();
+    EXPECT_EQ(e.row_hits, l.row_hits);
+    EXPECT_EQ(e.row_conflicts, l.row_conflicts);
+    EXPECT_EQ(e.commands.ref_pb, l.commands.ref_pb);
+    EXPECT_EQ(e.refresh_stall_clocks, l.refresh_stall_clocks);
+    EXPECT_EQ(e.queued_burst_clocks, l.queued_burst_clocks);
+  }
+}
+
 }  // namespace
 }  // namespace rtsim
