@@ -110,8 +110,9 @@ void DramController::advance(Cycle until, std::vector<DramReadDone>& done) {
   for (Channel& ch : channels_)
     while (ch.next <= last) step(ch, ch.next, done);
   if (done.size() - first > 1)
-    std::stable_sort(done.begin() + long(first), done.end(),
-                     [](const DramReadDone& x, const DramReadDone& y) { return x.decided < y.decided; });
+    std::stable_sort(
+        done.begin() + long(first), done.end(),
+        [](const DramReadDone& x, const DramReadDone& y) { return x.decided < y.decided; });
 }
 
 void DramController::admit(Channel& ch, DramClock t) {

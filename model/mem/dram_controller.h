@@ -112,7 +112,7 @@ class DramController {
     DramClock refresh_due = 0;  // the earliest of refresh[].due
   };
 
-  DramClock to_dram(Cycle core) const;  // the first DRAM clock at or after a core cycle
+  DramClock to_dram(Cycle core) const;   // the first DRAM clock at or after a core cycle
   Cycle core_of(DramClock clock) const;  // the core cycle a DRAM clock falls in
   // One decision at clock t, and the clock of the next one (ch.next).
   void step(Channel& ch, DramClock t, std::vector<DramReadDone>& done);
