@@ -260,9 +260,8 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
 bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write, DramClock t,
                               DramClock& wake, std::vector<DramReadDone>& done, bool dry) {
   DramChannel& dev = ch.device;
-  auto eligible = [&](const Burst& b) { return !blocked(ch, b, t); };
   size_t oldest = 0;
-  while (oldest < queue.size() && !eligible(queue[oldest])) ++oldest;
+  while (oldest < queue.size() && blocked(ch, queue[oldest], t)) ++oldest;
   if (oldest == queue.size()) return false;
   // Past the cap, the oldest request's bank is kept for it: no younger request to that bank
   // issues, except one whose row was opened for it (so every ACT is used).
@@ -270,16 +269,16 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
   auto held_back = [&](size_t i) {
     return capped && i != oldest && same_bank(queue[i].a, queue[oldest].a) && !queue[i].opened;
   };
-  size_t end = queue.size();
   // FR-FCFS in one pass, oldest first: the first row hit whose column command can issue now;
   // failing that, the first other request whose next command (ACT, or PRE for another row) can.
   // A row stays open while a request it was opened for waits, and, unless this request is past
   // the cap, while any queued request hits it.
-  size_t first_come = end;
+  const size_t none = queue.size();
+  size_t first_come = none;
   DramCommand first_command = DramCommand::Act;
-  for (size_t i = oldest; i < end; ++i) {
+  for (size_t i = oldest; i < queue.size(); ++i) {
     Burst& b = queue[i];
-    if (!eligible(b) || held_back(i)) continue;
+    if (blocked(ch, b, t) || held_back(i)) continue;
     uint32_t row = dev.open_row(b.a);
     DramCommand command = row == b.a.row                ? column_command(write)
                           : row == DramChannel::kClosed ? DramCommand::Act
@@ -288,7 +287,7 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
         (rows(ch)[bank_of(b.a)] & (capped && i == oldest ? kHeld : kWanted)))
       continue;
     bool hit = row == b.a.row;
-    if (!hit && first_come < end) continue;  // only the first of them can issue
+    if (!hit && first_come != none) continue;  // only the first of them can issue
     DramClock e = dev.earliest(command, b.a, t);
     if (e > t || dry) {
       wake = std::min(wake, e);
@@ -304,7 +303,7 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
     serve_column(ch, queue, i, write, t, done);
     return true;
   }
-  if (first_come == end) return false;
+  if (first_come == none) return false;
   Burst& b = queue[first_come];
   dev.issue(first_command, b.a, t);
   if (first_command == DramCommand::Act) {
