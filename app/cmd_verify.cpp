@@ -55,6 +55,12 @@ void print_bvh(const BvhImage& image) {
       image.node_count, image.node_stride, image.triangle_count, image.triangle_stride,
       image.total_bytes() / 1048576.0, image.stats.max_depth, image.treelets.count,
       image.treelets.oversized);
+  const TreeletStats& t = image.treelets;
+  if (t.count > 0)
+    fmt::print(
+        "treelets   mean {:.0f} B of nodes + {:.0f} B of leaf triangles; budget {} B counting {}\n",
+        double(t.node_bytes) / t.count, double(t.triangle_bytes) / t.count, t.budget_bytes,
+        treelet_budget_name(image.config.treelet_budget));
 }
 
 void print_report(const VerifyReport& r) {
@@ -165,6 +171,12 @@ void add_bvh_options(CLI::App& cmd, BvhConfig& bvh) {
       ->default_str(node_layout_name(bvh.node_layout));
   cmd.add_option("--treelet-bytes", bvh.treelet_bytes, "Treelet budget in bytes, 512..65536")
       ->capture_default_str();
+  cmd.add_option_function<std::string>(
+         "--treelet-budget",
+         [&bvh](const std::string& v) { bvh.treelet_budget = *treelet_budget_from_name(v); },
+         "What the treelet budget counts")
+      ->check(CLI::IsMember({"nodes", "nodes_and_triangles"}))
+      ->default_str(treelet_budget_name(bvh.treelet_budget));
   cmd.add_option("--leaf-size", bvh.max_leaf_size, "Most triangles per leaf (cwbvh8: <= 3)")
       ->capture_default_str();
   cmd.add_option("--bins", bvh.sah_bins, "SAH bins per axis: 16 or 32")->capture_default_str();

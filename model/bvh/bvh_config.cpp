@@ -45,6 +45,10 @@ const char* node_layout_name(NodeLayout layout) {
   }
 }
 
+const char* treelet_budget_name(TreeletBudget budget) {
+  return budget == TreeletBudget::NodesAndTriangles ? "nodes_and_triangles" : "nodes";
+}
+
 std::optional<NodeFormat> node_format_from_name(const std::string& name) {
   if (name == "aabb32") return NodeFormat::Aabb32;
   if (name == "cwbvh8") return NodeFormat::Cwbvh8;
@@ -64,12 +68,20 @@ std::optional<NodeLayout> node_layout_from_name(const std::string& name) {
   return std::nullopt;
 }
 
+std::optional<TreeletBudget> treelet_budget_from_name(const std::string& name) {
+  if (name == "nodes") return TreeletBudget::Nodes;
+  if (name == "nodes_and_triangles") return TreeletBudget::NodesAndTriangles;
+  return std::nullopt;
+}
+
 std::string describe(const BvhConfig& c) {
   std::string text =
       fmt::format("bvh{} {} {} {}", c.width, node_format_name(c.node_format),
                   triangle_format_name(c.triangle_format), node_layout_name(c.node_layout));
   if (c.node_align) text += fmt::format(" aligned {} B", c.node_align);
-  return text + fmt::format(" (treelets {} B, leaves <= {}, {} bins)", c.treelet_bytes,
+  const char* counted =
+      c.treelet_budget == TreeletBudget::NodesAndTriangles ? " with triangles" : "";
+  return text + fmt::format(" (treelets {} B{}, leaves <= {}, {} bins)", c.treelet_bytes, counted,
                             c.max_leaf_size, c.sah_bins);
 }
 

@@ -25,6 +25,11 @@ enum class NodeLayout : uint8_t {
   Treelet,       // treelet by treelet, each treelet contiguous (Aila & Karras 2010)
 };
 
+enum class TreeletBudget : uint8_t {
+  Nodes,              // a treelet's budget counts its nodes
+  NodesAndTriangles,  // and the triangles of its nodes' leaves
+};
+
 struct BvhConfig {
   int sah_bins = 16;           // bins per axis of the binned SAH build: 16 or 32
   int max_leaf_size = 3;       // triangles: most triangles in one leaf (cwbvh8: <= 3)
@@ -34,6 +39,7 @@ struct BvhConfig {
   TriangleFormat triangle_format = TriangleFormat::Raw;
   NodeLayout node_layout = NodeLayout::Treelet;
   uint32_t treelet_bytes = 4096;  // bytes: budget of one treelet, 512..65536
+  TreeletBudget treelet_budget = TreeletBudget::Nodes;
   // bytes: 0 packs nodes; else a power of two (the L1 line or sector): nodes are padded so that
   // none spans more blocks of this size than it fills
   uint32_t node_align = 0;
@@ -47,9 +53,11 @@ std::string validate(const BvhConfig& config);
 const char* node_format_name(NodeFormat format);
 const char* triangle_format_name(TriangleFormat format);
 const char* node_layout_name(NodeLayout layout);
+const char* treelet_budget_name(TreeletBudget budget);  // nodes, nodes_and_triangles
 std::optional<NodeFormat> node_format_from_name(const std::string& name);
 std::optional<TriangleFormat> triangle_format_from_name(const std::string& name);
 std::optional<NodeLayout> node_layout_from_name(const std::string& name);
+std::optional<TreeletBudget> treelet_budget_from_name(const std::string& name);
 
 // "bvh8 aabb32 raw treelet(4096 B)": how a config is named in reports.
 std::string describe(const BvhConfig& config);

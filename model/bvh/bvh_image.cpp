@@ -60,7 +60,9 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
   // Build, collapse, cut into treelets, order.
   Bvh2 bvh2 = build_binned_sah(mesh, config);
   WideBvh wide = collapse_bvh(bvh2, config.width);
-  Treelets treelets = form_treelets(wide, image.node_stride, groups, config.treelet_bytes);
+  TreeletRule rule{image.node_stride, image.triangle_stride, groups, config.treelet_bytes,
+                   config.treelet_budget == TreeletBudget::NodesAndTriangles};
+  Treelets treelets = form_treelets(wide, rule);
   std::vector<uint32_t> order = order_nodes(wide, treelets, config.node_layout, groups);
   std::vector<uint32_t> position(wide.nodes.size());
   for (uint32_t i = 0; i < order.size(); ++i) position[order[i]] = i;

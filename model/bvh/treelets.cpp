@@ -27,28 +27,52 @@ std::vector<Unit> child_units(const WideBvh& bvh, const Unit& unit, bool sibling
   return units;
 }
 
-TreeletStats summarize(const std::vector<uint64_t>& sizes, uint32_t budget) {
+// Node and leaf-triangle bytes of a unit.
+struct UnitBytes {
+  uint64_t nodes = 0, triangles = 0;
+  uint64_t budgeted(const TreeletRule& rule) const {
+    return nodes + (rule.budget_triangles ? triangles : 0);
+  }
+};
+
+UnitBytes unit_bytes(const WideBvh& bvh, const Unit& unit, const TreeletRule& rule) {
+  UnitBytes b;
+  for (uint32_t n : unit) {
+    b.nodes += rule.node_bytes;
+    for (int c = 0; c < bvh.nodes[n].child_count; ++c)
+      b.triangles += uint64_t(bvh.nodes[n].child[c].count) * rule.triangle_bytes;
+  }
+  return b;
+}
+
+TreeletStats summarize(const std::vector<UnitBytes>& treelets, const TreeletRule& rule) {
   TreeletStats s;
-  s.count = static_cast<uint32_t>(sizes.size());
-  s.budget_bytes = budget;
-  s.min_bytes = sizes.empty() ? 0 : sizes[0];
-  for (uint64_t bytes : sizes) {
+  s.count = static_cast<uint32_t>(treelets.size());
+  s.budget_bytes = rule.budget_bytes;
+  s.budget_triangles = rule.budget_triangles;
+  s.min_bytes = ~uint64_t(0);
+  for (const UnitBytes& t : treelets) {
+    uint64_t bytes = t.budgeted(rule);
+    uint32_t budget = rule.budget_bytes;
     s.oversized += bytes > budget;
     s.min_bytes = std::min(s.min_bytes, bytes);
     s.max_bytes = std::max(s.max_bytes, bytes);
     s.total_bytes += bytes;
     uint64_t bin = bytes == 0 ? 0 : (bytes * 10 - 1) / budget;
     s.fill_histogram[std::min<uint64_t>(bin, 9)]++;
+    s.node_bytes += t.nodes;
+    s.triangle_bytes += t.triangles;
+    s.max_triangle_bytes = std::max(s.max_triangle_bytes, t.triangles);
   }
+  if (treelets.empty()) s.min_bytes = 0;
   return s;
 }
 
 }  // namespace
 
-Treelets form_treelets(WideBvh& bvh, uint32_t node_bytes, bool sibling_groups,
-                       uint32_t budget_bytes) {
+Treelets form_treelets(WideBvh& bvh, const TreeletRule& rule) {
   Treelets out;
-  std::vector<uint64_t> sizes;
+  std::vector<UnitBytes> sizes;
   std::deque<Unit> roots{{0}};
   // Candidates by surface area, ties broken by arrival so the result is deterministic.
   struct Candidate {
@@ -68,16 +92,17 @@ Treelets form_treelets(WideBvh& bvh, uint32_t node_bytes, bool sibling_groups,
   while (!roots.empty()) {
     uint32_t id = static_cast<uint32_t>(out.nodes.size());
     out.nodes.emplace_back();
-    uint64_t bytes = 0;
+    UnitBytes bytes;
     std::priority_queue<Candidate> frontier;
     frontier.push(candidate(std::move(roots.front())));
     roots.pop_front();
     while (!frontier.empty()) {
       Candidate best = frontier.top();
       frontier.pop();
-      uint64_t unit_bytes = uint64_t(node_bytes) * best.unit.size();
+      UnitBytes add = unit_bytes(bvh, best.unit, rule);
+      uint64_t budgeted = bytes.budgeted(rule);
       // A unit that no longer fits roots a later treelet.
-      if (bytes > 0 && bytes + unit_bytes > budget_bytes) {
+      if (budgeted > 0 && budgeted + add.budgeted(rule) > rule.budget_bytes) {
         roots.push_back(std::move(best.unit));
         continue;
       }
@@ -86,13 +111,14 @@ Treelets form_treelets(WideBvh& bvh, uint32_t node_bytes, bool sibling_groups,
         bvh.nodes[n].treelet = id;
         out.nodes[id].push_back(n);
       }
-      bytes += unit_bytes;
-      for (Unit& child : child_units(bvh, best.unit, sibling_groups))
+      bytes.nodes += add.nodes;
+      bytes.triangles += add.triangles;
+      for (Unit& child : child_units(bvh, best.unit, rule.sibling_groups))
         frontier.push(candidate(std::move(child)));
     }
     sizes.push_back(bytes);
   }
-  out.stats = summarize(sizes, budget_bytes);
+  out.stats = summarize(sizes, rule);
   return out;
 }
 

@@ -8,6 +8,9 @@
 // The unit added is one node, or, when the node format needs siblings stored contiguously
 // (cwbvh8), the group of inner children of one node; such a group larger than the budget makes
 // a treelet of its own and is counted as oversized.
+//
+// The budget counts a unit's node bytes, or its node bytes and the triangle bytes of its nodes'
+// leaves (the triangles a ray in the treelet tests, which follow their nodes in memory).
 #pragma once
 
 #include <array>
@@ -18,11 +21,23 @@
 
 namespace rtsim {
 
+struct TreeletRule {
+  uint32_t node_bytes = 64;       // bytes: one node's record (its stride)
+  uint32_t triangle_bytes = 40;   // bytes: one triangle's record
+  bool sibling_groups = false;    // the unit added is a node's group of inner children
+  uint32_t budget_bytes = 4096;   // bytes: most bytes of one treelet
+  bool budget_triangles = false;  // the budget counts leaf triangles too
+};
+
 struct TreeletStats {
   uint32_t count = 0;         // treelets
   uint32_t oversized = 0;     // treelets over the budget (one sibling group)
   uint32_t budget_bytes = 0;  // bytes: the budget they were formed with
+  bool budget_triangles = false;
+  // Budgeted bytes (nodes, or nodes and triangles) per treelet.
   uint64_t min_bytes = 0, max_bytes = 0, total_bytes = 0;
+  // Node and leaf-triangle bytes of all treelets, whatever the budget counts.
+  uint64_t node_bytes = 0, triangle_bytes = 0, max_triangle_bytes = 0;
   // Treelets by fill: bin i holds size in (i/10, (i+1)/10] of the budget; bin 9 also > budget.
   std::array<uint32_t, 10> fill_histogram{};
 };
@@ -33,7 +48,6 @@ struct Treelets {
 };
 
 // Forms the treelets and writes each node's treelet id into bvh.nodes[i].treelet.
-Treelets form_treelets(WideBvh& bvh, uint32_t node_bytes, bool sibling_groups,
-                       uint32_t budget_bytes);
+Treelets form_treelets(WideBvh& bvh, const TreeletRule& rule);
 
 }  // namespace rtsim

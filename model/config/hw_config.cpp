@@ -267,7 +267,12 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                {"depth-first", "breadth-first", "treelet"});
   c.bvh.node_layout = *node_layout_from_name(layout);
   c.bvh.treelet_bytes = uint32_t(bvh.integer("treelet_bytes", c.bvh.treelet_bytes, "bytes",
-                                             "node budget of one treelet", 512, 65536));
+                                             "budget of one treelet", 512, 65536));
+  std::string budget = bvh.text("treelet_budget", treelet_budget_name(c.bvh.treelet_budget),
+                                "what the treelet budget counts: its nodes, or its nodes and the "
+                                "triangles of their leaves",
+                                {"nodes", "nodes_and_triangles"});
+  c.bvh.treelet_budget = *treelet_budget_from_name(budget);
   c.bvh.node_align = uint32_t(bvh.integer(
       "node_align", c.bvh.node_align, "bytes",
       "0 packs nodes; a power of two (the L1 line or sector) pads them so that none spans more "

@@ -170,6 +170,21 @@ Json frames_json(const RtSimulator& sim) {
   return list;
 }
 
+// Bytes per treelet: budgeted (nodes, or nodes and leaf triangles), nodes and triangles.
+Json treelet_sizes_json(const TreeletStats& t) {
+  double n = std::max<double>(t.count, 1);
+  return {
+      {"budget_bytes", t.budget_bytes},
+      {"budget_counts", treelet_budget_name(t.budget_triangles ? TreeletBudget::NodesAndTriangles
+                                                               : TreeletBudget::Nodes)},
+      {"oversized", t.oversized},
+      {"mean_bytes", t.total_bytes / n},
+      {"max_bytes", t.max_bytes},
+      {"mean_node_bytes", t.node_bytes / n},
+      {"mean_triangle_bytes", t.triangle_bytes / n},
+      {"max_triangle_bytes", t.max_triangle_bytes}};
+}
+
 }  // namespace
 
 Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRunInfo& info) {
@@ -187,6 +202,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
                   {"nodes", info.image->node_count},
                   {"triangles", info.image->triangle_count},
                   {"treelets", info.image->treelets.count},
+                  {"treelet_sizes", treelet_sizes_json(info.image->treelets)},
                   {"bytes", info.image->total_bytes()},
                   {"node_padding_bytes", info.image->node_padding_bytes()}};
   doc["summary"] = {{"mode", traversal_mode_name(c.rt.mode)},

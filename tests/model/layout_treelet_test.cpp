@@ -1,6 +1,7 @@
 // Node layouts (depth-first, breadth-first, treelet), addresses, and treelet formation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <numeric>
 
 #include "model/bvh/node_format.h"
@@ -146,6 +147,44 @@ TEST(Treelets, RespectTheBudgetAndAreConnected) {
         entries[image.node_treelet[n]]++;
     for (int e : entries) ASSERT_EQ(e, 1);
   }
+}
+
+// Each treelet's nodes and their leaves' triangles, found by decoding the image.
+std::vector<uint64_t> bytes_with_triangles(const BvhImage& image) {
+  std::vector<uint64_t> bytes(image.treelets.count, 0);
+  for (uint32_t n = 0; n < image.node_count; ++n) {
+    NodeView view;
+    decode_node(image.config.node_format, image.config.width, image.node_bytes(n), view);
+    uint64_t& b = bytes[image.node_treelet[n]];
+    b += image.node_stride;
+    for (int slot = 0; slot < view.slots; ++slot)
+      if (view.valid & (1u << slot)) b += uint64_t(view.count[slot]) * image.triangle_stride;
+  }
+  return bytes;
+}
+
+TEST(Treelets, ABudgetOfNodesAndTrianglesCountsEachNodesLeafTriangles) {
+  TriangleMesh mesh = test::random_soup(20000, 0.2f, 6);
+  BvhConfig config = with_layout(test::config(NodeFormat::Aabb32, 4), NodeLayout::Treelet, 4096);
+  BvhImage nodes_only = build_bvh_image(mesh, config);
+  config.treelet_budget = TreeletBudget::NodesAndTriangles;
+  BvhImage image = build_bvh_image(mesh, config);
+  for (const BvhImage* i : {&nodes_only, &image}) {
+    EXPECT_EQ(i->treelets.node_bytes, i->nodes.size());
+    EXPECT_EQ(i->treelets.triangle_bytes, i->triangles.size()) << "each triangle in one leaf";
+  }
+  std::vector<uint64_t> loose = bytes_with_triangles(nodes_only);
+  EXPECT_GT(*std::max_element(loose.begin(), loose.end()), 4096u)
+      << "a budget of nodes only lets a treelet's triangles go over it";
+  std::vector<uint64_t> bytes = bytes_with_triangles(image);
+  for (uint64_t b : bytes) ASSERT_LE(b, 4096u);
+  const TreeletStats& s = image.treelets;
+  EXPECT_EQ(std::accumulate(bytes.begin(), bytes.end(), uint64_t(0)), s.total_bytes);
+  EXPECT_EQ(s.total_bytes, image.nodes.size() + image.triangles.size());
+  EXPECT_EQ(s.max_bytes, *std::max_element(bytes.begin(), bytes.end()));
+  EXPECT_EQ(s.oversized, 0u);
+  EXPECT_GT(s.count, nodes_only.treelets.count);
+  EXPECT_NE(describe(image.config).find("4096 B with triangles"), std::string::npos);
 }
 
 TEST(Treelets, FirstTreeletIsTheRootAndFillsTheBudget) {
