@@ -55,15 +55,18 @@ void print_summary(const nlohmann::ordered_json& doc) {
         100 * f["memory"]["l2_hit_rate"].get<double>(),
         100 * f["memory"]["l2_compulsory_share"].get<double>(),
         f["memory"]["dram_bytes_per_ray"].get<double>());
-  for (const auto& [type, t] : doc["ray_types"].items())
+  for (const auto& [type, t] : doc["ray_types"].items()) {
+    const auto& warps = t["warp_latency_cycles"];
+    std::string warp_p99 = warps["warps"] == 0 ? "-" : warps["p99"].dump();
     fmt::print(
-        "{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  nodes {:.1f}  tris {:.1f}  "
+        "{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  warp p99 {}  nodes {:.1f}  tris {:.1f}  "
         "L1 {:.1f}%  L2 {:.1f}%  DRAM {:.0f} B/ray\n",
         type, t["rays"].get<uint64_t>(), t["latency_cycles"]["p50"].get<uint64_t>(),
         t["latency_cycles"]["p95"].get<uint64_t>(), t["latency_cycles"]["p99"].get<uint64_t>(),
-        t["nodes_per_ray"].get<double>(), t["triangles_per_ray"].get<double>(),
+        warp_p99, t["nodes_per_ray"].get<double>(), t["triangles_per_ray"].get<double>(),
         100 * t["l1_hit_rate"].get<double>(), 100 * t["l2_hit_rate"].get<double>(),
         t["dram_bytes_per_ray"].get<double>());
+  }
   if (doc["bottleneck"]["text"].is_string())
     fmt::print("limit      {}\n", doc["bottleneck"]["text"].get<std::string>());
   const auto& m = doc["memory"];

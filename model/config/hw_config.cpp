@@ -169,6 +169,12 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.rt.mode = mode == "treelet"  ? TraversalMode::Treelet
               : mode == "packet" ? TraversalMode::Packet
                                  : TraversalMode::DepthFirst;
+  std::string refill =
+      rt.text("refill", refill_name(c.rt.refill),
+              "depth_first: new rays once a warp's rays all retired (warp) or into each slot as "
+              "its ray retires (slot); treelet mode refills slots, packet mode warps",
+              {"warp", "slot"});
+  c.rt.refill = refill == "slot" ? Refill::Slot : Refill::Warp;
   c.rt.warps = uint32_t(rt.integer("warps", c.rt.warps, "warps", "warp slots per unit", 1, 1024));
   c.rt.warp_size = uint32_t(rt.integer("warp_size", c.rt.warp_size, "rays",
                                        "rays per warp; ray slots = warps * warp_size", 1, 256));

@@ -29,7 +29,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
       clock_(clock_of(config)),
       traversal_(image),
       pool_(ray_slots(config)),
-      collector_(width, height) {
+      collector_(width, height, config.rt.warp_size) {
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);
   // The L1s send misses and writes after their tag check: the L2 may serve that far ahead.
@@ -85,6 +85,7 @@ void RtSimulator::run() {
   // sc_stop() ends a finished run; its "stopped by user" notice is not news.
   sc_core::sc_report_handler::set_actions(sc_core::SC_INFO, sc_core::SC_DO_NOTHING);
   sc_core::sc_start();
+  collector_.finish();
   if (control_.error) std::rethrow_exception(control_.error);
   if (!control_.stall_report.empty()) throw SimStallError(control_.stall_report);
   if (control_.units_running > 0)

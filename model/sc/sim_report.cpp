@@ -20,15 +20,21 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+Json latency_json(const LatencyHistogram& h) {
+  return {{"p50", h.percentile(0.50)},
+          {"p95", h.percentile(0.95)},
+          {"p99", h.percentile(0.99)},
+          {"mean", h.mean()},
+          {"max", h.max()}};
+}
+
 Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::string& p) {
+  Json warps = latency_json(s.warp_latency);
+  warps["warps"] = s.warp_latency.count();
   return {{"rays", s.rays},
           {"hits", s.hits},
-          {"latency_cycles",
-           {{"p50", s.latency.percentile(0.50)},
-            {"p95", s.latency.percentile(0.95)},
-            {"p99", s.latency.percentile(0.99)},
-            {"mean", s.latency.mean()},
-            {"max", s.latency.max()}}},
+          {"latency_cycles", latency_json(s.latency)},
+          {"warp_latency_cycles", warps},
           {"nodes_per_ray", r.value(p + ".nodes_per_ray")},
           {"triangles_per_ray", r.value(p + ".triangles_per_ray")},
           {"l1_hit_rate", r.value(p + ".l1_hit_rate")},

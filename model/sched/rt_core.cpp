@@ -17,6 +17,10 @@ const char* traversal_mode_name(TraversalMode mode) {
   return "?";
 }
 
+const char* refill_name(Refill refill) {
+  return refill == Refill::Slot ? "slot" : "warp";
+}
+
 const char* packet_policy_name(PacketPolicy policy) {
   return policy == PacketPolicy::NodeFirst ? "node_first" : "majority";
 }
@@ -25,6 +29,8 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
   if (c.warps == 0 || c.warps > 1024) return "warps must be 1..1024";
   if (c.warp_size == 0 || c.warp_size > 256) return "warp_size must be 1..256";
   if (c.issue_per_cycle == 0) return "issue_per_cycle must be at least 1";
+  if (c.mode == TraversalMode::Packet && c.refill == Refill::Slot)
+    return "refill = \"slot\" needs per-ray traversal: packet mode steps and refills whole warps";
   std::string problem = stack_config_problem(c.stack);
   if (!problem.empty()) return "stack: " + problem;
   problem = test_unit_config_problem(c.box);
@@ -135,8 +141,11 @@ void RtCore::check_kind(const StepResult& step, const Next& next) const {
 void RtCore::fill(Cycle now) {
   if (!supply_) throw std::logic_error("RtCore: no ray supply bound");
   waiting_ = false;
-  bool per_warp = config_.mode != TraversalMode::Treelet;
-  uint32_t threshold = std::min<uint32_t>(config_.warp_size, uint32_t(slots_.size()));
+  bool per_warp = refills_warps();
+  // Treelet mode takes a warp's worth of rays at a time; depth-first slot refill any number.
+  uint32_t threshold = config_.mode == TraversalMode::Treelet
+                           ? std::min<uint32_t>(config_.warp_size, uint32_t(slots_.size()))
+                           : 1;
   while (per_warp ? !free_warps_.empty() : free_slots_.size() >= threshold) {
     size_t max = per_warp ? config_.warp_size : free_slots_.size();
     batch_.clear();
@@ -189,7 +198,7 @@ void RtCore::release(uint32_t slot, Cycle now) {
   account(now);
   slots_[slot] = nullptr;
   in_flight_--;
-  if (config_.mode == TraversalMode::Treelet) {
+  if (!refills_warps()) {
     free_slots_.push_back(slot);
   } else {
     uint32_t warp = slot / config_.warp_size;

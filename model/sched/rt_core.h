@@ -36,7 +36,13 @@ enum class TraversalMode : uint8_t { DepthFirst, Treelet, Packet };
 // leaves only when no lane has a node (while-while); majority: the kind more lanes need.
 enum class PacketPolicy : uint8_t { NodeFirst, Majority };
 
+// Depth-first mode: when a unit takes new rays: once every ray of a warp has retired (warp: the
+// warp's slots are refilled together, as a shader core issues a warp), or into each slot as its
+// ray retires (slot). Treelet mode always refills slots, packet mode always warps.
+enum class Refill : uint8_t { Warp, Slot };
+
 const char* traversal_mode_name(TraversalMode mode);  // depth_first, treelet, packet
+const char* refill_name(Refill refill);               // warp, slot
 const char* packet_policy_name(PacketPolicy policy);  // node_first, majority
 
 struct RtCoreConfig {
@@ -50,6 +56,7 @@ struct RtCoreConfig {
   TestUnitConfig box{1, 8, 8};        // ray-box units: a BVH8 node per issue
   TestUnitConfig triangle{1, 1, 12};  // ray-triangle units
   PacketPolicy packet_policy = PacketPolicy::NodeFirst;
+  Refill refill = Refill::Warp;
 };
 
 std::string rt_core_config_problem(const RtCoreConfig& config);
@@ -125,6 +132,10 @@ class RtCore : private ReadClient {
   void release(uint32_t slot, Cycle now);
   void on_ray(uint32_t slot, Cycle now);
   void on_warp(uint32_t warp, Cycle now);
+  bool refills_warps() const {
+    return config_.mode == TraversalMode::Packet ||
+           (config_.mode == TraversalMode::DepthFirst && config_.refill == Refill::Warp);
+  }
   uint32_t item_of(uint32_t slot) const {
     return config_.mode == TraversalMode::Packet ? slot / config_.warp_size : slot;
   }
@@ -165,8 +176,8 @@ class RtCore : private ReadClient {
   std::vector<uint8_t> step_leaf_;
   uint32_t waiting_reads_ = 0;
   Cycle data_event_ = kPending;
-  std::vector<uint32_t> free_slots_;  // treelet mode
-  std::vector<uint32_t> free_warps_;  // per-ray and packet modes
+  std::vector<uint32_t> free_slots_;  // refilled by slot
+  std::vector<uint32_t> free_warps_;  // refilled by warp
   std::vector<RayContext*> batch_;
   std::vector<Next> lane_next_;  // packet mode scratch
   std::vector<uint64_t> warp_reads_;

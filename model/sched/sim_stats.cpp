@@ -4,7 +4,8 @@
 
 namespace rtsim {
 
-SimStatsCollector::SimStatsCollector(uint32_t width, uint32_t height) {
+SimStatsCollector::SimStatsCollector(uint32_t width, uint32_t height, uint32_t warp_size)
+    : warp_size_(std::max<uint32_t>(warp_size, 1)) {
   pixels_.width = width;
   pixels_.height = height;
   size_t n = size_t(width) * height;
@@ -32,6 +33,17 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
   s.postponed += cost.postponed;
   s.latency.add(latency);
   rays_++;
+  Warp& warp = warps_[ray.sequence / warp_size_];
+  warp.first_dispatch = std::min(warp.first_dispatch, ray.dispatched);
+  warp.last_retire = std::max(warp.last_retire, now);
+  if (ray.sequence < warp.first_sequence) {
+    warp.first_sequence = ray.sequence;
+    warp.type = uint8_t(size_t(ray.ray.type) % kRayTypeCount);
+  }
+  if (++warp.retired == warp_size_) {
+    close(warp);
+    warps_.erase(ray.sequence / warp_size_);
+  }
   if (pixels_.cycles.empty()) return;
   if (ray.ray.pixel >= pixels_.cycles.size()) {
     pixels_.outside++;
@@ -40,6 +52,16 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
   pixels_.cycles[ray.ray.pixel] += float(latency);
   pixels_.nodes[ray.ray.pixel] += float(ray.state.counters.trav_nodes);
   pixels_.dram_bytes[ray.ray.pixel] += float(cost.dram_bytes);
+}
+
+void SimStatsCollector::close(const Warp& warp) {
+  by_type_[warp.type].warp_latency.add(warp.last_retire -
+                                       std::min(warp.last_retire, warp.first_dispatch));
+}
+
+void SimStatsCollector::finish() {
+  for (const auto& entry : warps_) close(entry.second);
+  warps_.clear();
 }
 
 }  // namespace rtsim

@@ -1,12 +1,14 @@
 // What the simulation learns from every retired ray: per ray type, counters (rays, traversal
 // counters under Embree's names, cache accesses and hits charged to the ray, DRAM bytes, stack
-// traffic) and the latency distribution; per pixel, buffers of cycles, nodes visited and DRAM
-// bytes for heatmaps. Plain counters; ratios are derived when written (model/sc/sim_report.h).
-// Memory: fixed per ray type, plus three floats per pixel of the stream's image.
+// traffic), the latency distribution of its rays and of its warps; per pixel, buffers of cycles,
+// nodes visited and DRAM bytes for heatmaps. Plain counters; ratios are derived when written
+// (model/sc/sim_report.h). Memory: fixed per ray type, plus three floats per pixel of the stream's
+// image.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "model/mem/latency_histogram.h"
@@ -21,6 +23,10 @@ struct RayTypeStats {
   uint64_t dram_bytes = 0;
   uint64_t stack_spills = 0, stack_refills = 0, postponed = 0;
   LatencyHistogram latency;  // cycles from dispatch to retirement
+  // Warps: warp_size consecutive rays of the stream, as a shader core issues them; a warp waits
+  // from its first ray's dispatch to its last ray's retirement. A warp counts for the type of
+  // its first ray.
+  LatencyHistogram warp_latency;
 };
 
 struct PixelBuffers {
@@ -31,9 +37,11 @@ struct PixelBuffers {
 
 class SimStatsCollector : public RayRetireListener {
  public:
-  // width x height: the stream's pixel grid (0 x 0: no pixel buffers).
-  SimStatsCollector(uint32_t width, uint32_t height);
+  // width x height: the stream's pixel grid (0 x 0: no pixel buffers); warp_size: rays per warp.
+  SimStatsCollector(uint32_t width, uint32_t height, uint32_t warp_size);
   void retired(const RayContext& ray, Cycle now) override;
+  // The end of the stream: counts the warps left short (the last one, one cut by the warm-up).
+  void finish();
   // Rays before stream position `sequence` or of frames before `frame` are a warm-up: they
   // count for last_retire() only.
   void measure_from(uint64_t sequence, uint32_t frame) {
@@ -53,6 +61,16 @@ class SimStatsCollector : public RayRetireListener {
   Cycle last_retire_ = 0;
   uint64_t first_sequence_ = 0;
   uint32_t first_frame_ = 0;
+  // Warps with rays still in flight, by warp number (sequence / warp size).
+  struct Warp {
+    Cycle first_dispatch = ~Cycle(0), last_retire = 0;
+    uint64_t first_sequence = ~uint64_t(0);
+    uint32_t retired = 0;
+    uint8_t type = 0;
+  };
+  void close(const Warp& warp);
+  uint32_t warp_size_;
+  std::unordered_map<uint64_t, Warp> warps_;
 };
 
 // Several listeners in turn.

@@ -106,6 +106,44 @@ TEST(RtCoreTiming, IssueWidthDefersTheFourthRay) {
   EXPECT_EQ(core.stats().issue_stalls, 1u);
 }
 
+// A warp of two: a hit (root and leaf steps) and a miss (the root only), then a third ray.
+// Refilled by warp, the third ray comes once both have retired; by slot, once the miss has.
+TEST(RtCoreTiming, SlotRefillTakesARayWhenItsSlotFreesAndWarpRefillWhenTheWarpDoes) {
+  OneTriangle scene;
+  TraversalUnit unit(scene.image);
+  Ray miss = scene.ray;
+  miss.dir = {0, 0, -1};
+  std::vector<Ray> rays{scene.ray, miss, scene.ray};
+  for (Refill refill : {Refill::Warp, Refill::Slot}) {
+    test::MockRayMemory memory(50);
+    test::MockSupply supply(rays, unit, 3, {1.0, 10});
+    RtCoreConfig c = timing_config();
+    c.warp_size = 2;
+    c.refill = refill;
+    RtCore core(0, c, unit, memory);
+    core.set_supply(&supply.dispatcher);
+    test::drive({&core});
+    ASSERT_EQ(supply.listener.done.size(), 3u);
+    Cycle retired[3];
+    for (const test::Retired& r : supply.listener.done) retired[r.sequence] = r.cycle;
+    ASSERT_LT(retired[1], retired[0]) << "the miss finishes first";
+    // The third ray's root fetch: delivered when a slot frees, dispatch latency 10, setup 4.
+    ASSERT_EQ(memory.reads.size(), 5u) << "root, root, leaf; then root and leaf";
+    Cycle freed = refill == Refill::Slot ? retired[1] : retired[0];
+    EXPECT_EQ(memory.reads[3].at, freed + 14) << refill_name(refill);
+    EXPECT_EQ(memory.reads[3].addr, memory.reads[0].addr);
+  }
+}
+
+TEST(RtCoreTiming, PacketModeCannotRefillSlots) {
+  RtCoreConfig c = timing_config();
+  c.mode = TraversalMode::Packet;
+  c.refill = Refill::Slot;
+  EXPECT_NE(rt_core_config_problem(c).find("packet mode"), std::string::npos);
+  c.mode = TraversalMode::DepthFirst;
+  EXPECT_EQ(rt_core_config_problem(c), "");
+}
+
 TEST(RtCoreTiming, NoProgressWhileMemoryNeverAnswers) {
   OneTriangle scene;
   TraversalUnit unit(scene.image);
