@@ -130,6 +130,30 @@ void read_test_units(ConfigReader r, TestUnitConfig& c, const char* tests) {
 }
 
 // Every key of the config, read once, here. Defaults are the values already in `c`.
+void read_ray_buffer(ConfigReader& tq, RayBufferConfig& b) {
+  std::string place = tq.text("buffer", ray_buffer_place_name(b.place),
+                              "where queued rays' states wait: a dedicated SRAM, or memory "
+                              "through the L1, L2 and DRAM",
+                              {"sram", "memory"});
+  b.place = place == "memory" ? RayBufferPlace::Memory : RayBufferPlace::Sram;
+  b.bytes = tq.integer("buffer_bytes", b.bytes, "bytes",
+                       "SRAM ray buffer; 0: room for max_rays states (model/sched/ray_buffer.h)", 0,
+                       uint64_t(1) << 40);
+  std::string overflow =
+      tq.text("overflow", ray_buffer_overflow_name(b.overflow),
+              "full SRAM: hold fresh rays back and let postponed rays go on (hold), or put "
+              "further states in memory (spill)",
+              {"hold", "spill"});
+  b.overflow = overflow == "spill" ? RayBufferOverflow::Spill : RayBufferOverflow::Hold;
+  b.banks = uint32_t(
+      tq.integer("buffer_banks", b.banks, "banks", "SRAM banks, each with its own port", 1, 1024));
+  b.bytes_per_cycle =
+      uint32_t(tq.integer("buffer_bytes_per_cycle", b.bytes_per_cycle, "bytes/cycle",
+                          "each SRAM bank's port, reads and writes; 0: no limit", 0, kMaxU32));
+  b.latency = uint32_t(tq.integer("buffer_latency", b.latency, "cycles",
+                                  "SRAM access after the transfer", 0, 100000));
+}
+
 void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.name = r.text("name", c.name, "the preset's name, carried into results");
   c.description = r.text("description", c.description, "what the preset models");
@@ -219,6 +243,7 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.treelet_queues.dequeue_latency =
       uint32_t(tq.integer("dequeue_latency", c.treelet_queues.dequeue_latency, "cycles",
                           "from a unit taking a ray to its next step", 0, 100000));
+  read_ray_buffer(tq, c.treelet_queues.buffer);
 
   ConfigReader l2 = r.section("l2");
   read_cache(l2, c.l2, "the shared L2 (all slices)");

@@ -61,7 +61,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     uint32_t root = image.node_treelet.empty() ? 0 : image.node_treelet[0];
     uint32_t count = std::max<uint32_t>(image.treelets.count, root + 1);
     treelets_ = std::make_unique<TreeletQueueModule>("treelet_queues", config.treelet_queues, count,
-                                                     root, pool_);
+                                                     root, pool_, ray_state_bytes(config.rt.stack));
     treelets_->in.bind(dispatch_->out);
     supply = treelets_.get();
   }

@@ -146,6 +146,43 @@ void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPoo
 }
 
 // Counters every unit has, summed over the units as "rt.*" too.
+// The ray buffer's SRAM, and the states kept in memory: what the units read and wrote through
+// their L1s, and what those reads cost below.
+void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
+                       const std::vector<std::unique_ptr<RtUnitModule>>& units) {
+  const RayBufferStats& b = buffer.stats();
+  const std::string p = "treelet_queues.buffer";
+  r.gauge(p + ".state_bytes", buffer.state_bytes());
+  r.gauge(p + ".capacity", buffer.capacity());
+  r.gauge(p + ".max_in_sram", b.max_in_sram);
+  r.counter(p + ".sram_writes", b.sram_writes);
+  r.counter(p + ".sram_reads", b.sram_reads);
+  r.counter(p + ".sram_bytes", b.sram_bytes);
+  r.counter(p + ".port_cycles", b.port_cycles);
+  r.counter(p + ".port_waits", b.port_waits);
+  r.counter(p + ".held", b.held);
+  r.counter(p + ".refused", b.refused);
+  r.counter(p + ".memory_writes", b.memory_writes);
+  r.counter(p + ".memory_reads", b.memory_reads);
+  r.counter(p + ".memory_bytes", b.memory_bytes);
+  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
+  for (const auto& unit : units) {
+    const auto& state = unit->core().stats().state;
+    l1_accesses += state.l1_accesses;
+    l1_hits += state.l1_hits;
+    l2_accesses += state.l2_accesses;
+    l2_hits += state.l2_hits;
+    dram_bytes += state.dram_bytes;
+  }
+  r.counter(p + ".l1_accesses", l1_accesses);
+  r.counter(p + ".l1_misses", l1_accesses - l1_hits);
+  r.counter(p + ".l2_accesses", l2_accesses);
+  r.counter(p + ".l2_misses", l2_accesses - l2_hits);
+  r.counter(p + ".dram_read_bytes", dram_bytes);
+  r.ratio(p + ".sram_bytes_per_ray", p + ".sram_bytes", "rays");
+  r.ratio(p + ".memory_bytes_per_ray", p + ".memory_bytes", "rays");
+}
+
 struct UnitTotals {
   uint64_t steps = 0, warp_steps = 0, active_lanes = 0, node_warp_steps = 0, distinct_nodes = 0;
   uint64_t spill_entries = 0, refill_entries = 0, postponed = 0, refused = 0;
@@ -188,6 +225,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     r.ratio(p + ".mean_queued", p + ".queued_ray_cycles", "cycles");
     r.ratio(p + ".occupancy", p + ".queued_ray_cycles", "cycles",
             1.0 / config_.treelet_queues.max_rays);
+    report_ray_buffer(r, treelets_->scheduler().buffer(), units_);
   }
 
   UnitTotals total;

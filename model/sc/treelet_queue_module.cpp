@@ -30,7 +30,8 @@ class TreeletQueueModule::Notifying : public RaySupply {
 
 TreeletQueueModule::TreeletQueueModule(sc_core::sc_module_name name,
                                        const TreeletQueueConfig& config, uint32_t treelets,
-                                       uint32_t root_treelet, const RayContextPool& pool)
+                                       uint32_t root_treelet, const RayContextPool& pool,
+                                       uint32_t state_bytes)
     : sc_module(name),
       in("in"),
       out("out"),
@@ -38,13 +39,15 @@ TreeletQueueModule::TreeletQueueModule(sc_core::sc_module_name name,
       treelets_(treelets),
       root_(root_treelet),
       pool_(pool),
+      state_bytes_(state_bytes),
       work_("work") {
   out.bind(*this);
 }
 
 void TreeletQueueModule::end_of_elaboration() {
   upstream_ = &in->supply();
-  scheduler_ = std::make_unique<TreeletScheduler>(config_, treelets_, root_, *upstream_, pool_);
+  scheduler_ = std::make_unique<TreeletScheduler>(config_, treelets_, root_, *upstream_, pool_,
+                                                  state_bytes_);
   notifying_ = std::make_unique<Notifying>(*scheduler_, work_);
 }
 

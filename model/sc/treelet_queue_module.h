@@ -19,7 +19,8 @@ class TreeletQueueModule : public sc_core::sc_module, public RaySupplyIf {
   sc_core::sc_export<RaySupplyIf> out;
 
   TreeletQueueModule(sc_core::sc_module_name name, const TreeletQueueConfig& config,
-                     uint32_t treelets, uint32_t root_treelet, const RayContextPool& pool);
+                     uint32_t treelets, uint32_t root_treelet, const RayContextPool& pool,
+                     uint32_t state_bytes);
 
   RaySupply& supply() override;
   const sc_core::sc_event& work_event() const override { return work_; }
@@ -33,6 +34,7 @@ class TreeletQueueModule : public sc_core::sc_module, public RaySupplyIf {
   TreeletQueueConfig config_;
   uint32_t treelets_, root_;
   const RayContextPool& pool_;
+  uint32_t state_bytes_;
   RaySupply* upstream_ = nullptr;
   std::unique_ptr<TreeletScheduler> scheduler_;
   std::unique_ptr<RaySupply> notifying_;

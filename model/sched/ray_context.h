@@ -40,19 +40,20 @@ struct RayContext {
   uint32_t treelet = 0;
   std::vector<uint32_t> entry_treelet;
   RayContext* next_in_queue = nullptr;
+  bool state_in_memory = false;  // queued with its state in memory (model/sched/ray_buffer.h)
   RayCost cost;
 };
 
 // A fixed set of contexts handed out and given back, last freed first (deterministic).
 class RayContextPool {
-public:
+ public:
   explicit RayContextPool(uint32_t capacity);
   RayContext* acquire();  // nullptr when every context is in use
   void release(RayContext* context);
   uint32_t capacity() const { return uint32_t(contexts_.size()); }
   uint32_t in_use() const { return capacity() - uint32_t(free_.size()); }
 
-private:
+ private:
   std::vector<std::unique_ptr<RayContext>> contexts_;
   std::vector<RayContext*> free_;
 };

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "model/sched/ray_buffer.h"
 #include "model/units/ray_box.h"
 
 namespace rtsim {
@@ -49,6 +50,7 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
       memory_(memory),
       stack_(config.stack,
              config.mode == TraversalMode::Treelet ? 0 : config.warps * config.warp_size),
+      state_bytes_(ray_state_bytes(config.stack)),
       box_(config.box),
       triangle_(config.triangle) {
   std::string problem = rt_core_config_problem(config);

@@ -70,6 +70,12 @@ struct RtCoreStats {
   uint64_t late_data = 0, late_cycles = 0;  // data reported after the unit's local cycle
   uint64_t spill_writes = 0, spill_entries = 0, refill_reads = 0, refill_entries = 0;
   uint64_t postponed = 0, refused = 0;  // treelet mode: rays queued, rays a full queue refused
+  // Treelet mode, ray states kept in memory (ray_buffer.h): writes and reads through the L1,
+  // and what the reads cost below it.
+  uint64_t state_writes = 0, state_reads = 0;
+  struct {
+    uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
+  } state;
   uint64_t warp_steps = 0, active_lanes = 0;  // packet mode
   uint64_t node_warp_steps = 0, distinct_nodes = 0;
   double ray_slot_cycles = 0;  // integral of occupied ray slots over cycles
@@ -114,7 +120,7 @@ class RtCore : private ReadClient {
 
  private:
   // What a slot (packet mode: a warp) waits for, if anything.
-  enum class Wait : uint8_t { None, Refill, Data };
+  enum class Wait : uint8_t { None, Refill, State, Data };
   struct Next {
     bool live = false;  // an entry that step() will visit (not culled)
     bool leaf = false;
@@ -149,6 +155,9 @@ class RtCore : private ReadClient {
   // schedules the item's next step; returns its cycle.
   Cycle test_step(uint32_t item, Cycle data);
   bool refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready);
+  // A resumed ray whose state is in memory reads it before its next step.
+  void load_state(RayContext& ray, Cycle now);
+  bool state_read_ = false;  // read() is reading a ray's state
   uint32_t treelet_of(const RayContext& ray, const Next& next) const;
   void settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cycle now);
   void check_kind(const StepResult& step, const Next& next) const;
@@ -160,6 +169,7 @@ class RtCore : private ReadClient {
   MemoryTarget& memory_;
   RaySupply* supply_ = nullptr;
   HardwareStack stack_;
+  uint32_t state_bytes_;  // treelet mode: one ray's state in the ray buffer
   TestUnitPool box_, triangle_;
   EventQueue events_;
   std::vector<RayContext*> slots_;    // warps * warp_size

@@ -2,12 +2,14 @@
 // packet mode shares: reads with per-ray cost attribution, stack refills and spills.
 #include <algorithm>
 
+#include "model/sched/ray_buffer.h"
 #include "model/sched/rt_core.h"
 
 namespace rtsim {
 namespace {
 
-void add_charge(RayCost& cost, const ReadCharge& c) {
+template <typename Cost>
+void add_charge(Cost& cost, const ReadCharge& c) {
   cost.l1_accesses += c.l1_accesses;
   cost.l1_hits += c.l1_hits;
   cost.l2_accesses += c.l2_accesses;
@@ -21,6 +23,7 @@ Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now) {
   ReadCharge charge;
   Cycle ready = memory_.read(addr, bytes, now, this, ray.slot, charge);
   add_charge(ray.cost, charge);
+  if (state_read_) add_charge(stats_.state, charge);
   stats_.fetches++;
   stats_.fetch_bytes += bytes;
   if (ready == kPending) {
@@ -35,6 +38,7 @@ void RtCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   auto slot = uint32_t(token);
   add_charge(slots_[slot]->cost, charge);
   uint32_t item = item_of(slot);
+  if (wait_[item] == Wait::State) add_charge(stats_.state, charge);
   data_ready_[item] = std::max(data_ready_[item], ready);
   waiting_reads_--;
   if (--pending_reads_[item] > 0) return;
@@ -98,6 +102,18 @@ bool RtCore::refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready) 
   return true;
 }
 
+void RtCore::load_state(RayContext& ray, Cycle now) {
+  ray.state_in_memory = false;
+  stats_.state_reads++;
+  state_read_ = true;
+  Cycle data = read(ray, ray_state_address(ray.id, state_bytes_), state_bytes_, now);
+  state_read_ = false;
+  Cycle ready = data == kPending ? now : std::max(now, data);
+  if (wait_reads(ray.slot, Wait::State, ready)) return;
+  ray.ready = ready;
+  events_.push(ready, ray.slot);
+}
+
 uint32_t RtCore::treelet_of(const RayContext& ray, const Next& next) const {
   return ray.entry_treelet[next.depth];
 }
@@ -123,12 +139,20 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   RayContext& ray = *slots_[slot];
   // Traversal control starts issue_per_cycle steps a cycle.
   if (!claim_issue(slot, now)) return;
+  if (ray.state_in_memory) {
+    load_state(ray, now);
+    return;
+  }
   Next next = peek(ray.state);
   // Treelet mode: about to leave the treelet, the ray goes to the next treelet's queue.
   if (config_.mode == TraversalMode::Treelet && next.live) {
     uint32_t treelet = treelet_of(ray, next);
     if (treelet != ray.treelet) {
       if (supply_->postpone(ray, treelet, now)) {
+        if (ray.state_in_memory) {
+          memory_.write(ray_state_address(ray.id, state_bytes_), state_bytes_, now);
+          stats_.state_writes++;
+        }
         stats_.postponed++;
         progress_++;
         release(slot, now);

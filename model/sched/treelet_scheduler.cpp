@@ -11,18 +11,19 @@ std::string treelet_queue_config_problem(const TreeletQueueConfig& c) {
   if (c.max_rays == 0 || c.max_rays > (1u << 24)) return "max_rays must be 1..16777216";
   if (c.queue_capacity == 0) return "queue_capacity must be at least 1";
   if (c.min_batch == 0) return "min_batch must be at least 1";
-  return {};
+  return ray_buffer_config_problem(c.buffer);
 }
 
 TreeletScheduler::TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets,
                                    uint32_t root_treelet, RaySupply& upstream,
-                                   const RayContextPool& pool)
+                                   const RayContextPool& pool, uint32_t state_bytes)
     : config_(config),
       root_(root_treelet),
       upstream_(upstream),
       pool_(pool),
       policy_(make_treelet_policy(config.policy, treelets)),
-      queues_(treelets) {
+      queues_(treelets),
+      buffer_(config.buffer, state_bytes, config.max_rays) {
   std::string problem = treelet_queue_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
 }
@@ -45,7 +46,7 @@ size_t TreeletScheduler::take(uint32_t unit, Cycle now, size_t max, std::vector<
   std::optional<uint32_t> pick = policy_->pick();
   if (pick && queues_[*pick].length >= config_.min_batch) return serve(*pick, now, max, out);
   size_t room = pool_.capacity() - pool_.in_use();
-  if (room > 0 && !upstream_.exhausted()) {
+  if (room > 0 && !upstream_.exhausted() && buffer_.admits_fresh()) {
     size_t first = out.size();
     size_t given = upstream_.take(unit, now, std::min(max, room), out);
     for (size_t i = first; i < out.size(); ++i) out[i]->treelet = root_;
@@ -69,7 +70,7 @@ size_t TreeletScheduler::serve(uint32_t treelet, Cycle now, size_t max,
     q.head = ray->next_in_queue;
     ray->next_in_queue = nullptr;
     ray->treelet = treelet;
-    ray->ready = std::max(ray->ready, now + config_.dequeue_latency);
+    ray->ready = std::max({ray->ready, now + config_.dequeue_latency, buffer_.load(*ray, now)});
     out.push_back(ray);
     ++given;
   }
@@ -84,12 +85,12 @@ size_t TreeletScheduler::serve(uint32_t treelet, Cycle now, size_t max,
 
 bool TreeletScheduler::postpone(RayContext& ray, uint32_t treelet, Cycle now) {
   Queue& q = queues_[treelet];
-  if (q.length >= config_.queue_capacity) {
+  if (q.length >= config_.queue_capacity || !buffer_.accepts()) {
     stats_.refused++;
     return false;
   }
   account(now);
-  ray.ready = now + config_.enqueue_latency;
+  ray.ready = std::max(now + config_.enqueue_latency, buffer_.store(ray, now));
   ray.cost.postponed++;
   ray.next_in_queue = nullptr;
   if (q.tail)

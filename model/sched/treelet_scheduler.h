@@ -9,7 +9,8 @@
 // queue holds a ray. A full queue (queue_capacity) refuses a ray, which then keeps traversing
 // in its unit.
 // Timing: postponing takes enqueue_latency cycles and a taken ray steps dequeue_latency cycles
-// after the take; the queues are on-chip ray buffer SRAM with no memory traffic of their own.
+// after the take, or later when its state is still on its way from the ray buffer
+// (ray_buffer.h), which also decides whether a ray may be postponed or fresh rays taken.
 #pragma once
 
 #include <cstdint>
@@ -17,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "model/sched/ray_buffer.h"
 #include "model/sched/ray_supply.h"
 #include "model/sched/treelet_policy.h"
 
@@ -29,6 +31,7 @@ struct TreeletQueueConfig {
   uint32_t min_batch = 32;         // rays: a queue this long is served before fresh rays
   uint32_t enqueue_latency = 2;    // cycles: from postponing a ray to it being queued
   uint32_t dequeue_latency = 2;    // cycles: from a take to the ray's next step
+  RayBufferConfig buffer;
 };
 
 std::string treelet_queue_config_problem(const TreeletQueueConfig& config);
@@ -46,10 +49,11 @@ struct TreeletQueueStats {
 };
 
 class TreeletScheduler : public RaySupply {
-public:
-  // upstream: the dispatcher (fresh rays, retirement); pool: the contexts it hands out.
+ public:
+  // upstream: the dispatcher (fresh rays, retirement); pool: the contexts it hands out;
+  // state_bytes: one ray's state in the ray buffer.
   TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets, uint32_t root_treelet,
-                   RaySupply& upstream, const RayContextPool& pool);
+                   RaySupply& upstream, const RayContextPool& pool, uint32_t state_bytes);
 
   size_t take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) override;
   bool postpone(RayContext& ray, uint32_t treelet, Cycle now) override;
@@ -57,12 +61,13 @@ public:
   bool exhausted() const override;
 
   const TreeletQueueStats& stats() const { return stats_; }
+  const RayBuffer& buffer() const { return buffer_; }
   uint64_t queued() const { return queued_; }
   uint64_t executing() const { return executing_; }
   // Counts the queue occupancy up to `now` (call once more at the end of a run).
   void account(Cycle now);
 
-private:
+ private:
   struct Queue {
     RayContext* head = nullptr;
     RayContext* tail = nullptr;
@@ -77,6 +82,7 @@ private:
   const RayContextPool& pool_;
   std::unique_ptr<TreeletPolicy> policy_;
   std::vector<Queue> queues_;
+  RayBuffer buffer_;
   uint64_t queued_ = 0, executing_ = 0;
   TreeletQueueStats stats_;
 };

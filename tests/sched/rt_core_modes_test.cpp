@@ -5,6 +5,7 @@
 
 #include <cstring>
 
+#include "model/sched/ray_buffer.h"
 #include "model/sched/rt_core.h"
 #include "model/sched/treelet_scheduler.h"
 #include "tests/model/model_test_util.h"
@@ -30,7 +31,9 @@ struct Scene {
   std::vector<Ray> rays;
 };
 
-bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(float a, float b) {
+  return std::memcmp(&a, &b, sizeof a) == 0;
+}
 
 RtCoreConfig small_config(TraversalMode mode, PacketPolicy policy = PacketPolicy::NodeFirst) {
   RtCoreConfig c;
@@ -54,7 +57,7 @@ std::vector<test::Retired> run_mode(const Scene& scene, TraversalMode mode,
   tq.max_rays = 64;
   tq.min_batch = 4;
   TreeletScheduler queues(tq, scene.image.treelets.count, scene.image.node_treelet[0],
-                          supply.dispatcher, supply.pool);
+                          supply.dispatcher, supply.pool, 100);
   RaySupply* feed = treelets ? static_cast<RaySupply*>(&queues) : &supply.dispatcher;
   RtCore core0(0, small_config(mode, policy), unit, memory0);
   RtCore core1(1, small_config(mode, policy), unit, memory1);
@@ -108,9 +111,95 @@ TEST(RtCoreModes, PacketAnswersEqualTheFunctionalTraversal) {
 
 TEST(RtCoreModes, MajorityPacketAnswersEqualTheFunctionalTraversal) {
   Scene scene;
-  expect_functional(scene,
-                    run_mode(scene, TraversalMode::Packet, nullptr, PacketPolicy::Majority),
+  expect_functional(scene, run_mode(scene, TraversalMode::Packet, nullptr, PacketPolicy::Majority),
                     "packet majority");
+}
+
+// Treelet queues whose ray buffer is `buffer`, over two cores: what moved where.
+struct BufferRun {
+  std::vector<test::Retired> done;
+  RayBufferStats buffer;
+  TreeletQueueStats queues;
+  std::vector<test::MockRayMemory::Request> state_writes, state_reads;
+};
+
+BufferRun run_buffer(const Scene& scene, const RayBufferConfig& buffer) {
+  TraversalUnit unit(scene.image);
+  test::MockRayMemory memory0(40), memory1(60);
+  test::MockSupply supply(scene.rays, unit, 64);
+  TreeletQueueConfig tq;
+  tq.max_rays = 64;
+  tq.min_batch = 4;
+  tq.buffer = buffer;
+  RtCoreConfig config = small_config(TraversalMode::Treelet);
+  uint32_t state_bytes = ray_state_bytes(config.stack);
+  TreeletScheduler queues(tq, scene.image.treelets.count, scene.image.node_treelet[0],
+                          supply.dispatcher, supply.pool, state_bytes);
+  RtCore core0(0, config, unit, memory0), core1(1, config, unit, memory1);
+  core0.set_supply(&queues);
+  core1.set_supply(&queues);
+  test::drive({&core0, &core1});
+  BufferRun run{supply.listener.done, queues.buffer().stats(), queues.stats(), {}, {}};
+  uint64_t first = ray_state_address(0, state_bytes);
+  for (const auto* memory : {&memory0, &memory1}) {
+    for (const auto& w : memory->writes)
+      if (w.addr >= first) run.state_writes.push_back(w);
+    for (const auto& r : memory->reads)
+      if (r.addr >= first) run.state_reads.push_back(r);
+  }
+  return run;
+}
+
+TEST(RtCoreModes, RayStatesInMemoryAreWrittenOnPostponeAndReadOnResume) {
+  Scene scene;
+  RayBufferConfig buffer;
+  buffer.place = RayBufferPlace::Memory;
+  BufferRun run = run_buffer(scene, buffer);
+  expect_functional(scene, run.done, "treelet, states in memory");
+  uint32_t bytes = ray_state_bytes(small_config(TraversalMode::Treelet).stack);
+  ASSERT_GT(run.queues.postponed, 0u);
+  EXPECT_EQ(run.state_writes.size(), run.queues.postponed) << "one write per postponement";
+  EXPECT_EQ(run.state_reads.size(), run.queues.postponed) << "one read per resumption";
+  for (const auto& w : run.state_writes) ASSERT_EQ(w.bytes, bytes);
+  for (const auto& r : run.state_reads) ASSERT_EQ(r.bytes, bytes);
+  EXPECT_EQ(run.buffer.memory_bytes, 2 * run.queues.postponed * bytes);
+  EXPECT_EQ(run.buffer.sram_bytes, 0u);
+}
+
+TEST(RtCoreModes, AnSramTooSmallSpillsMoreStatesTheSmallerItIs) {
+  Scene scene;
+  uint32_t bytes = ray_state_bytes(small_config(TraversalMode::Treelet).stack);
+  uint64_t previous = 0;
+  for (uint64_t states : {64u, 24u, 8u, 2u}) {
+    RayBufferConfig buffer;
+    buffer.bytes = states * bytes;
+    buffer.overflow = RayBufferOverflow::Spill;
+    BufferRun run = run_buffer(scene, buffer);
+    expect_functional(scene, run.done, "treelet, spilling ray buffer");
+    EXPECT_LE(run.buffer.max_in_sram, states);
+    EXPECT_EQ(run.buffer.memory_writes, run.state_writes.size());
+    EXPECT_EQ(run.buffer.memory_reads, run.state_reads.size());
+    EXPECT_EQ(run.buffer.sram_writes + run.buffer.memory_writes, run.queues.postponed);
+    if (states == 64) {
+      EXPECT_EQ(run.buffer.memory_bytes, 0u) << "room for every ray: nothing spills";
+    } else {
+      EXPECT_GT(run.buffer.memory_bytes, previous) << states << " states of SRAM";
+    }
+    previous = run.buffer.memory_bytes;
+  }
+}
+
+TEST(RtCoreModes, AFullSramHoldsFreshRaysBackAndLetsPostponedRaysGoOn) {
+  Scene scene;
+  RayBufferConfig buffer;
+  buffer.bytes = 4 * ray_state_bytes(small_config(TraversalMode::Treelet).stack);
+  BufferRun run = run_buffer(scene, buffer);
+  expect_functional(scene, run.done, "treelet, holding ray buffer");
+  EXPECT_EQ(run.buffer.max_in_sram, 4u);
+  EXPECT_GT(run.buffer.held, 0u);
+  EXPECT_GT(run.buffer.refused, 0u);
+  EXPECT_EQ(run.buffer.memory_bytes, 0u) << "hold never spills";
+  EXPECT_TRUE(run.state_writes.empty());
 }
 
 TEST(RtCoreModes, EverySpilledEntryIsReadBack) {
