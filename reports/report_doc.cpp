@@ -238,7 +238,8 @@ Json time_json(const FidelityResult& f, const Json& stats, const Json& collected
 
 double on_chip_bytes(const HwConfig& c) {
   double stacks = double(c.rt.warps) * c.rt.warp_size * c.rt.stack.entries * c.rt.stack.entry_bytes;
-  return double(c.rt_units) * (double(c.l1.size_bytes) + stacks) + double(c.l2.size_bytes);
+  double units = double(c.rt_units) * (double(c.l1.size_bytes) + stacks);
+  return units + double(c.l2.size_bytes) + ray_buffer_sram_bytes(c);
 }
 
 Json build_report(const ReportInputs& in) {

@@ -386,6 +386,14 @@ CacheConfig l1_as_built(const HwConfig& config) {
   return l1;
 }
 
+uint64_t ray_buffer_sram_bytes(const HwConfig& c) {
+  const RayBufferConfig& b = c.treelet_queues.buffer;
+  if (c.rt.mode != TraversalMode::Treelet || b.place == RayBufferPlace::Memory) return 0;
+  uint32_t state = ray_state_bytes(c.rt.stack);
+  uint64_t states = b.bytes == 0 ? c.treelet_queues.max_rays : b.bytes / state;
+  return states * state;
+}
+
 std::string hw_config_problem(const HwConfig& c) {
   auto section = [](const char* name, const std::string& problem) {
     return problem.empty() ? problem : fmt::format("[{}] {}", name, problem);

@@ -50,7 +50,7 @@ struct HwConfig {
   TreeletQueueConfig treelet_queues;
   CacheConfig l2{2 * 1024 * 1024, 64, 16, "lru", 80, 128};
   L2Layout l2_layout;  // slices and the crossbar in front of them
-  DramModel dram_model = DramModel::Simple;
+  DramModel dram_model = DramModel::Banked;
   DramConfig dram{64.0, 200, 128};                       // the simple model
   BankedDramConfig banked_dram = default_banked_dram();  // the banked model
   BvhConfig bvh;
@@ -59,6 +59,8 @@ struct HwConfig {
 // The L1 as the simulator builds it: write-back, but write-through in treelet mode, where a
 // ray moves between units and so its spilled stack entries must reach the shared L2.
 CacheConfig l1_as_built(const HwConfig& config);
+// Bytes of the treelet queues' SRAM ray buffer (0 outside treelet mode and in memory).
+uint64_t ray_buffer_sram_bytes(const HwConfig& config);
 
 // One key's documentation (for SIM.md and --list-keys).
 struct HwConfigKey {

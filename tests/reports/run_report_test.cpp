@@ -14,6 +14,7 @@
 #include <fstream>
 #include <thread>
 
+#include "reports/report_doc.h"
 #include "tests/reports/report_test_util.h"
 
 namespace rtsim {
@@ -34,6 +35,19 @@ class RunReport : public ::testing::Test {
   std::string dir_, html_, markdown_;
   Json report_;
 };
+
+TEST(OnChipBytes, TreeletModeCountsTheRayBuffersSram) {
+  HwConfig c;
+  double depth_first = reports::on_chip_bytes(c);
+  c.rt.mode = TraversalMode::Treelet;
+  c.treelet_queues.buffer.bytes = 65536;
+  uint32_t state = ray_state_bytes(c.rt.stack);
+  EXPECT_EQ(reports::on_chip_bytes(c), depth_first + 65536 / state * state);
+  c.treelet_queues.buffer.bytes = 0;
+  EXPECT_EQ(reports::on_chip_bytes(c), depth_first + double(c.treelet_queues.max_rays) * state);
+  c.treelet_queues.buffer.place = RayBufferPlace::Memory;
+  EXPECT_EQ(reports::on_chip_bytes(c), depth_first);
+}
 
 TEST_F(RunReport, HasEverySection) {
   for (const char* id : {"summary", "workload", "hardware", "timing", "bandwidth", "coherence",

@@ -57,13 +57,14 @@ TEST(SimCli, WritesResultsAndVerifiesEveryRay) {
 }
 
 TEST(SimCli, ASlowMemoryIsNotAStall) {
-  // A DRAM of one byte per thousand cycles: rays wait for data far longer than
-  // sim.stall_cycles, but the data's cycle is known, so the run finishes.
+  // One DRAM channel clocked at 1 MHz (a DRAM clock is 900 core cycles): rays wait for data far
+  // longer than sim.stall_cycles, but the data's cycle is known, so the run finishes.
   std::string stream = write_stream(), out = temp("slow");
-  test::RunResult r = test::run_rtsim(
-      "sim " + stream +
-      " --config " RTSIM_SOURCE_DIR "/configs/mobile.toml --set dram.bytes_per_cycle=0.001 -q -o " +
-      out);
+  test::RunResult r =
+      test::run_rtsim("sim " + stream +
+                      " --config " RTSIM_SOURCE_DIR
+                      "/configs/mobile.toml --set dram.clock_mhz=1 --set dram.channels=1 -q -o " +
+                      out);
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
   EXPECT_GT(doc["summary"]["cycles"].get<double>(), 1e6) << "far beyond the stall cycles";
@@ -76,8 +77,8 @@ TEST(SimCli, ASlowMemoryIsNotAStall) {
 TEST(SimCli, NamesWhatLimitsTheDesign) {
   std::string stream = write_stream(), out = temp("limit");
   std::string mobile = " --config " RTSIM_SOURCE_DIR "/configs/mobile.toml";
-  test::RunResult r =
-      test::run_rtsim("sim " + stream + mobile + " --set dram.bytes_per_cycle=0.5 -o " + out);
+  test::RunResult r = test::run_rtsim("sim " + stream + mobile +
+                                      " --set dram.channels=1 --set dram.clock_mhz=50 -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
   EXPECT_EQ(doc["bottleneck"]["resource"], "DRAM data bus");
@@ -88,7 +89,7 @@ TEST(SimCli, NamesWhatLimitsTheDesign) {
   r = test::run_rtsim("sim " + stream + mobile +
                       " --set rt.l1.bytes_per_cycle=0 --set l2.bytes_per_cycle=0 --set "
                       "xbar.bytes_per_cycle=4096 --set rt.box.count=16 --set rt.triangle.count=16 "
-                      "--set rt.issue_per_cycle=16 --set dram.bytes_per_cycle=4096 -q -o " +
+                      "--set rt.issue_per_cycle=16 --set dram.channels=64 -q -o " +
                       out);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
