@@ -408,6 +408,14 @@ std::string hw_config_problem(const HwConfig& c) {
   if (p.empty()) p = section("dispatch", dispatch_config_problem(c.dispatch));
   if (p.empty()) p = section("treelet_queues", treelet_queue_config_problem(c.treelet_queues));
   if (p.empty()) p = section("bvh", validate(c.bvh));
+  const RayBufferConfig& buffer = c.treelet_queues.buffer;
+  uint32_t state = ray_state_bytes(c.rt.stack);
+  if (p.empty() && buffer.place == RayBufferPlace::Sram && buffer.bytes != 0 &&
+      buffer.bytes < state)
+    p = fmt::format(
+        "[treelet_queues] buffer_bytes ({}) holds no ray state: one takes {} bytes (32 + 16 + 8 "
+        "+ rt.stack.entries * rt.stack.entry_bytes)",
+        buffer.bytes, state);
   uint64_t slots = uint64_t(c.rt_units) * c.rt.warps * c.rt.warp_size;
   if (p.empty() && c.rt.mode == TraversalMode::Treelet && c.treelet_queues.max_rays < slots)
     p = fmt::format(

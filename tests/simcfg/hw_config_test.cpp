@@ -111,6 +111,9 @@ TEST(HwConfig, SetOverridesAnyKey) {
 TEST(HwConfig, ImpossibleCombinationIsAnError) {
   std::string e = error_of("", {"rt.mode=treelet", "treelet_queues.max_rays=16"});
   EXPECT_NE(e.find("max_rays (16) must be at least the ray slots"), std::string::npos) << e;
+  e = error_of("", {"rt.mode=treelet", "treelet_queues.buffer_bytes=100"});
+  EXPECT_NE(e.find("buffer_bytes (100) holds no ray state: one takes 120 bytes"), std::string::npos)
+      << e;
 }
 
 }  // namespace
