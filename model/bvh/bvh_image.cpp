@@ -61,7 +61,7 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
   Bvh2 bvh2 = build_binned_sah(mesh, config);
   WideBvh wide = collapse_bvh(bvh2, config.width);
   TreeletRule rule{image.node_stride, image.triangle_stride, groups, config.treelet_bytes,
-                   config.treelet_budget == TreeletBudget::NodesAndTriangles};
+                   config.treelet_budget};
   Treelets treelets = form_treelets(wide, rule);
   std::vector<uint32_t> order = order_nodes(wide, treelets, config.node_layout, groups);
   std::vector<uint32_t> position(wide.nodes.size());

@@ -31,7 +31,12 @@ std::vector<Unit> child_units(const WideBvh& bvh, const Unit& unit, bool sibling
 struct UnitBytes {
   uint64_t nodes = 0, triangles = 0;
   uint64_t budgeted(const TreeletRule& rule) const {
-    return nodes + (rule.budget_triangles ? triangles : 0);
+    return nodes + (rule.budget == TreeletBudget::NodesAndTriangles ? triangles : 0);
+  }
+  UnitBytes& operator+=(const UnitBytes& o) {
+    nodes += o.nodes;
+    triangles += o.triangles;
+    return *this;
   }
 };
 
@@ -49,22 +54,20 @@ TreeletStats summarize(const std::vector<UnitBytes>& treelets, const TreeletRule
   TreeletStats s;
   s.count = static_cast<uint32_t>(treelets.size());
   s.budget_bytes = rule.budget_bytes;
-  s.budget_triangles = rule.budget_triangles;
-  s.min_bytes = ~uint64_t(0);
+  s.budget = rule.budget;
+  s.min_bytes = treelets.empty() ? 0 : treelets[0].budgeted(rule);
   for (const UnitBytes& t : treelets) {
     uint64_t bytes = t.budgeted(rule);
-    uint32_t budget = rule.budget_bytes;
-    s.oversized += bytes > budget;
+    s.oversized += bytes > rule.budget_bytes;
     s.min_bytes = std::min(s.min_bytes, bytes);
     s.max_bytes = std::max(s.max_bytes, bytes);
     s.total_bytes += bytes;
-    uint64_t bin = bytes == 0 ? 0 : (bytes * 10 - 1) / budget;
+    uint64_t bin = bytes == 0 ? 0 : (bytes * 10 - 1) / rule.budget_bytes;
     s.fill_histogram[std::min<uint64_t>(bin, 9)]++;
     s.node_bytes += t.nodes;
     s.triangle_bytes += t.triangles;
     s.max_triangle_bytes = std::max(s.max_triangle_bytes, t.triangles);
   }
-  if (treelets.empty()) s.min_bytes = 0;
   return s;
 }
 
@@ -111,8 +114,7 @@ Treelets form_treelets(WideBvh& bvh, const TreeletRule& rule) {
         bvh.nodes[n].treelet = id;
         out.nodes[id].push_back(n);
       }
-      bytes.nodes += add.nodes;
-      bytes.triangles += add.triangles;
+      bytes += add;
       for (Unit& child : child_units(bvh, best.unit, rule.sibling_groups))
         frontier.push(candidate(std::move(child)));
     }

@@ -17,23 +17,24 @@
 #include <cstdint>
 #include <vector>
 
+#include "model/bvh/bvh_config.h"
 #include "model/bvh/wide_bvh.h"
 
 namespace rtsim {
 
 struct TreeletRule {
-  uint32_t node_bytes = 64;       // bytes: one node's record (its stride)
-  uint32_t triangle_bytes = 40;   // bytes: one triangle's record
-  bool sibling_groups = false;    // the unit added is a node's group of inner children
-  uint32_t budget_bytes = 4096;   // bytes: most bytes of one treelet
-  bool budget_triangles = false;  // the budget counts leaf triangles too
+  uint32_t node_bytes = 64;      // bytes: one node's record (its stride)
+  uint32_t triangle_bytes = 40;  // bytes: one triangle's record
+  bool sibling_groups = false;   // the unit added is a node's group of inner children
+  uint32_t budget_bytes = 4096;  // bytes: most bytes of one treelet
+  TreeletBudget budget = TreeletBudget::Nodes;  // what the budget counts
 };
 
 struct TreeletStats {
   uint32_t count = 0;         // treelets
   uint32_t oversized = 0;     // treelets over the budget (one sibling group)
   uint32_t budget_bytes = 0;  // bytes: the budget they were formed with
-  bool budget_triangles = false;
+  TreeletBudget budget = TreeletBudget::Nodes;
   // Budgeted bytes (nodes, or nodes and triangles) per treelet.
   uint64_t min_bytes = 0, max_bytes = 0, total_bytes = 0;
   // Node and leaf-triangle bytes of all treelets, whatever the budget counts.

@@ -129,7 +129,6 @@ void read_test_units(ConfigReader r, TestUnitConfig& c, const char* tests) {
       uint32_t(r.integer("latency", c.latency, "cycles", "from an issue to its results", 1, 10000));
 }
 
-// Every key of the config, read once, here. Defaults are the values already in `c`.
 void read_ray_buffer(ConfigReader& tq, RayBufferConfig& b) {
   std::string place = tq.text("buffer", ray_buffer_place_name(b.place),
                               "where queued rays' states wait: a dedicated SRAM, or memory "
@@ -154,6 +153,7 @@ void read_ray_buffer(ConfigReader& tq, RayBufferConfig& b) {
                                   "SRAM access after the transfer", 0, 100000));
 }
 
+// Every key of the config, read once, here. Defaults are the values already in `c`.
 void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.name = r.text("name", c.name, "the preset's name, carried into results");
   c.description = r.text("description", c.description, "what the preset models");
@@ -390,8 +390,7 @@ uint64_t ray_buffer_sram_bytes(const HwConfig& c) {
   const RayBufferConfig& b = c.treelet_queues.buffer;
   if (c.rt.mode != TraversalMode::Treelet || b.place == RayBufferPlace::Memory) return 0;
   uint32_t state = ray_state_bytes(c.rt.stack);
-  uint64_t states = b.bytes == 0 ? c.treelet_queues.max_rays : b.bytes / state;
-  return states * state;
+  return ray_buffer_capacity(b, state, c.treelet_queues.max_rays) * state;
 }
 
 std::string hw_config_problem(const HwConfig& c) {
@@ -410,8 +409,8 @@ std::string hw_config_problem(const HwConfig& c) {
   if (p.empty()) p = section("bvh", validate(c.bvh));
   const RayBufferConfig& buffer = c.treelet_queues.buffer;
   uint32_t state = ray_state_bytes(c.rt.stack);
-  if (p.empty() && buffer.place == RayBufferPlace::Sram && buffer.bytes != 0 &&
-      buffer.bytes < state)
+  if (p.empty() && buffer.place == RayBufferPlace::Sram &&
+      ray_buffer_capacity(buffer, state, c.treelet_queues.max_rays) == 0)
     p = fmt::format(
         "[treelet_queues] buffer_bytes ({}) holds no ray state: one takes {} bytes (32 + 16 + 8 "
         "+ rt.stack.entries * rt.stack.entry_bytes)",

@@ -145,7 +145,6 @@ void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPoo
   r.ratio(p + ".utilisation", p + ".issues", "cycles", 1.0 / pool.config().count);
 }
 
-// Counters every unit has, summed over the units as "rt.*" too.
 // The ray buffer's SRAM, and the states kept in memory: what the units read and wrote through
 // their L1s, and what those reads cost below.
 void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
@@ -183,6 +182,7 @@ void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
   r.ratio(p + ".memory_bytes_per_ray", p + ".memory_bytes", "rays");
 }
 
+// Counters every unit has, summed over the units as "rt.*" too.
 struct UnitTotals {
   uint64_t steps = 0, warp_steps = 0, active_lanes = 0, node_warp_steps = 0, distinct_nodes = 0;
   uint64_t spill_entries = 0, refill_entries = 0, postponed = 0, refused = 0;

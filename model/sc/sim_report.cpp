@@ -179,16 +179,14 @@ Json frames_json(const RtSimulator& sim) {
 // Bytes per treelet: budgeted (nodes, or nodes and leaf triangles), nodes and triangles.
 Json treelet_sizes_json(const TreeletStats& t) {
   double n = std::max<double>(t.count, 1);
-  return {
-      {"budget_bytes", t.budget_bytes},
-      {"budget_counts", treelet_budget_name(t.budget_triangles ? TreeletBudget::NodesAndTriangles
-                                                               : TreeletBudget::Nodes)},
-      {"oversized", t.oversized},
-      {"mean_bytes", t.total_bytes / n},
-      {"max_bytes", t.max_bytes},
-      {"mean_node_bytes", t.node_bytes / n},
-      {"mean_triangle_bytes", t.triangle_bytes / n},
-      {"max_triangle_bytes", t.max_triangle_bytes}};
+  return {{"budget_bytes", t.budget_bytes},
+          {"budget_counts", treelet_budget_name(t.budget)},
+          {"oversized", t.oversized},
+          {"mean_bytes", t.total_bytes / n},
+          {"max_bytes", t.max_bytes},
+          {"mean_node_bytes", t.node_bytes / n},
+          {"mean_triangle_bytes", t.triangle_bytes / n},
+          {"max_triangle_bytes", t.max_triangle_bytes}};
 }
 
 }  // namespace

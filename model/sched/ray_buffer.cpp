@@ -29,12 +29,15 @@ uint64_t ray_state_address(uint32_t context, uint32_t state_bytes) {
   return kStateBase + context * stride;
 }
 
+uint64_t ray_buffer_capacity(const RayBufferConfig& c, uint32_t state_bytes, uint32_t max_rays) {
+  if (c.place == RayBufferPlace::Memory) return 0;
+  return c.bytes == 0 ? max_rays : c.bytes / state_bytes;
+}
+
 RayBuffer::RayBuffer(const RayBufferConfig& config, uint32_t state_bytes, uint32_t max_rays)
     : config_(config),
       state_bytes_(state_bytes),
-      capacity_(config.place == RayBufferPlace::Memory ? 0
-                : config.bytes == 0                    ? max_rays
-                                                       : config.bytes / state_bytes),
+      capacity_(ray_buffer_capacity(config, state_bytes, max_rays)),
       ports_(config.bytes_per_cycle == 0 ? 0 : config.banks, TestUnitPool({1, 1, 1})) {
   std::string problem = ray_buffer_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);

@@ -37,6 +37,9 @@ const char* ray_buffer_place_name(RayBufferPlace place);           // sram, memo
 const char* ray_buffer_overflow_name(RayBufferOverflow overflow);  // hold, spill
 std::string ray_buffer_config_problem(const RayBufferConfig& config);
 
+// States the SRAM holds: none in memory; max_rays for bytes = 0; else bytes / state_bytes.
+uint64_t ray_buffer_capacity(const RayBufferConfig& config, uint32_t state_bytes,
+                             uint32_t max_rays);
 // Bytes of one ray's state: the ray (origin, direction, t range: 32), its hit record (t,
 // triangle, barycentrics: 16), its id and treelet (8), and its on-chip stack entries.
 uint32_t ray_state_bytes(const StackConfig& stack);

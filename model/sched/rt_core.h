@@ -70,9 +70,7 @@ struct RtCoreStats {
   uint64_t late_data = 0, late_cycles = 0;  // data reported after the unit's local cycle
   uint64_t spill_writes = 0, spill_entries = 0, refill_reads = 0, refill_entries = 0;
   uint64_t postponed = 0, refused = 0;  // treelet mode: rays queued, rays a full queue refused
-  // Treelet mode, ray states kept in memory (ray_buffer.h): writes and reads through the L1,
-  // and what the reads cost below it.
-  uint64_t state_writes = 0, state_reads = 0;
+  // Treelet mode: what reading ray states kept in memory (ray_buffer.h) cost at each level.
   struct {
     uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
   } state;

@@ -104,7 +104,6 @@ bool RtCore::refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready) 
 
 void RtCore::load_state(RayContext& ray, Cycle now) {
   ray.state_in_memory = false;
-  stats_.state_reads++;
   state_read_ = true;
   Cycle data = read(ray, ray_state_address(ray.id, state_bytes_), state_bytes_, now);
   state_read_ = false;
@@ -149,10 +148,8 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
     uint32_t treelet = treelet_of(ray, next);
     if (treelet != ray.treelet) {
       if (supply_->postpone(ray, treelet, now)) {
-        if (ray.state_in_memory) {
+        if (ray.state_in_memory)
           memory_.write(ray_state_address(ray.id, state_bytes_), state_bytes_, now);
-          stats_.state_writes++;
-        }
         stats_.postponed++;
         progress_++;
         release(slot, now);

@@ -17,7 +17,8 @@ SimStatsCollector::SimStatsCollector(uint32_t width, uint32_t height, uint32_t w
 void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
   last_retire_ = std::max(last_retire_, now);
   if (ray.sequence < first_sequence_ || ray.ray.frame < first_frame_) return;
-  RayTypeStats& s = by_type_[size_t(ray.ray.type) % kRayTypeCount];
+  auto type = uint8_t(size_t(ray.ray.type) % kRayTypeCount);
+  RayTypeStats& s = by_type_[type];
   const RayCost& cost = ray.cost;
   uint64_t latency = now - std::min(now, ray.dispatched);
   s.rays++;
@@ -38,7 +39,7 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
   warp.last_retire = std::max(warp.last_retire, now);
   if (ray.sequence < warp.first_sequence) {
     warp.first_sequence = ray.sequence;
-    warp.type = uint8_t(size_t(ray.ray.type) % kRayTypeCount);
+    warp.type = type;
   }
   if (++warp.retired == warp_size_) {
     close(warp);
