@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include "app/commands.h"
 #include "reports/phase_progress.h"
@@ -26,9 +28,31 @@ namespace {
 
 struct SimOptions {
   std::string stream, config, output, scene;
-  std::vector<std::string> sets;
+  std::vector<std::string> sets, ray_types;
   bool no_verify = false, quiet = false, list_keys = false;
 };
+
+// The mask of --ray-types (every type if none is named); InputError for an unknown name or a
+// selection the stream has no rays of.
+RayTypeMask selected_ray_types(const SimOptions& o, const StreamHeader& header) {
+  if (o.ray_types.empty()) return kAllRayTypes;
+  RayTypeMask mask = 0;
+  for (const std::string& name : o.ray_types) {
+    std::optional<RayType> type = ray_type_from_name(name);
+    if (!type) {
+      std::string known;
+      for (int t = 0; t < kRayTypeCount; ++t)
+        known += std::string(t ? ", " : "") + ray_type_name(RayType(t));
+      throw InputError(
+          fmt::format("sim: --ray-types: unknown ray type '{}' (one of {})", name, known));
+    }
+    mask |= ray_type_bit(*type);
+  }
+  if (rays_of(header, mask) == 0)
+    throw InputError(
+        fmt::format("sim: {} has no rays of the types {}", o.stream, fmt::join(o.ray_types, ", ")));
+  return mask;
+}
 
 // A Markdown table, as model/SIM.md shows it.
 void print_keys() {
@@ -110,18 +134,21 @@ int run_sim(const SimOptions& o) {
   HwConfig config = load_hw_config(o.config, o.sets);
   RayStreamReader reader(o.stream);
   StreamHeader header = reader.header();
+  RayTypeMask types = selected_ray_types(o, header);
   Scene scene = load_stream_scene(o.stream, header, o.scene);
   BvhImage image = reports::build_bvh_with_progress(scene.mesh, config.bvh, o.quiet);
   if (!o.quiet) {
-    fmt::print("sim        {} rays of {} on '{}' ({}, {} RT units, {})\n", header.total_rays(),
-               o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
-               describe(config.bvh));
+    fmt::print(
+        "sim        {} rays{} of {} on '{}' ({}, {} RT units, {})\n", rays_of(header, types),
+        o.ray_types.empty() ? "" : " (" + fmt::format("{}", fmt::join(o.ray_types, ", ")) + ")",
+        o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
+        describe(config.bvh));
     if (o.config.empty())
       fmt::print(
           "config     built in (no --config): the defaults rtsim sim --list-keys shows; presets "
           "are in configs/\n");
   }
-  StreamSim sim(config, image, scene.mesh, reader, !o.no_verify, !o.quiet);
+  StreamSim sim(config, image, scene.mesh, reader, !o.no_verify, !o.quiet, types);
   std::fflush(stdout);  // the header before the progress lines, also in a pipe
   double start = wall_seconds();
   try {
@@ -162,6 +189,10 @@ void add_sim_command(CLI::App& app, int& exit_code) {
       ->allow_extra_args(false);
   cmd->add_option("-o,--output", options->output, "Folder for stats.json, config.toml, pixels");
   cmd->add_option("--scene", options->scene, "Scene file or built-in (default: stream header)");
+  cmd->add_option("--ray-types", options->ray_types,
+                  "Simulate only these ray types of the stream: --ray-types shadow,diffuse_gi")
+      ->delimiter(',')
+      ->allow_extra_args(false);
   cmd->add_flag("--no-verify", options->no_verify, "Skip the check of every ray against Embree");
   cmd->add_flag("-q,--quiet", options->quiet, "Print nothing but errors");
   cmd->add_flag("--list-keys", options->list_keys, "List every hardware config key and exit");

@@ -223,6 +223,27 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
       "packet mode: lanes that step together (node_first: while-while; majority)",
       {"node_first", "majority"});
   c.rt.packet_policy = policy == "majority" ? PacketPolicy::Majority : PacketPolicy::NodeFirst;
+  ConfigReader prefetch = rt.section("prefetch");
+  PrefetchConfig& pf = c.rt.prefetch;
+  std::string trigger = prefetch.text(
+      "trigger", prefetch_trigger_name(pf.trigger),
+      "treelet prefetching into the unit's L1: off, on a node step into a treelet not "
+      "prefetched lately (first_visit), or on taking a batch from a treelet's queue (batch)",
+      {"none", "first_visit", "batch"});
+  pf.trigger = trigger == "first_visit" ? PrefetchTrigger::FirstVisit
+               : trigger == "batch"     ? PrefetchTrigger::Batch
+                                        : PrefetchTrigger::None;
+  pf.batch_rays = uint32_t(prefetch.integer("batch_rays", pf.batch_rays, "rays",
+                                            "batch: the smallest batch that prefetches", 1,
+                                            1 << 24));
+  pf.recent = uint32_t(prefetch.integer("recent", pf.recent, "treelets",
+                                        "first_visit: the unit's last prefetched treelets, "
+                                        "which it does not prefetch again",
+                                        1, 4096));
+  pf.max_bytes = uint32_t(prefetch.integer("max_bytes", pf.max_bytes, "bytes",
+                                           "most bytes one prefetch fetches, nodes first; 0 = "
+                                           "the whole treelet",
+                                           0, kMaxU32));
   read_cache(rt.section("l1"), c.l1, "each RT unit's L1");
 
   ConfigReader tq = r.section("treelet_queues");

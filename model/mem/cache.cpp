@@ -43,9 +43,14 @@ CacheStats& CacheStats::operator+=(const CacheStats& o) {
                               {&writebacks, o.writebacks},
                               {&writeback_bytes, o.writeback_bytes},
                               {&local_reads, o.local_reads},
-                              {&local_misses, o.local_misses}})
+                              {&local_misses, o.local_misses},
+                              {&prefetches, o.prefetches},
+                              {&prefetch_redundant, o.prefetch_redundant},
+                              {&prefetch_useful, o.prefetch_useful},
+                              {&prefetch_late, o.prefetch_late},
+                              {&prefetch_useless, o.prefetch_useless}})
     *mine += theirs;
-  static_assert(sizeof(CacheStats) == 21 * sizeof(uint64_t), "a counter is missing above");
+  static_assert(sizeof(CacheStats) == 26 * sizeof(uint64_t), "a counter is missing above");
   return *this;
 }
 
@@ -168,6 +173,25 @@ void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
   });
 }
 
+void Cache::prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
+  for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
+    uint32_t set = set_of(line);
+    uint32_t way = find(set, tag_of(line));
+    for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block) {
+      if (way != kNone && block_at(set, way, block).valid) {
+        stats_.prefetch_redundant++;
+        continue;
+      }
+      if (way == kNone) way = allocate(set, tag_of(line), at);
+      stats_.prefetches++;
+      Caller nobody{nullptr, 0, false, kNone};
+      ReadCharge charge;  // charged to no ray
+      miss(block, set, way, at, nobody, charge);
+      block_at(set, way, block).prefetched = true;
+    }
+  });
+}
+
 bool Cache::contains(uint64_t addr) const {
   uint64_t block = addr >> block_shift_;
   uint64_t line = block >> sector_shift_;
@@ -213,6 +237,7 @@ inline Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCha
   if (way != kNone) {
     policy_->touch(set, way);
     Block& b = block_at(set, way, block);
+    if (b.prefetched) used_prefetch(b, at);
     if (b.valid && (b.ready == kPending || b.ready > at)) {
       uint32_t replay = merge(b);
       if (b.ready != kPending) return std::max(b.ready + replay, hit_ready);
@@ -245,6 +270,7 @@ Cycle Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   if (first) stats_.cold_misses++;
   if ((block << block_shift_) >= kLocalMemoryBase) stats_.local_misses++;
   if (way == kNone) way = allocate(set, tag_of(line), at);
+  stats_.misses++;
   return miss(block, set, way, at, caller, charge);
 }
 
@@ -264,7 +290,14 @@ void Cache::write_block(uint64_t block, Cycle at) {
   b.dirty = config_.write_back;
 }
 
+void Cache::used_prefetch(Block& b, Cycle at) {
+  b.prefetched = false;
+  stats_.prefetch_useful++;
+  if (b.ready == kPending || b.ready > at) stats_.prefetch_late++;
+}
+
 void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t replay) {
+  if (!caller.client) return;  // a prefetch
   if (!caller.several_blocks) {
     add_waiter(miss, {caller.client, caller.token, earliest, replay, kNone});
     return;
@@ -287,7 +320,6 @@ void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
 
 Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
                   ReadCharge& charge) {
-  stats_.misses++;
   stats_.bytes_below += block_bytes();
   if (role_ == CacheRole::L2) charge.dram_bytes += block_bytes();
   Cycle send = at + config_.hit_latency;
@@ -383,6 +415,7 @@ uint32_t Cache::allocate(uint32_t set, uint64_t tag, Cycle at) {
     uint64_t old_line = ways[victim] * sets_ + set;
     Block* blocks = &blocks_[(size_t(set) * config_.ways + victim) << sector_shift_];
     for (uint64_t s = 0; s <= sector_mask_; ++s) {
+      if (blocks[s].prefetched) stats_.prefetch_useless++;
       if (blocks[s].valid && blocks[s].dirty) {
         stats_.writebacks++;
         stats_.writeback_bytes += block_bytes();

@@ -15,6 +15,10 @@
 // sectors (blocks) a request needs. The level below may answer at once or later (MemoryTarget);
 // so may this cache: a read that waits for data of unknown time returns kPending and completes
 // through its client.
+// Prefetches (treelet prefetching, model/sched/treelet_prefetcher.h) fetch the absent blocks of
+// a range as misses with no requester: they take MSHRs in turn with demand misses, and a block
+// they bring is marked until a read uses it (useful; late if the read found it still in flight)
+// or it is evicted unused (useless).
 // Writes (stack spills in local memory) allocate without fetching (write-validate: a spill's
 // refill reads only what the spill wrote). Write-back: a dirty block goes below when its line
 // is evicted; write-through: every write also goes below, hit_latency after it arrives.
@@ -83,6 +87,11 @@ struct CacheStats {
   uint64_t writeback_bytes = 0;     // their bytes
   uint64_t local_reads = 0;         // reads of local memory (stack refills), as requests
   uint64_t local_misses = 0;        // their block misses
+  uint64_t prefetches = 0;          // blocks a prefetch sent below
+  uint64_t prefetch_redundant = 0;  // blocks a prefetch found present or in flight
+  uint64_t prefetch_useful = 0;     // prefetched blocks a read used
+  uint64_t prefetch_late = 0;       // of them, still in flight when read
+  uint64_t prefetch_useless = 0;    // prefetched blocks evicted unused
   CacheStats& operator+=(const CacheStats& o);
 };
 
@@ -97,6 +106,7 @@ class Cache : public MemoryTarget, private ReadClient {
   // Throws std::logic_error if it would have to wait.
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at);
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
+  void prefetch(uint64_t addr, uint32_t bytes, Cycle at) override;
 
   // Whether the block holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
@@ -126,6 +136,7 @@ class Cache : public MemoryTarget, private ReadClient {
     uint16_t merges = 0;    // requests merged into its last miss
     bool valid = false;
     bool dirty = false;
+    bool prefetched = false;  // brought by a prefetch, not read since
   };
   struct Bank {
     Cycle cycle = 0;    // the cycle its next lookup can start
@@ -161,7 +172,8 @@ class Cache : public MemoryTarget, private ReadClient {
     }
     Cache& cache;
   };
-  struct Caller {  // the read being served; a read of several blocks gets a Request to wait
+  struct Caller {  // the read being served (client null: a prefetch, nobody waits); a read of
+                   // several blocks gets a Request to wait
     ReadClient* client;
     uint64_t token;
     bool several_blocks;
@@ -186,6 +198,7 @@ class Cache : public MemoryTarget, private ReadClient {
   [[gnu::noinline]] Cycle read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
                                       Caller& caller, ReadCharge& charge);
   void write_block(uint64_t block, Cycle at);
+  void used_prefetch(Block& b, Cycle at);  // a read's first use of a prefetched block
   // Counts a merge into the in-flight block; returns its replay cycles (past the merge limit).
   uint32_t merge(Block& b);
   void wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t replay);

@@ -53,6 +53,9 @@ class MemoryTarget {
   virtual Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
                      ReadCharge& charge) = 0;
   virtual void write(uint64_t addr, uint32_t bytes, Cycle at) = 0;
+  // A hint to fetch [addr, addr + bytes) ahead of demand (treelet prefetching); nobody waits
+  // for it. A level that does not prefetch ignores it.
+  virtual void prefetch(uint64_t addr, uint32_t bytes, Cycle at) { (void)addr, (void)bytes, (void)at; }
 };
 
 class MemoryLevel {

@@ -182,6 +182,32 @@ void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
   r.ratio(p + ".memory_bytes_per_ray", p + ".memory_bytes", "rays");
 }
 
+// Treelet prefetching, over the units: what the prefetchers asked for and what their L1s made
+// of it.
+void report_prefetch(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units) {
+  uint64_t treelets = 0, bytes = 0, skipped = 0;
+  CacheStats l1;
+  for (const auto& unit : units) {
+    const PrefetchStats& s = unit->core().prefetch_stats();
+    treelets += s.treelets;
+    bytes += s.bytes;
+    skipped += s.skipped;
+    l1 += unit->l1.cache().stats();
+  }
+  const std::string p = "rt.prefetch";
+  r.counter(p + ".treelets", treelets);
+  r.counter(p + ".bytes", bytes);
+  r.counter(p + ".skipped", skipped);
+  r.counter(p + ".blocks", l1.prefetches);
+  r.counter(p + ".redundant", l1.prefetch_redundant);
+  r.counter(p + ".useful", l1.prefetch_useful);
+  r.counter(p + ".late", l1.prefetch_late);
+  r.counter(p + ".useless", l1.prefetch_useless);
+  r.counter(p + ".needed", l1.prefetch_useful + l1.misses);
+  r.ratio(p + ".accuracy", p + ".useful", p + ".blocks");
+  r.ratio(p + ".coverage", p + ".useful", p + ".needed");
+}
+
 // Counters every unit has, summed over the units as "rt.*" too.
 struct UnitTotals {
   uint64_t steps = 0, warp_steps = 0, active_lanes = 0, node_warp_steps = 0, distinct_nodes = 0;
@@ -284,6 +310,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
   r.ratio("rt.slot_occupancy", "rt.ray_slot_cycles", "cycles",
           1.0 / (double(slots) * config_.rt_units));
 
+  if (config_.rt.prefetch.trigger != PrefetchTrigger::None) report_prefetch(r, units_);
   report_l2(r, *l2_);
   if (banked_dram_) report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);
   if (dram_) {

@@ -2,9 +2,16 @@
 
 namespace rtsim {
 
+uint64_t rays_of(const StreamHeader& header, RayTypeMask types) {
+  uint64_t n = 0;
+  for (int t = 0; t < kRayTypeCount; ++t)
+    if (types & ray_type_bit(RayType(t))) n += header.counts[size_t(t)];
+  return n;
+}
+
 StreamSim::StreamSim(const HwConfig& config, const BvhImage& image, const TriangleMesh& mesh,
-                     RayStreamReader& reader, bool verify, bool progress)
-    : source_(reader), progress_(progress ? reader.header().total_rays() : 0) {
+                     RayStreamReader& reader, bool verify, bool progress, RayTypeMask types)
+    : source_(reader, types), progress_(progress ? rays_of(reader.header(), types) : 0) {
   if (progress) listeners_.add(&progress_);
   if (verify) {
     embree_ = std::make_unique<EmbreeScene>(mesh);

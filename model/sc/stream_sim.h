@@ -13,10 +13,14 @@
 
 namespace rtsim {
 
+// The rays of the given types in a stream, by its header.
+uint64_t rays_of(const StreamHeader& header, RayTypeMask types);
+
 class StreamSim {
  public:
+  // types: the ray types of the stream to simulate (the others are skipped).
   StreamSim(const HwConfig& config, const BvhImage& image, const TriangleMesh& mesh,
-            RayStreamReader& reader, bool verify, bool progress);
+            RayStreamReader& reader, bool verify, bool progress, RayTypeMask types = kAllRayTypes);
   // Tells the listener of every retired ray; call before run().
   void listen(RayRetireListener* listener) { listeners_.add(listener); }
   // Runs to the end of the stream; throws SimStallError if the machine stalls, InputError for

@@ -11,13 +11,13 @@
 namespace rtsim {
 
 class RaySource {
-public:
+ public:
   virtual ~RaySource() = default;
   virtual bool next(Ray& ray) = 0;  // false at the end
 };
 
 class VectorRaySource : public RaySource {
-public:
+ public:
   explicit VectorRaySource(const std::vector<Ray>& rays) : rays_(rays) {}
   bool next(Ray& ray) override {
     if (position_ == rays_.size()) return false;
@@ -25,19 +25,33 @@ public:
     return true;
   }
 
-private:
+ private:
   const std::vector<Ray>& rays_;
   size_t position_ = 0;
 };
 
-// Reads a stream chunk by chunk; errors in the file throw InputError when reached.
-class StreamRaySource : public RaySource {
-public:
-  explicit StreamRaySource(RayStreamReader& reader) : reader_(reader) {}
-  bool next(Ray& ray) override { return reader_.next(ray); }
+// A set of ray types, a bit per RayType.
+using RayTypeMask = uint32_t;
+constexpr RayTypeMask kAllRayTypes = (1u << kRayTypeCount) - 1;
+inline RayTypeMask ray_type_bit(RayType type) {
+  return 1u << unsigned(type);
+}
 
-private:
+// Reads a stream chunk by chunk, passing on the rays of the given types (all by default);
+// errors in the file throw InputError when reached.
+class StreamRaySource : public RaySource {
+ public:
+  explicit StreamRaySource(RayStreamReader& reader, RayTypeMask types = kAllRayTypes)
+      : reader_(reader), types_(types) {}
+  bool next(Ray& ray) override {
+    while (reader_.next(ray))
+      if (types_ & ray_type_bit(ray.type)) return true;
+    return false;
+  }
+
+ private:
   RayStreamReader& reader_;
+  RayTypeMask types_;
 };
 
 }  // namespace rtsim

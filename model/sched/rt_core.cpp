@@ -38,6 +38,13 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
   if (!problem.empty()) return "box: " + problem;
   problem = test_unit_config_problem(c.triangle);
   if (!problem.empty()) return "triangle: " + problem;
+  const PrefetchConfig& p = c.prefetch;
+  if (p.trigger != PrefetchTrigger::None && c.mode == TraversalMode::Packet)
+    return "prefetch: needs per-ray traversal (depth_first or treelet), not packet mode";
+  if (p.trigger == PrefetchTrigger::Batch && c.mode != TraversalMode::Treelet)
+    return "prefetch: trigger = \"batch\" needs treelet queues (rt.mode = \"treelet\")";
+  if (p.recent == 0) return "prefetch: recent must be at least 1";
+  if (p.batch_rays == 0) return "prefetch: batch_rays must be at least 1";
   return {};
 }
 
@@ -52,7 +59,11 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
              config.mode == TraversalMode::Treelet ? 0 : config.warps * config.warp_size),
       state_bytes_(ray_state_bytes(config.stack)),
       box_(config.box),
-      triangle_(config.triangle) {
+      triangle_(config.triangle),
+      footprints_(config.prefetch.trigger == PrefetchTrigger::None
+                      ? std::vector<std::vector<ByteRange>>{}
+                      : treelet_footprints(traversal.image())),
+      prefetcher_(config.prefetch, &footprints_) {
   std::string problem = rt_core_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
   slots_.assign(size_t(config.warps) * config.warp_size, nullptr);
@@ -173,6 +184,9 @@ void RtCore::fill(Cycle now) {
         free_slots_.pop_back();
         install(ray, slot, now);
       }
+      // A batch from one treelet's queue (fresh rays start at the root's treelet).
+      if (config_.prefetch.trigger == PrefetchTrigger::Batch)
+        prefetch(prefetcher_.on_batch(batch_[0]->treelet, uint32_t(n)), now);
     }
   }
 }

@@ -27,6 +27,7 @@
 #include "model/sched/hardware_stack.h"
 #include "model/sched/ray_supply.h"
 #include "model/sched/test_unit_pool.h"
+#include "model/sched/treelet_prefetcher.h"
 #include "model/units/traversal.h"
 
 namespace rtsim {
@@ -57,6 +58,7 @@ struct RtCoreConfig {
   TestUnitConfig triangle{1, 1, 12};  // ray-triangle units
   PacketPolicy packet_policy = PacketPolicy::NodeFirst;
   Refill refill = Refill::Warp;
+  PrefetchConfig prefetch;  // treelet prefetching into the unit's L1 (off by default)
 };
 
 std::string rt_core_config_problem(const RtCoreConfig& config);
@@ -85,6 +87,8 @@ class RtCore : private ReadClient {
   // memory: the unit's L1; the unit is the client of every read it makes.
   RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
          MemoryTarget& memory);
+  RtCore(const RtCore&) = delete;  // the prefetcher points into it
+  RtCore& operator=(const RtCore&) = delete;
 
   void set_supply(RaySupply* supply) { supply_ = supply; }
   // Asks for rays at cycle now (also after a "work available" notice); returns progress made.
@@ -111,6 +115,7 @@ class RtCore : private ReadClient {
   const RtCoreStats& stats() const { return stats_; }
   const TestUnitPool& box() const { return box_; }
   const TestUnitPool& triangle() const { return triangle_; }
+  const PrefetchStats& prefetch_stats() const { return prefetcher_.stats(); }
   const RtCoreConfig& config() const { return config_; }
   uint32_t id() const { return id_; }
   std::string dump() const;  // what every ray is doing, for stall reports
@@ -159,6 +164,7 @@ class RtCore : private ReadClient {
   uint32_t treelet_of(const RayContext& ray, const Next& next) const;
   void settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cycle now);
   void check_kind(const StepResult& step, const Next& next) const;
+  void prefetch(const std::vector<ByteRange>& ranges, Cycle now);
 
   uint32_t id_;
   RtCoreConfig config_;
@@ -169,6 +175,8 @@ class RtCore : private ReadClient {
   HardwareStack stack_;
   uint32_t state_bytes_;  // treelet mode: one ray's state in the ray buffer
   TestUnitPool box_, triangle_;
+  std::vector<std::vector<ByteRange>> footprints_;  // per treelet, when prefetching
+  TreeletPrefetcher prefetcher_;
   EventQueue events_;
   std::vector<RayContext*> slots_;    // warps * warp_size
   std::vector<uint32_t> warp_live_;   // rays still in each warp (per-ray and packet modes)

@@ -113,6 +113,10 @@ void RtCore::load_state(RayContext& ray, Cycle now) {
   events_.push(ready, ray.slot);
 }
 
+void RtCore::prefetch(const std::vector<ByteRange>& ranges, Cycle now) {
+  for (const ByteRange& r : ranges) memory_.prefetch(r.addr, r.bytes, now);
+}
+
 uint32_t RtCore::treelet_of(const RayContext& ray, const Next& next) const {
   return ray.entry_treelet[next.depth];
 }
@@ -170,6 +174,8 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   }
   bool treelets = config_.mode == TraversalMode::Treelet;
   uint32_t visited_treelet = treelets && next.live ? treelet_of(ray, next) : 0;
+  // The node the step visits, for a prefetch on entering its treelet (after its own read).
+  uint32_t node = next.live && !next.leaf ? ray.state.stack[next.depth].index : ~0u;
   StepResult step = traversal_.step(ray.state);
   check_kind(step, next);
   if (step.kind == StepKind::Done) {
@@ -179,6 +185,8 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   }
   progress_++;
   Cycle data = fetch(ray, step, now);
+  if (node != ~0u && config_.prefetch.trigger == PrefetchTrigger::FirstVisit)
+    prefetch(prefetcher_.on_node(node_treelet_[node]), now);
   (step.kind == StepKind::Node ? stats_.node_steps : stats_.leaf_steps)++;
   settle(ray, next.depth, visited_treelet, now);
   ray.state.accesses.clear();

@@ -55,6 +55,13 @@ Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
   stats_.requests++;
   stats_.tests += tests;
   stats_.issues += issues;
+  if (issues == 1) {  // the common case: a unit free at the arrival cycle, no search
+    Slot* slot = slot_at(arrival);
+    if (slot && slot->used < config_.count) {
+      slot->used++;
+      return arrival + config_.latency;
+    }
+  }
   Cycle cycle = find_free(arrival), first = cycle, last = cycle;
   for (;;) {
     Slot* slot = slot_at(cycle);

@@ -30,6 +30,9 @@ struct MockRayMemory : MemoryTarget {
   void write(uint64_t addr, uint32_t bytes, Cycle now) override {
     writes.push_back({addr, bytes, now});
   }
+  void prefetch(uint64_t addr, uint32_t bytes, Cycle now) override {
+    prefetches.push_back({addr, bytes, now});
+  }
   struct Request {
     uint64_t addr;
     uint32_t bytes;
@@ -42,7 +45,7 @@ struct MockRayMemory : MemoryTarget {
   };
   Cycle latency;
   bool deferred;
-  std::vector<Request> reads, writes;
+  std::vector<Request> reads, writes, prefetches;
   std::vector<Answer> unanswered;
 };
 

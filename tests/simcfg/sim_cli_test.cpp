@@ -157,6 +157,34 @@ TEST(SimCli, BadConfigIsOneLineAndExitCode2) {
   std::filesystem::remove(config);
 }
 
+TEST(SimCli, RayTypesSimulatesOnlyTheNamedTypesOfTheStream) {
+  std::string stream = write_stream(), out = temp("types");
+  test::RunResult r = test::run_rtsim("sim " + stream + " --ray-types diffuse_gi -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("verify     300 rays against Embree"), std::string::npos) << r.out;
+  nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
+  EXPECT_EQ(doc["summary"]["rays"], 300);
+  EXPECT_FALSE(doc["ray_types"].contains("camera")) << "the camera rays were skipped";
+  for (const char* types : {"shadow", "camera,bogus"}) {
+    r = test::run_rtsim("sim " + stream + " --ray-types " + types + " -o " + temp("never"));
+    EXPECT_EQ(r.exit_code, 2) << types;
+    EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  }
+  EXPECT_NE(r.err.find("unknown ray type 'bogus'"), std::string::npos) << r.err;
+  std::filesystem::remove_all(out);
+  std::filesystem::remove(stream);
+}
+
+TEST(SimCli, APrefetchTriggerItsModeCannotUseIsExitCode2) {
+  std::string stream = write_stream();
+  test::RunResult r =
+      test::run_rtsim("sim " + stream + " --set rt.prefetch.trigger=batch -o " + temp("never"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("needs treelet queues"), std::string::npos) << r.err;
+  std::filesystem::remove(stream);
+}
+
 TEST(SimCli, ListKeysPrintsEveryKey) {
   test::RunResult r = test::run_rtsim("sim --list-keys");
   ASSERT_EQ(r.exit_code, 0);
