@@ -233,9 +233,9 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   pf.trigger = trigger == "first_visit" ? PrefetchTrigger::FirstVisit
                : trigger == "batch"     ? PrefetchTrigger::Batch
                                         : PrefetchTrigger::None;
-  pf.batch_rays = uint32_t(prefetch.integer("batch_rays", pf.batch_rays, "rays",
-                                            "batch: the smallest batch that prefetches", 1,
-                                            1 << 24));
+  pf.batch_rays =
+      uint32_t(prefetch.integer("batch_rays", pf.batch_rays, "rays",
+                                "batch: the smallest batch that prefetches", 1, 1 << 24));
   pf.recent = uint32_t(prefetch.integer("recent", pf.recent, "treelets",
                                         "first_visit: the unit's last prefetched treelets, "
                                         "which it does not prefetch again",
@@ -410,8 +410,8 @@ CacheConfig l1_as_built(const HwConfig& config) {
 uint64_t ray_buffer_sram_bytes(const HwConfig& c) {
   const RayBufferConfig& b = c.treelet_queues.buffer;
   if (c.rt.mode != TraversalMode::Treelet || b.place == RayBufferPlace::Memory) return 0;
-  uint32_t state = ray_state_bytes(c.rt.stack);
-  return ray_buffer_capacity(b, state, c.treelet_queues.max_rays) * state;
+  // The SRAM as built: its configured bytes, even those too few for one more state.
+  return b.bytes ? b.bytes : uint64_t(c.treelet_queues.max_rays) * ray_state_bytes(c.rt.stack);
 }
 
 std::string hw_config_problem(const HwConfig& c) {

@@ -55,7 +55,9 @@ class MemoryTarget {
   virtual void write(uint64_t addr, uint32_t bytes, Cycle at) = 0;
   // A hint to fetch [addr, addr + bytes) ahead of demand (treelet prefetching); nobody waits
   // for it. A level that does not prefetch ignores it.
-  virtual void prefetch(uint64_t addr, uint32_t bytes, Cycle at) { (void)addr, (void)bytes, (void)at; }
+  virtual void prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
+    (void)addr, (void)bytes, (void)at;
+  }
 };
 
 class MemoryLevel {

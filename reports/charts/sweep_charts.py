@@ -75,9 +75,7 @@ def curve(doc, chart):
                     label=ray_type if g == 0 else None)
         if ys[0][1] is not None:
             legend.append(Line2D([], [], color="black", ls=style, label=label(members[0], others)))
-    xs = [value_of(p, x_key) for p in points]
-    if xs and min(xs) > 0 and max(xs) / min(xs) >= 8:
-        ax.set_xscale("log", base=2)
+    log2_if_spread(ax, [value_of(p, x_key) for p in points])
     ax.set_xlabel(x_key)
     ax.set_ylabel(chart["y"].replace("type.*.", ""))
     ax.set_title(chart["title"])
@@ -86,26 +84,35 @@ def curve(doc, chart):
     return fig
 
 
+def log2_if_spread(ax, xs):
+    """A log2 x axis for values spread over 8x or more; linear otherwise (a log axis over
+    less than an octave would have no tick)."""
+    if xs and min(xs) > 0 and max(xs) / min(xs) >= 8:
+        ax.set_xscale("log", base=2)
+
+
 def pareto(doc, chart):
     points = [p for p in doc["points"] if metric(p, "cycles") is not None]
+
+    def megabytes(p):
+        return metric(p, "on_chip_bytes") / 2**20
+
     fig, ax = chart_style.new(8, 4.6)
     for w, members in sorted(groups(points, ["workload"]).items()):
-        xs = [metric(p, "on_chip_bytes") for p in members]
-        ys = [metric(p, "cycles") for p in members]
-        dots = ax.scatter(xs, ys, s=18, label=w[0])
+        dots = ax.scatter([megabytes(p) for p in members], [metric(p, "cycles") for p in members],
+                          s=18, label=w[0])
         front, best = [], float("inf")
-        for p in sorted(members, key=lambda p: (metric(p, "on_chip_bytes"), metric(p, "cycles"))):
+        for p in sorted(members, key=lambda p: (megabytes(p), metric(p, "cycles"))):
             if metric(p, "cycles") < best:
                 best = metric(p, "cycles")
                 front.append(p)
-        ax.step([metric(p, "on_chip_bytes") for p in front], [metric(p, "cycles") for p in front],
+        ax.step([megabytes(p) for p in front], [metric(p, "cycles") for p in front],
                 where="post", color=dots.get_facecolor()[0], lw=1)
         for p in front:
-            ax.annotate(label(p, doc["spec"]["keys"]), (metric(p, "on_chip_bytes"),
-                        metric(p, "cycles")), fontsize=5, xytext=(3, 3),
-                        textcoords="offset points")
-    ax.set_xscale("log", base=2)
-    ax.set_xlabel("on-chip memory (bytes: L1s, L2, ray stacks)")
+            ax.annotate(label(p, doc["spec"]["keys"]), (megabytes(p), metric(p, "cycles")),
+                        fontsize=5, xytext=(3, 3), textcoords="offset points")
+    log2_if_spread(ax, [megabytes(p) for p in points])
+    ax.set_xlabel("on-chip memory (MB: L1s, L2, ray stacks, treelet ray buffer)")
     ax.set_ylabel("cycles")
     ax.set_title(chart["title"])
     ax.legend(fontsize=7)
