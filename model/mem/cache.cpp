@@ -318,8 +318,8 @@ void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
   m.last = id;
 }
 
-Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
-                  ReadCharge& charge) {
+inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
+                         ReadCharge& charge) {
   stats_.bytes_below += block_bytes();
   if (role_ == CacheRole::L2) charge.dram_bytes += block_bytes();
   Cycle send = at + config_.hit_latency;

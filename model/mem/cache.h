@@ -203,8 +203,8 @@ class Cache : public MemoryTarget, private ReadClient {
   uint32_t merge(Block& b);
   void wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t replay);
   void add_waiter(uint32_t miss, const Waiter& waiter);
-  Cycle miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
-             ReadCharge& charge);
+  [[gnu::always_inline]] Cycle miss(uint64_t block, uint32_t set, uint32_t way, Cycle at,
+                                    Caller& caller, ReadCharge& charge);
   // Sends a miss below at `at` (its MSHR taken); the below's answer: a cycle, or kPending.
   Cycle issue(uint32_t miss, Cycle at);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;

@@ -175,7 +175,8 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   bool treelets = config_.mode == TraversalMode::Treelet;
   uint32_t visited_treelet = treelets && next.live ? treelet_of(ray, next) : 0;
   // The node the step visits, for a prefetch on entering its treelet (after its own read).
-  uint32_t node = next.live && !next.leaf ? ray.state.stack[next.depth].index : ~0u;
+  bool first_visit = config_.prefetch.trigger == PrefetchTrigger::FirstVisit;
+  uint32_t node = first_visit && next.live && !next.leaf ? ray.state.stack[next.depth].index : ~0u;
   StepResult step = traversal_.step(ray.state);
   check_kind(step, next);
   if (step.kind == StepKind::Done) {
@@ -185,8 +186,7 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   }
   progress_++;
   Cycle data = fetch(ray, step, now);
-  if (node != ~0u && config_.prefetch.trigger == PrefetchTrigger::FirstVisit)
-    prefetch(prefetcher_.on_node(node_treelet_[node]), now);
+  if (node != ~0u) prefetch(prefetcher_.on_node(node_treelet_[node]), now);
   (step.kind == StepKind::Node ? stats_.node_steps : stats_.leaf_steps)++;
   settle(ray, next.depth, visited_treelet, now);
   ray.state.accesses.clear();
