@@ -157,7 +157,8 @@ int run_sim(const SimOptions& o) {
     fmt::print(stderr, "rtsim: stall: {}", e.what());
     return 1;
   }
-  SimRunInfo info{o.stream, header, &image, sim.verify_report(), wall_seconds() - start};
+  SimRunInfo info{o.stream, header, &image, sim.verify_report(), wall_seconds() - start, {}};
+  info.ray_types = o.ray_types;
   nlohmann::ordered_json doc = write_sim_results(o.output, sim.simulator(), info);
   if (!o.quiet) {
     print_summary(doc);

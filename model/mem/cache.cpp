@@ -175,6 +175,7 @@ void Cache::write(uint64_t addr, uint32_t bytes, Cycle at) {
 
 void Cache::prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
   for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
+    Cycle start = admits_ ? admit(line, stop - begin, at) : at;  // its bank and data port
     uint32_t set = set_of(line);
     uint32_t way = find(set, tag_of(line));
     for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block) {
@@ -182,11 +183,12 @@ void Cache::prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
         stats_.prefetch_redundant++;
         continue;
       }
-      if (way == kNone) way = allocate(set, tag_of(line), at);
+      if (way == kNone) way = allocate(set, tag_of(line), start);
+      if (track_cold_) first_reference(block);
       stats_.prefetches++;
       Caller nobody{nullptr, 0, false, kNone};
       ReadCharge charge;  // charged to no ray
-      miss(block, set, way, at, nobody, charge);
+      miss(block, set, way, start, nobody, charge);
       block_at(set, way, block).prefetched = true;
     }
   });
@@ -332,6 +334,7 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   m.way = way;
   m.send = send;
   m.charge = {};
+  m.prefetch = !caller.client;
   m.first = m.last = kNone;
   // The MSHR free first; with none whose end is known, wait until one's end is reported.
   if (free_mshrs_.empty()) {
@@ -373,8 +376,11 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
     b.ready = ready;
     b.miss = kNone;
   }
-  ReadCharge first = m.charge;
-  first += charge;
+  ReadCharge first;  // what the miss cost below, for its first waiter (a prefetch's: nobody's)
+  if (!m.prefetch) {
+    first = m.charge;
+    first += charge;
+  }
   // Completing a waiter only notifies its client; nothing here adds a waiter or a miss.
   uint32_t head = m.first;
   for (uint32_t w = head; w != kNone;) {

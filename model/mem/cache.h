@@ -16,9 +16,10 @@
 // so may this cache: a read that waits for data of unknown time returns kPending and completes
 // through its client.
 // Prefetches (treelet prefetching, model/sched/treelet_prefetcher.h) fetch the absent blocks of
-// a range as misses with no requester: they take MSHRs in turn with demand misses, and a block
-// they bring is marked until a read uses it (useful; late if the read found it still in flight)
-// or it is evicted unused (useless).
+// a range as misses with no requester, line by line through the banks and data port: they take
+// MSHRs in turn with demand misses, and a block they bring is marked until a read uses it
+// (useful; late if the read found it still in flight) or it is evicted unused (useless). Their
+// cost below is charged to no read, also when a read merges into one.
 // Writes (stack spills in local memory) allocate without fetching (write-validate: a spill's
 // refill reads only what the spill wrote). Write-back: a dirty block goes below when its line
 // is evicted; write-through: every write also goes below, hit_latency after it arrives.
@@ -152,7 +153,8 @@ class Cache : public MemoryTarget, private ReadClient {
   struct Miss {
     uint64_t block = 0;
     uint32_t set = 0, way = 0;
-    Cycle send = 0;  // the cycle it may go below (after the tag check)
+    Cycle send = 0;         // the cycle it may go below (after the tag check)
+    bool prefetch = false;  // made by a prefetch: its cost is charged to no read
     ReadCharge charge;
     uint32_t first = kNone, last = kNone;  // its waiters, in order: the first made the miss
   };

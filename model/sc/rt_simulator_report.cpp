@@ -203,7 +203,8 @@ void report_prefetch(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitM
   r.counter(p + ".useful", l1.prefetch_useful);
   r.counter(p + ".late", l1.prefetch_late);
   r.counter(p + ".useless", l1.prefetch_useless);
-  r.counter(p + ".needed", l1.prefetch_useful + l1.misses);
+  // Demand misses of BVH data: stack refills and ray states (local memory) are no treelet's.
+  r.counter(p + ".needed", l1.prefetch_useful + l1.misses - l1.local_misses);
   r.ratio(p + ".accuracy", p + ".useful", p + ".blocks");
   r.ratio(p + ".coverage", p + ".useful", p + ".needed");
 }

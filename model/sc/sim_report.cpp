@@ -201,6 +201,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
                   {"workload", info.header.workload},
                   {"width", info.header.width},
                   {"height", info.header.height}};
+  if (!info.ray_types.empty()) doc["input"]["ray_types"] = info.ray_types;
   if (info.image)
     doc["bvh"] = {{"description", describe(info.image->config)},
                   {"nodes", info.image->node_count},

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -19,6 +20,7 @@ struct SimRunInfo {
   const BvhImage* image = nullptr;
   const VerifyReport* verify = nullptr;  // null: verification skipped
   double host_seconds = 0;               // wall time of the run, the Embree check included
+  std::vector<std::string> ray_types;    // the stream's ray types simulated; empty: all
 };
 
 constexpr const char* kSimStatsSchema = "rtsim.sim.stats/1";

@@ -56,9 +56,11 @@ Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
   stats_.tests += tests;
   stats_.issues += issues;
   if (issues == 1) {  // the common case: a unit free at the arrival cycle, no search
-    Slot* slot = slot_at(arrival);
-    if (slot && slot->used < config_.count) {
-      slot->used++;
+    Slot& slot = calendar_[arrival & (kCalendarCycles - 1)];
+    auto epoch = uint32_t(arrival / kCalendarCycles + 1);
+    if (slot.epoch < epoch) slot = Slot{epoch, 0, 0};  // as slot_at: an earlier cycle's entry
+    if (slot.epoch == epoch && slot.used < config_.count) {
+      slot.used++;
       return arrival + config_.latency;
     }
   }

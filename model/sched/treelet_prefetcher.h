@@ -6,7 +6,8 @@
 //  - first_visit (depth-first and treelet modes): a node step into a treelet the unit has not
 //    prefetched among its last `recent` treelets;
 //  - batch (treelet mode): the unit takes a batch of at least `batch_rays` rays from one
-//    treelet's queue (the queue reaching that length, as Chou et al.'s per-treelet ray counter).
+//    treelet's queue (the batch, capped by the unit's free slots, standing in for Chou et al.'s
+//    per-treelet count of waiting rays).
 // The L1 treats the prefetch as misses nobody waits for (model/mem/cache.h): accuracy (useful /
 // prefetched blocks) and coverage (useful / (useful + demand misses)) come from its counters.
 #pragma once
@@ -40,13 +41,13 @@ std::vector<std::vector<ByteRange>> treelet_footprints(const BvhImage& image);
 struct PrefetchStats {
   uint64_t treelets = 0;  // prefetches started
   uint64_t bytes = 0;     // bytes they asked for (present blocks included)
-  uint64_t skipped = 0;   // first_visit: entries into a treelet prefetched recently
+  uint64_t skipped = 0;   // first_visit: node steps into a treelet prefetched recently
 };
 
 // One RT unit's prefetcher: decides when, and which bytes to send to its L1.
 class TreeletPrefetcher {
  public:
-  // footprints: from treelet_footprints (shared by the units); unused when trigger is None.
+  // footprints: from treelet_footprints; unused when trigger is None.
   TreeletPrefetcher(const PrefetchConfig& config,
                     const std::vector<std::vector<ByteRange>>* footprints);
   const PrefetchConfig& config() const { return config_; }

@@ -62,6 +62,18 @@ TEST(CachePrefetch, PresentBlocksAreRedundantAndEvictedUnusedOnesUseless) {
   EXPECT_EQ(cache.stats().prefetch_useful, 0u);
 }
 
+TEST(CachePrefetch, APrefetchedBlockIsReferencedSoALaterMissOfItIsNotCompulsory) {
+  test::MockMemory mem(10);
+  Cache cache(small_cache(), &mem);
+  cache.track_cold_misses();
+  cache.prefetch(0x0040, 64, 0);  // set 1
+  cache.read(0x0240, 64, 100);    // set 1 fills
+  cache.read(0x0440, 64, 200);    // and evicts the prefetched line, unread
+  cache.read(0x0040, 64, 300);    // a miss, but not a first reference
+  EXPECT_EQ(cache.stats().misses, 3u);
+  EXPECT_EQ(cache.stats().cold_misses, 2u);
+}
+
 TEST(CachePrefetch, PrefetchesTakeMshrsInTurnWithDemandMisses) {
   test::MockMemory mem(100);
   Cache cache(small_cache(), &mem);  // 4 MSHRs
