@@ -46,9 +46,24 @@ def groups(points, keys):
     return out
 
 
+def byte_unit(key, values):
+    """(divisor, label) for an x axis: a key in bytes reads in KB or MB, others as they are."""
+    numbers = [v for v in values if isinstance(v, (int, float))]
+    if not key.endswith("bytes") or not numbers:
+        return 1, key
+    if max(numbers) >= 2**20:
+        return 2**20, key + " (MB)"
+    return (2**10, key + " (KB)") if max(numbers) >= 2**10 else (1, key)
+
+
 def curve(doc, chart):
     points = [p for p in doc["points"] if p["metrics"]]
     x_key, series = chart["x"], chart["series"]
+    unit, x_label = byte_unit(x_key, [value_of(p, x_key) for p in points])
+
+    def x_of(p):
+        return value_of(p, x_key) / unit if unit != 1 else value_of(p, x_key)
+
     others = [series] + [k for k in doc["spec"]["keys"] if k not in (x_key, series)]
     if chart["y"].startswith("type.*."):
         name = chart["y"][len("type.*."):]
@@ -62,7 +77,7 @@ def curve(doc, chart):
     grouped = sorted(groups(points, others).items(), key=lambda kv: [order(v) for v in kv[0]])
     for g, (key, members) in enumerate(grouped):
         members.sort(key=lambda p: value_of(p, x_key))
-        xs = [value_of(p, x_key) for p in members]
+        xs = [x_of(p) for p in members]
         style = LINESTYLES[g % len(LINESTYLES)]
         for y, ray_type in ys:
             values = [metric(p, y) for p in members]
@@ -75,8 +90,8 @@ def curve(doc, chart):
                     label=ray_type if g == 0 else None)
         if ys[0][1] is not None:
             legend.append(Line2D([], [], color="black", ls=style, label=label(members[0], others)))
-    log2_if_spread(ax, [value_of(p, x_key) for p in points])
-    ax.set_xlabel(x_key)
+    log2_if_spread(ax, [x_of(p) for p in points])
+    ax.set_xlabel(x_label)
     ax.set_ylabel(chart["y"].replace("type.*.", ""))
     ax.set_title(chart["title"])
     handles, _ = ax.get_legend_handles_labels()
