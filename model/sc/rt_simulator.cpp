@@ -65,11 +65,12 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     treelets_->in.bind(dispatch_->out);
     supply = treelets_.get();
   }
+  if (config.rt.prefetch.trigger != PrefetchTrigger::None) footprints_ = treelet_footprints(image);
   for (uint32_t i = 0; i < config.rt_units; ++i) {
     std::string name = "rt" + std::to_string(i);
     units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, l1_as_built(config),
                                                     traversal_, clock_, config.sim.quantum_cycles,
-                                                    control_));
+                                                    control_, &footprints_));
     units_.back()->l1.cache().track_cold_misses(bvh_begin, bvh_end);
     units_.back()->supply.bind(*supply);
     units_.back()->l1.out.bind(l2_->in);

@@ -88,6 +88,7 @@ class RtSimulator {
   HwConfig config_;
   Clock clock_;
   TraversalUnit traversal_;
+  TreeletFootprints footprints_;  // the treelets' byte ranges, when the units prefetch
   RayContextPool pool_;
   SimStatsCollector collector_;
   RetireFanout fanout_;

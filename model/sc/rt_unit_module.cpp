@@ -6,14 +6,15 @@ namespace rtsim {
 
 RtUnitModule::RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
                            const CacheConfig& l1_config, const TraversalUnit& traversal,
-                           const Clock& clock, uint32_t quantum_cycles, SimControl& control)
+                           const Clock& clock, uint32_t quantum_cycles, SimControl& control,
+                           const TreeletFootprints* footprints)
     : sc_module(name),
       supply("supply"),
       l1("l1", l1_config, clock, [this] { arm_at(core_.take_data_event()); }),
       clock_(clock),
       quantum_(std::max<uint32_t>(quantum_cycles, 1)),
       control_(control),
-      core_(id, config, traversal, l1.cache()) {
+      core_(id, config, traversal, l1.cache(), footprints) {
   SC_METHOD(run);
 }
 

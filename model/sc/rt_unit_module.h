@@ -24,7 +24,8 @@ class RtUnitModule : public sc_core::sc_module {
   SC_HAS_PROCESS(RtUnitModule);
   RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
                const CacheConfig& l1_config, const TraversalUnit& traversal, const Clock& clock,
-               uint32_t quantum_cycles, SimControl& control);
+               uint32_t quantum_cycles, SimControl& control,
+               const TreeletFootprints* footprints = nullptr);
 
   const RtCore& core() const { return core_; }
   RtCore& core() { return core_; }

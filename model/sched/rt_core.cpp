@@ -49,7 +49,7 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
 }
 
 RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
-               MemoryTarget& memory)
+               MemoryTarget& memory, const TreeletFootprints* footprints)
     : id_(id),
       config_(config),
       traversal_(traversal),
@@ -60,12 +60,11 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
       state_bytes_(ray_state_bytes(config.stack)),
       box_(config.box),
       triangle_(config.triangle),
-      footprints_(config.prefetch.trigger == PrefetchTrigger::None
-                      ? std::vector<std::vector<ByteRange>>{}
-                      : treelet_footprints(traversal.image())),
-      prefetcher_(config.prefetch, &footprints_) {
+      prefetcher_(config.prefetch, footprints) {
   std::string problem = rt_core_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
+  if (config.prefetch.trigger != PrefetchTrigger::None && !footprints)
+    throw std::invalid_argument("prefetch: the treelets' footprints are required");
   slots_.assign(size_t(config.warps) * config.warp_size, nullptr);
   warp_live_.assign(config.warps, 0);
   issue_granted_.assign(slots_.size(), ~Cycle(0));

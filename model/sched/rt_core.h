@@ -84,11 +84,11 @@ struct RtCoreStats {
 
 class RtCore : private ReadClient {
  public:
-  // memory: the unit's L1; the unit is the client of every read it makes.
+  // memory: the unit's L1; the unit is the client of every read it makes. footprints: the
+  // treelets' (treelet_footprints of traversal's image), required when config.prefetch has a
+  // trigger. Throws std::invalid_argument for an impossible config.
   RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& traversal,
-         MemoryTarget& memory);
-  RtCore(const RtCore&) = delete;  // the prefetcher points into it
-  RtCore& operator=(const RtCore&) = delete;
+         MemoryTarget& memory, const TreeletFootprints* footprints = nullptr);
 
   void set_supply(RaySupply* supply) { supply_ = supply; }
   // Asks for rays at cycle now (also after a "work available" notice); returns progress made.
@@ -149,7 +149,8 @@ class RtCore : private ReadClient {
     return config_.mode == TraversalMode::Packet ? slot / config_.warp_size : slot;
   }
   // A read for the ray: its ready cycle, or kPending (its item then waits for read_done).
-  Cycle read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now);
+  // state: the ray's state from memory, whose cost is also counted in stats_.state.
+  Cycle read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bool state = false);
   void read_done(uint64_t slot, Cycle ready, const ReadCharge& charge) override;
   // After an item's reads: wait for the pending ones (true), or go on (false).
   bool wait_reads(uint32_t item, Wait wait, Cycle known_ready);
@@ -160,7 +161,6 @@ class RtCore : private ReadClient {
   bool refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready);
   // A resumed ray whose state is in memory reads it before its next step.
   void load_state(RayContext& ray, Cycle now);
-  bool state_read_ = false;  // read() is reading a ray's state
   uint32_t treelet_of(const RayContext& ray, const Next& next) const;
   void settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cycle now);
   void check_kind(const StepResult& step, const Next& next) const;
@@ -175,7 +175,6 @@ class RtCore : private ReadClient {
   HardwareStack stack_;
   uint32_t state_bytes_;  // treelet mode: one ray's state in the ray buffer
   TestUnitPool box_, triangle_;
-  std::vector<std::vector<ByteRange>> footprints_;  // per treelet, when prefetching
   TreeletPrefetcher prefetcher_;
   EventQueue events_;
   std::vector<RayContext*> slots_;    // warps * warp_size

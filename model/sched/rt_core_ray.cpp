@@ -19,11 +19,11 @@ void add_charge(Cost& cost, const ReadCharge& c) {
 
 }  // namespace
 
-Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now) {
+Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bool state) {
   ReadCharge charge;
   Cycle ready = memory_.read(addr, bytes, now, this, ray.slot, charge);
   add_charge(ray.cost, charge);
-  if (state_read_) add_charge(stats_.state, charge);
+  if (state) add_charge(stats_.state, charge);
   stats_.fetches++;
   stats_.fetch_bytes += bytes;
   if (ready == kPending) {
@@ -104,9 +104,7 @@ bool RtCore::refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready) 
 
 void RtCore::load_state(RayContext& ray, Cycle now) {
   ray.state_in_memory = false;
-  state_read_ = true;
-  Cycle data = read(ray, ray_state_address(ray.id, state_bytes_), state_bytes_, now);
-  state_read_ = false;
+  Cycle data = read(ray, ray_state_address(ray.id, state_bytes_), state_bytes_, now, true);
   Cycle ready = data == kPending ? now : std::max(now, data);
   if (wait_reads(ray.slot, Wait::State, ready)) return;
   ray.ready = ready;

@@ -18,16 +18,18 @@ TestUnitPool::TestUnitPool(const TestUnitConfig& config)
   if (!problem.empty()) throw std::invalid_argument(problem);
 }
 
-TestUnitPool::Slot* TestUnitPool::slot_at(Cycle cycle) {
+TestUnitPool::Slot* TestUnitPool::entry(Cycle cycle) {
   Slot& slot = calendar_[cycle & (kCalendarCycles - 1)];
   auto epoch = uint32_t(cycle / kCalendarCycles + 1);
-  if (slot.epoch == epoch) return &slot;
-  if (slot.epoch > epoch) {
-    stats_.calendar_conflicts++;
-    return nullptr;
-  }
-  slot = Slot{epoch, 0, 0};  // an earlier cycle's entry: free again
+  if (slot.epoch > epoch) return nullptr;
+  if (slot.epoch < epoch) slot = Slot{epoch, 0, 0};  // an earlier cycle's entry: free again
   return &slot;
+}
+
+TestUnitPool::Slot* TestUnitPool::slot_at(Cycle cycle) {
+  Slot* slot = entry(cycle);
+  if (!slot) stats_.calendar_conflicts++;
+  return slot;
 }
 
 Cycle TestUnitPool::find_free(Cycle cycle) {
@@ -55,12 +57,10 @@ Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
   stats_.requests++;
   stats_.tests += tests;
   stats_.issues += issues;
-  if (issues == 1) {  // the common case: a unit free at the arrival cycle, no search
-    Slot& slot = calendar_[arrival & (kCalendarCycles - 1)];
-    auto epoch = uint32_t(arrival / kCalendarCycles + 1);
-    if (slot.epoch < epoch) slot = Slot{epoch, 0, 0};  // as slot_at: an earlier cycle's entry
-    if (slot.epoch == epoch && slot.used < config_.count) {
-      slot.used++;
+  if (issues == 1) {              // the common case: a unit free at the arrival cycle, no search
+    Slot* slot = entry(arrival);  // a conflict is counted once, by the search below
+    if (slot && slot->used < config_.count) {
+      slot->used++;
       return arrival + config_.latency;
     }
   }

@@ -40,7 +40,7 @@ struct TestUnitStats {
 };
 
 class TestUnitPool {
-public:
+ public:
   static constexpr uint32_t kCalendarCycles = 1u << 10;
 
   explicit TestUnitPool(const TestUnitConfig& config);  // throws std::invalid_argument
@@ -51,13 +51,15 @@ public:
   const TestUnitStats& stats() const { return stats_; }
   const TestUnitConfig& config() const { return config_; }
 
-private:
+ private:
   struct Slot {
     uint32_t epoch = 0;  // cycle / kCalendarCycles + 1 of the cycle this entry counts for
     uint16_t used = 0;   // issues taken in that cycle
     uint16_t skip = 0;   // when booked: cycles to jump ahead to look for a free one (a hint)
   };
-  // The entry of `cycle`, or nullptr if it holds a later cycle (count as booked).
+  // The entry of `cycle` (reset if it held an earlier cycle), or nullptr if it holds a later
+  // one (count as booked); slot_at also counts that as a calendar conflict.
+  Slot* entry(Cycle cycle);
   Slot* slot_at(Cycle cycle);
   // The first cycle at or after `cycle` with a free issue; shortens the skips it followed.
   Cycle find_free(Cycle cycle);

@@ -25,7 +25,7 @@ const char* prefetch_trigger_name(PrefetchTrigger trigger) {
   }
 }
 
-std::vector<std::vector<ByteRange>> treelet_footprints(const BvhImage& image) {
+TreeletFootprints treelet_footprints(const BvhImage& image) {
   uint32_t count = 0;
   for (uint32_t t : image.node_treelet) count = std::max(count, t + 1);
   std::vector<std::vector<ByteRange>> nodes(count), triangles(count);
@@ -45,7 +45,7 @@ std::vector<std::vector<ByteRange>> treelet_footprints(const BvhImage& image) {
 }
 
 TreeletPrefetcher::TreeletPrefetcher(const PrefetchConfig& config,
-                                     const std::vector<std::vector<ByteRange>>* footprints)
+                                     const TreeletFootprints* footprints)
     : config_(config), footprints_(footprints) {
   if (config.trigger == PrefetchTrigger::FirstVisit) recent_.assign(config.recent, ~0u);
 }

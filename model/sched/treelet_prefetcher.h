@@ -35,8 +35,10 @@ struct ByteRange {
   uint32_t bytes = 0;
 };
 
-// Per treelet: the byte ranges of its nodes, then of its leaves' triangles.
-std::vector<std::vector<ByteRange>> treelet_footprints(const BvhImage& image);
+// Per treelet: the byte ranges of its nodes, then of its leaves' triangles. Computed once per
+// simulation and shared by the units.
+using TreeletFootprints = std::vector<std::vector<ByteRange>>;
+TreeletFootprints treelet_footprints(const BvhImage& image);
 
 struct PrefetchStats {
   uint64_t treelets = 0;  // prefetches started
@@ -47,9 +49,8 @@ struct PrefetchStats {
 // One RT unit's prefetcher: decides when, and which bytes to send to its L1.
 class TreeletPrefetcher {
  public:
-  // footprints: from treelet_footprints; unused when trigger is None.
-  TreeletPrefetcher(const PrefetchConfig& config,
-                    const std::vector<std::vector<ByteRange>>* footprints);
+  // footprints: from treelet_footprints; may be null when trigger is None.
+  TreeletPrefetcher(const PrefetchConfig& config, const TreeletFootprints* footprints);
   const PrefetchConfig& config() const { return config_; }
   // first_visit: a node step into `treelet`; batch: a batch of `rays` rays of `treelet`. Return
   // the ranges to prefetch now (empty: none), valid until the next call.
@@ -61,7 +62,7 @@ class TreeletPrefetcher {
   const std::vector<ByteRange>& start(uint32_t treelet);
 
   PrefetchConfig config_;
-  const std::vector<std::vector<ByteRange>>* footprints_;
+  const TreeletFootprints* footprints_;
   std::vector<uint32_t> recent_;  // ring of the last treelets prefetched
   uint32_t next_ = 0;
   std::vector<ByteRange> ranges_, none_;

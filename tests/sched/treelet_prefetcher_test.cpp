@@ -99,7 +99,8 @@ PrefetchRun run_prefetching(const BvhImage& image, const std::vector<Ray>& rays,
   config.warp_size = 8;
   config.prefetch.trigger = trigger;
   config.prefetch.batch_rays = 4;
-  RtCore core(0, config, unit, memory);
+  TreeletFootprints footprints = treelet_footprints(image);
+  RtCore core(0, config, unit, memory, &footprints);
   core.set_supply(treelets ? static_cast<RaySupply*>(&queues) : &supply.dispatcher);
   test::drive({&core});
   return {supply.listener.done, memory.prefetches, core.prefetch_stats().treelets};
