@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+
+#include <glm/common.hpp>
 
 #include "model/bvh/binned_sah.h"
 #include "model/bvh/node_format.h"
@@ -14,11 +17,16 @@
 namespace rtsim {
 namespace {
 
-float largest_coordinate(const TriangleMesh& mesh) {
-  float m = 0.0f;
-  for (const auto& p : mesh.positions)
-    m = std::max({m, std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-  return m;
+void set_scene_bounds(const TriangleMesh& mesh, BvhImage& image) {
+  glm::vec3 lo(std::numeric_limits<float>::infinity()), hi = -lo;
+  for (const auto& p : mesh.positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  image.scene_lo = lo;
+  image.scene_hi = hi;
+  glm::vec3 m = glm::max(glm::abs(lo), glm::abs(hi));
+  image.scene_extent = std::max({m.x, m.y, m.z});
 }
 
 uint32_t deepest_level(const WideBvh& bvh) {
@@ -55,7 +63,7 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
   image.node_size = node_stride(config.node_format, config.width);
   image.node_stride = padded_stride(image.node_size, config.node_align);
   image.triangle_stride = triangle_stride(config.triangle_format);
-  image.scene_extent = largest_coordinate(mesh);
+  set_scene_bounds(mesh, image);
 
   // Build, collapse, cut into treelets, order.
   Bvh2 bvh2 = build_binned_sah(mesh, config);

@@ -184,6 +184,32 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.dispatch.latency = uint32_t(dispatch.integer(
       "latency", c.dispatch.latency, "cycles", "from delivery to arrival at the unit", 0, 100000));
 
+  ConfigReader sort = r.section("sort");
+  SortConfig& so = c.sort;
+  std::string key = sort.text("key", sort_key_name(so.key),
+                              "ray sorting unit between dispatch and the units: off, origin cell "
+                              "and direction octant, or a hash of origin cell and direction",
+                              {"none", "octant_cell", "hash"});
+  so.key = key == "octant_cell" ? SortKey::OctantCell
+           : key == "hash"      ? SortKey::Hash
+                                : SortKey::None;
+  so.buffer_rays = uint32_t(sort.integer("buffer_rays", so.buffer_rays, "rays",
+                                         "rays the sorting buffer holds", 1, 1 << 24));
+  so.latency = uint32_t(sort.integer("latency", so.latency, "cycles",
+                                     "from a take (or the ray's arrival, if later) to the unit",
+                                     0, 100000));
+  so.grid = uint32_t(sort.integer("grid", so.grid, "cells",
+                                  "origin cells per axis over the scene's bounds", 1, 1024));
+  so.direction_bins = uint32_t(sort.integer("direction_bins", so.direction_bins, "steps",
+                                            "hash: quantisation steps per direction component",
+                                            1, 1024));
+  so.bins = uint32_t(sort.integer("bins", so.bins, "bins", "hash: bins the key is hashed into", 1,
+                                  1 << 24));
+  so.max_age = uint32_t(sort.integer("max_age", so.max_age, "rays",
+                                     "a ray overtaken by this many later rays has its bin served "
+                                     "first; 0: never",
+                                     0, kMaxU32));
+
   ConfigReader rt = r.section("rt");
   c.rt_units =
       uint32_t(rt.integer("count", c.rt_units, "units", "RT units, each with its L1", 1, 1024));
@@ -218,11 +244,21 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                                   "one spilled stack entry", 1, 64));
   read_test_units(rt.section("box"), c.rt.box, "child boxes");
   read_test_units(rt.section("triangle"), c.rt.triangle, "triangles");
-  std::string policy = rt.section("packet").text(
+  ConfigReader packet = rt.section("packet");
+  std::string policy = packet.text(
       "policy", packet_policy_name(c.rt.packet_policy),
       "packet mode: lanes that step together (node_first: while-while; majority)",
       {"node_first", "majority"});
   c.rt.packet_policy = policy == "majority" ? PacketPolicy::Majority : PacketPolicy::NodeFirst;
+  PacketReorderConfig& reorder = c.rt.reorder;
+  reorder.below = packet.real("reorder_below", reorder.below, "fraction",
+                              "packet mode: a packet whose step would use fewer of its lanes is "
+                              "regrouped into two of half the width; 0 = never",
+                              0, 1);
+  reorder.min_width = uint32_t(packet.integer("min_width", reorder.min_width, "lanes",
+                                              "the narrowest packet reordering makes", 1, 256));
+  reorder.latency = uint32_t(packet.integer("reorder_latency", reorder.latency, "cycles",
+                                            "regrouping a packet's rays", 0, 100000));
   ConfigReader prefetch = rt.section("prefetch");
   PrefetchConfig& pf = c.rt.prefetch;
   std::string trigger = prefetch.text(
@@ -427,6 +463,13 @@ std::string hw_config_problem(const HwConfig& c) {
     p = section("dram", banked_dram_config_problem(c.banked_dram));
   if (p.empty()) p = section("dispatch", dispatch_config_problem(c.dispatch));
   if (p.empty()) p = section("treelet_queues", treelet_queue_config_problem(c.treelet_queues));
+  if (p.empty()) p = section("sort", sort_config_problem(c.sort));
+  if (p.empty() && c.sort.key != SortKey::None && c.rt.mode == TraversalMode::Treelet)
+    p = "[sort] a sorting unit feeds depth_first or packet units; treelet queues group rays "
+        "themselves (set sort.key = \"none\")";
+  if (p.empty() && c.sort.key != SortKey::None && c.sort.buffer_rays < c.rt.warp_size)
+    p = fmt::format("[sort] buffer_rays ({}) must hold at least a warp (rt.warp_size = {})",
+                    c.sort.buffer_rays, c.rt.warp_size);
   if (p.empty()) p = section("bvh", validate(c.bvh));
   const RayBufferConfig& buffer = c.treelet_queues.buffer;
   uint32_t state = ray_state_bytes(c.rt.stack);

@@ -16,6 +16,7 @@
 #include "model/mem/dram.h"
 #include "model/mem/dram_config.h"
 #include "model/sched/dispatcher.h"
+#include "model/sched/ray_sorter.h"
 #include "model/sched/rt_core.h"
 #include "model/sched/treelet_scheduler.h"
 
@@ -44,6 +45,7 @@ struct HwConfig {
   double clock_ghz = 1.5;  // GHz: the clock of every unit (MRays/s = rays/cycle * clock)
   SimulationConfig sim;
   DispatchConfig dispatch;
+  SortConfig sort;  // the ray sorting unit between dispatch and the units (off by default)
   uint32_t rt_units = 4;  // units: RT units, each with its own L1
   RtCoreConfig rt;
   CacheConfig l1{32 * 1024, 64, 4, "lru", 20, 16};

@@ -11,7 +11,8 @@ namespace rtsim {
 
 uint32_t ray_slots(const HwConfig& c) {
   if (c.rt.mode == TraversalMode::Treelet) return c.treelet_queues.max_rays;
-  return c.rt_units * c.rt.warps * c.rt.warp_size;
+  uint32_t sorting = c.sort.key == SortKey::None ? 0 : c.sort.buffer_rays;
+  return c.rt_units * c.rt.warps * c.rt.warp_size + sorting;
 }
 
 namespace {
@@ -64,6 +65,12 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
                                                      root, pool_, ray_state_bytes(config.rt.stack));
     treelets_->in.bind(dispatch_->out);
     supply = treelets_.get();
+  }
+  if (config.sort.key != SortKey::None) {
+    sorter_ = std::make_unique<RaySorterModule>("ray_sorter", config.sort,
+                                                SceneBounds{image.scene_lo, image.scene_hi});
+    sorter_->in.bind(dispatch_->out);
+    supply = sorter_.get();
   }
   if (config.rt.prefetch.trigger != PrefetchTrigger::None) footprints_ = treelet_footprints(image);
   for (uint32_t i = 0; i < config.rt_units; ++i) {
@@ -158,6 +165,7 @@ std::string RtSimulator::dump() const {
   out << "dispatch: " << d.stats().rays << " rays handed out, " << d.in_flight()
       << " in flight, stream " << (d.exhausted() ? "exhausted" : "has rays") << "\n";
   if (treelets_) out << treelets_->dump();
+  if (sorter_) out << sorter_->dump();
   for (const auto& unit : units_) out << unit->core().dump();
   out << "l2: " << l2_->queued() << " requests and DRAM reads queued\n";
   if (banked_dram_)

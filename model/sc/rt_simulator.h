@@ -17,6 +17,7 @@
 #include "model/config/hw_config.h"
 #include "model/sc/banked_dram_module.h"
 #include "model/sc/dispatcher_module.h"
+#include "model/sc/ray_sorter_module.h"
 #include "model/sc/rt_unit_module.h"
 #include "model/sc/shared_cache_module.h"
 #include "model/sc/stall_watchdog.h"
@@ -34,7 +35,7 @@ class SimStallError : public std::runtime_error {
 };
 
 // Ray slots of the machine: the rays it holds in flight (ray contexts; the treelet buffer in
-// treelet mode). Sizes the sampled level's windows too.
+// treelet mode; the sorting buffer's rays too). Sizes the sampled level's windows too.
 uint32_t ray_slots(const HwConfig& config);
 
 class RtSimulator {
@@ -98,6 +99,7 @@ class RtSimulator {
   std::unique_ptr<BankedDramModule> banked_dram_;  // the banked one
   std::unique_ptr<DispatcherModule> dispatch_;
   std::unique_ptr<TreeletQueueModule> treelets_;
+  std::unique_ptr<RaySorterModule> sorter_;
   std::vector<std::unique_ptr<RtUnitModule>> units_;
   std::unique_ptr<StallWatchdog> watchdog_;
   bool measuring_ = false;  // the first measured ray has been dispatched

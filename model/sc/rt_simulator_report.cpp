@@ -212,6 +212,7 @@ void report_prefetch(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitM
 // Counters every unit has, summed over the units as "rt.*" too.
 struct UnitTotals {
   uint64_t steps = 0, warp_steps = 0, active_lanes = 0, node_warp_steps = 0, distinct_nodes = 0;
+  uint64_t packet_lanes = 0, reorders = 0;
   uint64_t spill_entries = 0, refill_entries = 0, postponed = 0, refused = 0;
   double ray_slot_cycles = 0;
 };
@@ -255,6 +256,18 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     report_ray_buffer(r, treelets_->scheduler().buffer(), units_);
   }
 
+  if (sorter_) {
+    const SortStats& s = sorter_->sorter().stats();
+    r.counter("sort.rays", s.rays);
+    r.counter("sort.takes", s.takes);
+    r.counter("sort.bins_served", s.bins_served);
+    r.counter("sort.aged", s.aged);
+    r.counter("sort.wait_cycles", s.wait_cycles);
+    r.gauge("sort.max_held", s.max_held);
+    r.ratio("sort.bins_per_take", "sort.bins_served", "sort.takes");
+    r.ratio("sort.mean_wait", "sort.wait_cycles", "sort.rays");
+  }
+
   UnitTotals total;
   uint32_t slots = config_.rt.warps * config_.rt.warp_size;
   for (const auto& unit : units_) {
@@ -288,6 +301,8 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     total.steps += steps;
     total.warp_steps += s.warp_steps;
     total.active_lanes += s.active_lanes;
+    total.packet_lanes += s.packet_lanes;
+    total.reorders += s.reorders;
     total.node_warp_steps += s.node_warp_steps;
     total.distinct_nodes += s.distinct_nodes;
     total.spill_entries += s.spill_entries;
@@ -299,6 +314,8 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
   r.counter("rt.steps", total.steps);
   r.counter("rt.warp_steps", total.warp_steps);
   r.counter("rt.active_lanes", total.active_lanes);
+  r.counter("rt.packet_lanes", total.packet_lanes);
+  r.counter("rt.packet_reorders", total.reorders);
   r.counter("rt.node_warp_steps", total.node_warp_steps);
   r.counter("rt.distinct_nodes", total.distinct_nodes);
   r.counter("rt.stack.spill_entries", total.spill_entries);
@@ -306,7 +323,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
   r.counter("rt.postponed", total.postponed);
   r.counter("rt.postpones_refused", total.refused);
   r.real("rt.ray_slot_cycles", total.ray_slot_cycles);
-  r.ratio("rt.simd_efficiency", "rt.active_lanes", "rt.warp_steps", 1.0 / config_.rt.warp_size);
+  r.ratio("rt.simd_efficiency", "rt.active_lanes", "rt.packet_lanes");
   r.ratio("rt.distinct_nodes_per_warp_step", "rt.distinct_nodes", "rt.node_warp_steps");
   r.ratio("rt.slot_occupancy", "rt.ray_slot_cycles", "cycles",
           1.0 / (double(slots) * config_.rt_units));

@@ -5,7 +5,8 @@
 // (one read per step, which the step waits for). Spills live in local memory, cached like any
 // data: in a region per ray slot of the unit (the next ray in the slot reuses it, as GPU local
 // memory is reused), or, in treelet mode, where a ray moves between units, per ray context (its
-// entry in the ray buffer). The functional stack in TraversalState stays
+// entry in the ray buffer). The region is fixed when the ray starts: a ray that packet
+// reordering moves to another lane keeps its spilled entries where they are. The functional stack in TraversalState stays
 // whole: this model only counts where its entries live and what moving them costs.
 // Spill traffic as in Aila & Karras (HPG 2010), who name stack traffic the main auxiliary cost.
 #pragma once
@@ -50,6 +51,7 @@ class HardwareStack {
   void start(RayContext& ray) const {
     ray.resident = 1;
     ray.spilled = 0;
+    ray.stack_region = slots_per_unit_ ? ray.unit * slots_per_unit_ + ray.slot : ray.id;
   }
   // Before a step that pops `pops` entries: the read that brings back the spilled ones it
   // needs (none if the on-chip stack holds them).
@@ -61,8 +63,7 @@ class HardwareStack {
 
  private:
   uint64_t address(const RayContext& ray, uint32_t entry) const {
-    uint32_t owner = slots_per_unit_ ? ray.unit * slots_per_unit_ + ray.slot : ray.id;
-    return region(owner) + (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
+    return region(ray.stack_region) + (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
   }
   StackConfig config_;
   uint32_t slots_per_unit_;

@@ -35,6 +35,7 @@ struct RayContext {
   uint32_t unit = 0, slot = 0;  // where it runs now
   // Hardware stack: entries on chip (the top of the traversal stack) and spilled below them.
   uint32_t resident = 0, spilled = 0;
+  uint32_t stack_region = 0;  // whose spill region holds its spilled entries (hardware_stack.h)
   // Treelet mode: the treelet being traversed, the treelet of each stack entry, and the next
   // ray in the same queue.
   uint32_t treelet = 0;

@@ -43,6 +43,15 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
     return "prefetch: needs per-ray traversal (depth_first or treelet), not packet mode";
   if (p.trigger == PrefetchTrigger::Batch && c.mode != TraversalMode::Treelet)
     return "prefetch: trigger = \"batch\" needs treelet queues (rt.mode = \"treelet\")";
+  const PacketReorderConfig& r = c.reorder;
+  if (!(r.below >= 0 && r.below <= 1)) return "packet: reorder_below must be 0..1";
+  if (r.below > 0 && c.mode != TraversalMode::Packet)
+    return "packet: reorder_below needs packet mode (rt.mode = \"packet\")";
+  if (r.below > 0) {
+    uint32_t runs = r.min_width ? c.warp_size / r.min_width : 0;
+    if (runs == 0 || c.warp_size % r.min_width != 0 || (runs & (runs - 1)) != 0)
+      return "packet: min_width must divide warp_size by a power of two (halving reaches it)";
+  }
   if (p.recent == 0) return "prefetch: recent must be at least 1";
   if (p.batch_rays == 0) return "prefetch: batch_rays must be at least 1";
   return {};
@@ -76,6 +85,11 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
   step_tests_.assign(slots_.size(), kNoTests);
   step_leaf_.assign(slots_.size(), 0);
   lane_next_.resize(config.warp_size);
+  if (config.mode == TraversalMode::Packet) {
+    packet_unit_ = config.reorder.below > 0 ? config.reorder.min_width : config.warp_size;
+    packet_head_.assign(slots_.size() / packet_unit_, 0);
+    packet_width_.assign(slots_.size() / packet_unit_, config.warp_size);
+  }
 }
 
 void RtCore::account(Cycle now) {
@@ -98,7 +112,7 @@ uint64_t RtCore::advance(Cycle until) {
   while (events_.pop_before(until, e)) {
     now_ = std::max(now_, e.cycle);
     if (config_.mode == TraversalMode::Packet)
-      on_warp(e.item, now_);
+      on_packet(e.item, now_);
     else
       on_ray(e.item, now_);
   }
@@ -176,7 +190,12 @@ void RtCore::fill(Cycle now) {
         install(batch_[i], warp * config_.warp_size + uint32_t(i), now);
         start = std::max(start, batch_[i]->ready);
       }
-      if (config_.mode == TraversalMode::Packet) events_.push(std::max(start, now), warp);
+      if (config_.mode == TraversalMode::Packet) {
+        uint32_t runs = config_.warp_size / packet_unit_, head = warp * runs;
+        std::fill_n(packet_head_.begin() + head, runs, head);
+        packet_width_[head] = config_.warp_size;
+        events_.push(std::max(start, now), head);
+      }
     } else {
       for (RayContext* ray : batch_) {
         uint32_t slot = free_slots_.back();

@@ -46,6 +46,17 @@ const char* traversal_mode_name(TraversalMode mode);  // depth_first, treelet, p
 const char* refill_name(Refill refill);               // warp, slot
 const char* packet_policy_name(PacketPolicy policy);  // node_first, majority
 
+// Packet mode: packet reordering after Boulos et al., "Adaptive ray packet reordering" (IEEE
+// RT 2008). When the lanes a packet step would use fall below `below` of its width, its rays
+// are regrouped (lanes of the step's kind first, by the node they visit next), which takes
+// `latency` cycles, and it goes on as two packets of half the width, down to min_width lanes;
+// the packets step independently, each its own issue. The buffer is the warp's own lanes.
+struct PacketReorderConfig {
+  double below = 0;         // fraction of the packet's lanes; 0: never reorder
+  uint32_t min_width = 8;   // lanes: the narrowest packet
+  uint32_t latency = 2;     // cycles: the regrouping
+};
+
 struct RtCoreConfig {
   TraversalMode mode = TraversalMode::DepthFirst;
   uint32_t warps = 4;            // warps: warp slots of the unit
@@ -57,6 +68,7 @@ struct RtCoreConfig {
   TestUnitConfig box{1, 8, 8};        // ray-box units: a BVH8 node per issue
   TestUnitConfig triangle{1, 1, 12};  // ray-triangle units
   PacketPolicy packet_policy = PacketPolicy::NodeFirst;
+  PacketReorderConfig reorder;
   Refill refill = Refill::Warp;
   PrefetchConfig prefetch;  // treelet prefetching into the unit's L1 (off by default)
 };
@@ -78,6 +90,8 @@ struct RtCoreStats {
   } state;
   uint64_t warp_steps = 0, active_lanes = 0;  // packet mode
   uint64_t node_warp_steps = 0, distinct_nodes = 0;
+  uint64_t packet_lanes = 0;  // lanes of the packets stepped (SIMD efficiency's denominator)
+  uint64_t reorders = 0;      // packets regrouped into two narrower ones
   double ray_slot_cycles = 0;  // integral of occupied ray slots over cycles
   Cycle last_cycle = 0;        // the last cycle the unit did anything
 };
@@ -140,13 +154,16 @@ class RtCore : private ReadClient {
   void retire(uint32_t slot, Cycle now);
   void release(uint32_t slot, Cycle now);
   void on_ray(uint32_t slot, Cycle now);
-  void on_warp(uint32_t warp, Cycle now);
+  void on_packet(uint32_t item, Cycle now);
+  // Regroups the packet at `item` and splits it in two; its lanes' next visits in lane_next_.
+  void reorder(uint32_t item, bool leaf_step, Cycle now);
   bool refills_warps() const {
     return config_.mode == TraversalMode::Packet ||
            (config_.mode == TraversalMode::DepthFirst && config_.refill == Refill::Warp);
   }
+  // Packet mode: a packet is the item of its first packet_unit_ lanes.
   uint32_t item_of(uint32_t slot) const {
-    return config_.mode == TraversalMode::Packet ? slot / config_.warp_size : slot;
+    return config_.mode == TraversalMode::Packet ? packet_head_[slot / packet_unit_] : slot;
   }
   // A read for the ray: its ready cycle, or kPending (its item then waits for read_done).
   // state: the ray's state from memory, whose cost is also counted in stats_.state.
@@ -194,7 +211,17 @@ class RtCore : private ReadClient {
   std::vector<uint32_t> free_slots_;  // refilled by slot
   std::vector<uint32_t> free_warps_;  // refilled by warp
   std::vector<RayContext*> batch_;
+  // Packet mode: packets are aligned runs of packet_unit_ lanes (a warp, or min_width lanes
+  // when packets reorder); per run, the item of its packet; per packet item, its lanes.
+  uint32_t packet_unit_ = 1;
+  std::vector<uint32_t> packet_head_, packet_width_;
   std::vector<Next> lane_next_;  // packet mode scratch
+  struct Regroup {
+    RayContext* ray;
+    bool other_kind;
+    uint32_t node, lane;
+  };
+  std::vector<Regroup> regroup_;
   std::vector<uint64_t> warp_reads_;
   uint32_t in_flight_ = 0;
   bool waiting_ = false, started_ = false;

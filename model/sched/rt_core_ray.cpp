@@ -68,8 +68,9 @@ bool RtCore::wait_reads(uint32_t item, Wait wait, Cycle known_ready) {
 
 Cycle RtCore::test_step(uint32_t item, Cycle data) {
   TestUnitPool& unit = step_leaf_[item] ? triangle_ : box_;
-  uint32_t first = config_.mode == TraversalMode::Packet ? item * config_.warp_size : item;
-  uint32_t count = config_.mode == TraversalMode::Packet ? config_.warp_size : 1;
+  bool packet = config_.mode == TraversalMode::Packet;
+  uint32_t first = packet ? item * packet_unit_ : item;
+  uint32_t count = packet ? packet_width_[item] : 1;
   Cycle done = data;
   for (uint32_t slot = first; slot < first + count; ++slot) {
     if (step_tests_[slot] == kNoTests) continue;

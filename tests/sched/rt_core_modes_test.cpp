@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "model/sched/ray_buffer.h"
+#include "model/sched/ray_sorter.h"
 #include "model/sched/rt_core.h"
 #include "model/sched/treelet_scheduler.h"
 #include "tests/model/model_test_util.h"
@@ -35,10 +36,12 @@ bool same_bits(float a, float b) {
   return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
-RtCoreConfig small_config(TraversalMode mode, PacketPolicy policy = PacketPolicy::NodeFirst) {
+RtCoreConfig small_config(TraversalMode mode, PacketPolicy policy = PacketPolicy::NodeFirst,
+                          PacketReorderConfig reorder = {}) {
   RtCoreConfig c;
   c.mode = mode;
   c.packet_policy = policy;
+  c.reorder = reorder;
   c.warps = 2;
   c.warp_size = 8;
   c.stack.entries = 2;  // small: spills happen
@@ -48,7 +51,8 @@ RtCoreConfig small_config(TraversalMode mode, PacketPolicy policy = PacketPolicy
 // Runs two cores over the scene's rays and checks each answer against TraversalUnit::trace.
 std::vector<test::Retired> run_mode(const Scene& scene, TraversalMode mode,
                                     RtCoreStats* stats = nullptr,
-                                    PacketPolicy policy = PacketPolicy::NodeFirst) {
+                                    PacketPolicy policy = PacketPolicy::NodeFirst,
+                                    PacketReorderConfig reorder = {}) {
   TraversalUnit unit(scene.image);
   test::MockRayMemory memory0(40), memory1(60);
   bool treelets = mode == TraversalMode::Treelet;
@@ -59,14 +63,15 @@ std::vector<test::Retired> run_mode(const Scene& scene, TraversalMode mode,
   TreeletScheduler queues(tq, scene.image.treelets.count, scene.image.node_treelet[0],
                           supply.dispatcher, supply.pool, 100);
   RaySupply* feed = treelets ? static_cast<RaySupply*>(&queues) : &supply.dispatcher;
-  RtCore core0(0, small_config(mode, policy), unit, memory0);
-  RtCore core1(1, small_config(mode, policy), unit, memory1);
+  RtCore core0(0, small_config(mode, policy, reorder), unit, memory0);
+  RtCore core1(1, small_config(mode, policy, reorder), unit, memory1);
   core0.set_supply(feed);
   core1.set_supply(feed);
   test::drive({&core0, &core1});
   if (stats) {
     *stats = core0.stats();
     stats->spill_entries += core1.stats().spill_entries;
+    stats->reorders += core1.stats().reorders;
     stats->refill_entries += core1.stats().refill_entries;
   }
   if (treelets) {
@@ -113,6 +118,110 @@ TEST(RtCoreModes, MajorityPacketAnswersEqualTheFunctionalTraversal) {
   Scene scene;
   expect_functional(scene, run_mode(scene, TraversalMode::Packet, nullptr, PacketPolicy::Majority),
                     "packet majority");
+}
+
+TEST(RtCoreModes, ReorderedPacketAnswersEqualTheFunctionalTraversal) {
+  Scene scene;
+  RtCoreStats stats;
+  PacketReorderConfig reorder{0.5, 2, 3};
+  for (PacketPolicy policy : {PacketPolicy::NodeFirst, PacketPolicy::Majority}) {
+    expect_functional(scene, run_mode(scene, TraversalMode::Packet, &stats, policy, reorder),
+                      "packet reordered");
+    EXPECT_GT(stats.reorders, 0u);
+    EXPECT_GT(stats.spill_entries, 0u) << "moved rays spill and refill from their own region";
+  }
+}
+
+// Packet reordering over the given rays on one core with a fixed-latency memory.
+struct ReorderRun {
+  RtCoreStats stats;
+  Cycle last = 0;
+  std::vector<test::Retired> done;
+};
+
+ReorderRun run_reorder(const Scene& scene, std::vector<Ray> rays, PacketReorderConfig reorder) {
+  TraversalUnit unit(scene.image);
+  test::MockRayMemory memory(30);
+  test::MockSupply supply(std::move(rays), unit, 16);
+  RtCore core(0, small_config(TraversalMode::Packet, PacketPolicy::NodeFirst, reorder), unit,
+              memory);
+  core.set_supply(&supply.dispatcher);
+  test::drive({&core});
+  return {core.stats(), core.stats().last_cycle, supply.listener.done};
+}
+
+TEST(RtCoreModes, ALoneRayIsRegroupedDownToMinWidthEachRegroupTakingItsLatency) {
+  Scene scene;
+  std::vector<Ray> one{scene.rays[1500]};
+  ReorderRun plain = run_reorder(scene, one, {});
+  // Width 8 with 1 lane active: 1 < 0.5 * 8 -> 4 lanes; 1 < 0.5 * 4 -> 2; 1 < 0.5 * 2 fails.
+  ReorderRun reordered = run_reorder(scene, one, {0.5, 1, 7});
+  EXPECT_EQ(plain.stats.reorders, 0u);
+  EXPECT_EQ(reordered.stats.reorders, 2u);
+  EXPECT_EQ(reordered.last, plain.last + 2 * 7) << "the same steps, two regroups later";
+  EXPECT_EQ(reordered.stats.warp_steps, plain.stats.warp_steps);
+  EXPECT_EQ(reordered.stats.packet_lanes, plain.stats.warp_steps * 2) << "every step 2 wide";
+  ReorderRun narrowest = run_reorder(scene, one, {1.0, 1, 0});
+  EXPECT_EQ(narrowest.stats.reorders, 3u) << "1 < 1.0 * 2 too: down to one lane";
+  EXPECT_EQ(narrowest.stats.packet_lanes, plain.stats.warp_steps);
+}
+
+TEST(RtCoreModes, ACoherentPacketIsNeverRegroupedAndDivergentOnesGainSimdEfficiency) {
+  Scene scene;
+  std::vector<Ray> same(16, scene.rays[1500]);
+  EXPECT_EQ(run_reorder(scene, same, {0.5, 2, 3}).stats.reorders, 0u);
+  std::vector<Ray> random(scene.rays.begin(), scene.rays.begin() + 400);
+  RtCoreStats plain = run_reorder(scene, random, {}).stats;
+  RtCoreStats reordered = run_reorder(scene, random, {0.5, 2, 3}).stats;
+  double before = double(plain.active_lanes) / double(plain.packet_lanes);
+  double after = double(reordered.active_lanes) / double(reordered.packet_lanes);
+  EXPECT_EQ(plain.packet_lanes, plain.warp_steps * 8);
+  EXPECT_GT(reordered.reorders, 0u);
+  EXPECT_GT(after, before + 0.1) << "narrower packets use more of their lanes";
+  EXPECT_EQ(reordered.node_steps + reordered.leaf_steps, plain.node_steps + plain.leaf_steps)
+      << "the same visits, grouped differently";
+}
+
+TEST(RtCoreModes, SortedRaysReachPacketsMoreCoherentlyAndKeepTheirAnswers) {
+  Scene scene;
+  // Two narrow fans from the scene's centre, interleaved: +x (octant 0) and -x (octant 1).
+  glm::vec3 centre = 0.5f * (scene.image.scene_lo + scene.image.scene_hi);
+  scene.rays.clear();
+  for (int i = 0; i < 800; ++i) {
+    Ray ray;
+    ray.org = centre;
+    ray.dir = {i % 2 ? -1.0f : 1.0f, 0.01f * float(i % 13), 0.01f * float(i % 7)};
+    scene.rays.push_back(ray);
+  }
+  auto run = [&](bool sorted) {
+    TraversalUnit unit(scene.image);
+    test::MockRayMemory memory(30);
+    test::MockSupply supply(scene.rays, unit, 16 + 512);
+    SortConfig sort;
+    sort.key = SortKey::OctantCell;
+    sort.buffer_rays = 512;
+    RaySorter sorter(sort, {scene.image.scene_lo, scene.image.scene_hi}, supply.dispatcher);
+    RtCore core(0, small_config(TraversalMode::Packet), unit, memory);
+    core.set_supply(sorted ? static_cast<RaySupply*>(&sorter) : &supply.dispatcher);
+    test::drive({&core});
+    expect_functional(scene, supply.listener.done, sorted ? "sorted" : "unsorted");
+    return core.stats();
+  };
+  RtCoreStats plain = run(false), sorted = run(true);
+  auto simd = [](const RtCoreStats& s) { return double(s.active_lanes) / double(s.packet_lanes); };
+  EXPECT_GT(simd(sorted), simd(plain) * 1.3) << "a warp holds one fan, not both";
+  EXPECT_LT(sorted.distinct_nodes, plain.distinct_nodes);
+}
+
+TEST(RtCoreModes, PacketReorderingNeedsPacketModeAndAHalvingMinWidth) {
+  RtCoreConfig c = small_config(TraversalMode::DepthFirst, PacketPolicy::NodeFirst, {0.5, 2, 1});
+  EXPECT_NE(rt_core_config_problem(c), "");
+  c.mode = TraversalMode::Packet;
+  EXPECT_EQ(rt_core_config_problem(c), "");
+  c.reorder.min_width = 3;
+  EXPECT_NE(rt_core_config_problem(c), "") << "8 / 3 is no power of two";
+  c.reorder.min_width = 16;
+  EXPECT_NE(rt_core_config_problem(c), "") << "wider than the warp";
 }
 
 // Treelet queues whose ray buffer is `buffer`, over two cores: what moved where.

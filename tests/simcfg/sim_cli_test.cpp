@@ -185,6 +185,43 @@ TEST(SimCli, APrefetchTriggerItsModeCannotUseIsExitCode2) {
   std::filesystem::remove(stream);
 }
 
+TEST(SimCli, SortedAndReorderedRunsVerifyEveryRayAndReportTheirStats) {
+  std::string stream = write_stream(), out = temp("sorted");
+  test::RunResult r = test::run_rtsim("sim " + stream +
+                                      " --set sort.key=hash --set rt.mode=packet"
+                                      " --set rt.packet.reorder_below=0.5 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("verify     428 rays against Embree: "), std::string::npos) << r.out;
+  nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
+  const nlohmann::json& c = doc["stats"]["counters"];
+  EXPECT_EQ(c["sort.rays"], 428);
+  EXPECT_GT(c["rt.packet_reorders"].get<uint64_t>(), 0u);
+  EXPECT_EQ(doc["verify"]["unexplained"], 0);
+  std::filesystem::remove_all(out);
+  std::filesystem::remove(stream);
+}
+
+TEST(SimCli, SortingOrReorderingWhereTheModeCannotIsExitCode2) {
+  std::string stream = write_stream();
+  struct Case {
+    const char* set;
+    const char* says;
+  };
+  for (Case c : {Case{"--set sort.key=octant_cell --set rt.mode=treelet", "treelet queues group"},
+                 Case{"--set sort.key=hash --set sort.buffer_rays=8", "at least a warp"},
+                 Case{"--set rt.packet.reorder_below=0.5", "needs packet mode"},
+                 Case{"--set rt.mode=packet --set rt.packet.reorder_below=0.5 "
+                      "--set rt.packet.min_width=12",
+                      "power of two"}}) {
+    test::RunResult r =
+        test::run_rtsim("sim " + stream + " " + c.set + " -o " + temp("never"));
+    EXPECT_EQ(r.exit_code, 2) << c.set;
+    EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
+  }
+  std::filesystem::remove(stream);
+}
+
 TEST(SimCli, ListKeysPrintsEveryKey) {
   test::RunResult r = test::run_rtsim("sim --list-keys");
   ASSERT_EQ(r.exit_code, 0);

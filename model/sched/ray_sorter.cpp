@@ -1,0 +1,161 @@
+#include "model/sched/ray_sorter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace rtsim {
+namespace {
+
+// Which of `steps` equal parts of [lo, hi] holds x; outside it, the nearest end part.
+uint32_t quantise(double x, double lo, double hi, uint32_t steps) {
+  if (!(hi > lo)) return 0;
+  double part = std::floor((x - lo) / (hi - lo) * steps);
+  return uint32_t(std::clamp(part, 0.0, double(steps - 1)));
+}
+
+uint64_t mix(uint64_t x) {  // splitmix64's finaliser
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+const char* sort_key_name(SortKey key) {
+  switch (key) {
+    case SortKey::None: return "none";
+    case SortKey::OctantCell: return "octant_cell";
+    case SortKey::Hash: return "hash";
+  }
+  return "?";
+}
+
+std::string sort_config_problem(const SortConfig& c) {
+  if (c.buffer_rays == 0 || c.buffer_rays > (1u << 24)) return "buffer_rays must be 1..16777216";
+  if (c.grid == 0 || c.grid > 1024) return "grid must be 1..1024";
+  if (c.direction_bins == 0 || c.direction_bins > 1024) return "direction_bins must be 1..1024";
+  if (c.bins == 0 || c.bins > (1u << 24)) return "bins must be 1..16777216";
+  if (c.key == SortKey::OctantCell && uint64_t(c.grid) * c.grid * c.grid * 8 > (1u << 24))
+    return "grid: octant_cell keys need 8 * grid^3 <= 16777216 bins";
+  return {};
+}
+
+CoherenceKey::CoherenceKey(const SortConfig& config, const SceneBounds& bounds)
+    : config_(config),
+      bounds_(bounds),
+      bins_(config.key == SortKey::Hash ? config.bins : 8 * config.grid * config.grid * config.grid) {}
+
+uint32_t CoherenceKey::octant(const glm::vec3& d) {
+  return uint32_t(std::signbit(d.x)) | uint32_t(std::signbit(d.y)) << 1 |
+         uint32_t(std::signbit(d.z)) << 2;
+}
+
+uint32_t CoherenceKey::origin_cell(const glm::vec3& o) const {
+  uint32_t g = config_.grid;
+  uint32_t x = quantise(o.x, bounds_.lo.x, bounds_.hi.x, g);
+  uint32_t y = quantise(o.y, bounds_.lo.y, bounds_.hi.y, g);
+  uint32_t z = quantise(o.z, bounds_.lo.z, bounds_.hi.z, g);
+  return x + g * (y + g * z);
+}
+
+uint32_t CoherenceKey::operator()(const Ray& ray) const {
+  uint32_t cell = origin_cell(ray.org);
+  if (config_.key != SortKey::Hash) return cell * 8 + octant(ray.dir);
+  double length = std::sqrt(double(ray.dir.x) * ray.dir.x + double(ray.dir.y) * ray.dir.y +
+                            double(ray.dir.z) * ray.dir.z);
+  uint64_t direction = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    double unit = length > 0 ? ray.dir[axis] / length : 0.0;
+    direction = direction * config_.direction_bins + quantise(unit, -1.0, 1.0, config_.direction_bins);
+  }
+  return uint32_t(mix(uint64_t(cell) << 32 | direction) % config_.bins);
+}
+
+RaySorter::RaySorter(const SortConfig& config, const SceneBounds& bounds, RaySupply& upstream)
+    : config_(config),
+      key_(config, bounds),
+      upstream_(upstream),
+      fullest_(make_treelet_policy("fullest", key_.bins())),
+      bins_(key_.bins()) {
+  std::string problem = sort_config_problem(config);
+  if (problem.empty() && config.key == SortKey::None) problem = "key none: no sorting unit";
+  if (!problem.empty()) throw std::invalid_argument(problem);
+}
+
+void RaySorter::set_length(uint32_t bin, uint32_t length) {
+  fullest_->changed(bin, bins_[bin].length, length);
+  bins_[bin].length = length;
+}
+
+void RaySorter::insert(RayContext* ray) {
+  uint32_t b = key_(ray->ray);
+  Bin& bin = bins_[b];
+  ray->next_in_queue = nullptr;
+  if (bin.tail) {
+    bin.tail->next_in_queue = ray;
+  } else {
+    bin.head = ray;
+    by_head_.insert({ray->sequence, b});
+  }
+  bin.tail = ray;
+  set_length(b, bin.length + 1);
+  held_++;
+  newest_ = ray->sequence;
+}
+
+void RaySorter::fill(uint32_t unit, Cycle now) {
+  if (held_ >= config_.buffer_rays || upstream_.exhausted()) return;
+  arrivals_.clear();
+  upstream_.take(unit, now, config_.buffer_rays - held_, arrivals_);
+  for (RayContext* ray : arrivals_) insert(ray);
+  stats_.max_held = std::max<uint64_t>(stats_.max_held, held_);
+}
+
+size_t RaySorter::serve(uint32_t b, Cycle now, size_t max, std::vector<RayContext*>& out) {
+  Bin& bin = bins_[b];
+  by_head_.erase({bin.head->sequence, b});
+  size_t given = 0;
+  while (given < max && bin.head) {
+    RayContext* ray = bin.head;
+    bin.head = ray->next_in_queue;
+    ray->next_in_queue = nullptr;
+    Cycle leave = std::max(now, ray->ready) + config_.latency;
+    stats_.wait_cycles += leave - ray->ready;
+    ray->ready = leave;
+    out.push_back(ray);
+    ++given;
+  }
+  if (bin.head)
+    by_head_.insert({bin.head->sequence, b});
+  else
+    bin.tail = nullptr;
+  set_length(b, bin.length - uint32_t(given));
+  held_ -= uint32_t(given);
+  stats_.bins_served++;
+  return given;
+}
+
+size_t RaySorter::take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) {
+  fill(unit, now);
+  size_t given = 0;
+  if (config_.max_age > 0 && !by_head_.empty()) {
+    auto [sequence, oldest] = *by_head_.begin();
+    if (newest_ - sequence >= config_.max_age) {
+      stats_.aged++;
+      given += serve(oldest, now, max, out);
+    }
+  }
+  while (given < max) {
+    std::optional<uint32_t> pick = fullest_->pick();
+    if (!pick) break;
+    given += serve(*pick, now, max - given, out);
+  }
+  if (given > 0) {
+    stats_.takes++;
+    stats_.rays += given;
+  }
+  return given;
+}
+
+}  // namespace rtsim
