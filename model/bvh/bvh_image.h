@@ -33,7 +33,7 @@ struct BvhImage {
   std::vector<uint32_t> node_treelet;         // treelet id of the node at each position
   TreeletStats treelets;
   BvhBuildStats stats;
-  float scene_extent = 0.0f;                  // largest |coordinate| of any vertex
+  float scene_extent = 0.0f;                 // largest |coordinate| of any vertex
   glm::vec3 scene_lo{0.0f}, scene_hi{0.0f};  // the vertices' bounding box
 
   uint64_t node_address(uint32_t position) const {

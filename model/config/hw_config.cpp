@@ -195,16 +195,16 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                 : SortKey::None;
   so.buffer_rays = uint32_t(sort.integer("buffer_rays", so.buffer_rays, "rays",
                                          "rays the sorting buffer holds", 1, 1 << 24));
-  so.latency = uint32_t(sort.integer("latency", so.latency, "cycles",
-                                     "from a take (or the ray's arrival, if later) to the unit",
-                                     0, 100000));
+  so.latency =
+      uint32_t(sort.integer("latency", so.latency, "cycles",
+                            "from a take (or the ray's arrival, if later) to the unit", 0, 100000));
   so.grid = uint32_t(sort.integer("grid", so.grid, "cells",
                                   "origin cells per axis over the scene's bounds", 1, 1024));
-  so.direction_bins = uint32_t(sort.integer("direction_bins", so.direction_bins, "steps",
-                                            "hash: quantisation steps per direction component",
-                                            1, 1024));
-  so.bins = uint32_t(sort.integer("bins", so.bins, "bins", "hash: bins the key is hashed into", 1,
-                                  1 << 24));
+  so.direction_bins =
+      uint32_t(sort.integer("direction_bins", so.direction_bins, "steps",
+                            "hash: quantisation steps per direction component", 1, 1024));
+  so.bins = uint32_t(
+      sort.integer("bins", so.bins, "bins", "hash: bins the key is hashed into", 1, 1 << 24));
   so.max_age = uint32_t(sort.integer("max_age", so.max_age, "rays",
                                      "a ray overtaken by this many later rays has its bin served "
                                      "first; 0: never",
@@ -245,10 +245,10 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   read_test_units(rt.section("box"), c.rt.box, "child boxes");
   read_test_units(rt.section("triangle"), c.rt.triangle, "triangles");
   ConfigReader packet = rt.section("packet");
-  std::string policy = packet.text(
-      "policy", packet_policy_name(c.rt.packet_policy),
-      "packet mode: lanes that step together (node_first: while-while; majority)",
-      {"node_first", "majority"});
+  std::string policy =
+      packet.text("policy", packet_policy_name(c.rt.packet_policy),
+                  "packet mode: lanes that step together (node_first: while-while; majority)",
+                  {"node_first", "majority"});
   c.rt.packet_policy = policy == "majority" ? PacketPolicy::Majority : PacketPolicy::NodeFirst;
   PacketReorderConfig& reorder = c.rt.reorder;
   reorder.below = packet.real("reorder_below", reorder.below, "fraction",

@@ -6,9 +6,10 @@
 // data: in a region per ray slot of the unit (the next ray in the slot reuses it, as GPU local
 // memory is reused), or, in treelet mode, where a ray moves between units, per ray context (its
 // entry in the ray buffer). The region is fixed when the ray starts: a ray that packet
-// reordering moves to another lane keeps its spilled entries where they are. The functional stack in TraversalState stays
-// whole: this model only counts where its entries live and what moving them costs.
-// Spill traffic as in Aila & Karras (HPG 2010), who name stack traffic the main auxiliary cost.
+// reordering moves to another lane keeps its spilled entries where they are. The functional stack
+// in TraversalState stays whole: this model only counts where its entries live and what moving them
+// costs. Spill traffic as in Aila & Karras (HPG 2010), who name stack traffic the main auxiliary
+// cost.
 #pragma once
 
 #include <cstdint>

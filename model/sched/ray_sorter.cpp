@@ -44,7 +44,8 @@ std::string sort_config_problem(const SortConfig& c) {
 CoherenceKey::CoherenceKey(const SortConfig& config, const SceneBounds& bounds)
     : config_(config),
       bounds_(bounds),
-      bins_(config.key == SortKey::Hash ? config.bins : 8 * config.grid * config.grid * config.grid) {}
+      bins_(config.key == SortKey::Hash ? config.bins
+                                        : 8 * config.grid * config.grid * config.grid) {}
 
 uint32_t CoherenceKey::octant(const glm::vec3& d) {
   return uint32_t(std::signbit(d.x)) | uint32_t(std::signbit(d.y)) << 1 |
@@ -67,7 +68,8 @@ uint32_t CoherenceKey::operator()(const Ray& ray) const {
   uint64_t direction = 0;
   for (int axis = 0; axis < 3; ++axis) {
     double unit = length > 0 ? ray.dir[axis] / length : 0.0;
-    direction = direction * config_.direction_bins + quantise(unit, -1.0, 1.0, config_.direction_bins);
+    direction =
+        direction * config_.direction_bins + quantise(unit, -1.0, 1.0, config_.direction_bins);
   }
   return uint32_t(mix(uint64_t(cell) << 32 | direction) % config_.bins);
 }

@@ -52,9 +52,9 @@ const char* packet_policy_name(PacketPolicy policy);  // node_first, majority
 // `latency` cycles, and it goes on as two packets of half the width, down to min_width lanes;
 // the packets step independently, each its own issue. The buffer is the warp's own lanes.
 struct PacketReorderConfig {
-  double below = 0;         // fraction of the packet's lanes; 0: never reorder
-  uint32_t min_width = 8;   // lanes: the narrowest packet
-  uint32_t latency = 2;     // cycles: the regrouping
+  double below = 0;        // fraction of the packet's lanes; 0: never reorder
+  uint32_t min_width = 8;  // lanes: the narrowest packet
+  uint32_t latency = 2;    // cycles: the regrouping
 };
 
 struct RtCoreConfig {
@@ -90,8 +90,8 @@ struct RtCoreStats {
   } state;
   uint64_t warp_steps = 0, active_lanes = 0;  // packet mode
   uint64_t node_warp_steps = 0, distinct_nodes = 0;
-  uint64_t packet_lanes = 0;  // lanes of the packets stepped (SIMD efficiency's denominator)
-  uint64_t reorders = 0;      // packets regrouped into two narrower ones
+  uint64_t packet_lanes = 0;   // lanes of the packets stepped (SIMD efficiency's denominator)
+  uint64_t reorders = 0;       // packets regrouped into two narrower ones
   double ray_slot_cycles = 0;  // integral of occupied ray slots over cycles
   Cycle last_cycle = 0;        // the last cycle the unit did anything
 };

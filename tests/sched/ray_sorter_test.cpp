@@ -87,8 +87,8 @@ struct Interleaved {
   explicit Interleaved(size_t count) {
     for (size_t i = 0; i < count; ++i)
       rays.push_back(ray_at({0.5f, 0.5f, 0.5f}, {i % 2 ? -1.f : 1.f, 0.1f, 0.1f}));
-    supply = std::make_unique<test::MockSupply>(rays, any_traversal(), 4096,
-                                                DispatchConfig{1.0, 0});
+    supply =
+        std::make_unique<test::MockSupply>(rays, any_traversal(), 4096, DispatchConfig{1.0, 0});
   }
   std::vector<Ray> rays;
   std::unique_ptr<test::MockSupply> supply;

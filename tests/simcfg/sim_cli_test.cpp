@@ -189,7 +189,8 @@ TEST(SimCli, SortedAndReorderedRunsVerifyEveryRayAndReportTheirStats) {
   std::string stream = write_stream(), out = temp("sorted");
   test::RunResult r = test::run_rtsim("sim " + stream +
                                       " --set sort.key=hash --set rt.mode=packet"
-                                      " --set rt.packet.reorder_below=0.5 -o " + out);
+                                      " --set rt.packet.reorder_below=0.5 -o " +
+                                      out);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("verify     428 rays against Embree: "), std::string::npos) << r.out;
   nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
@@ -213,8 +214,7 @@ TEST(SimCli, SortingOrReorderingWhereTheModeCannotIsExitCode2) {
                  Case{"--set rt.mode=packet --set rt.packet.reorder_below=0.5 "
                       "--set rt.packet.min_width=12",
                       "power of two"}}) {
-    test::RunResult r =
-        test::run_rtsim("sim " + stream + " " + c.set + " -o " + temp("never"));
+    test::RunResult r = test::run_rtsim("sim " + stream + " " + c.set + " -o " + temp("never"));
     EXPECT_EQ(r.exit_code, 2) << c.set;
     EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
