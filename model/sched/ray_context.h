@@ -45,6 +45,27 @@ struct RayContext {
   RayCost cost;
 };
 
+// A first-in first-out queue of contexts linked through next_in_queue (treelet queues, sorting
+// bins); `length` is kept by the owner, which reports it to its policy.
+struct RayFifo {
+  RayContext* head = nullptr;
+  RayContext* tail = nullptr;
+  uint32_t length = 0;
+
+  void push(RayContext* ray) {
+    ray->next_in_queue = nullptr;
+    (tail ? tail->next_in_queue : head) = ray;
+    tail = ray;
+  }
+  RayContext* pop() {
+    RayContext* ray = head;
+    head = ray->next_in_queue;
+    ray->next_in_queue = nullptr;
+    if (!head) tail = nullptr;
+    return ray;
+  }
+};
+
 // A fixed set of contexts handed out and given back, last freed first (deterministic).
 class RayContextPool {
  public:

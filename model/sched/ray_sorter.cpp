@@ -92,15 +92,9 @@ void RaySorter::set_length(uint32_t bin, uint32_t length) {
 
 void RaySorter::insert(RayContext* ray) {
   uint32_t b = key_(ray->ray);
-  Bin& bin = bins_[b];
-  ray->next_in_queue = nullptr;
-  if (bin.tail) {
-    bin.tail->next_in_queue = ray;
-  } else {
-    bin.head = ray;
-    by_head_.insert({ray->sequence, b});
-  }
-  bin.tail = ray;
+  RayFifo& bin = bins_[b];
+  if (!bin.head) by_head_.insert({ray->sequence, b});
+  bin.push(ray);
   set_length(b, bin.length + 1);
   held_++;
   newest_ = ray->sequence;
@@ -115,23 +109,18 @@ void RaySorter::fill(uint32_t unit, Cycle now) {
 }
 
 size_t RaySorter::serve(uint32_t b, Cycle now, size_t max, std::vector<RayContext*>& out) {
-  Bin& bin = bins_[b];
+  RayFifo& bin = bins_[b];
   by_head_.erase({bin.head->sequence, b});
   size_t given = 0;
   while (given < max && bin.head) {
-    RayContext* ray = bin.head;
-    bin.head = ray->next_in_queue;
-    ray->next_in_queue = nullptr;
+    RayContext* ray = bin.pop();
     Cycle leave = std::max(now, ray->ready) + config_.latency;
     stats_.wait_cycles += leave - ray->ready;
     ray->ready = leave;
     out.push_back(ray);
     ++given;
   }
-  if (bin.head)
-    by_head_.insert({bin.head->sequence, b});
-  else
-    bin.tail = nullptr;
+  if (bin.head) by_head_.insert({bin.head->sequence, b});
   set_length(b, bin.length - uint32_t(given));
   held_ -= uint32_t(given);
   stats_.bins_served++;

@@ -87,11 +87,6 @@ class RaySorter : public RaySupply {
   const CoherenceKey& key() const { return key_; }
 
  private:
-  struct Bin {
-    RayContext* head = nullptr;
-    RayContext* tail = nullptr;
-    uint32_t length = 0;
-  };
   void fill(uint32_t unit, Cycle now);
   void insert(RayContext* ray);
   size_t serve(uint32_t bin, Cycle now, size_t max, std::vector<RayContext*>& out);
@@ -101,7 +96,7 @@ class RaySorter : public RaySupply {
   CoherenceKey key_;
   RaySupply& upstream_;
   std::unique_ptr<TreeletPolicy> fullest_;  // the treelet queues' "fullest" policy, over bins
-  std::vector<Bin> bins_;
+  std::vector<RayFifo> bins_;
   std::set<std::pair<uint64_t, uint32_t>> by_head_;  // (sequence of a bin's oldest ray, bin)
   std::vector<RayContext*> arrivals_;
   uint32_t held_ = 0;

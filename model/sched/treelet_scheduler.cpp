@@ -35,7 +35,7 @@ void TreeletScheduler::account(Cycle now) {
 }
 
 void TreeletScheduler::set_length(uint32_t treelet, uint32_t length) {
-  Queue& q = queues_[treelet];
+  RayFifo& q = queues_[treelet];
   policy_->changed(treelet, q.length, length);
   q.length = length;
   stats_.max_queue_length = std::max<uint64_t>(stats_.max_queue_length, length);
@@ -63,18 +63,15 @@ size_t TreeletScheduler::take(uint32_t unit, Cycle now, size_t max, std::vector<
 
 size_t TreeletScheduler::serve(uint32_t treelet, Cycle now, size_t max,
                                std::vector<RayContext*>& out) {
-  Queue& q = queues_[treelet];
+  RayFifo& q = queues_[treelet];
   size_t given = 0;
   while (given < max && q.head) {
-    RayContext* ray = q.head;
-    q.head = ray->next_in_queue;
-    ray->next_in_queue = nullptr;
+    RayContext* ray = q.pop();
     ray->treelet = treelet;
     ray->ready = std::max({ray->ready, now + config_.dequeue_latency, buffer_.load(*ray, now)});
     out.push_back(ray);
     ++given;
   }
-  if (!q.head) q.tail = nullptr;
   set_length(treelet, q.length - uint32_t(given));
   queued_ -= given;
   executing_ += given;
@@ -84,7 +81,7 @@ size_t TreeletScheduler::serve(uint32_t treelet, Cycle now, size_t max,
 }
 
 bool TreeletScheduler::postpone(RayContext& ray, uint32_t treelet, Cycle now) {
-  Queue& q = queues_[treelet];
+  RayFifo& q = queues_[treelet];
   if (q.length >= config_.queue_capacity || !buffer_.accepts()) {
     stats_.refused++;
     return false;
@@ -92,12 +89,7 @@ bool TreeletScheduler::postpone(RayContext& ray, uint32_t treelet, Cycle now) {
   account(now);
   ray.ready = std::max(now + config_.enqueue_latency, buffer_.store(ray, now));
   ray.cost.postponed++;
-  ray.next_in_queue = nullptr;
-  if (q.tail)
-    q.tail->next_in_queue = &ray;
-  else
-    q.head = &ray;
-  q.tail = &ray;
+  q.push(&ray);
   set_length(treelet, q.length + 1);
   queued_++;
   executing_--;

@@ -68,11 +68,6 @@ class TreeletScheduler : public RaySupply {
   void account(Cycle now);
 
  private:
-  struct Queue {
-    RayContext* head = nullptr;
-    RayContext* tail = nullptr;
-    uint32_t length = 0;
-  };
   size_t serve(uint32_t treelet, Cycle now, size_t max, std::vector<RayContext*>& out);
   void set_length(uint32_t treelet, uint32_t length);
 
@@ -81,7 +76,7 @@ class TreeletScheduler : public RaySupply {
   RaySupply& upstream_;
   const RayContextPool& pool_;
   std::unique_ptr<TreeletPolicy> policy_;
-  std::vector<Queue> queues_;
+  std::vector<RayFifo> queues_;
   RayBuffer buffer_;
   uint64_t queued_ = 0, executing_ = 0;
   TreeletQueueStats stats_;
