@@ -33,7 +33,7 @@ tlm::tlm_sync_enum BankedDramModule::nb_transport_fw(tlm::tlm_generic_payload& t
     trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
     return tlm::TLM_COMPLETED;
   }
-  Cycle at = clock_.cycles(sc_core::sc_time_stamp() + delay);
+  Cycle at = clock_.cycles(sim_now() + delay);
   controller_.enqueue(reinterpret_cast<uint64_t>(&trans), trans.get_address(),
                       trans.get_data_length(), write, at);
   trans.set_response_status(tlm::TLM_OK_RESPONSE);
@@ -51,7 +51,7 @@ void BankedDramModule::arm() {
 }
 
 void BankedDramModule::decide() {
-  sc_core::sc_time now = sc_core::sc_time_stamp();
+  sc_core::sc_time now = sim_now();
   Cycle cycle = clock_.cycles(now);
   armed_ = kPending;
   done_.clear();

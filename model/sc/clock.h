@@ -9,6 +9,12 @@
 
 namespace rtsim {
 
+// SystemC's current time, read inline: sc_core::sc_time_stamp() is a library call, and the
+// memory path asks for the time several times per request.
+inline const sc_core::sc_time& sim_now() {
+  return sc_core::sc_get_curr_simcontext()->time_stamp();
+}
+
 class Clock {
  public:
   explicit Clock(const sc_core::sc_time& period = sc_core::sc_time(1.0, sc_core::SC_NS))
@@ -22,7 +28,7 @@ class Clock {
   sc_core::sc_time time(Cycle c) const { return double(c) * period_; }
   // The TLM delay from now to cycle c (zero if c is not later).
   sc_core::sc_time delay_to(Cycle c) const {
-    sc_core::sc_time t = time(c), now = sc_core::sc_time_stamp();
+    sc_core::sc_time t = time(c), now = sim_now();
     return t > now ? t - now : sc_core::SC_ZERO_TIME;
   }
 

@@ -39,7 +39,7 @@ void RtUnitModule::arm_at(Cycle cycle) {
 
 void RtUnitModule::run() {
   try {
-    Cycle now = clock_.cycles(sc_core::sc_time_stamp());
+    Cycle now = clock_.cycles(sim_now());
     if (armed_ <= now) armed_ = kPending;  // that notification has fired
     uint64_t progress = 0;
     if (!core_.started() || core_.waiting()) progress += core_.poll(now);

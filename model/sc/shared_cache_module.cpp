@@ -104,7 +104,7 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
   job.charge_out = write ? nullptr : trans.get_extension<ReadChargeExtension>();
   job.addr = trans.get_address();
   job.bytes = trans.get_data_length();
-  Cycle sent = clock_.cycles(sc_core::sc_time_stamp() + delay);
+  Cycle sent = clock_.cycles(sim_now() + delay);
   Cycle at = crossbar_.to_slice(uint32_t(port), job.slice, sent,
                                 write ? job.bytes : Crossbar::kRequestBytes);
   // During serve() an L1 may send a miss that waited for an MSHR freed by a response: dated at
@@ -125,14 +125,14 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
 }
 
 void SharedCacheModule::serve() {
-  served_until_ = clock_.cycles(sc_core::sc_time_stamp()) + window_;
+  served_until_ = clock_.cycles(sim_now()) + window_;
   armed_ = kPending;
   serve_window();
 }
 
 void SharedCacheModule::serve_window() {
   try {
-    stamp_ = sc_core::sc_time_stamp();
+    stamp_ = sim_now();
     serving_ = true;
     EventQueue::Event e;
     while (events_.pop_before(served_until_, e)) run_job(e.item, e.cycle);
@@ -283,7 +283,7 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_bw(tlm::tlm_generic_payload& 
     on_error_(std::make_exception_ptr(below_error(t)));
     return tlm::TLM_COMPLETED;
   }
-  below_done(t, clock_.cycles(sc_core::sc_time_stamp() + delay));
+  below_done(t, clock_.cycles(sim_now() + delay));
   return tlm::TLM_COMPLETED;
 }
 

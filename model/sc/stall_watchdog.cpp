@@ -19,12 +19,12 @@ StallWatchdog::StallWatchdog(sc_core::sc_module_name name, uint64_t stall_cycles
 
 void StallWatchdog::run() {
   if (control_.units_running == 0 || control_.error) return;
-  Cycle now = clock_.cycles(sc_core::sc_time_stamp());
+  Cycle now = clock_.cycles(sim_now());
   Cycle deadline = control_.last_progress_cycle + stall_cycles_;
   Cycle promised = next_activity_();
   if (now < deadline || (promised != kPending && promised >= now)) {
     if (now >= deadline) deadline = promised + stall_cycles_;  // slow, not stuck: wait for it
-    next_trigger(clock_.time(deadline) - sc_core::sc_time_stamp());
+    next_trigger(clock_.time(deadline) - sim_now());
     return;
   }
   std::ostringstream report;

@@ -66,7 +66,7 @@ Cycle L1Module::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client
   if (!send(t, tlm::TLM_READ_COMMAND, addr, bytes, at, delay)) return kPending;
   charge += t.charge->charge;
   give_back(t);
-  return clock_.cycles(sc_core::sc_time_stamp() + delay);
+  return clock_.cycles(sim_now() + delay);
 }
 
 void L1Module::write(uint64_t addr, uint32_t bytes, Cycle at) {
@@ -81,7 +81,7 @@ tlm::tlm_sync_enum L1Module::nb_transport_bw(tlm::tlm_generic_payload& trans, tl
   if (phase != tlm::BEGIN_RESP) return tlm::TLM_ACCEPTED;
   check(trans);
   auto& t = static_cast<Transaction&>(trans);
-  Cycle ready = clock_.cycles(sc_core::sc_time_stamp() + delay);
+  Cycle ready = clock_.cycles(sim_now() + delay);
   ReadClient* client = t.client;
   uint64_t token = t.token;
   ReadCharge charge = t.charge->charge;
@@ -104,7 +104,7 @@ void DramModule::b_transport(tlm::tlm_generic_payload& trans, sc_core::sc_time& 
     trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
     return;
   }
-  sc_core::sc_time stamp = sc_core::sc_time_stamp();
+  sc_core::sc_time stamp = sim_now();
   Cycle now = clock_.cycles(stamp + delay);
   Cycle ready = now;
   if (write)
