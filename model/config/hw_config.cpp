@@ -205,10 +205,10 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                             "hash: quantisation steps per direction component", 1, 1024));
   so.bins = uint32_t(
       sort.integer("bins", so.bins, "bins", "hash: bins the key is hashed into", 1, 1 << 24));
-  so.max_age = uint32_t(sort.integer("max_age", so.max_age, "rays",
-                                     "a ray overtaken by this many later rays has its bin served "
-                                     "first; 0: never",
-                                     0, kMaxU32));
+  so.max_age = uint32_t(sort.integer("max_age", so.max_age, "buffers",
+                                     "a ray overtaken by max_age * buffer_rays later rays has its "
+                                     "bin served first; 0: never",
+                                     0, 1 << 20));
 
   ConfigReader rt = r.section("rt");
   c.rt_units =
@@ -255,8 +255,11 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                               "packet mode: a packet whose step would use fewer of its lanes is "
                               "regrouped into two of half the width; 0 = never",
                               0, 1);
-  reorder.min_width = uint32_t(packet.integer("min_width", reorder.min_width, "lanes",
-                                              "the narrowest packet reordering makes", 1, 256));
+  reorder.min_width =
+      uint32_t(packet.integer("min_width", reorder.min_width, "lanes",
+                              "the narrowest packet reordering makes; warp_size / min_width must "
+                              "be a power of two",
+                              1, 256));
   reorder.latency = uint32_t(packet.integer("reorder_latency", reorder.latency, "cycles",
                                             "regrouping a packet's rays", 0, 100000));
   ConfigReader prefetch = rt.section("prefetch");

@@ -175,6 +175,8 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   c.dram.queue_depth = scaled_count(config.dram.queue_depth, m.machine_share);
   c.banked_dram.channels = scaled_count(config.banked_dram.channels, m.machine_share);
   c.treelet_queues.max_rays = scaled_count(config.treelet_queues.max_rays, m.machine_share);
+  c.sort.buffer_rays =
+      std::max(c.rt.warp_size, scaled_count(config.sort.buffer_rays, m.machine_share));
   return m;
 }
 

@@ -32,11 +32,11 @@ void SlotCostListener::retired(const RayContext& ray, Cycle now) {
     return;
   }
   Warp& warp = warps_.at(size_t(ray.unit) * warps_per_unit_ + ray.slot / warp_size_);
-  // A warp is refilled only after its last ray retired: a ray dispatched at or after that
-  // retirement belongs to the next fill.
-  if (!warp.rays.empty() && ray.dispatched >= warp.last_retire) close(warp);
-  if (warp.rays.empty()) warp.first_dispatch = warp.last_retire = ray.dispatched;
-  warp.first_dispatch = std::min(warp.first_dispatch, ray.dispatched);
+  // A warp is refilled only after its last ray retired: a ray handed to it at or after that
+  // retirement belongs to the next fill (handed: after the sorting unit, if there is one).
+  if (!warp.rays.empty() && ray.handed >= warp.last_retire) close(warp);
+  if (warp.rays.empty()) warp.first_dispatch = warp.last_retire = ray.handed;
+  warp.first_dispatch = std::min(warp.first_dispatch, ray.handed);
   warp.last_retire = std::max(warp.last_retire, now);
   warp.rays.emplace_back(ray.ray.pixel, ray.ray.type);
 }

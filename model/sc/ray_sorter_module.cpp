@@ -10,6 +10,7 @@ RaySorterModule::RaySorterModule(sc_core::sc_module_name name, const SortConfig&
 
 void RaySorterModule::end_of_elaboration() {
   sorter_ = std::make_unique<RaySorter>(config_, bounds_, in->supply());
+  sorter_->watch(watcher_);
 }
 
 std::string RaySorterModule::dump() const {

@@ -3,6 +3,7 @@
 // unit's time. Its buffer has contexts of its own, so it never makes a unit wait for rays.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -24,6 +25,8 @@ class RaySorterModule : public sc_core::sc_module, public RaySupplyIf {
   RaySupply& supply() override { return *sorter_; }
   const sc_core::sc_event& work_event() const override { return never_; }
   const RaySorter& sorter() const { return *sorter_; }
+  // Called with every ray as it leaves the sorter (RaySorter::watch).
+  void on_leave(std::function<void(const RayContext&)> watcher) { watcher_ = std::move(watcher); }
   std::string dump() const;
 
  private:
@@ -32,6 +35,7 @@ class RaySorterModule : public sc_core::sc_module, public RaySupplyIf {
   SortConfig config_;
   SceneBounds bounds_;
   std::unique_ptr<RaySorter> sorter_;
+  std::function<void(const RayContext&)> watcher_;
   sc_core::sc_event never_;
 };
 

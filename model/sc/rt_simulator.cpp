@@ -56,7 +56,6 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   dispatch_ =
       std::make_unique<DispatcherModule>("dispatch", config.dispatch, source, pool_, &fanout_);
   collector_.measure_from(config.sim.warmup_rays, config.sim.warmup_frames);
-  dispatch_->dispatcher().watch([this](const RayContext& ray) { on_dispatch(ray); });
   RaySupplyIf* supply = dispatch_.get();
   if (config.rt.mode == TraversalMode::Treelet) {
     uint32_t root = image.node_treelet.empty() ? 0 : image.node_treelet[0];
@@ -72,6 +71,11 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     sorter_->in.bind(dispatch_->out);
     supply = sorter_.get();
   }
+  auto on_hand = [this](const RayContext& ray) { on_handed(ray); };
+  if (sorter_)
+    sorter_->on_leave(on_hand);
+  else
+    dispatch_->dispatcher().watch(on_hand);
   if (config.rt.prefetch.trigger != PrefetchTrigger::None) footprints_ = treelet_footprints(image);
   for (uint32_t i = 0; i < config.rt_units; ++i) {
     std::string name = "rt" + std::to_string(i);
@@ -107,19 +111,20 @@ void RtSimulator::run() {
         config_.sim.warmup_rays, config_.sim.warmup_frames, dispatch_->dispatcher().stats().rays));
 }
 
-void RtSimulator::on_dispatch(const RayContext& ray) {
+void RtSimulator::on_handed(const RayContext& ray) {
   if (ray.sequence < config_.sim.warmup_rays || ray.ray.frame < config_.sim.warmup_frames) return;
   if (!measuring_) {
     measuring_ = true;
-    measure_start_ = ray.dispatched;
-    if (warmup()) report_all(before_measuring_, ray.dispatched);
+    measure_start_ = ray.handed;
+    if (warmup()) report_all(before_measuring_, ray.handed);
   }
-  if (!frame_marks_.empty() && frame_marks_.back().frame == ray.ray.frame) return;
-  FrameStats mark{ray.ray.frame, ray.dispatched, {}};
+  // A frame starts with its first ray (a sorting unit may still hand out the last frame's).
+  if (!frame_marks_.empty() && frame_marks_.back().frame >= ray.ray.frame) return;
+  FrameStats mark{ray.ray.frame, ray.handed, {}};
   if (frame_marks_.empty())
     mark.stats = before_measuring_;
   else
-    report_all(mark.stats, ray.dispatched);
+    report_all(mark.stats, ray.handed);
   frame_marks_.push_back(std::move(mark));
 }
 

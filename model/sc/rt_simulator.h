@@ -78,7 +78,7 @@ class RtSimulator {
   std::string dump() const;  // every module's state
 
  private:
-  void on_dispatch(const RayContext& ray);
+  void on_handed(const RayContext& ray);
   // The earliest cycle the L2 serves a queued request or a unit has an event, such as data a
   // read was promised (kPending: none): what the stall watchdog waits for before calling a run
   // stuck.
@@ -102,7 +102,7 @@ class RtSimulator {
   std::unique_ptr<RaySorterModule> sorter_;
   std::vector<std::unique_ptr<RtUnitModule>> units_;
   std::unique_ptr<StallWatchdog> watchdog_;
-  bool measuring_ = false;  // the first measured ray has been dispatched
+  bool measuring_ = false;  // the first measured ray has been handed toward a unit
   Cycle measure_start_ = 0;
   StatsRegistry before_measuring_;       // the snapshot at measure_start_
   std::vector<FrameStats> frame_marks_;  // per measured frame: the snapshot at its start

@@ -38,7 +38,7 @@ size_t RayDispatcher::take(uint32_t unit, Cycle now, size_t max, std::vector<Ray
     ray->next_in_queue = nullptr;
     // Deliveries are spaced 1 / rays_per_cycle apart on the port: rays_per_cycle a cycle.
     double slot = start + double(given) / config_.rays_per_cycle;
-    ray->dispatched = Cycle(std::floor(slot));
+    ray->dispatched = ray->handed = Cycle(std::floor(slot));
     ray->ready = ray->dispatched + config_.latency;
     if (watcher_) watcher_(*ray);  // before it counts as handed out
     stats_.rays++;

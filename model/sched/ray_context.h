@@ -29,9 +29,10 @@ struct RayContext {
   uint64_t sequence = 0;  // position in the ray stream
   uint32_t id = 0;        // index in the pool; in treelet mode names its stack spill region
   TraversalState state;
-  bool begun = false;           // ray setup done (TraversalUnit::begin)
-  Cycle dispatched = 0;         // cycle the dispatcher handed the ray out
-  Cycle ready = 0;              // earliest cycle of its next step (arrival, queue exit)
+  bool begun = false;    // ray setup done (TraversalUnit::begin)
+  Cycle dispatched = 0;  // cycle the dispatcher handed the ray out
+  Cycle handed = 0;      // cycle it was handed toward a unit: dispatch, or leaving the sorter
+  Cycle ready = 0;       // earliest cycle of its next step (arrival, queue exit)
   uint32_t unit = 0, slot = 0;  // where it runs now
   // Hardware stack: entries on chip (the top of the traversal stack) and spilled below them.
   uint32_t resident = 0, spilled = 0;

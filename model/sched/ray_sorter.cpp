@@ -74,78 +74,99 @@ uint32_t CoherenceKey::operator()(const Ray& ray) const {
   return uint32_t(mix(uint64_t(cell) << 32 | direction) % config_.bins);
 }
 
-RaySorter::RaySorter(const SortConfig& config, const SceneBounds& bounds, RaySupply& upstream)
-    : config_(config),
-      key_(config, bounds),
-      upstream_(upstream),
-      fullest_(make_treelet_policy("fullest", key_.bins())),
-      bins_(key_.bins()) {
+namespace {
+
+const SortConfig& checked(const SortConfig& config) {
   std::string problem = sort_config_problem(config);
   if (problem.empty() && config.key == SortKey::None) problem = "key none: no sorting unit";
   if (!problem.empty()) throw std::invalid_argument(problem);
+  return config;
 }
+
+}  // namespace
+
+RaySorter::RaySorter(const SortConfig& config, const SceneBounds& bounds, RaySupply& upstream)
+    : config_(checked(config)),
+      key_(config, bounds),
+      upstream_(upstream),
+      fullest_(make_treelet_policy("fullest", key_.bins())),
+      bins_(key_.bins()) {}
 
 void RaySorter::set_length(uint32_t bin, uint32_t length) {
   fullest_->changed(bin, bins_[bin].length, length);
   bins_[bin].length = length;
 }
 
-void RaySorter::insert(RayContext* ray) {
-  uint32_t b = key_(ray->ray);
-  RayFifo& bin = bins_[b];
-  if (!bin.head) by_head_.insert({ray->sequence, b});
-  bin.push(ray);
-  set_length(b, bin.length + 1);
-  held_++;
-  newest_ = ray->sequence;
-}
-
 void RaySorter::fill(uint32_t unit, Cycle now) {
   if (held_ >= config_.buffer_rays || upstream_.exhausted()) return;
   arrivals_.clear();
   upstream_.take(unit, now, config_.buffer_rays - held_, arrivals_);
-  for (RayContext* ray : arrivals_) insert(ray);
+  for (RayContext* ray : arrivals_) on_the_way_.push(ray);
+  held_ += uint32_t(arrivals_.size());
   stats_.max_held = std::max<uint64_t>(stats_.max_held, held_);
 }
 
-size_t RaySorter::serve(uint32_t b, Cycle now, size_t max, std::vector<RayContext*>& out) {
+void RaySorter::admit(Cycle at) {
+  while (on_the_way_.head && on_the_way_.head->ready <= at) {
+    RayContext* ray = on_the_way_.pop();
+    uint32_t b = key_(ray->ray);
+    RayFifo& bin = bins_[b];
+    if (!bin.head) by_head_.insert({ray->sequence, b});
+    bin.push(ray);
+    set_length(b, bin.length + 1);
+    binned_++;
+    newest_ = ray->sequence;
+  }
+}
+
+size_t RaySorter::serve(uint32_t b, Cycle at, size_t max, std::vector<RayContext*>& out) {
   RayFifo& bin = bins_[b];
   by_head_.erase({bin.head->sequence, b});
   size_t given = 0;
   while (given < max && bin.head) {
     RayContext* ray = bin.pop();
-    Cycle leave = std::max(now, ray->ready) + config_.latency;
+    Cycle leave = std::max(at, ray->ready) + config_.latency;
     stats_.wait_cycles += leave - ray->ready;
+    ray->handed = std::max(at, ray->ready);
     ray->ready = leave;
+    if (watcher_) watcher_(*ray);  // before it counts as handed out
+    stats_.rays++;
     out.push_back(ray);
     ++given;
   }
   if (bin.head) by_head_.insert({bin.head->sequence, b});
   set_length(b, bin.length - uint32_t(given));
   held_ -= uint32_t(given);
+  binned_ -= uint32_t(given);
   stats_.bins_served++;
   return given;
 }
 
 size_t RaySorter::take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) {
   fill(unit, now);
+  size_t want = std::min<size_t>(max, held_);
+  if (want == 0) return 0;
+  // The group forms once `want` rays are in the buffer.
+  Cycle at = now;
+  const RayContext* ray = on_the_way_.head;
+  for (size_t count = binned_; count < want; ++count, ray = ray->next_in_queue)
+    at = std::max(at, ray->ready);
+  admit(at);
   size_t given = 0;
-  if (config_.max_age > 0 && !by_head_.empty()) {
+  uint64_t max_age = uint64_t(config_.max_age) * config_.buffer_rays;
+  if (max_age > 0 && !by_head_.empty()) {
     auto [sequence, oldest] = *by_head_.begin();
-    if (newest_ - sequence >= config_.max_age) {
+    if (newest_ - sequence >= max_age) {
       stats_.aged++;
-      given += serve(oldest, now, max, out);
+      given += serve(oldest, at, max, out);
     }
   }
   while (given < max) {
     std::optional<uint32_t> pick = fullest_->pick();
     if (!pick) break;
-    given += serve(*pick, now, max - given, out);
+    given += serve(*pick, at, max - given, out);
   }
-  if (given > 0) {
-    stats_.takes++;
-    stats_.rays += given;
-  }
+  stats_.takes++;
   return given;
 }
 

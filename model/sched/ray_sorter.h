@@ -6,16 +6,19 @@
 // ray tracing", Eurographics 2010): octant_cell = the direction's octant and the origin's cell
 // in a grid^3 grid over the scene's bounds (8 * grid^3 bins); hash = the origin's cell and the
 // unit direction quantised to direction_bins per axis, hashed into `bins` bins.
-// Aging: a bin whose oldest ray has been overtaken by max_age rays that reached the buffer
-// after it is served first (0: never). Counted in rays, not cycles: a ray's wait in a full
-// buffer is buffer_rays / throughput, which a cycle bound would have to know.
-// Timing: the sorter keeps its buffer full from the dispatcher, whose port and latency bring
-// the rays to it (its `ready`: arrival); a taken ray leaves `latency` cycles after the later of
-// the take and its arrival. The buffer's rays hold ray contexts of their own (the pool grows by
-// buffer_rays), so units never wait for the sorter while rays remain.
+// Aging: a bin whose oldest ray has been overtaken by max_age buffers' worth of later rays
+// (max_age * buffer_rays) is served first (0: never). Counted in rays, not cycles: in a full
+// buffer every ray is overtaken by about buffer_rays rays whatever the clock.
+// Timing: the sorter asks the dispatcher for rays whenever its buffer has room; the dispatcher's
+// port and latency bring them (their `ready`: arrival). Only rays that have arrived are sorted:
+// a take at `now` forms its group at the later of now and the arrival that gives the buffer
+// enough rays for it, from the rays there by then; they leave `latency` cycles after that.
+// Buffered rays hold ray contexts of their own (the pool grows by buffer_rays), so units never
+// wait for the sorter beyond the rays' arrival while rays remain.
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <set>
 #include <string>
@@ -39,7 +42,7 @@ struct SortConfig {
   uint32_t grid = 4;            // cells per axis of the origin grid over the scene's bounds
   uint32_t direction_bins = 4;  // hash: quantisation steps per direction component
   uint32_t bins = 256;          // hash: bins the key is hashed into
-  uint32_t max_age = 4096;      // rays: overtaken by this many, a ray's bin is served first
+  uint32_t max_age = 4;         // buffers: overtaken by max_age * buffer_rays, served first
 };
 
 std::string sort_config_problem(const SortConfig& config);
@@ -83,13 +86,16 @@ class RaySorter : public RaySupply {
   bool exhausted() const override { return held_ == 0 && upstream_.exhausted(); }
 
   const SortStats& stats() const { return stats_; }
-  uint32_t held() const { return held_; }
+  uint32_t held() const { return held_; }  // in the buffer or on their way to it
   const CoherenceKey& key() const { return key_; }
+  // Called with every ray as it leaves, `handed` set (the simulator marks warm-up and frames).
+  void watch(std::function<void(const RayContext&)> watcher) { watcher_ = std::move(watcher); }
 
  private:
   void fill(uint32_t unit, Cycle now);
-  void insert(RayContext* ray);
-  size_t serve(uint32_t bin, Cycle now, size_t max, std::vector<RayContext*>& out);
+  // Bins the rays that have arrived by `at`, in arrival order.
+  void admit(Cycle at);
+  size_t serve(uint32_t bin, Cycle at, size_t max, std::vector<RayContext*>& out);
   void set_length(uint32_t bin, uint32_t length);
 
   SortConfig config_;
@@ -99,8 +105,10 @@ class RaySorter : public RaySupply {
   std::vector<RayFifo> bins_;
   std::set<std::pair<uint64_t, uint32_t>> by_head_;  // (sequence of a bin's oldest ray, bin)
   std::vector<RayContext*> arrivals_;
-  uint32_t held_ = 0;
-  uint64_t newest_ = 0;  // sequence of the latest ray to reach the buffer
+  RayFifo on_the_way_;  // dispatched to the sorter, not binned yet, in arrival order
+  uint32_t held_ = 0, binned_ = 0;
+  uint64_t newest_ = 0;  // sequence of the latest ray binned
+  std::function<void(const RayContext&)> watcher_;
   SortStats stats_;
 };
 

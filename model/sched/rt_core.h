@@ -12,7 +12,7 @@
 // in ray setup. Stack spills and refills follow hardware_stack.h. The unit does work only at
 // the cycles in its event queue: nothing happens on idle cycles.
 // Memory: a read the L1 cannot answer at once (a miss, or a merge into one) leaves its ray
-// (packet mode: its warp) waiting; the L1 reports the data's cycle later (read_done), and the
+// (packet mode: its packet) waiting; the L1 reports the data's cycle later (read_done), and the
 // step goes on at that cycle. Data reported for a cycle the unit has already passed (it runs up
 // to a quantum ahead of simulated time) is used at the unit's local cycle, counted as late.
 // The test units are booked when the data is reported (their calendar takes any order).
@@ -136,7 +136,7 @@ class RtCore : private ReadClient {
   void account(Cycle now);   // counts slot occupancy up to now
 
  private:
-  // What a slot (packet mode: a warp) waits for, if anything.
+  // What a slot (packet mode: a packet) waits for, if anything.
   enum class Wait : uint8_t { None, Refill, State, Data };
   struct Next {
     bool live = false;  // an entry that step() will visit (not culled)
@@ -147,7 +147,7 @@ class RtCore : private ReadClient {
   // The cycle traversal control can start a step asked for at `now`: now, or the first later
   // cycle with a free issue slot (reserved, so the step is scheduled once, not retried).
   Cycle reserve_issue(Cycle now);
-  // Whether slot or warp `item` may step at `now`; if not, it is scheduled at its issue cycle.
+  // Whether slot or packet `item` may step at `now`; if not, it is scheduled at its issue cycle.
   bool claim_issue(uint32_t item, Cycle now);
   void fill(Cycle now);
   void install(RayContext* ray, uint32_t slot, Cycle now);
@@ -172,7 +172,7 @@ class RtCore : private ReadClient {
   // After an item's reads: wait for the pending ones (true), or go on (false).
   bool wait_reads(uint32_t item, Wait wait, Cycle known_ready);
   Cycle fetch(RayContext& ray, const StepResult& step, Cycle now);
-  // Books the tests of a step (packet mode: of a warp step) once its data is there, and
+  // Books the tests of a step (packet mode: of a packet step) once its data is there, and
   // schedules the item's next step; returns its cycle.
   Cycle test_step(uint32_t item, Cycle data);
   bool refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready);
@@ -196,8 +196,8 @@ class RtCore : private ReadClient {
   EventQueue events_;
   std::vector<RayContext*> slots_;    // warps * warp_size
   std::vector<uint32_t> warp_live_;   // rays still in each warp (per-ray and packet modes)
-  std::vector<Cycle> issue_granted_;  // per slot (packet mode: per warp): a reserved issue
-  // Per item (slot, or warp in packet mode): what it waits for, reads not back, latest data.
+  std::vector<Cycle> issue_granted_;  // per slot (packet mode: per packet): a reserved issue
+  // Per item (slot, or packet in packet mode): what it waits for, reads not back, latest data.
   std::vector<Wait> wait_;
   std::vector<uint32_t> pending_reads_;
   std::vector<Cycle> data_ready_;

@@ -6,6 +6,7 @@
 // A warp starts as one packet; with packet reordering (PacketReorderConfig) it may go on as
 // narrower packets, each stepping on its own, until all its rays retire and it refills.
 #include <algorithm>
+#include <stdexcept>
 
 #include "model/sched/rt_core.h"
 
@@ -33,8 +34,10 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     return;
   }
   bool leaf_step = config_.packet_policy == PacketPolicy::NodeFirst ? nodes == 0 : leaves > nodes;
+  // Regroup only when lanes of the other kind would idle: empty lanes cost nothing here.
   uint32_t stepping = leaf_step ? leaves : nodes;
-  if (width > config_.reorder.min_width && stepping < config_.reorder.below * width) {
+  if (width > config_.reorder.min_width && stepping < nodes + leaves &&
+      stepping < config_.reorder.below * width) {
     reorder(item, leaf_step, now);
     return;
   }
@@ -88,6 +91,8 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
 }
 
 void RtCore::reorder(uint32_t item, bool leaf_step, Cycle now) {
+  if (pending_reads_[item] > 0)
+    throw std::logic_error("RtCore: regrouping a packet with reads out");
   uint32_t base = item * packet_unit_, width = packet_width_[item];
   regroup_.clear();
   for (uint32_t lane = 0; lane < width; ++lane) {

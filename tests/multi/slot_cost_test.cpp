@@ -24,7 +24,7 @@ void retire(SlotCostListener& l, uint32_t unit, uint32_t slot, uint32_t pixel, R
   ray.ray.type = type;
   ray.unit = unit;
   ray.slot = slot;
-  ray.dispatched = dispatched;
+  ray.dispatched = ray.handed = dispatched;  // as the dispatcher sets them
   l.retired(ray, now);
 }
 

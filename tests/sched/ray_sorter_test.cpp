@@ -94,29 +94,41 @@ struct Interleaved {
   std::unique_ptr<test::MockSupply> supply;
 };
 
-TEST(RaySorter, ATakeGetsOneKeysRaysAndTheyLeaveLatencyAfterTheTakeOrTheirArrival) {
-  Interleaved in(16);  // arrivals at cycles 0, 1, 2, ... (one ray a cycle, no latency)
+TEST(RaySorter, TheFirstGroupFormsOnceEnoughRaysHaveArrivedFromThoseThereBy) {
+  Interleaved in(16);  // the dispatcher brings one ray a cycle, no latency
   RaySorter sorter(octant_cell(8, 3), kBounds, in.supply->dispatcher);
   std::vector<RayContext*> out;
+  // The buffer asks for 8 rays at 100: they arrive at 100..107. A group of 4 forms at 103, when
+  // rays 0..3 are there: both bins hold 2, the lower (+x) goes first, then the other.
   ASSERT_EQ(sorter.take(0, 100, 4, out), 4u);
-  // Port free from 100: the buffer's 8 rays arrive at 100..107; both bins hold 4, the tie goes
-  // to the lower bin (+x, octant 0): rays 0, 2, 4, 6, arriving 100, 102, 104, 106.
+  std::vector<uint64_t> order;
+  for (RayContext* ray : out) {
+    order.push_back(ray->sequence);
+    EXPECT_EQ(ray->ready, 103u + 3) << "formed at 103, then the sorter's latency";
+    EXPECT_EQ(ray->handed, 103u);
+  }
+  EXPECT_EQ(order, (std::vector<uint64_t>{0, 2, 1, 3}));
+  EXPECT_EQ(sorter.stats().wait_cycles, 6u + 4 + 5 + 3) << "leaving - arrival";
+  EXPECT_EQ(sorter.held(), 4u) << "rays 4..7 on their way";
+}
+
+TEST(RaySorter, ATakeGetsOneKeysRaysLatencyAfterTheTake) {
+  Interleaved in(16);
+  RaySorter sorter(octant_cell(8, 3), kBounds, in.supply->dispatcher);
+  std::vector<RayContext*> out;
+  ASSERT_EQ(sorter.take(0, 0, 1, out), 1u);  // fills the buffer: rays 0..7 arrive at 0..7
+  EXPECT_EQ(out[0]->sequence, 0u);
+  EXPECT_EQ(out[0]->ready, 3u);
+  out.clear();
+  // At 100 ray 8 tops the buffer up (arriving at 100); bins +x: 2, 4, 6, 8 and -x: 1, 3, 5, 7.
+  ASSERT_EQ(sorter.take(0, 100, 4, out), 4u);
   for (size_t i = 0; i < 4; ++i) {
-    EXPECT_EQ(out[i]->sequence, 2 * i);
-    EXPECT_EQ(out[i]->ready, 100 + 2 * i + 3) << "later than the take: arrival + latency";
+    EXPECT_EQ(out[i]->sequence, 2 * i + 2);
+    EXPECT_EQ(out[i]->ready, 103u);
   }
   EXPECT_EQ(sorter.held(), 4u);
-  EXPECT_EQ(sorter.stats().wait_cycles, 4u * 3);
-  out.clear();
-  // At 200 the buffer refills with rays 8..11 (arrivals 200..203): bin -x holds 1, 3, 5, 7, 9,
-  // 11 and goes first, its old rays leaving at 203.
-  ASSERT_EQ(sorter.take(0, 200, 4, out), 4u);
-  for (size_t i = 0; i < 4; ++i) {
-    EXPECT_EQ(out[i]->sequence, 2 * i + 1);
-    EXPECT_EQ(out[i]->ready, 203u);
-  }
   EXPECT_EQ(sorter.stats().max_held, 8u) << "never more than buffer_rays";
-  EXPECT_EQ(in.supply->dispatcher.stats().rays, 12u) << "the dispatcher filled it, no more";
+  EXPECT_EQ(in.supply->dispatcher.stats().rays, 9u) << "the dispatcher filled it, no more";
 }
 
 TEST(RaySorter, ATakeLargerThanABinDrawsOnTheNextFullestBins) {
@@ -130,14 +142,14 @@ TEST(RaySorter, ATakeLargerThanABinDrawsOnTheNextFullestBins) {
   EXPECT_EQ(sorter.stats().bins_served, 2u);
 }
 
-TEST(RaySorter, AnOverlookedRayIsServedOnceMaxAgeLaterRaysReachedTheBuffer) {
+TEST(RaySorter, AnOverlookedRayIsServedOnceMaxAgeBuffersOfLaterRaysReachedTheBuffer) {
   // Ray 0 goes -y; every later ray goes +y, so "fullest" alone would leave ray 0 waiting.
   Interleaved in(0);
   in.rays.push_back(ray_at({0.5f, 0.5f, 0.5f}, {0, -1, 0}));
   for (int i = 0; i < 40; ++i) in.rays.push_back(ray_at({0.5f, 0.5f, 0.5f}, {0, 1, 0}));
   in.supply = std::make_unique<test::MockSupply>(in.rays, any_traversal(), 4096);
   SortConfig c = octant_cell(8, 0);
-  c.max_age = 10;
+  c.max_age = 2;  // 16 rays
   RaySorter sorter(c, kBounds, in.supply->dispatcher);
   std::vector<RayContext*> out;
   std::vector<uint64_t> order;
@@ -145,10 +157,11 @@ TEST(RaySorter, AnOverlookedRayIsServedOnceMaxAgeLaterRaysReachedTheBuffer) {
     for (RayContext* ray : out) order.push_back(ray->sequence);
     out.clear();
   }
-  // Takes of 2 keep 8 rays: the first fill brings rays 0..7, the second take's 8 and 9, the
-  // third's 10 and 11, and 11 - 0 >= 10: the third take serves ray 0 first.
+  // Takes of 2 keep 8 rays: the first brings rays 0..7, each later one two more; the sixth
+  // brings 16 and 17, and 16 - 0 >= 16: it serves ray 0 first.
   ASSERT_EQ(order.size(), 41u);
-  EXPECT_EQ(order[4], 0u);
+  EXPECT_EQ(order[9], 10u);
+  EXPECT_EQ(order[10], 0u);
   EXPECT_EQ(sorter.stats().aged, 1u);
   EXPECT_TRUE(sorter.exhausted()) << "the stream's end flushes every bin";
   EXPECT_EQ(sorter.held(), 0u);

@@ -150,20 +150,31 @@ ReorderRun run_reorder(const Scene& scene, std::vector<Ray> rays, PacketReorderC
   return {core.stats(), core.stats().last_cycle, supply.listener.done};
 }
 
-TEST(RtCoreModes, ALoneRayIsRegroupedDownToMinWidthEachRegroupTakingItsLatency) {
+TEST(RtCoreModes, APacketIsRegroupedOnlyWhenLanesOfTheOtherKindWouldIdle) {
   Scene scene;
   std::vector<Ray> one{scene.rays[1500]};
   ReorderRun plain = run_reorder(scene, one, {});
-  // Width 8 with 1 lane active: 1 < 0.5 * 8 -> 4 lanes; 1 < 0.5 * 4 -> 2; 1 < 0.5 * 2 fails.
-  ReorderRun reordered = run_reorder(scene, one, {0.5, 1, 7});
-  EXPECT_EQ(plain.stats.reorders, 0u);
-  EXPECT_EQ(reordered.stats.reorders, 2u);
-  EXPECT_EQ(reordered.last, plain.last + 2 * 7) << "the same steps, two regroups later";
-  EXPECT_EQ(reordered.stats.warp_steps, plain.stats.warp_steps);
-  EXPECT_EQ(reordered.stats.packet_lanes, plain.stats.warp_steps * 2) << "every step 2 wide";
-  ReorderRun narrowest = run_reorder(scene, one, {1.0, 1, 0});
-  EXPECT_EQ(narrowest.stats.reorders, 3u) << "1 < 1.0 * 2 too: down to one lane";
-  EXPECT_EQ(narrowest.stats.packet_lanes, plain.stats.warp_steps);
+  ReorderRun alone = run_reorder(scene, one, {1.0, 1, 7});
+  EXPECT_EQ(alone.stats.reorders, 0u) << "1 of 8 lanes steps, but the others are empty";
+  EXPECT_EQ(alone.last, plain.last);
+}
+
+TEST(RtCoreModes, TwoDivergingRaysAreRegroupedDownToMinWidthEachRegroupTakingItsLatency) {
+  Scene scene;
+  // The first pair of diffuse rays whose next visits differ in kind at some step: there a
+  // packet of 8 lanes with 1 stepping and 1 idle regroups to 4, 2 and 1 lanes (both rays stay
+  // in the first half until the last split), and single lanes never regroup.
+  for (size_t i = 1500; i + 1 < scene.rays.size(); i += 2) {
+    std::vector<Ray> pair{scene.rays[i], scene.rays[i + 1]};
+    ReorderRun quick = run_reorder(scene, pair, {1.0, 1, 1});
+    if (quick.stats.reorders == 0) continue;
+    EXPECT_EQ(quick.stats.reorders, 3u);
+    ReorderRun slow = run_reorder(scene, pair, {1.0, 1, 8});
+    EXPECT_EQ(slow.last, quick.last + 3 * 7) << "three regroups, each 7 cycles longer";
+    EXPECT_EQ(slow.stats.warp_steps, quick.stats.warp_steps);
+    return;
+  }
+  FAIL() << "no pair of rays diverged";
 }
 
 TEST(RtCoreModes, ACoherentPacketIsNeverRegroupedAndDivergentOnesGainSimdEfficiency) {

@@ -196,6 +196,7 @@ TEST(SimCli, SortedAndReorderedRunsVerifyEveryRayAndReportTheirStats) {
   nlohmann::json doc = nlohmann::json::parse(test::slurp(out + "/stats.json"));
   const nlohmann::json& c = doc["stats"]["counters"];
   EXPECT_EQ(c["sort.rays"], 428);
+  EXPECT_EQ(c["dispatch.pool_empty"], 0) << "the pool has room for the sorting buffer";
   EXPECT_GT(c["rt.packet_reorders"].get<uint64_t>(), 0u);
   EXPECT_EQ(doc["verify"]["unexplained"], 0);
   std::filesystem::remove_all(out);
