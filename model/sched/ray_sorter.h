@@ -73,7 +73,7 @@ struct SortStats {
   uint64_t bins_served = 0;  // bins the takes drew from, summed
   uint64_t aged = 0;         // bins served first because their oldest ray reached max_age
   uint64_t wait_cycles = 0;  // sum over rays of leaving - arrival
-  uint64_t max_held = 0;     // most rays in the buffer at once
+  uint64_t max_held = 0;     // most rays in the buffer or on their way, at once
 };
 
 class RaySorter : public RaySupply {
