@@ -39,6 +39,18 @@ TEST(HardwareStack, SlotRegionsBelongToTheSlotNotTheRay) {
   EXPECT_EQ(stack.settle(next, 0, 7).addr, slot_region) << "the next ray in the slot reuses it";
 }
 
+TEST(HardwareStack, ARayMovedToAnotherLaneKeepsTheRegionItStartedIn) {
+  HardwareStack stack({4, 8}, 256);
+  RayContext ray;
+  ray.unit = 2;
+  ray.slot = 5;
+  stack.start(ray);
+  ray.slot = 9;  // packet reordering moved it
+  StackTransfer spill = stack.settle(ray, 0, 7);
+  EXPECT_EQ(spill.addr, HardwareStack::region(2 * 256 + 5));
+  EXPECT_EQ(stack.refill(ray, 7).addr, spill.addr) << "read back from where it was written";
+}
+
 TEST(HardwareStack, RefillsExactlyWhatAPopNeeds) {
   HardwareStack stack({4, 8}, 0);
   RayContext ray;
