@@ -239,7 +239,7 @@ Json time_json(const FidelityResult& f, const Json& stats, const Json& collected
 double on_chip_bytes(const HwConfig& c) {
   double stacks = double(c.rt.warps) * c.rt.warp_size * c.rt.stack.entries * c.rt.stack.entry_bytes;
   double units = double(c.rt_units) * (double(c.l1.size_bytes) + stacks);
-  return units + double(c.l2.size_bytes) + ray_buffer_sram_bytes(c);
+  return units + double(c.l2.size_bytes) + ray_buffer_sram_bytes(c) + sort_buffer_bytes(c.sort);
 }
 
 Json build_report(const ReportInputs& in) {

@@ -38,8 +38,8 @@ Json figures_doc(const Json& doc) {
          {"title", c["title"]},
          {"caption", c["kind"] == "pareto"
                          ? "Each point's cycles against its on-chip memory (caches, ray "
-                           "stacks and the treelet ray buffer); the line joins the "
-                           "Pareto-optimal points of each workload."
+                           "stacks, the treelet ray buffer and the sorting buffer); the line "
+                           "joins the Pareto-optimal points of each workload."
                          : fmt::format("{} against {}, one line per {}.", c["y"].get<std::string>(),
                                        c["x"].get<std::string>(), c["series"].get<std::string>())},
          {"available", c["available"]},

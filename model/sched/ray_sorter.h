@@ -47,6 +47,13 @@ struct SortConfig {
 
 std::string sort_config_problem(const SortConfig& config);
 
+// A buffered ray: the ray (origin, direction, tmin, tmax: 32 bytes) and its id and bin link (8).
+constexpr uint32_t kSortedRayBytes = 40;
+// The sorting buffer's SRAM (0 without a sorting unit).
+inline double sort_buffer_bytes(const SortConfig& config) {
+  return config.key == SortKey::None ? 0.0 : double(config.buffer_rays) * kSortedRayBytes;
+}
+
 struct SceneBounds {
   glm::vec3 lo{0.0f}, hi{0.0f};
 };

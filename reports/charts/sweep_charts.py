@@ -29,7 +29,9 @@ def metric(point, name):
 
 
 def label(point, keys):
-    return ", ".join("%s=%s" % (k, value_of(point, k)) for k in keys)
+    """key=value for each key the point sets (a [[point]] may leave some at the config's)."""
+    return ", ".join("%s=%s" % (k, value_of(point, k)) for k in keys
+                     if value_of(point, k) is not None)
 
 
 def order(text):
@@ -57,8 +59,9 @@ def byte_unit(key, values):
 
 
 def curve(doc, chart):
-    points = [p for p in doc["points"] if p["metrics"]]
     x_key, series = chart["x"], chart["series"]
+    # A [[point]] list may leave the x key unset in some points: they have no place on the axis.
+    points = [p for p in doc["points"] if p["metrics"] and value_of(p, x_key) is not None]
     unit, x_label = byte_unit(x_key, [value_of(p, x_key) for p in points])
 
     def x_of(p):
@@ -127,7 +130,7 @@ def pareto(doc, chart):
             ax.annotate(label(p, doc["spec"]["keys"]), (megabytes(p), metric(p, "cycles")),
                         fontsize=5, xytext=(3, 3), textcoords="offset points")
     log2_if_spread(ax, [megabytes(p) for p in points])
-    ax.set_xlabel("on-chip memory (MB: L1s, L2, ray stacks, treelet ray buffer)")
+    ax.set_xlabel("on-chip memory (MB: L1s, L2, ray stacks, treelet ray buffer, sorting buffer)")
     ax.set_ylabel("cycles")
     ax.set_title(chart["title"])
     ax.legend(fontsize=7)

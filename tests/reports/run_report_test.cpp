@@ -50,6 +50,15 @@ TEST(OnChipBytes, TreeletModeCountsTheRayBuffersSram) {
   EXPECT_EQ(reports::on_chip_bytes(c), depth_first);
 }
 
+TEST(OnChipBytes, ASortingUnitCountsItsBuffer) {
+  HwConfig c;
+  double plain = reports::on_chip_bytes(c);
+  c.sort.buffer_rays = 4096;
+  EXPECT_EQ(reports::on_chip_bytes(c), plain) << "key none: no sorting unit";
+  c.sort.key = SortKey::Hash;
+  EXPECT_EQ(reports::on_chip_bytes(c), plain + 4096.0 * 40);
+}
+
 TEST_F(RunReport, HasEverySection) {
   for (const char* id : {"summary", "workload", "hardware", "timing", "bandwidth", "coherence",
                          "verification", "pictures", "charts"})
