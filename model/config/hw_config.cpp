@@ -195,9 +195,9 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                 : SortKey::None;
   so.buffer_rays = uint32_t(sort.integer("buffer_rays", so.buffer_rays, "rays",
                                          "rays the sorting buffer holds", 1, 1 << 24));
-  so.latency =
-      uint32_t(sort.integer("latency", so.latency, "cycles",
-                            "from a take (or the ray's arrival, if later) to the unit", 0, 100000));
+  so.latency = uint32_t(sort.integer(
+      "latency", so.latency, "cycles",
+      "from the forming of a group (once enough rays arrived) to the unit", 0, 100000));
   so.grid = uint32_t(sort.integer("grid", so.grid, "cells",
                                   "origin cells per axis over the scene's bounds", 1, 1024));
   so.direction_bins =

@@ -38,7 +38,7 @@ const char* sort_key_name(SortKey key);  // none, octant_cell, hash
 struct SortConfig {
   SortKey key = SortKey::None;
   uint32_t buffer_rays = 1024;  // rays: the sorting buffer
-  uint32_t latency = 4;         // cycles: from the take (or arrival, if later) to the unit
+  uint32_t latency = 4;         // cycles: from the forming of a group to its reaching the unit
   uint32_t grid = 4;            // cells per axis of the origin grid over the scene's bounds
   uint32_t direction_bins = 4;  // hash: quantisation steps per direction component
   uint32_t bins = 256;          // hash: bins the key is hashed into
