@@ -25,6 +25,7 @@ void add_run_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);
 void add_regress_command(CLI::App& app, int& exit_code);
+void add_validate_command(CLI::App& app, int& exit_code);
 // BVH build options shared by verify and bench (defined in cmd_verify.cpp).
 void add_bvh_options(CLI::App& cmd, BvhConfig& config);
 

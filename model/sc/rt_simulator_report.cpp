@@ -290,8 +290,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     r.counter(p + ".stack.refill_entries", s.refill_entries);
     r.real(p + ".ray_slot_cycles", s.ray_slot_cycles);
     r.ratio(p + ".slot_occupancy", p + ".ray_slot_cycles", "cycles", 1.0 / slots);
-    bool packet = config_.rt.mode == TraversalMode::Packet;
-    r.counter(p + ".control.issues", packet ? s.warp_steps + s.reorders : steps);
+    r.counter(p + ".control.issues", s.issues);
     r.ratio(p + ".control.utilisation", p + ".control.issues", "cycles",
             1.0 / config_.rt.issue_per_cycle);
     report_test_units(r, p + ".box", core.box());

@@ -129,6 +129,7 @@ Cycle RtCore::reserve_issue(Cycle now) {
     issued_ = 0;
   }
   ++issued_;
+  stats_.issues++;
   return issue_cycle_;
 }
 

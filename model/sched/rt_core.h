@@ -78,7 +78,8 @@ std::string rt_core_config_problem(const RtCoreConfig& config);
 struct RtCoreStats {
   uint64_t rays_started = 0, rays_retired = 0;
   uint64_t node_steps = 0, leaf_steps = 0;
-  uint64_t issue_stalls = 0;                // step starts deferred a cycle by the issue width
+  uint64_t issues = 0;        // issue slots taken: every step, the step that retires a ray too
+  uint64_t issue_stalls = 0;  // step starts deferred a cycle by the issue width
   uint64_t fetches = 0, fetch_bytes = 0;    // reads to the L1 (packet mode: after coalescing)
   uint64_t waited_reads = 0;                // reads that waited for data below the L1
   uint64_t late_data = 0, late_cycles = 0;  // data reported after the unit's local cycle

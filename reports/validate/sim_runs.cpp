@@ -1,0 +1,64 @@
+#include "reports/validate/sim_runs.h"
+
+#include <stdexcept>
+
+#include "model/sc/fork_run.h"
+#include "model/sc/rt_simulator.h"
+
+namespace rtsim::validation {
+
+double SimFigures::operator[](const std::string& name) const {
+  for (const char* part : {"counters", "derived"}) {
+    auto it = doc_[part].find(name);
+    if (it != doc_[part].end()) return it->get<double>();
+  }
+  throw std::logic_error("rtsim validate: a run has no stat " + name);
+}
+
+double SimFigures::units_sum(const std::string& name) const {
+  double sum = 0;
+  for (uint32_t unit = 0; doc_["counters"].contains("rt" + std::to_string(unit) + ".rays"); ++unit)
+    sum += (*this)["rt" + std::to_string(unit) + "." + name];
+  return sum;
+}
+
+std::vector<SimFigures> simulate(const std::vector<SimJob>& jobs) {
+  std::vector<std::function<std::string()>> work;
+  for (const SimJob& job : jobs)
+    work.push_back([&job] {
+      VectorRaySource source(*job.rays);
+      RtSimulator sim(job.config, *job.image, source);
+      sim.run();
+      StatsRegistry stats;
+      sim.report(stats);
+      nlohmann::json doc = stats.to_json();
+      uint64_t count = 0, sum = 0;
+      for (const RayTypeStats& type : sim.collected().by_type()) {
+        count += type.latency.count();
+        sum += type.latency.sum();
+      }
+      doc["latency_mean"] = count ? double(sum) / double(count) : 0.0;
+      return doc.dump();
+    });
+  std::vector<SimFigures> out;
+  for (const std::string& text : run_in_children(work, 2))
+    out.emplace_back(nlohmann::json::parse(text));
+  return out;
+}
+
+HwConfig unloaded(const HwConfig& config) {
+  HwConfig c = config;
+  for (CacheConfig* cache : {&c.l1, &c.l2}) {
+    cache->bank_ports = 0;
+    cache->bytes_per_cycle = 0;
+  }
+  c.l2_layout.crossbar.bytes_per_cycle = 0;
+  c.sim.quantum_cycles = 1;
+  c.sort.key = SortKey::None;
+  c.rt.mode = TraversalMode::DepthFirst;
+  c.rt.prefetch = PrefetchConfig{};
+  c.banked_dram.refresh = DramRefresh::None;
+  return c;
+}
+
+}  // namespace rtsim::validation

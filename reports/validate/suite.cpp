@@ -1,0 +1,78 @@
+#include "reports/validate/suite.h"
+
+#include <cmath>
+
+#include <fmt/core.h>
+
+#include "reports/validate/checks.h"
+
+namespace rtsim::validation {
+
+size_t SuiteResult::passed() const {
+  size_t n = 0;
+  for (const Check& c : checks) n += c.passed();
+  return n;
+}
+
+size_t SuiteResult::skipped() const {
+  size_t n = 0;
+  for (const Check& c : checks) n += !c.ran();
+  return n;
+}
+
+size_t SuiteResult::failed() const {
+  return checks.size() - passed() - skipped();
+}
+
+SuiteResult run_suite(const HwConfig& config, bool quick,
+                      const std::function<void(const std::string&)>& progress) {
+  SuiteResult result;
+  result.config_name = config.name;
+  result.quick = quick;
+  auto add = [&result](std::vector<Check> checks) {
+    for (Check& c : checks) result.checks.push_back(std::move(c));
+  };
+  progress("latency ladder");
+  add(latency_ladder(config));
+  progress("throughput ceilings");
+  add(throughput_ceilings(config));
+  progress("DRAM roofline");
+  add(dram_roofline(config));
+  progress("Little's law");
+  add({littles_law(config)});
+  return result;
+}
+
+std::string show_value(double value) {
+  if (std::isnan(value)) return "-";
+  return fmt::format("{:.4g}", value);
+}
+
+nlohmann::ordered_json suite_json(const SuiteResult& r) {
+  nlohmann::ordered_json checks = nlohmann::ordered_json::array();
+  auto number = [](double v) { return std::isnan(v) ? nlohmann::ordered_json() : nlohmann::ordered_json(v); };
+  for (const Check& c : r.checks)
+    checks.push_back({{"id", c.id},
+                      {"suite", c.suite},
+                      {"title", c.title},
+                      {"status", !c.ran() ? "skipped" : c.passed() ? "pass" : "fail"},
+                      {"unit", c.unit},
+                      {"expected", number(c.expected)},
+                      {"lo", number(c.lo)},
+                      {"hi", number(c.hi)},
+                      {"measured", number(c.measured)},
+                      {"source", c.source},
+                      {"detail", c.detail},
+                      {"look_at", c.look_at},
+                      {"skipped", c.skipped}});
+  return {{"schema", kValidateSchema},
+          {"config", r.config_name},
+          {"config_path", r.config_path},
+          {"quick", r.quick},
+          {"passed", r.passed()},
+          {"failed", r.failed()},
+          {"skipped", r.skipped()},
+          {"checks", checks}};
+}
+
+}  // namespace rtsim::validation

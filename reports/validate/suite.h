@@ -1,0 +1,42 @@
+// `rtsim validate`: runs the checks on one hardware config and writes what they found
+// (terminal table, validate.md, validate.html, validate.json, junit.xml). model/VALIDATION.md
+// explains each check and how to add one.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/config/hw_config.h"
+#include "reports/validate/check.h"
+
+namespace rtsim::validation {
+
+constexpr const char* kValidateSchema = "rtsim.validate/1";
+
+struct SuiteResult {
+  std::string config_name, config_path;
+  bool quick = false;
+  std::vector<Check> checks;
+  size_t passed() const;
+  size_t failed() const;
+  size_t skipped() const;
+};
+
+// Runs the suite (quick: the closed-form checks only); `progress` hears each group's name as
+// it starts.
+SuiteResult run_suite(const HwConfig& config, bool quick,
+                      const std::function<void(const std::string&)>& progress);
+
+nlohmann::ordered_json suite_json(const SuiteResult& result);
+std::string terminal_table(const SuiteResult& result);
+std::string markdown_page(const SuiteResult& result);
+std::string html_page(const SuiteResult& result);
+std::string junit_xml(const SuiteResult& result);
+
+// How a check's value is shown on every page (4 significant digits; "-" for NaN).
+std::string show_value(double value);
+
+}  // namespace rtsim::validation
