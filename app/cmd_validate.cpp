@@ -27,7 +27,7 @@ int run_validate(const ValidateOptions& o) {
   }
   double start = wall_seconds();
   validation::SuiteResult result =
-      validation::run_suite(config, o.quick, [&start](const std::string& group) {
+      validation::run_suite({config, {}}, o.quick, [&start](const std::string& group) {
         fmt::print(stderr, "[{:6.1f} s] {}\n", wall_seconds() - start, group);
       });
   result.config_path = o.config;

@@ -59,7 +59,8 @@ Check ceiling(const char* id, const char* title, double expected, double measure
 
 }  // namespace
 
-std::vector<Check> throughput_ceilings(const HwConfig& preset) {
+std::vector<Check> throughput_ceilings(const Target& target) {
+  const HwConfig& preset = target.config;
   Scene scene = load_scene("grid:4096");
   std::vector<Ray> rays[2] = {sample_diffuse_rays(scene.mesh, kRays, 1),
                               sample_diffuse_rays(scene.mesh, 2 * kRays, 1)};
@@ -84,7 +85,7 @@ std::vector<Check> throughput_ceilings(const HwConfig& preset) {
   for (const HwConfig* config : {&box, &triangle, &issue, &dispatch})
     for (int i = 0; i < 2; ++i)
       jobs.push_back({*config, &image, config == &dispatch ? &away[i] : &rays[i]});
-  std::vector<SimFigures> runs = simulate(jobs);
+  std::vector<SimFigures> runs = simulate(target, jobs);
   std::vector<Check> out;
   out.push_back(ceiling(
       "ceiling.box_tests", "box-test issues a cycle, the box units saturated", rt.box.count,
@@ -118,7 +119,8 @@ std::vector<Check> throughput_ceilings(const HwConfig& preset) {
   return out;
 }
 
-Check littles_law(const HwConfig& preset) {
+Check littles_law(const Target& target) {
+  const HwConfig& preset = target.config;
   Check c{"little.rays_in_flight", "closed_form",
           "rays in flight = throughput x mean latency, from two independent counters"};
   c.source = "formula: Little's law, L = lambda W (L: the units' integral of occupied ray slots "
@@ -134,7 +136,7 @@ Check littles_law(const HwConfig& preset) {
   config.dispatch.rays_per_cycle = 1 << 20;  // a ray's slot is taken in its dispatch cycle
   BvhImage image = build_bvh_image(scene.mesh, config.bvh);
   std::vector<Ray> rays = sample_diffuse_rays(scene.mesh, kRays, 2);
-  SimFigures run = simulate({{config, &image, &rays}})[0];
+  SimFigures run = simulate(target, {{config, &image, &rays}})[0];
   double cycles = run["cycles"];
   set_band(c, run["rays"] / cycles * run.latency_mean(), 0.005);
   c.measured = run["rt.ray_slot_cycles"] / cycles;

@@ -3,15 +3,15 @@
 
 #include <vector>
 
-#include "model/config/hw_config.h"
 #include "reports/validate/check.h"
+#include "reports/validate/sim_runs.h"
 
 namespace rtsim::validation {
 
 // Closed form (quick): latency ladder, throughput ceilings, DRAM roofline, Little's law.
-std::vector<Check> latency_ladder(const HwConfig& config);
-std::vector<Check> throughput_ceilings(const HwConfig& config);
-std::vector<Check> dram_roofline(const HwConfig& config);
-Check littles_law(const HwConfig& config);
+std::vector<Check> latency_ladder(const Target& target);
+std::vector<Check> throughput_ceilings(const Target& target);
+std::vector<Check> dram_roofline(const Target& target);
+Check littles_law(const Target& target);
 
 }  // namespace rtsim::validation

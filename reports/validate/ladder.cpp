@@ -26,7 +26,8 @@ struct OneTriangle {
   std::vector<Ray> rays;  // the same ray twice: the first warms the caches up
 };
 
-std::vector<Check> ray_ladder(const HwConfig& preset) {
+std::vector<Check> ray_ladder(const Target& target) {
+  const HwConfig& preset = target.config;
   OneTriangle scene(preset.bvh);
   HwConfig l1 = unloaded(preset);
   l1.rt_units = 1;
@@ -38,7 +39,7 @@ std::vector<Check> ray_ladder(const HwConfig& preset) {
   HwConfig l2 = l1;
   l2.rt_units = 2;
   l2.dispatch.rays_per_cycle = 1.0 / 4096;
-  std::vector<SimFigures> runs = simulate({{l1, &scene.image, &scene.rays},
+  std::vector<SimFigures> runs = simulate(target, {{l1, &scene.image, &scene.rays},
                                            {l2, &scene.image, &scene.rays}});
   const RtCoreConfig& rt = preset.rt;
   double fixed = preset.dispatch.latency + rt.setup_latency + rt.box.latency +
@@ -76,9 +77,10 @@ std::vector<Check> ray_ladder(const HwConfig& preset) {
 // One read at a time to the banked DRAM's controller, refresh off.
 class DramProbe {
  public:
-  DramProbe(const HwConfig& preset, uint32_t line)
+  // Expects what `preset` configures, of a controller built as `run` configures it.
+  DramProbe(const HwConfig& preset, const HwConfig& run, uint32_t line)
       : config_(without_refresh(preset.banked_dram)),
-        controller_(config_, preset.clock_ghz),
+        controller_(without_refresh(run.banked_dram), run.clock_ghz),
         map_(config_),
         line_(line),
         core_mhz_(preset.clock_ghz * 1000) {}
@@ -130,7 +132,8 @@ class DramProbe {
   Cycle last_ = 0;
 };
 
-std::vector<Check> dram_ladder(const HwConfig& preset) {
+std::vector<Check> dram_ladder(const Target& target) {
+  const HwConfig& preset = target.config;
   std::vector<Check> out;
   const char* names[3] = {"ladder.dram_closed", "ladder.dram_row_hit", "ladder.dram_conflict"};
   const char* titles[3] = {"one line read to a closed bank (ACT, RD)",
@@ -144,7 +147,7 @@ std::vector<Check> dram_ladder(const HwConfig& preset) {
     }
     return out;
   }
-  DramProbe probe(preset, block_bytes(preset.l2));
+  DramProbe probe(preset, target.as_run(preset), block_bytes(preset.l2));
   const DramTiming& t = probe.config().timing;
   bool open = probe.config().page_policy == DramPagePolicy::Open;
   uint64_t base = 0;
@@ -179,9 +182,9 @@ std::vector<Check> dram_ladder(const HwConfig& preset) {
 
 }  // namespace
 
-std::vector<Check> latency_ladder(const HwConfig& preset) {
-  std::vector<Check> out = ray_ladder(preset);
-  for (Check& c : dram_ladder(preset)) out.push_back(c);
+std::vector<Check> latency_ladder(const Target& target) {
+  std::vector<Check> out = ray_ladder(target);
+  for (Check& c : dram_ladder(target)) out.push_back(c);
   return out;
 }
 

@@ -7,7 +7,8 @@
 
 namespace rtsim::validation {
 
-std::vector<Check> dram_roofline(const HwConfig& preset) {
+std::vector<Check> dram_roofline(const Target& target) {
+  const HwConfig& preset = target.config;
   Check c{"roofline.dram", "closed_form", "independent misses saturate the DRAM's data buses"};
   c.unit = "bytes per cycle";
   if (preset.dram_model != DramModel::Banked) {
@@ -17,7 +18,8 @@ std::vector<Check> dram_roofline(const HwConfig& preset) {
   const BankedDramConfig& dram = preset.banked_dram;
   uint32_t line = block_bytes(preset.l2);
   const uint64_t reads = 65536;
-  DramController controller(dram, preset.clock_ghz);
+  HwConfig run = target.as_run(preset);
+  DramController controller(run.banked_dram, run.clock_ghz);
   for (uint64_t i = 0; i < reads; ++i) controller.enqueue(i, i * line, line, false, 0);
   std::vector<DramReadDone> done;
   Cycle until = 0;

@@ -22,12 +22,12 @@ double SimFigures::units_sum(const std::string& name) const {
   return sum;
 }
 
-std::vector<SimFigures> simulate(const std::vector<SimJob>& jobs) {
+std::vector<SimFigures> simulate(const Target& target, const std::vector<SimJob>& jobs) {
   std::vector<std::function<std::string()>> work;
   for (const SimJob& job : jobs)
-    work.push_back([&job] {
+    work.push_back([&job, &target] {
       VectorRaySource source(*job.rays);
-      RtSimulator sim(job.config, *job.image, source);
+      RtSimulator sim(target.as_run(job.config), *job.image, source);
       sim.run();
       StatsRegistry stats;
       sim.report(stats);

@@ -2,6 +2,7 @@
 // per process) from rays in memory, two at a time; the parent keeps the scenes and BVHs.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,19 @@
 #include "traces/ray.h"
 
 namespace rtsim::validation {
+
+// What the checks validate: the config their expected values come from, and the machines they
+// build from it as they run. tamper is empty for a real validation; tests set it to break the
+// model on purpose (a latency other than the configured one) and see the checks catch it.
+struct Target {
+  HwConfig config;
+  std::function<void(HwConfig&)> tamper;
+  HwConfig as_run(HwConfig machine) const {
+    if (tamper) tamper(machine);
+    return machine;
+  }
+};
+
 
 struct SimJob {
   HwConfig config;
@@ -33,7 +47,8 @@ class SimFigures {
   nlohmann::json doc_;
 };
 
-std::vector<SimFigures> simulate(const std::vector<SimJob>& jobs);
+// Runs each job's config as target.as_run() makes it.
+std::vector<SimFigures> simulate(const Target& target, const std::vector<SimJob>& jobs);
 
 // A copy of config that only its latencies limit: no port, bank or link bandwidth limits,
 // exact event order, no sorting unit, depth-first traversal, no refresh.

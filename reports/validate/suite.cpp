@@ -24,22 +24,22 @@ size_t SuiteResult::failed() const {
   return checks.size() - passed() - skipped();
 }
 
-SuiteResult run_suite(const HwConfig& config, bool quick,
+SuiteResult run_suite(const Target& target, bool quick,
                       const std::function<void(const std::string&)>& progress) {
   SuiteResult result;
-  result.config_name = config.name;
+  result.config_name = target.config.name;
   result.quick = quick;
   auto add = [&result](std::vector<Check> checks) {
     for (Check& c : checks) result.checks.push_back(std::move(c));
   };
   progress("latency ladder");
-  add(latency_ladder(config));
+  add(latency_ladder(target));
   progress("throughput ceilings");
-  add(throughput_ceilings(config));
+  add(throughput_ceilings(target));
   progress("DRAM roofline");
-  add(dram_roofline(config));
+  add(dram_roofline(target));
   progress("Little's law");
-  add({littles_law(config)});
+  add({littles_law(target)});
   return result;
 }
 

@@ -11,6 +11,7 @@
 
 #include "model/config/hw_config.h"
 #include "reports/validate/check.h"
+#include "reports/validate/sim_runs.h"
 
 namespace rtsim::validation {
 
@@ -27,7 +28,7 @@ struct SuiteResult {
 
 // Runs the suite (quick: the closed-form checks only); `progress` hears each group's name as
 // it starts.
-SuiteResult run_suite(const HwConfig& config, bool quick,
+SuiteResult run_suite(const Target& target, bool quick,
                       const std::function<void(const std::string&)>& progress);
 
 nlohmann::ordered_json suite_json(const SuiteResult& result);

@@ -1,0 +1,115 @@
+// rtsim validate: the quick suite passes on the defaults and on every preset's machine, a model
+// broken on purpose (a latency or rate other than the configured one) fails the check that
+// measures it, and the pages agree with the JSON.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <map>
+#include <regex>
+
+#include "reports/validate/suite.h"
+#include "tests/cli/run_rtsim.h"
+#include "tests/temp_dir.h"
+
+namespace rtsim::validation {
+namespace {
+
+std::map<std::string, Check> by_id(const SuiteResult& r) {
+  std::map<std::string, Check> out;
+  for (const Check& c : r.checks) out[c.id] = c;
+  return out;
+}
+
+SuiteResult quick(const std::function<void(HwConfig&)>& tamper) {
+  return run_suite({HwConfig{}, tamper}, true, [](const std::string&) {});
+}
+
+TEST(Validate, QuickSuitePassesOnTheDefaults) {
+  SuiteResult r = quick({});
+  EXPECT_EQ(r.failed(), 0u) << terminal_table(r);
+  EXPECT_EQ(r.skipped(), 0u);
+  std::map<std::string, Check> c = by_id(r);
+  // The defaults' sums: dispatch 8 + setup 4 + box 8 + triangle 12 + 2 x control 1 = 34.
+  EXPECT_EQ(c["ladder.l1_hit"].measured, 34 + 2 * 20);
+  EXPECT_EQ(c["ladder.l2_hit"].measured, 34 + 2 * (20 + 80));
+  EXPECT_GE(c["roofline.dram"].measured, 0.9 * 256 / 1.5);
+}
+
+TEST(Validate, QuickSuitePassesOnEveryPreset) {
+  for (const auto& entry : std::filesystem::directory_iterator(RTSIM_SOURCE_DIR "/configs")) {
+    if (entry.path().extension() != ".toml") continue;
+    HwConfig config = load_hw_config(entry.path().string());
+    SuiteResult r = run_suite({config, {}}, true, [](const std::string&) {});
+    EXPECT_EQ(r.failed(), 0u) << entry.path() << "\n" << terminal_table(r);
+  }
+}
+
+TEST(Validate, ALatencyOtherThanTheConfiguredOneFailsItsRung) {
+  SuiteResult r = quick([](HwConfig& c) { c.l2.hit_latency += 3; });
+  std::map<std::string, Check> c = by_id(r);
+  EXPECT_TRUE(c["ladder.l1_hit"].passed());
+  EXPECT_FALSE(c["ladder.l2_hit"].passed());
+  EXPECT_EQ(c["ladder.l2_hit"].measured, c["ladder.l2_hit"].expected + 2 * 3);
+  r = quick([](HwConfig& c) {
+    c.banked_dram.timing.tRP += 4;
+    c.banked_dram.timing.tRC += 4;
+  });
+  c = by_id(r);
+  EXPECT_TRUE(c["ladder.dram_closed"].passed());
+  EXPECT_TRUE(c["ladder.dram_row_hit"].passed());
+  EXPECT_FALSE(c["ladder.dram_conflict"].passed()) << "tRP is only in the conflict's sum";
+  EXPECT_EQ(r.failed(), 1u) << terminal_table(r);
+}
+
+TEST(Validate, ARateOtherThanTheConfiguredOneFailsItsCeiling) {
+  SuiteResult r = quick([](HwConfig& c) {
+    if (c.rt.issue_per_cycle == 2) c.rt.issue_per_cycle = 1;  // not the ceilings' unlimited 64
+  });
+  std::map<std::string, Check> c = by_id(r);
+  EXPECT_FALSE(c["ceiling.issue_slots"].passed());
+  EXPECT_NEAR(c["ceiling.issue_slots"].measured, 1.0, 0.02);
+  r = quick([](HwConfig& c) { c.banked_dram.channels /= 2; });
+  c = by_id(r);
+  EXPECT_FALSE(c["roofline.dram"].passed());
+  EXPECT_LT(c["roofline.dram"].measured, 0.51 * c["roofline.dram"].expected);
+}
+
+TEST(ValidateCli, WritesPagesThatAgreeWithTheJsonAndRefusesBadInput) {
+  test::TempDir dir;
+  std::string out = dir.path("out");
+  test::RunResult run = test::run_rtsim("validate --quick --config " RTSIM_SOURCE_DIR
+                                        "/configs/mobile.toml -o " + out);
+  ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
+  EXPECT_NE(run.out.find("passed, 0 failed"), std::string::npos) << run.out;
+  auto doc = nlohmann::json::parse(test::slurp(out + "/validate.json"));
+  EXPECT_EQ(doc["schema"], kValidateSchema);
+  EXPECT_EQ(doc["config"], "mobile");
+  std::string html = test::slurp(out + "/validate.html");
+  std::regex cell("data-key='checks\\.([0-9]+)\\.([a-z]+)' data-value='([^']*)'");
+  size_t cells = 0;
+  for (std::sregex_iterator it(html.begin(), html.end(), cell), end; it != end; ++it, ++cells) {
+    const auto& value = doc["checks"][std::stoul((*it)[1])][(*it)[2].str()];
+    if ((*it)[3] == "null")
+      EXPECT_TRUE(value.is_null()) << (*it)[0];
+    else
+      EXPECT_EQ(std::stod((*it)[3]), value.get<double>()) << (*it)[0];
+  }
+  EXPECT_EQ(cells, 4 * doc["checks"].size());
+  EXPECT_NE(html.find("<title>Measured over expected, suite closed_form</title>"),
+            std::string::npos);
+  EXPECT_EQ(html.find("src='http"), std::string::npos) << "opens offline";
+  std::string junit = test::slurp(out + "/junit.xml");
+  size_t cases = 0;
+  for (size_t at = 0; (at = junit.find("<testcase ", at)) != std::string::npos; ++at) ++cases;
+  EXPECT_EQ(cases, doc["checks"].size());
+  EXPECT_NE(test::slurp(out + "/validate.md").find("| ladder.l1_hit"), std::string::npos);
+
+  run = test::run_rtsim("validate --quick --set dram.channels=1 --set rt.warps=1");
+  EXPECT_EQ(run.exit_code, 0) << "a valid config passes: the checks expect what it configures";
+  run = test::run_rtsim("validate --quick --config /nonexistent.toml");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("/nonexistent.toml"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace rtsim::validation
