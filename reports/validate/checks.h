@@ -1,6 +1,8 @@
 // The checks of `rtsim validate`, by suite; each takes the hardware config under test.
 #pragma once
 
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "reports/validate/check.h"
@@ -13,5 +15,15 @@ std::vector<Check> latency_ladder(const Target& target);
 std::vector<Check> throughput_ceilings(const Target& target);
 std::vector<Check> dram_roofline(const Target& target);
 Check littles_law(const Target& target);
+
+// Published results (full suite): on the shared scenes, skipped where they are missing.
+std::vector<Check> published_checks(const Target& target,
+                                    const std::function<void(const std::string&)>& progress);
+// The path of a shared scene by name (conference, sibenik, sponza, bunny, dragon).
+std::string shared_scene_path(const std::string& name);
+
+// GPU-like presets against their vendors' figures (full suite).
+std::vector<Check> preset_checks(const Target& target,
+                                 const std::function<void(const std::string&)>& progress);
 
 }  // namespace rtsim::validation

@@ -29,6 +29,7 @@ std::string status(const Check& c) {
 std::string band(const Check& c) {
   if (!c.ran() || std::isnan(c.lo)) return "-";
   if (c.lo == c.hi) return "= " + show_value(c.lo);
+  if (std::isinf(c.hi)) return ">= " + show_value(c.lo);
   return show_value(c.lo) + " .. " + show_value(c.hi);
 }
 
@@ -53,24 +54,30 @@ std::vector<std::string> suites(const SuiteResult& r) {
   return out;
 }
 
-// Each check's measured value over its expected one (1 = exact), with the band the same way.
+// What a check's values are shown against: its expected value, else its band's middle, else
+// the bound of an open band.
+double reference(const Check& c) {
+  if (std::isfinite(c.expected) && c.expected != 0) return c.expected;
+  return std::isfinite(c.hi) ? (c.lo + c.hi) / 2 : c.lo;
+}
+
+// Each check's measured value and band over its reference (1 = the expected value).
 std::string band_chart(const SuiteResult& r, const std::string& suite) {
   std::vector<const Check*> shown;
   for (const Check& c : r.checks)
-    if (c.suite == suite && c.ran() && c.expected != 0 && !std::isnan(c.expected))
-      shown.push_back(&c);
+    if (c.suite == suite && c.ran() && reference(c) > 0) shown.push_back(&c);
   if (shown.empty()) return "";
   double lo = 0.9, hi = 1.1;
   for (const Check* c : shown)
     for (double v : {c->lo, c->hi, c->measured})
       if (std::isfinite(v)) {
-        lo = std::min(lo, v / c->expected);
-        hi = std::max(hi, v / c->expected);
+        lo = std::min(lo, v / reference(*c));
+        hi = std::max(hi, v / reference(*c));
       }
   const double left = 190, width = 420, row = 22;
   double height = row * double(shown.size()) + 40;
   auto x = [&](double ratio) { return left + (ratio - lo) / (hi - lo) * width; };
-  std::string title = "Measured over expected, suite " + suite;
+  std::string title = "Measured against the pass band, suite " + suite;
   std::string svg = fmt::format(
       "<svg xmlns='http://www.w3.org/2000/svg' width='{}' height='{}' role='img' "
       "aria-label='{}'><title>{}</title>",
@@ -83,11 +90,12 @@ std::string band_chart(const SuiteResult& r, const std::string& suite) {
     double y = row * double(i) + 14;
     svg += fmt::format("<text x='{}' y='{}' font-size='11' text-anchor='end'>{}</text>", left - 6,
                        y + 4, html_escape(c.id));
-    double b0 = x(c.lo / c.expected), b1 = x(c.hi / c.expected);
+    double b0 = x(c.lo / reference(c));
+    double b1 = std::isinf(c.hi) ? left + width : x(c.hi / reference(c));
     svg += fmt::format("<rect x='{}' y='{}' width='{}' height='10' fill='#cfe3cf'/>", b0, y - 5,
                        std::max(2.0, b1 - b0));
     svg += fmt::format("<circle cx='{}' cy='{}' r='4' fill='{}'><title>{}: {} {}</title></circle>",
-                       x(c.measured / c.expected), y, c.passed() ? "#2a7d2a" : "#c62828",
+                       x(c.measured / reference(c)), y, c.passed() ? "#2a7d2a" : "#c62828",
                        html_escape(c.id), show_value(c.measured), html_escape(c.unit));
   }
   for (double t : {lo, 1.0, hi})
@@ -96,12 +104,13 @@ std::string band_chart(const SuiteResult& r, const std::string& suite) {
   svg += "</svg>";
   return "<figure>" + svg + "<figcaption>" + html_escape(title) +
          ": the green bar is the pass band, the dot the measured value (green: pass, red: "
-         "fail), both over the expected value.</figcaption></figure>\n";
+         "fail), both over the expected value (where there is none: the band's middle, or its "
+         "bound if it is open).</figcaption></figure>\n";
 }
 
 std::string cell(size_t index, const char* key, double value) {
   return fmt::format("<td data-key='checks.{}.{}' data-value='{}'>{}</td>", index, key,
-                     std::isnan(value) ? "null" : fmt::format("{}", value), show_value(value));
+                     std::isfinite(value) ? fmt::format("{}", value) : "null", show_value(value));
 }
 
 }  // namespace

@@ -40,17 +40,24 @@ SuiteResult run_suite(const Target& target, bool quick,
   add(dram_roofline(target));
   progress("Little's law");
   add({littles_law(target)});
+  if (quick) return result;
+  add(published_checks(target, progress));
+  add(preset_checks(target, progress));
   return result;
 }
 
 std::string show_value(double value) {
   if (std::isnan(value)) return "-";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   return fmt::format("{:.4g}", value);
 }
 
 nlohmann::ordered_json suite_json(const SuiteResult& r) {
   nlohmann::ordered_json checks = nlohmann::ordered_json::array();
-  auto number = [](double v) { return std::isnan(v) ? nlohmann::ordered_json() : nlohmann::ordered_json(v); };
+  // JSON has no infinity: an open band's missing side is null.
+  auto number = [](double v) {
+    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
+  };
   for (const Check& c : r.checks)
     checks.push_back({{"id", c.id},
                       {"suite", c.suite},

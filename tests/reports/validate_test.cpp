@@ -95,7 +95,7 @@ TEST(ValidateCli, WritesPagesThatAgreeWithTheJsonAndRefusesBadInput) {
       EXPECT_EQ(std::stod((*it)[3]), value.get<double>()) << (*it)[0];
   }
   EXPECT_EQ(cells, 4 * doc["checks"].size());
-  EXPECT_NE(html.find("<title>Measured over expected, suite closed_form</title>"),
+  EXPECT_NE(html.find("<title>Measured against the pass band, suite closed_form</title>"),
             std::string::npos);
   EXPECT_EQ(html.find("src='http"), std::string::npos) << "opens offline";
   std::string junit = test::slurp(out + "/junit.xml");
