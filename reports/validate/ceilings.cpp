@@ -8,39 +8,11 @@
 
 #include "model/verify/ray_samples.h"
 #include "reports/validate/checks.h"
-#include "reports/validate/sim_runs.h"
+#include "reports/validate/saturation.h"
 #include "workloads/scene.h"
 
 namespace rtsim::validation {
 namespace {
-
-constexpr uint32_t kUnlimited = 64;  // test units or issue slots that never limit
-constexpr size_t kRays = 16000;
-
-// Two units (the ceilings are per unit), an L1 that holds the whole scene, slots refilled one
-// by one and twice as many as `rate` steps a cycle per unit keep busy.
-HwConfig ceiling_machine(const HwConfig& preset, double rate) {
-  HwConfig c = unloaded(preset);
-  c.rt_units = 2;
-  c.l1.size_bytes = 4u << 20;
-  c.l1.ways = 16;
-  c.l1.mshrs = std::max(c.l1.mshrs, 64u);
-  c.rt.refill = Refill::Slot;
-  c.rt.stack.entries = 64;
-  double step = c.dispatch.latency + c.rt.setup_latency + c.l1.hit_latency +
-                std::max(c.rt.box.latency, c.rt.triangle.latency) + c.rt.control_latency + 4;
-  c.rt.warps = uint32_t(std::ceil(3 * rate * step / c.rt.warp_size));
-  return c;
-}
-
-// Stage work over cycles between a run of N rays and one of 2N: the ramp-up and the drain,
-// the same in both, cancel.
-double steady_rate(const SimFigures& n, const SimFigures& twice, const std::string& unit_stat) {
-  auto work = [&](const SimFigures& run) {
-    return unit_stat.empty() ? run["rays"] : run.units_sum(unit_stat) / 2;
-  };
-  return (work(twice) - work(n)) / (twice["cycles"] - n["cycles"]);
-}
 
 Check ceiling(const char* id, const char* title, double expected, double measured,
               std::string source, std::string look_at) {
@@ -89,24 +61,24 @@ std::vector<Check> throughput_ceilings(const Target& target) {
   std::vector<Check> out;
   out.push_back(ceiling(
       "ceiling.box_tests", "box-test issues a cycle, the box units saturated", rt.box.count,
-      steady_rate(runs[0], runs[1], "box.issues"),
+      steady_rate(runs[0], runs[1], per_unit("box.issues")),
       fmt::format("formula: rt.box.count {} pipelined units, one issue ({} boxes) a cycle each",
                   rt.box.count, rt.box.issue_width),
       "TestUnitPool::reserve (model/sched/test_unit_pool.cpp)"));
   out.push_back(ceiling(
       "ceiling.triangle_tests", "triangle-test issues a cycle, the triangle units saturated",
-      rt.triangle.count, steady_rate(runs[2], runs[3], "triangle.issues"),
+      rt.triangle.count, steady_rate(runs[2], runs[3], per_unit("triangle.issues")),
       fmt::format("formula: rt.triangle.count {} pipelined units, one issue ({} triangles) a "
                   "cycle each",
                   rt.triangle.count, rt.triangle.issue_width),
       "TestUnitPool::reserve (model/sched/test_unit_pool.cpp)"));
   out.push_back(ceiling("ceiling.issue_slots",
                         "traversal steps started a cycle, control saturated",
-                        rt.issue_per_cycle, steady_rate(runs[4], runs[5], "control.issues"),
+                        rt.issue_per_cycle, steady_rate(runs[4], runs[5], per_unit("control.issues")),
                         fmt::format("formula: rt.issue_per_cycle {}", rt.issue_per_cycle),
                         "RtCore::claim_issue (model/sched/rt_core.cpp)"));
   Check d = ceiling("ceiling.dispatch", "rays handed out a cycle, the dispatcher saturated",
-                    preset.dispatch.rays_per_cycle, steady_rate(runs[6], runs[7], ""),
+                    preset.dispatch.rays_per_cycle, steady_rate(runs[6], runs[7], stat("rays")),
                     fmt::format("formula: dispatch.rays_per_cycle {}",
                                 preset.dispatch.rays_per_cycle),
                     "RayDispatcher::take (model/sched/dispatcher.cpp)");

@@ -14,7 +14,9 @@ namespace rtsim::validation {
 std::vector<Check> latency_ladder(const Target& target);
 std::vector<Check> throughput_ceilings(const Target& target);
 std::vector<Check> dram_roofline(const Target& target);
+std::vector<Check> port_rooflines(const Target& target);
 Check littles_law(const Target& target);
+Check dram_loaded_latency(const Target& target);
 
 // Published results (full suite): on the shared scenes, skipped where they are missing.
 std::vector<Check> published_checks(const Target& target,

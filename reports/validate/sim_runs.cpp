@@ -15,9 +15,13 @@ double SimFigures::operator[](const std::string& name) const {
   throw std::logic_error("rtsim validate: a run has no stat " + name);
 }
 
+bool SimFigures::has(const std::string& name) const {
+  return doc_["counters"].contains(name) || doc_["derived"].contains(name);
+}
+
 double SimFigures::units_sum(const std::string& name) const {
   double sum = 0;
-  for (uint32_t unit = 0; doc_["counters"].contains("rt" + std::to_string(unit) + ".rays"); ++unit)
+  for (uint32_t unit = 0; has("rt" + std::to_string(unit) + ".rays"); ++unit)
     sum += (*this)["rt" + std::to_string(unit) + "." + name];
   return sum;
 }

@@ -36,8 +36,11 @@ SuiteResult run_suite(const Target& target, bool quick,
   add(latency_ladder(target));
   progress("throughput ceilings");
   add(throughput_ceilings(target));
-  progress("DRAM roofline");
+  progress("bandwidth rooflines");
+  add(port_rooflines(target));
   add(dram_roofline(target));
+  progress("DRAM latency under load");
+  add({dram_loaded_latency(target)});
   progress("Little's law");
   add({littles_law(target)});
   if (quick) return result;
