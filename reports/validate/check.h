@@ -16,14 +16,20 @@ struct Check {
   std::string source;    // formula, paper (table or figure) or datasheet
   std::string unit;      // of expected, lo, hi and measured
   double expected = NAN;  // the closed form or the published figure (NaN: a band only)
-  double lo = NAN, hi = NAN;  // pass band, inclusive
+  double lo = NAN, hi = NAN;  // pass band, inclusive; NaN: a figure reported, not judged
   double measured = NAN;
   std::string detail;    // how measured: the runs and the counters
   std::string look_at;   // where to look when it fails
   std::string skipped;   // not run, and why (a missing scene); such a check neither passes nor fails
 
   bool ran() const { return skipped.empty(); }
-  bool passed() const { return ran() && measured >= lo && measured <= hi; }
+  bool judged() const { return ran() && !std::isnan(lo); }
+  bool passed() const { return judged() && measured >= lo && measured <= hi; }
+  bool failed() const { return judged() && !passed(); }
+  // skipped, info (reported, not judged), pass or fail
+  const char* status() const {
+    return !ran() ? "skipped" : !judged() ? "info" : passed() ? "pass" : "fail";
+  }
 };
 
 // A band of +-tolerance (a fraction) around expected.

@@ -24,6 +24,9 @@ std::vector<Check> published_checks(const Target& target,
 // The path of a shared scene by name (conference, sibenik, sponza, bunny, dragon).
 std::string shared_scene_path(const std::string& name);
 
+// Bracketing runs for the costs the model leaves out or simplifies (full suite).
+std::vector<Check> sensitivity_checks(const Target& target);
+
 // GPU-like presets against their vendors' figures (full suite).
 std::vector<Check> preset_checks(const Target& target,
                                  const std::function<void(const std::string&)>& progress);

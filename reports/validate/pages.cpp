@@ -23,7 +23,7 @@ std::string attr(const std::string& text) {
 }
 
 std::string status(const Check& c) {
-  return !c.ran() ? "skipped" : c.passed() ? "pass" : "FAIL";
+  return c.failed() ? "FAIL" : c.status();
 }
 
 std::string band(const Check& c) {
@@ -41,9 +41,9 @@ std::vector<std::vector<std::string>> rows(const SuiteResult& r) {
 }
 
 std::string summary(const SuiteResult& r) {
-  return fmt::format("{} checks on config {}{}: {} passed, {} failed, {} skipped", r.checks.size(),
-                     r.config_name, r.quick ? " (quick)" : "", r.passed(), r.failed(),
-                     r.skipped());
+  return fmt::format("{} checks on config {}{}: {} passed, {} failed, {} skipped, {} reported",
+                     r.checks.size(), r.config_name, r.quick ? " (quick)" : "", r.passed(),
+                     r.failed(), r.skipped(), r.reported());
 }
 
 // Suites in the order their first check appears.
@@ -65,7 +65,7 @@ double reference(const Check& c) {
 std::string band_chart(const SuiteResult& r, const std::string& suite) {
   std::vector<const Check*> shown;
   for (const Check& c : r.checks)
-    if (c.suite == suite && c.ran() && reference(c) > 0) shown.push_back(&c);
+    if (c.suite == suite && c.judged() && reference(c) > 0) shown.push_back(&c);
   if (shown.empty()) return "";
   double lo = 0.9, hi = 1.1;
   for (const Check* c : shown)
@@ -118,7 +118,7 @@ std::string cell(size_t index, const char* key, double value) {
 std::string terminal_table(const SuiteResult& r) {
   std::string out = text_table(rows(r), false, {false, false, true, true, false});
   for (const Check& c : r.checks)
-    if (c.ran() && !c.passed())
+    if (c.failed())
       out += fmt::format("FAIL {}: measured {} {}, expected {} ({})\n  look at: {}\n", c.id,
                          show_value(c.measured), c.unit, band(c), c.source, c.look_at);
   return out + summary(r) + "\n";
@@ -137,7 +137,7 @@ std::string markdown_page(const SuiteResult& r) {
     }
     out += fmt::format("- measured: {} {}; pass band: {}\n- how: {}\n", show_value(c.measured),
                        c.unit, band(c), c.detail);
-    if (!c.passed()) out += "- look at: " + c.look_at + "\n";
+    if (c.failed()) out += "- look at: " + c.look_at + "\n";
   }
   return out;
 }
@@ -149,7 +149,7 @@ std::string html_page(const SuiteResult& r) {
       "</title><style>body{font-family:sans-serif;max-width:1100px;margin:2em auto}"
       "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:3px 6px;"
       "font-size:13px;vertical-align:top}td[data-value]{text-align:right}.pass{color:#2a7d2a}"
-      ".fail{color:#c62828;font-weight:bold}.skipped{color:#777}</style></head><body>\n";
+      ".fail{color:#c62828;font-weight:bold}.skipped,.info{color:#777}</style></head><body>\n";
   out += "<h1>rtsim validate: " + html_escape(r.config_name) + "</h1>\n<p>" +
          html_escape(summary(r)) + "</p>\n";
   for (const std::string& suite : suites(r)) {
@@ -159,13 +159,13 @@ std::string html_page(const SuiteResult& r) {
     for (size_t i = 0; i < r.checks.size(); ++i) {
       const Check& c = r.checks[i];
       if (c.suite != suite) continue;
-      std::string state = !c.ran() ? "skipped" : c.passed() ? "pass" : "fail";
+      std::string state = c.status();
       out += "<tr><td id='" + attr(c.id) + "'>" + html_escape(c.id) + "</td><td class='" + state + "'>" + state + "</td>" +
              cell(i, "measured", c.ran() ? c.measured : NAN) + cell(i, "expected", c.expected) +
              cell(i, "lo", c.lo) + cell(i, "hi", c.hi) + "<td>" + html_escape(c.unit) +
              "</td><td>" + html_escape(c.title) + "<br><small>" + html_escape(c.source);
       out += c.ran() ? "<br>how: " + html_escape(c.detail) : "<br>skipped: " + html_escape(c.skipped);
-      if (c.ran() && !c.passed()) out += "<br>look at: " + html_escape(c.look_at);
+      if (c.failed()) out += "<br>look at: " + html_escape(c.look_at);
       out += "</small></td></tr>\n";
     }
     out += "</table>\n";
@@ -182,7 +182,7 @@ std::string junit_xml(const SuiteResult& r) {
     out += fmt::format("<testcase classname='{}' name='{}'>", attr(c.suite), attr(c.id));
     if (!c.ran()) {
       out += "<skipped message='" + attr(c.skipped) + "'/>";
-    } else if (!c.passed()) {
+    } else if (c.failed()) {
       out += fmt::format("<failure message='measured {} {}, expected {}'>{}; look at: {}</failure>",
                          show_value(c.measured), attr(c.unit), attr(band(c)),
                          html_escape(c.source), html_escape(c.look_at));

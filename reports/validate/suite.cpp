@@ -21,7 +21,13 @@ size_t SuiteResult::skipped() const {
 }
 
 size_t SuiteResult::failed() const {
-  return checks.size() - passed() - skipped();
+  size_t n = 0;
+  for (const Check& c : checks) n += c.failed();
+  return n;
+}
+
+size_t SuiteResult::reported() const {
+  return checks.size() - passed() - failed() - skipped();
 }
 
 SuiteResult run_suite(const Target& target, bool quick,
@@ -46,6 +52,8 @@ SuiteResult run_suite(const Target& target, bool quick,
   if (quick) return result;
   add(published_checks(target, progress));
   add(preset_checks(target, progress));
+  progress("sensitivity");
+  add(sensitivity_checks(target));
   return result;
 }
 
@@ -65,7 +73,7 @@ nlohmann::ordered_json suite_json(const SuiteResult& r) {
     checks.push_back({{"id", c.id},
                       {"suite", c.suite},
                       {"title", c.title},
-                      {"status", !c.ran() ? "skipped" : c.passed() ? "pass" : "fail"},
+                      {"status", c.status()},
                       {"unit", c.unit},
                       {"expected", number(c.expected)},
                       {"lo", number(c.lo)},
@@ -82,6 +90,7 @@ nlohmann::ordered_json suite_json(const SuiteResult& r) {
           {"passed", r.passed()},
           {"failed", r.failed()},
           {"skipped", r.skipped()},
+          {"reported", r.reported()},
           {"checks", checks}};
 }
 

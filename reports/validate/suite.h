@@ -24,6 +24,7 @@ struct SuiteResult {
   size_t passed() const;
   size_t failed() const;
   size_t skipped() const;
+  size_t reported() const;  // info: figures without a band
 };
 
 // Runs the suite (quick: the closed-form checks only); `progress` hears each group's name as
