@@ -27,6 +27,10 @@ std::string shared_scene_path(const std::string& name);
 // Bracketing runs for the costs the model leaves out or simplifies (full suite).
 std::vector<Check> sensitivity_checks(const Target& target);
 
+// The sampled level against the full model on pica and Sponza, over seeds (full suite).
+std::vector<Check> sampling_checks(const Target& target,
+                                   const std::function<void(const std::string&)>& progress);
+
 // GPU-like presets against their vendors' figures (full suite).
 std::vector<Check> preset_checks(const Target& target,
                                  const std::function<void(const std::string&)>& progress);

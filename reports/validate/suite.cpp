@@ -54,6 +54,7 @@ SuiteResult run_suite(const Target& target, bool quick,
   add(preset_checks(target, progress));
   progress("sensitivity");
   add(sensitivity_checks(target));
+  add(sampling_checks(target, progress));
   return result;
 }
 

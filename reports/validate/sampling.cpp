@@ -1,0 +1,150 @@
+// Sampling you can trust: the sampled level (scale model, 1 in 20 warps) against the full
+// model on a pica and a Sponza hybrid frame, over 10 seeds: its DRAM bytes within 5%, its L1
+// and L2 hit rates within 1 point (rms over the seeds), and its 95% intervals holding the full
+// model's cycles, DRAM bytes and hit rates for at least 90% of the seeds.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include <fmt/core.h>
+
+#include "model/fidelity/level_runner.h"
+#include "reports/trace_step.h"
+#include "reports/validate/checks.h"
+#include "workloads/scene.h"
+
+namespace rtsim::validation {
+namespace {
+
+constexpr uint32_t kRate = 20;
+constexpr uint64_t kSeeds = 10;
+
+struct Workload {
+  const char* name;
+  const char* spec;
+  const char* needs;  // a shared scene, or "" for a built-in
+};
+
+const Workload kWorkloads[] = {{"pica", RTSIM_SOURCE_DIR "/workloads/specs/pica.toml", ""},
+                               {"sponza", RTSIM_SOURCE_DIR "/workloads/specs/sponza.toml",
+                                "sponza"}};
+
+struct Metric {
+  const char* name;
+  Estimate FidelityResult::*field;
+  double scale;  // to the check's unit: 1 relative, 100 points
+  bool relative;
+};
+
+const Metric kMetrics[] = {{"cycles", &FidelityResult::cycles, 1, true},
+                           {"dram_bytes", &FidelityResult::dram_bytes, 1, true},
+                           {"l1_hit_rate", &FidelityResult::l1_hit_rate, 100, false},
+                           {"l2_hit_rate", &FidelityResult::l2_hit_rate, 100, false}};
+
+double error(const Metric& m, const Estimate& sampled, const Estimate& full) {
+  double diff = sampled.value - full.value;
+  return m.relative ? diff / full.value : diff * m.scale;
+}
+
+std::vector<Check> sample_workload(const Target& target, const Workload& w) {
+  std::vector<Check> out;
+  std::string prefix = std::string("sampling.") + w.name + ".";
+  for (const char* id : {"dram_bytes", "l1_hit_rate", "l2_hit_rate", "coverage"})
+    out.push_back(Check{prefix + id, "sampling"});
+  out[0].title = "sampled DRAM bytes against the full model, rms over seeds";
+  out[0].unit = "relative error";
+  out[0].lo = -0.05;
+  out[0].hi = 0.05;
+  out[1].title = "sampled L1 hit rate against the full model, rms over seeds";
+  out[2].title = "sampled L2 hit rate against the full model, rms over seeds";
+  for (Check* c : {&out[1], &out[2]}) {
+    c->unit = "points";
+    c->lo = -1;
+    c->hi = 1;
+  }
+  out[3].title = "share of 95% intervals (cycles, DRAM bytes, L1 and L2 hit rates) that hold "
+                 "the full model's value";
+  out[3].unit = "share";
+  out[3].lo = 0.9;
+  out[3].hi = 1;
+  for (Check& c : out) {
+    c.expected = c.id.find("coverage") != std::string::npos ? NAN : 0;
+    c.source = fmt::format("goal (issue 15): 1 in {} warps, scale model, seeds 1-{}: DRAM bytes "
+                           "within 5%, hit rates within 1 point, intervals hold the full "
+                           "model's value for at least 90% of seeds",
+                           kRate, kSeeds);
+    c.look_at = "model/fidelity/scaled_level.cpp (estimates and intervals), "
+                "model/fidelity/README.md \"Scale model\"";
+  }
+  if (*w.needs && shared_scene_path(w.needs).empty()) {
+    for (Check& c : out) c.skipped = std::string(w.needs) + ": no such shared scene";
+    return out;
+  }
+  if (*w.needs && !std::filesystem::exists(shared_scene_path(w.needs))) {
+    for (Check& c : out) c.skipped = shared_scene_path(w.needs) + " not found";
+    return out;
+  }
+  char folder[] = "/tmp/rtsim-validate-XXXXXX";
+  if (!mkdtemp(folder)) throw std::runtime_error("rtsim validate: cannot make a temporary folder");
+  reports::TraceRequest request{w.spec, "320x180"};
+  reports::TraceOutcome trace = reports::trace_into(request, folder, true);
+  HwConfig config = target.as_run(target.config);
+  Scene scene = load_scene(trace.summary["scene"].get<std::string>());
+  BvhImage image = build_bvh_image(scene.mesh, config.bvh);
+  FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, config, image,
+                                           trace.stream);
+  std::vector<FidelityResult> sampled;
+  for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
+    LevelRequest level{FidelityLevel::Sampled, {}};
+    level.sampling.rate = kRate;
+    level.sampling.seed = seed;
+    sampled.push_back(run_level_in_child(level, config, image, trace.stream));
+  }
+  std::filesystem::remove_all(folder);
+  size_t held = 0, intervals = 0;
+  std::string coverage_detail;
+  for (const Metric& m : kMetrics) {
+    double sum2 = 0;
+    size_t metric_held = 0;
+    for (const FidelityResult& s : sampled) {
+      const Estimate& e = s.*m.field;
+      double e_err = error(m, e, full.*m.field);
+      sum2 += e_err * e_err;
+      bool holds = std::abs(e.value - (full.*m.field).value) <= e.ci95;
+      metric_held += holds;
+    }
+    held += metric_held;
+    intervals += sampled.size();
+    coverage_detail += fmt::format("{}{} {}/{}", coverage_detail.empty() ? "" : ", ", m.name,
+                                   metric_held, sampled.size());
+    double rms = std::sqrt(sum2 / double(sampled.size()));
+    for (Check& c : out)
+      if (c.id == prefix + m.name) {
+        c.measured = rms;
+        const Estimate& first = sampled[0].*m.field;
+        c.detail = fmt::format(
+            "{} at 320x180 ({} rays): full model {:.6g}; seed 1 {:.6g} +- {:.3g}; rms over {} "
+            "seeds",
+            w.name, full.rays, (full.*m.field).value * m.scale, first.value * m.scale,
+            first.ci95 * m.scale, sampled.size());
+      }
+  }
+  out[3].measured = double(held) / double(intervals);
+  out[3].detail = fmt::format("{} at 320x180: intervals that hold the full value, by metric: {}",
+                              w.name, coverage_detail);
+  return out;
+}
+
+}  // namespace
+
+std::vector<Check> sampling_checks(const Target& target,
+                                   const std::function<void(const std::string&)>& progress) {
+  std::vector<Check> out;
+  for (const Workload& w : kWorkloads) {
+    progress(std::string("sampling: ") + w.name);
+    for (Check& c : sample_workload(target, w)) out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace rtsim::validation
