@@ -21,10 +21,11 @@ Check ceiling(const char* id, const char* title, double expected, double measure
   c.unit = "per cycle per unit";
   set_band(c, expected, 0.02);
   c.measured = measured;
-  c.detail = fmt::format("2 units, {} and {} diffuse rays on grid:4096: the difference of work "
-                         "over the difference of cycles; an L1 that holds the scene, the other "
-                         "stages set to {} a cycle",
-                         kRays, 2 * kRays, kUnlimited);
+  c.detail = fmt::format(
+      "2 units, {} and {} diffuse rays on grid:4096: the difference of work "
+      "over the difference of cycles; an L1 that holds the scene, the other "
+      "stages set to {} a cycle",
+      kRays, 2 * kRays, kUnlimited);
   c.look_at = std::move(look_at);
   return c;
 }
@@ -72,21 +73,22 @@ std::vector<Check> throughput_ceilings(const Target& target) {
                   "cycle each",
                   rt.triangle.count, rt.triangle.issue_width),
       "TestUnitPool::reserve (model/sched/test_unit_pool.cpp)"));
-  out.push_back(ceiling("ceiling.issue_slots",
-                        "traversal steps started a cycle, control saturated",
-                        rt.issue_per_cycle, steady_rate(runs[4], runs[5], per_unit("control.issues")),
+  out.push_back(ceiling("ceiling.issue_slots", "traversal steps started a cycle, control saturated",
+                        rt.issue_per_cycle,
+                        steady_rate(runs[4], runs[5], per_unit("control.issues")),
                         fmt::format("formula: rt.issue_per_cycle {}", rt.issue_per_cycle),
                         "RtCore::claim_issue (model/sched/rt_core.cpp)"));
-  Check d = ceiling("ceiling.dispatch", "rays handed out a cycle, the dispatcher saturated",
-                    preset.dispatch.rays_per_cycle, steady_rate(runs[6], runs[7], stat("rays")),
-                    fmt::format("formula: dispatch.rays_per_cycle {}",
-                                preset.dispatch.rays_per_cycle),
-                    "RayDispatcher::take (model/sched/dispatcher.cpp)");
+  Check d =
+      ceiling("ceiling.dispatch", "rays handed out a cycle, the dispatcher saturated",
+              preset.dispatch.rays_per_cycle, steady_rate(runs[6], runs[7], stat("rays")),
+              fmt::format("formula: dispatch.rays_per_cycle {}", preset.dispatch.rays_per_cycle),
+              "RayDispatcher::take (model/sched/dispatcher.cpp)");
   d.unit = "rays per cycle (all units)";
-  d.detail = fmt::format("2 units, {} and {} rays that leave the scene after the root's box "
-                         "test: the difference of rays over the difference of cycles; every "
-                         "other stage set to {} a cycle",
-                         kRays, 2 * kRays, kUnlimited);
+  d.detail = fmt::format(
+      "2 units, {} and {} rays that leave the scene after the root's box "
+      "test: the difference of rays over the difference of cycles; every "
+      "other stage set to {} a cycle",
+      kRays, 2 * kRays, kUnlimited);
   out.push_back(d);
   return out;
 }
@@ -95,9 +97,10 @@ Check littles_law(const Target& target) {
   const HwConfig& preset = target.config;
   Check c{"little.rays_in_flight", "closed_form",
           "rays in flight = throughput x mean latency, from two independent counters"};
-  c.source = "formula: Little's law, L = lambda W (L: the units' integral of occupied ray slots "
-             "over cycles; lambda: rays / cycles; W: the per-ray latency the stats collector "
-             "keeps from dispatch to retirement)";
+  c.source =
+      "formula: Little's law, L = lambda W (L: the units' integral of occupied ray slots "
+      "over cycles; lambda: rays / cycles; W: the per-ray latency the stats collector "
+      "keeps from dispatch to retirement)";
   c.unit = "rays";
   if (preset.rt.mode == TraversalMode::Treelet) {
     c.skipped = "treelet mode: a postponed ray waits in the queues, outside any ray slot";
@@ -112,9 +115,10 @@ Check littles_law(const Target& target) {
   double cycles = run["cycles"];
   set_band(c, run["rays"] / cycles * run.latency_mean(), 0.005);
   c.measured = run["rt.ray_slot_cycles"] / cycles;
-  c.detail = fmt::format("the config as given, {} diffuse rays on grid:4096, dispatch unlimited "
-                         "so that a ray's latency starts when it takes its slot",
-                         kRays);
+  c.detail = fmt::format(
+      "the config as given, {} diffuse rays on grid:4096, dispatch unlimited "
+      "so that a ray's latency starts when it takes its slot",
+      kRays);
   c.look_at = "RtCore::account (slot integral) and SimStatsCollector::retired (latency)";
   return c;
 }

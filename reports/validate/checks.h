@@ -5,10 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "model/mem/dram_controller.h"
 #include "reports/validate/check.h"
 #include "reports/validate/sim_runs.h"
 
 namespace rtsim::validation {
+
+// Advances the controller from `from` until `reads` reads are done; throws if they are not
+// within 100M cycles (a controller that stopped answering).
+void drain(DramController& controller, size_t reads, Cycle from, std::vector<DramReadDone>& done);
 
 // Closed form (quick): latency ladder, throughput ceilings, DRAM roofline, Little's law.
 std::vector<Check> latency_ladder(const Target& target);

@@ -39,11 +39,11 @@ std::vector<Check> ray_ladder(const Target& target) {
   HwConfig l2 = l1;
   l2.rt_units = 2;
   l2.dispatch.rays_per_cycle = 1.0 / 4096;
-  std::vector<SimFigures> runs = simulate(target, {{l1, &scene.image, &scene.rays},
-                                           {l2, &scene.image, &scene.rays}});
+  std::vector<SimFigures> runs =
+      simulate(target, {{l1, &scene.image, &scene.rays}, {l2, &scene.image, &scene.rays}});
   const RtCoreConfig& rt = preset.rt;
-  double fixed = preset.dispatch.latency + rt.setup_latency + rt.box.latency +
-                 rt.triangle.latency + 2.0 * rt.control_latency;
+  double fixed = preset.dispatch.latency + rt.setup_latency + rt.box.latency + rt.triangle.latency +
+                 2.0 * rt.control_latency;
   double l1_read = preset.l1.hit_latency;
   double l2_read = l1_read + 2.0 * preset.l2_layout.crossbar.latency + preset.l2.hit_latency;
   std::string terms = fmt::format(
@@ -56,20 +56,23 @@ std::vector<Check> ray_ladder(const Target& target) {
   hit1.unit = "cycles";
   set_exact(hit1, fixed + 2 * l1_read);
   hit1.measured = runs[0]["cycles"];
-  hit1.detail = "1 unit, 1 ray slot, bandwidth limits off; the same ray twice, the first as "
-                "warm-up; cycles from the second ray's dispatch to its retirement";
+  hit1.detail =
+      "1 unit, 1 ray slot, bandwidth limits off; the same ray twice, the first as "
+      "warm-up; cycles from the second ray's dispatch to its retirement";
   hit1.look_at = "RtCore::on_ray, test_step, Cache::read (model/sched, model/mem)";
   Check hit2{"ladder.l2_hit", "closed_form", "one ray, both reads miss the L1 and hit the L2"};
-  hit2.source = "formula: " + terms +
-                fmt::format(" + 2 reads x (rt.l1.hit_latency {} + 2 x xbar.latency {} + "
-                            "l2.hit_latency {})",
-                            preset.l1.hit_latency, preset.l2_layout.crossbar.latency,
-                            preset.l2.hit_latency);
+  hit2.source =
+      "formula: " + terms +
+      fmt::format(
+          " + 2 reads x (rt.l1.hit_latency {} + 2 x xbar.latency {} + "
+          "l2.hit_latency {})",
+          preset.l1.hit_latency, preset.l2_layout.crossbar.latency, preset.l2.hit_latency);
   hit2.unit = "cycles";
   set_exact(hit2, fixed + 2 * l2_read);
   hit2.measured = runs[1]["cycles"];
-  hit2.detail = "2 units, 1 ray slot each, one ray dispatched every 4096 cycles: the second ray "
-                "runs on the other unit after the first left its lines in the L2";
+  hit2.detail =
+      "2 units, 1 ray slot each, one ray dispatched every 4096 cycles: the second ray "
+      "runs on the other unit after the first left its lines in the L2";
   hit2.look_at = "the L1 miss path: L1Module, Crossbar, SharedCacheModule (model/sc, model/mem)";
   return {hit1, hit2};
 }
@@ -100,8 +103,8 @@ class DramProbe {
     DramAddress b = map_.decode(base);
     for (uint64_t addr = base + line_;; addr += line_) {
       DramAddress a = map_.decode(addr);
-      bool bank = a.channel == b.channel && a.rank == b.rank && a.group == b.group &&
-                  a.bank == b.bank;
+      bool bank =
+          a.channel == b.channel && a.rank == b.rank && a.group == b.group && a.bank == b.bank;
       if (bank && (a.row == b.row) == same_row && a.column != b.column) return addr;
     }
   }
@@ -117,6 +120,17 @@ class DramProbe {
            double(at);
   }
   const BankedDramConfig& config() const { return config_; }
+  // Whether every burst of the line at addr is in the same channel, bank and row.
+  bool one_bank(uint64_t addr) const {
+    DramAddress first = map_.decode(addr);
+    for (uint32_t b = 1; b * config_.burst_bytes() < line_; ++b) {
+      DramAddress a = map_.decode(addr + b * config_.burst_bytes());
+      if (a.channel != first.channel || a.rank != first.rank || a.group != first.group ||
+          a.bank != first.bank || a.row != first.row)
+        return false;
+    }
+    return true;
+  }
 
  private:
   static BankedDramConfig without_refresh(BankedDramConfig c) {
@@ -148,6 +162,16 @@ std::vector<Check> dram_ladder(const Target& target) {
     return out;
   }
   DramProbe probe(preset, target.as_run(preset), block_bytes(preset.l2));
+  if (!probe.one_bank(0)) {
+    for (int i = 0; i < 3; ++i) {
+      Check c{names[i], "closed_form", titles[i]};
+      c.skipped =
+          "dram.mapping spreads a line's bursts over several banks or channels: the "
+          "rungs' closed form is for a line in one bank";
+      out.push_back(c);
+    }
+    return out;
+  }
   const DramTiming& t = probe.config().timing;
   bool open = probe.config().page_policy == DramPagePolicy::Open;
   uint64_t base = 0;
@@ -173,8 +197,9 @@ std::vector<Check> dram_ladder(const Target& target) {
     c.measured = measured[i];
     c.detail = fmt::format("DramController alone, refresh off, a {}-byte read at {:#x}",
                            block_bytes(preset.l2), addrs[i]);
-    c.look_at = "DramController::decide and DramChannel (model/mem/dram_controller.cpp, "
-                "dram_device.cpp)";
+    c.look_at =
+        "DramController::decide and DramChannel (model/mem/dram_controller.cpp, "
+        "dram_device.cpp)";
     out.push_back(c);
   }
   return out;

@@ -21,7 +21,7 @@ LoadPoint run_load(const HwConfig& run, uint32_t line, double offered, uint64_t 
   const uint64_t reads = 20000;
   DramController controller(run.banked_dram, run.clock_ghz);
   double peak = run.banked_dram.peak_gb_per_s() / run.clock_ghz;  // bytes per core cycle
-  double gap = line / (offered * peak);                          // mean cycles between reads
+  double gap = line / (offered * peak);                           // mean cycles between reads
   SeededRandom random(seed);
   std::vector<DramReadDone> done;
   double at = 0;
@@ -30,8 +30,7 @@ LoadPoint run_load(const HwConfig& run, uint32_t line, double offered, uint64_t 
     if (Cycle(at) > 0) controller.advance(Cycle(at) - 1, done);  // decisions before it arrives
     controller.enqueue(i, i * line, line, false, Cycle(at));
   }
-  Cycle until = Cycle(at);
-  while (done.size() < reads) controller.advance(until += 4096, done);
+  drain(controller, reads, Cycle(at), done);
   double latency = 0;
   for (const DramReadDone& d : done) latency += double(d.ready);
   // Arrival cycles again, from the same seed.
@@ -73,19 +72,21 @@ Check dram_loaded_latency(const Target& target) {
   for (const LoadPoint& p : points) {
     double fit = w0 + a * p.utilisation / (1 - p.utilisation);
     worst = std::max(worst, std::abs(p.latency - fit) / fit);
-    table += fmt::format("{}{:.0f}%: {:.1f}", table.empty() ? "" : ", ", 100 * p.utilisation,
-                         p.latency);
+    table +=
+        fmt::format("{}{:.0f}%: {:.1f}", table.empty() ? "" : ", ", 100 * p.utilisation, p.latency);
   }
   c.expected = 0;
   c.lo = 0;
   c.hi = 0.10;
   c.measured = worst;
-  c.source = "formula: W(u) = W0 + a u / (1 - u) (queueing theory: M/D/1 and M/M/1 waits); "
-             "pass: every point within 10% of the fitted curve";
-  c.detail = fmt::format("DramController alone, {}-byte reads at consecutive addresses, "
-                         "exponential gaps, 20000 reads per load; mean latency in cycles by "
-                         "utilisation: {}; fit W0 {:.1f}, a {:.2f}",
-                         line, table, w0, a);
+  c.source =
+      "formula: W(u) = W0 + a u / (1 - u) (queueing theory: M/D/1 and M/M/1 waits); "
+      "pass: every point within 10% of the fitted curve";
+  c.detail = fmt::format(
+      "DramController alone, {}-byte reads at consecutive addresses, "
+      "exponential gaps, 20000 reads per load; mean latency in cycles by "
+      "utilisation: {}; fit W0 {:.1f}, a {:.2f}",
+      line, table, w0, a);
   c.look_at = "DramController scheduling and queues (read_queue, starvation_cap)";
   return c;
 }

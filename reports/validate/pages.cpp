@@ -82,9 +82,10 @@ std::string band_chart(const SuiteResult& r, const std::string& suite) {
       "<svg xmlns='http://www.w3.org/2000/svg' width='{}' height='{}' role='img' "
       "aria-label='{}'><title>{}</title>",
       left + width + 20, height, attr(title), attr(title));
-  svg += fmt::format("<line x1='{0}' x2='{0}' y1='0' y2='{1}' stroke='#888' "
-                     "stroke-dasharray='3,3'/>",
-                     x(1.0), height - 30);
+  svg += fmt::format(
+      "<line x1='{0}' x2='{0}' y1='0' y2='{1}' stroke='#888' "
+      "stroke-dasharray='3,3'/>",
+      x(1.0), height - 30);
   for (size_t i = 0; i < shown.size(); ++i) {
     const Check& c = *shown[i];
     double y = row * double(i) + 14;
@@ -94,6 +95,7 @@ std::string band_chart(const SuiteResult& r, const std::string& suite) {
     double b1 = std::isinf(c.hi) ? left + width : x(c.hi / reference(c));
     svg += fmt::format("<rect x='{}' y='{}' width='{}' height='10' fill='#cfe3cf'/>", b0, y - 5,
                        std::max(2.0, b1 - b0));
+    if (!std::isfinite(c.measured)) continue;
     svg += fmt::format("<circle cx='{}' cy='{}' r='4' fill='{}'><title>{}: {} {}</title></circle>",
                        x(c.measured / reference(c)), y, c.passed() ? "#2a7d2a" : "#c62828",
                        html_escape(c.id), show_value(c.measured), html_escape(c.unit));
@@ -105,7 +107,7 @@ std::string band_chart(const SuiteResult& r, const std::string& suite) {
   return "<figure>" + svg + "<figcaption>" + html_escape(title) +
          ": the green bar is the pass band, the dot the measured value (green: pass, red: "
          "fail), both over the expected value (where there is none: the band's middle, or its "
-         "bound if it is open).</figcaption></figure>\n";
+         "bound if it is open); checks centred on 0 are in the table only.</figcaption></figure>\n";
 }
 
 std::string cell(size_t index, const char* key, double value) {
@@ -124,20 +126,34 @@ std::string terminal_table(const SuiteResult& r) {
   return out + summary(r) + "\n";
 }
 
+namespace {
+
+// Text for Markdown: a '*' or '_' in a name (type.*.nodes_per_ray) is not emphasis.
+std::string md(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '*' || c == '_') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string markdown_page(const SuiteResult& r) {
   std::string out = "# rtsim validate: " + r.config_name + "\n\n" + summary(r) + "\n\n";
   out += text_table(rows(r), true, {false, false, true, true, false});
   out += "\n## Checks\n";
   for (const Check& c : r.checks) {
-    out += fmt::format("\n### {} ({})\n\n{}\n\n- source: {}\n", c.id, status(c), c.title,
-                       c.source);
+    out += fmt::format("\n### {} ({})\n\n{}\n\n- source: {}\n", md(c.id), status(c), md(c.title),
+                       md(c.source));
     if (!c.ran()) {
-      out += "- skipped: " + c.skipped + "\n";
+      out += "- skipped: " + md(c.skipped) + "\n";
       continue;
     }
     out += fmt::format("- measured: {} {}; pass band: {}\n- how: {}\n", show_value(c.measured),
-                       c.unit, band(c), c.detail);
-    if (c.failed()) out += "- look at: " + c.look_at + "\n";
+                       c.unit, band(c), md(c.detail));
+    if (c.failed()) out += "- look at: " + md(c.look_at) + "\n";
   }
   return out;
 }
@@ -154,17 +170,20 @@ std::string html_page(const SuiteResult& r) {
          html_escape(summary(r)) + "</p>\n";
   for (const std::string& suite : suites(r)) {
     out += "<h2>Suite " + html_escape(suite) + "</h2>\n" + band_chart(r, suite);
-    out += "<table><tr><th>check</th><th>status</th><th>measured</th><th>expected</th>"
-           "<th>low</th><th>high</th><th>unit</th><th>what and source</th></tr>\n";
+    out +=
+        "<table><tr><th>check</th><th>status</th><th>measured</th><th>expected</th>"
+        "<th>low</th><th>high</th><th>unit</th><th>what and source</th></tr>\n";
     for (size_t i = 0; i < r.checks.size(); ++i) {
       const Check& c = r.checks[i];
       if (c.suite != suite) continue;
       std::string state = c.status();
-      out += "<tr><td id='" + attr(c.id) + "'>" + html_escape(c.id) + "</td><td class='" + state + "'>" + state + "</td>" +
-             cell(i, "measured", c.ran() ? c.measured : NAN) + cell(i, "expected", c.expected) +
-             cell(i, "lo", c.lo) + cell(i, "hi", c.hi) + "<td>" + html_escape(c.unit) +
-             "</td><td>" + html_escape(c.title) + "<br><small>" + html_escape(c.source);
-      out += c.ran() ? "<br>how: " + html_escape(c.detail) : "<br>skipped: " + html_escape(c.skipped);
+      out += "<tr><td id='" + attr(c.id) + "'>" + html_escape(c.id) + "</td><td class='" + state +
+             "'>" + state + "</td>" + cell(i, "measured", c.ran() ? c.measured : NAN) +
+             cell(i, "expected", c.expected) + cell(i, "lo", c.lo) + cell(i, "hi", c.hi) + "<td>" +
+             html_escape(c.unit) + "</td><td>" + html_escape(c.title) + "<br><small>" +
+             html_escape(c.source);
+      out +=
+          c.ran() ? "<br>how: " + html_escape(c.detail) : "<br>skipped: " + html_escape(c.skipped);
       if (c.failed()) out += "<br>look at: " + html_escape(c.look_at);
       out += "</small></td></tr>\n";
     }
@@ -184,8 +203,8 @@ std::string junit_xml(const SuiteResult& r) {
       out += "<skipped message='" + attr(c.skipped) + "'/>";
     } else if (c.failed()) {
       out += fmt::format("<failure message='measured {} {}, expected {}'>{}; look at: {}</failure>",
-                         show_value(c.measured), attr(c.unit), attr(band(c)),
-                         html_escape(c.source), html_escape(c.look_at));
+                         show_value(c.measured), attr(c.unit), attr(band(c)), html_escape(c.source),
+                         html_escape(c.look_at));
     }
     out += "</testcase>\n";
   }

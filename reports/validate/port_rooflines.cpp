@@ -40,8 +40,8 @@ std::vector<Check> port_rooflines(const Target& target) {
        preset.l1.bytes_per_cycle, per_unit("l1.bytes_read"),
        "an L1 that holds the scene; bytes the unit read",
        "Cache::read's data port cursor (model/mem/cache.cpp)"},
-      {"roofline.l2_port", "bytes a cycle through an L2 slice's data port",
-       "l2.bytes_per_cycle", preset.l2.bytes_per_cycle, stat("l2.bytes_read"),
+      {"roofline.l2_port", "bytes a cycle through an L2 slice's data port", "l2.bytes_per_cycle",
+       preset.l2.bytes_per_cycle, stat("l2.bytes_read"),
        "one L2 slice, L1s of one set: bytes the L2 served",
        "the L2's data port cursor (model/mem/cache.cpp, SharedCacheModule)"},
       {"roofline.xbar_link", "bytes a cycle over a unit's crossbar link", "xbar.bytes_per_cycle",
@@ -72,9 +72,10 @@ std::vector<Check> port_rooflines(const Target& target) {
     set_band(c, p.configured, 0.02);
     // A run limited elsewhere cannot reach the port: the band's lower side is then a finding.
     c.measured = steady_rate(runs[2 * i], runs[2 * i + 1], p.work);
-    c.detail = fmt::format("2 units, {} and {} diffuse rays on grid:4096, every other limit "
-                           "lifted; {}",
-                           kRays, 2 * kRays, p.how);
+    c.detail = fmt::format(
+        "2 units, {} and {} diffuse rays on grid:4096, every other limit "
+        "lifted; {}",
+        kRays, 2 * kRays, p.how);
     c.look_at = p.look_at;
     out.push_back(c);
   }

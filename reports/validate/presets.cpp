@@ -24,8 +24,8 @@ const VendorFigure kFigures[] = {
      "NVIDIA Turing launch (AnandTech's Turing deep dive): RTX 2080 Ti, 68 RT cores at a "
      "1545 MHz boost, \"10 Giga Rays/s\" (workload undisclosed)",
      10e9, 1545, 68},
-    {"rtx3080", "NVIDIA publishes no rays/s for Ampere (only \"2x Turing's ray-triangle rate\")",
-     0, 0, 0},
+    {"rtx3080", "NVIDIA publishes no rays/s for Ampere (only \"2x Turing's ray-triangle rate\")", 0,
+     0, 0},
     {"arc-a770", "Intel publishes box and triangle tests per clock for Xe-HPG, no rays/s", 0, 0, 0},
 };
 
@@ -71,20 +71,21 @@ std::vector<Check> preset_checks(const Target& target,
       SimFigures run = simulate(target, {{config, &image, &rays}})[0];
       c.measured = run["rays_per_cycle"] / config.rt_units;
       double nodes = run["type.camera.nodes_per_ray"];
-      double ceiling = config.rt.box.count / nodes;
+      double ceiling = config.rt.box.count / (run.units_sum("box.issues") / run["rays"]);
       double units = config.rt_units;
       c.detail = fmt::format(
-          "configs/{}.toml as it is; {:.2f} nodes a ray, so the box-test ceiling is {:.3f} rays "
-          "a cycle per unit ({:.0f}% reached); busy: dispatch {:.0f}%, box units {:.0f}%, "
+          "configs/{}.toml as it is; {:.2f} nodes a ray; box issues a ray make a box-test ceiling "
+          "of {:.3f} rays a cycle per unit ({:.0f}% reached); busy: dispatch {:.0f}%, box units "
+          "{:.0f}%, "
           "triangle units {:.0f}%, ray slots {:.0f}%, DRAM {:.0f}%; the band is 2x either way of "
           "{:g} rays/s / ({} RT cores x {} MHz). {}",
-          f.preset, nodes, ceiling, 100 * c.measured / ceiling,
-          100 * run["dispatch.utilisation"], 100 * run.units_sum("box.utilisation") / units,
+          f.preset, nodes, ceiling, 100 * c.measured / ceiling, 100 * run["dispatch.utilisation"],
+          100 * run.units_sum("box.utilisation") / units,
           100 * run.units_sum("triangle.utilisation") / units, 100 * run["rt.slot_occupancy"],
-          100 * run["dram.utilisation"], f.rays_per_second, f.rt_cores, f.boost_mhz,
-          kMissingCosts);
-      c.look_at = "the preset's unit counts and latencies against the vendor's part; "
-                  "utilisation and bottleneck in `rtsim sim` stats";
+          100 * run["dram.utilisation"], f.rays_per_second, f.rt_cores, f.boost_mhz, kMissingCosts);
+      c.look_at =
+          "the preset's unit counts and latencies against the vendor's part; "
+          "utilisation and bottleneck in `rtsim sim` stats";
       out.push_back(c);
     }
   }

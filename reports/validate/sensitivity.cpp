@@ -26,10 +26,13 @@ std::vector<Bracket> brackets(const HwConfig& preset) {
   bool banked = preset.dram_model == DramModel::Banked;
   return {
       {"sensitivity.dram_detail", "the DRAM's detail: the other DRAM model",
-       banked ? "dram.model = simple: one bus at peak bandwidth and a fixed latency, no banks, "
-                "rows or refresh"
+       banked ? "dram.model = simple with the banked DRAM's peak bandwidth and unloaded "
+                "closed-row latency: one bus, no banks, rows or refresh"
               : "dram.model = banked: channels, banks, rows and refresh",
-       [banked](HwConfig& c) { c.dram_model = banked ? DramModel::Simple : DramModel::Banked; }},
+       [banked](HwConfig& c) {
+         if (banked) c.dram = dram_for_analysis(c);  // the same peak and unloaded latency
+         c.dram_model = banked ? DramModel::Simple : DramModel::Banked;
+       }},
       {"sensitivity.spills", "stack spills: a stack deep enough never to spill",
        "rt.stack.entries = 64", [](HwConfig& c) { c.rt.stack.entries = 64; }},
       {"sensitivity.competing_traffic",
@@ -82,8 +85,8 @@ std::vector<Check> sensitivity_checks(const Target& target) {
     c.detail = fmt::format(
         "{} diffuse rays on Conference, the config as given against the bracket: cycles {:.0f} "
         "-> {:.0f}, DRAM bytes a ray {:.1f} -> {:.1f}, L2 hit rate {:.1f}% -> {:.1f}%",
-        kRays, base["cycles"], run["cycles"], base["dram.bytes_per_ray"],
-        run["dram.bytes_per_ray"], 100 * base["l2.hit_rate"], 100 * run["l2.hit_rate"]);
+        kRays, base["cycles"], run["cycles"], base["dram.bytes_per_ray"], run["dram.bytes_per_ray"],
+        100 * base["l2.hit_rate"], 100 * run["l2.hit_rate"]);
     c.look_at = "the stats of both runs (rtsim sim --set ...)";
   }
   Check& exact = out.back();

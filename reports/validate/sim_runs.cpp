@@ -27,6 +27,11 @@ double SimFigures::units_sum(const std::string& name) const {
 }
 
 std::vector<SimFigures> simulate(const Target& target, const std::vector<SimJob>& jobs) {
+  for (const SimJob& job : jobs) {
+    std::string problem = hw_config_problem(target.as_run(job.config));
+    if (!problem.empty())  // a machine the check built, not the user's config: a bug of the check
+      throw std::logic_error("rtsim validate: a check built an impossible machine: " + problem);
+  }
   std::vector<std::function<std::string()>> work;
   for (const SimJob& job : jobs)
     work.push_back([&job, &target] {

@@ -26,7 +26,6 @@ struct Target {
   }
 };
 
-
 struct SimJob {
   HwConfig config;
   const BvhImage* image = nullptr;

@@ -84,15 +84,9 @@ nlohmann::ordered_json suite_json(const SuiteResult& r) {
                       {"detail", c.detail},
                       {"look_at", c.look_at},
                       {"skipped", c.skipped}});
-  return {{"schema", kValidateSchema},
-          {"config", r.config_name},
-          {"config_path", r.config_path},
-          {"quick", r.quick},
-          {"passed", r.passed()},
-          {"failed", r.failed()},
-          {"skipped", r.skipped()},
-          {"reported", r.reported()},
-          {"checks", checks}};
+  return {{"schema", kValidateSchema}, {"config", r.config_name},  {"config_path", r.config_path},
+          {"quick", r.quick},          {"passed", r.passed()},     {"failed", r.failed()},
+          {"skipped", r.skipped()},    {"reported", r.reported()}, {"checks", checks}};
 }
 
 }  // namespace rtsim::validation

@@ -75,11 +75,38 @@ TEST(Validate, ARateOtherThanTheConfiguredOneFailsItsCeiling) {
   EXPECT_LT(c["roofline.dram"].measured, 0.51 * c["roofline.dram"].expected);
 }
 
+TEST(Validate, PagesShowFailuresSkipsAndReportedFigures) {
+  SuiteResult r;
+  r.config_name = "x";
+  Check fail{"a.fail", "closed_form", "fails", "formula: 1"};
+  set_exact(fail, 1);
+  fail.measured = 2;
+  fail.look_at = "type.*.nodes";
+  Check skip{"a.skip", "closed_form", "skips"};
+  skip.skipped = "nothing to check";
+  Check info{"a.info", "sensitivity", "reports"};
+  info.measured = 0.5;
+  r.checks = {fail, skip, info};
+  EXPECT_EQ(r.failed(), 1u);
+  EXPECT_EQ(r.skipped(), 1u);
+  EXPECT_EQ(r.reported(), 1u);
+  EXPECT_STREQ(r.checks[2].status(), "info");
+  std::string junit = junit_xml(r);
+  EXPECT_NE(junit.find("failures='1' skipped='1'"), std::string::npos) << junit;
+  EXPECT_NE(junit.find("<failure message='measured 2 , expected = 1'>"), std::string::npos)
+      << junit;
+  EXPECT_NE(junit.find("<skipped message='nothing to check'/>"), std::string::npos);
+  EXPECT_NE(terminal_table(r).find("FAIL a.fail: measured 2"), std::string::npos);
+  EXPECT_NE(markdown_page(r).find("look at: type.\\*.nodes"), std::string::npos);
+  EXPECT_NE(html_page(r).find("<td class='fail'>fail</td>"), std::string::npos);
+  EXPECT_EQ(suite_json(r)["checks"][2]["status"], "info");
+}
+
 TEST(ValidateCli, WritesPagesThatAgreeWithTheJsonAndRefusesBadInput) {
   test::TempDir dir;
   std::string out = dir.path("out");
-  test::RunResult run = test::run_rtsim("validate --quick --config " RTSIM_SOURCE_DIR
-                                        "/configs/mobile.toml -o " + out);
+  test::RunResult run = test::run_rtsim(
+      "validate --quick --config " RTSIM_SOURCE_DIR "/configs/mobile.toml -o " + out);
   ASSERT_EQ(run.exit_code, 0) << run.out << run.err;
   EXPECT_NE(run.out.find("passed, 0 failed"), std::string::npos) << run.out;
   auto doc = nlohmann::json::parse(test::slurp(out + "/validate.json"));

@@ -59,6 +59,7 @@ TEST(RtCoreTiming, EveryStageTakesExactlyItsLatency) {
   EXPECT_EQ(core.stats().node_steps, 1u);
   EXPECT_EQ(core.stats().leaf_steps, 1u);
   EXPECT_EQ(core.box().stats().tests, 1u) << "the root has one child box";
+  EXPECT_EQ(core.stats().issues, 3u) << "the node step, the leaf step and the step that retires";
 }
 
 TEST(RtCoreTiming, DataReportedLaterStepsExactlyAsDataKnownAtOnce) {
