@@ -110,11 +110,6 @@ std::string band_chart(const SuiteResult& r, const std::string& suite) {
          "bound if it is open); checks centred on 0 are in the table only.</figcaption></figure>\n";
 }
 
-std::string cell(size_t index, const char* key, double value) {
-  return fmt::format("<td data-key='checks.{}.{}' data-value='{}'>{}</td>", index, key,
-                     std::isfinite(value) ? fmt::format("{}", value) : "null", show_value(value));
-}
-
 }  // namespace
 
 std::string terminal_table(const SuiteResult& r) {
@@ -168,6 +163,10 @@ std::string html_page(const SuiteResult& r) {
       ".fail{color:#c62828;font-weight:bold}.skipped,.info{color:#777}</style></head><body>\n";
   out += "<h1>rtsim validate: " + html_escape(r.config_name) + "</h1>\n<p>" +
          html_escape(summary(r)) + "</p>\n";
+  nlohmann::ordered_json doc = suite_json(r);
+  auto cell = [&doc](size_t index, const char* key) {
+    return reports::html_cell(doc, fmt::format("checks.{}.{}", index, key), reports::Style::Real);
+  };
   for (const std::string& suite : suites(r)) {
     out += "<h2>Suite " + html_escape(suite) + "</h2>\n" + band_chart(r, suite);
     out +=
@@ -178,10 +177,9 @@ std::string html_page(const SuiteResult& r) {
       if (c.suite != suite) continue;
       std::string state = c.status();
       out += "<tr><td id='" + attr(c.id) + "'>" + html_escape(c.id) + "</td><td class='" + state +
-             "'>" + state + "</td>" + cell(i, "measured", c.ran() ? c.measured : NAN) +
-             cell(i, "expected", c.expected) + cell(i, "lo", c.lo) + cell(i, "hi", c.hi) + "<td>" +
-             html_escape(c.unit) + "</td><td>" + html_escape(c.title) + "<br><small>" +
-             html_escape(c.source);
+             "'>" + state + "</td>" + cell(i, "measured") + cell(i, "expected") + cell(i, "lo") +
+             cell(i, "hi") + "<td>" + html_escape(c.unit) + "</td><td>" + html_escape(c.title) +
+             "<br><small>" + html_escape(c.source);
       out +=
           c.ran() ? "<br>how: " + html_escape(c.detail) : "<br>skipped: " + html_escape(c.skipped);
       if (c.failed()) out += "<br>look at: " + html_escape(c.look_at);

@@ -24,11 +24,7 @@ Work stat(const std::string& name) {
 }
 
 Work per_unit(const std::string& name) {
-  return [name](const SimFigures& run) {
-    double units = 0;
-    while (run.has("rt" + std::to_string(int(units)) + ".rays")) ++units;
-    return run.units_sum(name) / units;
-  };
+  return [name](const SimFigures& run) { return run.units_sum(name) / run.units(); };
 }
 
 double steady_rate(const SimFigures& n, const SimFigures& twice, const Work& work) {

@@ -19,9 +19,15 @@ bool SimFigures::has(const std::string& name) const {
   return doc_["counters"].contains(name) || doc_["derived"].contains(name);
 }
 
+uint32_t SimFigures::units() const {
+  uint32_t units = 0;
+  while (has("rt" + std::to_string(units) + ".rays")) ++units;
+  return units;
+}
+
 double SimFigures::units_sum(const std::string& name) const {
   double sum = 0;
-  for (uint32_t unit = 0; has("rt" + std::to_string(unit) + ".rays"); ++unit)
+  for (uint32_t unit = 0, n = units(); unit < n; ++unit)
     sum += (*this)["rt" + std::to_string(unit) + "." + name];
   return sum;
 }

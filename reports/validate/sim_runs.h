@@ -39,6 +39,7 @@ class SimFigures {
   explicit SimFigures(nlohmann::json doc) : doc_(std::move(doc)) {}
   double operator[](const std::string& name) const;  // throws if the run has no such stat
   bool has(const std::string& name) const;
+  uint32_t units() const;  // RT units of the run
   // The sum of rtK.<name> over the run's units.
   double units_sum(const std::string& name) const;
   double latency_mean() const { return doc_["latency_mean"].get<double>(); }

@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "reports/page_util.h"
 #include "reports/validate/checks.h"
 
 namespace rtsim::validation {
@@ -58,18 +59,17 @@ SuiteResult run_suite(const Target& target, bool quick,
   return result;
 }
 
+nlohmann::ordered_json json_number(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json();
+}
+
 std::string show_value(double value) {
-  if (std::isnan(value)) return "-";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  return fmt::format("{:.4g}", value);
+  return reports::show(json_number(value), reports::Style::Real);
 }
 
 nlohmann::ordered_json suite_json(const SuiteResult& r) {
   nlohmann::ordered_json checks = nlohmann::ordered_json::array();
-  // JSON has no infinity: an open band's missing side is null.
-  auto number = [](double v) {
-    return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json();
-  };
+  auto number = json_number;
   for (const Check& c : r.checks)
     checks.push_back({{"id", c.id},
                       {"suite", c.suite},

@@ -38,7 +38,10 @@ std::string markdown_page(const SuiteResult& result);
 std::string html_page(const SuiteResult& result);
 std::string junit_xml(const SuiteResult& result);
 
-// How a check's value is shown on every page (4 significant digits; "-" for NaN).
+// A value as the JSON holds it: null where it is not finite (JSON has no NaN or infinity: a
+// value not measured, an open band's missing side).
+nlohmann::ordered_json json_number(double value);
+// How a check's value is shown on every page: as reports::show shows a real ("n/a" for null).
 std::string show_value(double value);
 
 }  // namespace rtsim::validation

@@ -113,7 +113,7 @@ TEST(ValidateCli, WritesPagesThatAgreeWithTheJsonAndRefusesBadInput) {
   EXPECT_EQ(doc["schema"], kValidateSchema);
   EXPECT_EQ(doc["config"], "mobile");
   std::string html = test::slurp(out + "/validate.html");
-  std::regex cell("data-key='checks\\.([0-9]+)\\.([a-z]+)' data-value='([^']*)'");
+  std::regex cell("data-key=\"checks\\.([0-9]+)\\.([a-z]+)\" data-value=\"([^\"]*)\"");
   size_t cells = 0;
   for (std::sregex_iterator it(html.begin(), html.end(), cell), end; it != end; ++it, ++cells) {
     const auto& value = doc["checks"][std::stoul((*it)[1])][(*it)[2].str()];
