@@ -68,7 +68,7 @@ inline void add_sampling_options(CLI::App& cmd, SamplingConfig& sampling,
                  "Windows method: rays simulated before each window (-1: the ray slots)")
       ->capture_default_str();
   cmd.add_option("--sample-seed", sampling.seed,
-                 "Sampled level: seed of the warps' phase or of the window offsets")
+                 "Sampled level: seed of the warp draw or of the window offsets")
       ->capture_default_str();
   cmd.add_flag("!--no-warm-pass", sampling.warm_pass,
                "Windows method: measure without simulating the windows once first");

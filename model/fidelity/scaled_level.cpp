@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <deque>
 #include <functional>
+#include <random>
 
 #include "model/fidelity/ray_charge.h"
 #include "model/fidelity/ray_range_reader.h"
@@ -150,15 +151,26 @@ TypeEstimate scope_estimates(const std::vector<Metric>& metrics, int scope, doub
   return e;
 }
 
+// The scaled machine's RT units: the full machine's over the rate, to the nearest (at least 1).
+uint32_t scaled_units(uint32_t units, uint32_t rate) {
+  return std::max(1u, uint32_t(std::lround(double(units) / double(std::max(rate, 1u)))));
+}
+
 }  // namespace
 
 std::vector<uint64_t> scale_model_warps(uint64_t warps, uint32_t rate, uint32_t units,
                                         uint64_t seed) {
+  // Each scaled unit gets warps with the odds a unit of the full machine has: 1 in units.
+  double odds = double(scaled_units(units, rate)) / double(units);
   uint64_t spacing = std::max(1u, std::min(rate, units));
   uint64_t offset = (seed / spacing * spacing) % rate;  // which blocks, when rate > units
+  std::mt19937_64 rng(seed);
   std::vector<uint64_t> out;
-  for (uint64_t j = 0, w = seed % spacing; w < warps; ++j, w += spacing)
-    if ((j / kBlockWarps * spacing + offset) % rate < spacing) out.push_back(w);
+  for (uint64_t w = 0; w < warps; ++w) {
+    uint64_t block = w / (kBlockWarps * spacing);
+    if (rate > units && (block * spacing + offset) % rate >= spacing) continue;
+    if (double(rng() >> 11) * 0x1.0p-53 < odds) out.push_back(w);
+  }
   return out;
 }
 
@@ -166,9 +178,8 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   ScaleModel m;
   m.config = config;
   HwConfig& c = m.config;
-  c.rt_units = std::max(1u, config.rt_units / rate);
+  c.rt_units = scaled_units(config.rt_units, rate);
   m.machine_share = double(c.rt_units) / double(config.rt_units);
-  m.time_factor = double(rate) * m.machine_share;
   c.dispatch.rays_per_cycle = config.dispatch.rays_per_cycle * m.machine_share;
   c.l2.mshrs = scaled_count(config.l2.mshrs, m.machine_share);
   c.dram.bytes_per_cycle = config.dram.bytes_per_cycle * m.machine_share;
@@ -193,7 +204,6 @@ FidelityResult run_scaled_level(const HwConfig& config, const BvhImage& image,
   std::vector<Ray> rays;
   for (uint64_t w : scale_model_warps(warps, rate, config.rt_units, sampling.seed))
     reader.read(w * unit, (w + 1) * unit, rays);
-  uint64_t phase = sampling.seed % std::min(rate, config.rt_units);
 
   ScaleModel model = scale_model(config, rate);
   std::vector<Metric> metrics = make_metrics();
@@ -211,9 +221,9 @@ FidelityResult run_scaled_level(const HwConfig& config, const BvhImage& image,
   r.simulated_rays = r.measured_rays = rays.size();
   r.strata = uint32_t(metrics[kWorkTotal].series.units());
   r.clock_ghz = config.clock_ghz;
-  r.time_model = "scale model: 1 in " + std::to_string(rate) + " warps (phase " +
-                 std::to_string(phase) + ") on " + std::to_string(model.config.rt_units) + " of " +
-                 std::to_string(config.rt_units) + " RT units";
+  r.time_model = "scale model: 1 in " + std::to_string(rate) + " warps (seed " +
+                 std::to_string(sampling.seed) + ") on " + std::to_string(model.config.rt_units) +
+                 " of " + std::to_string(config.rt_units) + " RT units";
   double k = double(total) / double(rays.size());
 
   // First references, shared out over the ray types: the fetched ones by their L2 misses,
@@ -244,7 +254,10 @@ FidelityResult run_scaled_level(const HwConfig& config, const BvhImage& image,
   r.dram_bytes = metrics[kDramTotal].series.total(k, dram_offset(k, first_all, line));
 
   double latency = all.latency_mean.value;
-  double cycles = (double(sim.cycles()) - latency) * model.time_factor + latency;
+  // Full-machine time over the scaled machine's: the stream's share of the work it did (k x
+  // the share of the machine); about 1 when rate <= rt.count, rate / rt.count above.
+  double time_factor = k * model.machine_share;
+  double cycles = (double(sim.cycles()) - latency) * time_factor + latency;
   Estimate work = metrics[kWorkTotal].series.total(k);
   r.cycles = {true, cycles, work.value > 0 ? cycles * work.ci95 / work.value : 0.0};
   timer.stop(r);

@@ -3,6 +3,7 @@
 // model with an interval. Timed levels run in forked children (SystemC elaborates once).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "model/config/hw_config.h"
@@ -92,7 +93,6 @@ TEST(ScaleModel, SharesTheMachineByTheRate) {
   ScaleModel m = scale_model(full, 8);
   EXPECT_EQ(m.config.rt_units, 4u);
   EXPECT_DOUBLE_EQ(m.machine_share, 0.125);
-  EXPECT_DOUBLE_EQ(m.time_factor, 1.0) << "1/8 of the warps on 1/8 of the machine";
   EXPECT_DOUBLE_EQ(m.config.dispatch.rays_per_cycle, 4.0);
   EXPECT_DOUBLE_EQ(m.config.dram.bytes_per_cycle, 56.0);
   EXPECT_EQ(m.config.dram.queue_depth, 64u);
@@ -101,23 +101,31 @@ TEST(ScaleModel, SharesTheMachineByTheRate) {
   EXPECT_EQ(m.config.l1.size_bytes, full.l1.size_bytes);
   ScaleModel one = scale_model(full, 64);
   EXPECT_EQ(one.config.rt_units, 1u);
-  EXPECT_DOUBLE_EQ(one.time_factor, 2.0) << "one unit doing half a unit's share of the warps";
+  EXPECT_DOUBLE_EQ(one.machine_share, 1.0 / 32);
+  EXPECT_EQ(scale_model(full, 20).config.rt_units, 2u) << "32 / 20 units, to the nearest";
 }
 
-TEST(ScaleModel, WarpsKeepTheUnitsSpacing) {
-  std::vector<uint64_t> every4 = scale_model_warps(1000, 4, 32, 7);
-  ASSERT_EQ(every4.size(), 250u);
-  EXPECT_EQ(every4[0], 3u) << "phase: seed mod rate";
-  EXPECT_EQ(every4[1], 7u);
-  // 64 on 4 units: every 4th warp, as a unit of the full machine gets them, in 1 block of
-  // kBlockWarps of those in 16.
-  std::vector<uint64_t> blocks = scale_model_warps(64 * 4 * 16 * 3, 64, 4, 0);
-  ASSERT_EQ(blocks.size(), 3 * kBlockWarps);
-  EXPECT_EQ(blocks[1] - blocks[0], 4u);
-  EXPECT_EQ(blocks[kBlockWarps - 1], 4 * (kBlockWarps - 1));
-  EXPECT_EQ(blocks[kBlockWarps], 4 * 16 * kBlockWarps) << "the next block, 16 blocks on";
-  std::vector<uint64_t> other = scale_model_warps(64 * 4 * 16 * 3, 64, 4, 45);
-  EXPECT_EQ(other[0], 1 + 4 * 5 * kBlockWarps) << "the seed picks the phase and the block";
+TEST(ScaleModel, WarpsArriveAsAUnitOfTheFullMachineGetsThem) {
+  // Rate 4 on 32 units: 8 scaled units and each warp with odds 8 in 32, so the gaps between
+  // chosen warps are geometric, as the dynamic dispatcher's are (a quarter of them directly
+  // follow the one before), not a fixed 4.
+  std::vector<uint64_t> quarter = scale_model_warps(40000, 4, 32, 7);
+  EXPECT_NEAR(double(quarter.size()), 10000.0, 300.0);
+  size_t adjacent = 0;
+  for (size_t i = 1; i < quarter.size(); ++i) adjacent += quarter[i] == quarter[i - 1] + 1;
+  EXPECT_NEAR(double(adjacent) / double(quarter.size()), 0.25, 0.02);
+  EXPECT_EQ(quarter, scale_model_warps(40000, 4, 32, 7)) << "the seed decides";
+  EXPECT_NE(quarter, scale_model_warps(40000, 4, 32, 8));
+  // 20 on 32 units: 2 units, each warp with odds 2 in 32, so each unit gets 1 in 32 as a unit
+  // of the full machine does (a sixteenth of the stream, not a twentieth).
+  EXPECT_NEAR(double(scale_model_warps(40000, 20, 32, 1).size()), 2500.0, 200.0);
+  // 64 on 4 units: within 1 block of kBlockWarps x 4 warps in 16, a quarter of the warps.
+  uint64_t block = kBlockWarps * 4;
+  std::vector<uint64_t> blocks = scale_model_warps(block * 16 * 20, 64, 4, 0);
+  EXPECT_NEAR(double(blocks.size()), 20.0 * kBlockWarps, 4.0 * std::sqrt(20.0 * kBlockWarps));
+  for (uint64_t w : blocks) ASSERT_EQ(w / block % 16, 0u) << w << " lies outside block 0 of 16";
+  std::vector<uint64_t> other = scale_model_warps(block * 16 * 20, 64, 4, 45);
+  for (uint64_t w : other) ASSERT_EQ(w / block % 16, 5u) << "the seed picks the block";
 }
 
 TEST_F(FidelityLevels, ScaleModelLandsNearTheFullModel) {
@@ -128,7 +136,8 @@ TEST_F(FidelityLevels, ScaleModelLandsNearTheFullModel) {
   EXPECT_EQ(s.sample_method, "scale-model");
   EXPECT_EQ(s.rays, full.rays) << "estimates are for the whole stream";
   uint32_t warp = config_->rt.warp_size;
-  EXPECT_NEAR(double(s.simulated_rays), full.rays / 4.0, warp) << "1 warp in 4, nothing else";
+  double warps = double(full.rays) / warp, spread = 4 * std::sqrt(warps * 0.25 * 0.75) * warp;
+  EXPECT_NEAR(double(s.simulated_rays), full.rays / 4.0, spread) << "each warp with odds 1 in 4";
   EXPECT_EQ(s.strata, (s.simulated_rays + warp - 1) / warp) << "one unit per warp";
   EXPECT_GT(s.cycles.ci95, 0.0);
   EXPECT_NEAR(s.cycles.value / full.cycles.value, 1.0, 0.03) << "cycles within 3%";
