@@ -46,7 +46,7 @@ double embree_reference(const std::string& stream, const Scene& scene, uint64_t&
 
 void run_bench(const BenchArgs& a) {
   pipeline::WorkloadSpec spec = pipeline::load_workload(a.workload);
-  pipeline::apply_overrides(spec, pipeline::make_overrides(a.resolution, a.frames, {}, ""));
+  pipeline::apply_overrides(spec, pipeline::make_overrides({a.resolution, a.frames}));
   std::string stream =
       a.keep.empty() ? fmt::format("/tmp/rtsim-bench-trace-{}.rays", getpid()) : a.keep;
   pipeline::TraceOptions options;

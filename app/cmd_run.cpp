@@ -35,6 +35,12 @@ std::string command_line(const RunOptions& o) {
       "rtsim run " + (o.from_trace.empty() ? o.workload.workload : "--from-trace " + o.from_trace);
   if (!o.workload.resolution.empty()) out += " --resolution " + o.workload.resolution;
   if (o.workload.frames) out += " --frames " + std::to_string(o.workload.frames);
+  if (o.workload.seed) out += " --seed " + std::to_string(*o.workload.seed);
+  for (auto [option, value] : {std::pair{" --scene ", &o.workload.scene},
+                               {" --camera ", &o.workload.camera},
+                               {" --look-at ", &o.workload.look_at},
+                               {" --up ", &o.workload.up}})
+    if (!value->empty()) out += option + *value;
   if (!o.config.empty()) out += " --config " + o.config;
   for (const std::string& s : o.sets) out += " --set " + s;
   if (o.fidelity != "cycle") out += " --fidelity " + o.fidelity;

@@ -18,7 +18,7 @@ namespace rtsim::app {
 namespace {
 
 struct TraceArgs {
-  std::string workload, output, preview, resolution, scene;
+  std::string workload, output, preview, resolution, scene, camera, look_at, up;
   uint32_t frames = 0;
   uint64_t seed = 0;
   bool seed_set = false, quiet = false, list_keys = false;
@@ -47,6 +47,7 @@ void add_trace_command(CLI::App& app, int& exit_code) {
       ->check(reports::non_negative())
       ->each([a](const std::string&) { a->seed_set = true; });
   cmd->add_option("--scene", a->scene, "Scene file or built-in (replaces the spec's scene)");
+  reports::add_camera_options(*cmd, a->camera, a->look_at, a->up);
   cmd->add_option("--preview", a->preview,
                   "Write a shaded PNG of the last frame, and PATH.density-PASS.png per pass");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress and no summary");
@@ -62,15 +63,17 @@ void add_trace_command(CLI::App& app, int& exit_code) {
       throw InputError("trace: nothing to write: give -o OUT.rays and/or --preview OUT.png");
     pipeline::WorkloadSpec spec = pipeline::load_workload(a->workload);
     pipeline::apply_overrides(
-        spec, pipeline::make_overrides(
-                  a->resolution, a->frames,
-                  a->seed_set ? std::optional<uint64_t>(a->seed) : std::nullopt, a->scene));
+        spec, pipeline::make_overrides({a->resolution, a->frames,
+                                        a->seed_set ? std::optional<uint64_t>(a->seed) : std::nullopt,
+                                        a->scene, a->camera, a->look_at, a->up}));
     pipeline::TraceOptions options;
     options.output = a->output;
     options.preview = a->preview;
     options.generator = "rtsim " RTSIM_VERSION;
     if (!a->quiet) options.progress = reports::trace_progress();
     pipeline::TraceResult result = pipeline::trace_workload(spec, options);
+    if (!a->quiet)
+      for (const std::string& note : result.notes) fmt::print(stderr, "trace: {}\n", note);
     if (!a->quiet) {
       fmt::print("{}", pipeline::format_summary(result.summary));
       if (!a->output.empty()) fmt::print("wrote {}\n", a->output);

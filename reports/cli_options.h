@@ -29,6 +29,13 @@ inline CLI::Validator non_negative() {
       "UINT");
 }
 
+inline void add_camera_options(CLI::App& cmd, std::string& camera, std::string& look_at,
+                               std::string& up) {
+  cmd.add_option("--camera", camera, "Camera position X,Y,Z (overrides the spec)");
+  cmd.add_option("--look-at", look_at, "Point the camera looks at X,Y,Z (overrides the spec)");
+  cmd.add_option("--up", up, "Up direction of the image X,Y,Z (overrides the spec)");
+}
+
 inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
   cmd.add_option("--resolution", request.resolution, "Image size WxH (overrides the spec)");
   cmd.add_option("--frames", request.frames, "Frames to trace (overrides the spec)")
@@ -38,13 +45,15 @@ inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
          "Random seed of the workload (overrides the spec)")
       ->check(non_negative());
   cmd.add_option("--scene", request.scene, "Scene file or built-in (replaces the spec's scene)");
+  add_camera_options(cmd, request.camera, request.look_at, request.up);
 }
 
 // With --from-trace DIR the stream is reused as it was traced: a workload or an option that
 // would trace it differently is refused (InputError), not silently ignored.
 inline void refuse_workload_with_trace(const CLI::App& cmd, const std::string& from_trace) {
   if (from_trace.empty()) return;
-  for (const char* option : {"workload", "--resolution", "--frames", "--seed", "--scene"})
+  for (const char* option : {"workload", "--resolution", "--frames", "--seed", "--scene",
+                             "--camera", "--look-at", "--up"})
     if (cmd.count(option) > 0)
       throw InputError(std::string(cmd.get_name()) + ": --from-trace " + from_trace +
                        " reuses that trace as it was traced; " +

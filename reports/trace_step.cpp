@@ -32,6 +32,8 @@ Json request_json(const TraceRequest& r) {
   j["frames"] = r.frames;
   j["seed"] = r.seed ? Json(*r.seed) : Json();
   j["scene"] = r.scene;
+  for (auto [key, value] : {std::pair{"camera", &r.camera}, {"look_at", &r.look_at}, {"up", &r.up}})
+    if (!value->empty()) j[key] = *value;
   return j;
 }
 
@@ -89,8 +91,9 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   }
   create_output_folder(dir);
   pipeline::WorkloadSpec spec = pipeline::load_workload(request.workload);
-  pipeline::apply_overrides(spec, pipeline::make_overrides(request.resolution, request.frames,
-                                                           request.seed, request.scene));
+  pipeline::apply_overrides(
+      spec, pipeline::make_overrides({request.resolution, request.frames, request.seed,
+                                      request.scene, request.camera, request.look_at, request.up}));
   pipeline::TraceOptions options;
   options.output = dir + "/rays.rays";
   options.preview = dir + "/preview.png";
@@ -102,11 +105,14 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
     options.progress = trace_progress();
   }
   pipeline::TraceResult result = pipeline::trace_workload(spec, options);
+  if (!quiet)
+    for (const std::string& note : result.notes) fmt::print(stderr, "trace: {}\n", note);
   Json summary;
   summary["schema"] = kTraceSchema;
   summary["request"] = wanted;
   Json pipeline_summary = summary_json(result.summary);
   for (auto& [key, value] : pipeline_summary.items()) summary[key] = value;
+  summary["notes"] = result.notes;
   summary["stream"] = "rays.rays";
   summary["preview"] = "preview.png";
   write_file_atomic(dir + "/trace.json", summary.dump(2) + "\n");

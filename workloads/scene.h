@@ -26,6 +26,22 @@ struct Material {
   glm::vec3 emission{0.0f};   // emitted radiance
 };
 
+// A camera the scene file places (glTF cameras), in world space.
+struct SceneCamera {
+  std::string name;
+  glm::vec3 position{0.0f}, forward{0.0f, 0.0f, -1.0f}, up{0.0f, 1.0f, 0.0f};
+  float yfov_degrees = 60.0f;  // vertical
+};
+
+// A light the scene file places (glTF KHR_lights_punctual), in world space.
+struct SceneLight {
+  enum class Type { Point, Spot, Directional } type = Type::Point;
+  std::string name;
+  glm::vec3 position{0.0f}, direction{0.0f, 0.0f, -1.0f};  // direction: where it points
+  glm::vec3 color{1.0f};            // colour times intensity (candela, or lux if directional)
+  float outer_cone_degrees = 45.0f;  // spot
+};
+
 struct Scene {
   std::string source;  // file path, or "builtin:NAME[:PARAMS]" as written in stream headers
   TriangleMesh mesh;
@@ -33,6 +49,8 @@ struct Scene {
   std::vector<uint32_t> object_ids;    // per triangle, index into object_names
   std::vector<std::string> object_names;
   std::vector<Material> materials;
+  std::vector<SceneCamera> cameras;  // in file order; the first is the one a spec can adopt
+  std::vector<SceneLight> lights;
   uint64_t fingerprint = 0;  // mesh_fingerprint(mesh)
   Bounds bounds;
 

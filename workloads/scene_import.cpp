@@ -1,7 +1,8 @@
 // Scene files through assimp: checks the file, imports without post-processing to check the raw
 // vertices, then triangulates and welds, and flattens the node hierarchy into one triangle array
 // (each mesh reference transformed by its node's accumulated matrix, so glTF instances and node
-// transforms come out in world space).
+// transforms come out in world space). Cameras and lights are read before post-processing
+// removes them.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -157,6 +158,57 @@ class Flattener {
   std::unordered_map<std::string, uint32_t> object_ids_;
 };
 
+aiMatrix4x4 world_transform(const aiScene& scene, const aiString& node_name) {
+  aiMatrix4x4 m;
+  for (const aiNode* n = scene.mRootNode->FindNode(node_name); n; n = n->mParent)
+    m = n->mTransformation * m;
+  return m;
+}
+
+glm::vec3 to_glm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+
+glm::vec3 direction(const aiMatrix4x4& m, const aiVector3D& v) {
+  aiVector3D d = aiMatrix3x3(m) * v;
+  return d.Length() > 0.0f ? to_glm(d.Normalize()) : glm::vec3(0.0f, 0.0f, -1.0f);
+}
+
+// The file's cameras and lights, placed by their nodes. Cameras (only glTF has them) sit at
+// their node's origin: assimp 5.2 also copies the node's translation into mPosition, which would
+// count it twice. It gives the horizontal field of view as yfov x aspect (yfov alone when the
+// aspect is unset).
+void read_cameras_and_lights(const aiScene& scene, Scene& out) {
+  for (unsigned i = 0; i < scene.mNumCameras; ++i) {
+    const aiCamera& c = *scene.mCameras[i];
+    aiMatrix4x4 m = world_transform(scene, c.mName);
+    SceneCamera cam;
+    cam.name = c.mName.C_Str();
+    cam.position = to_glm(m * aiVector3D(0.0f, 0.0f, 0.0f));
+    cam.forward = direction(m, c.mLookAt);
+    cam.up = direction(m, c.mUp);
+    float yfov = c.mAspect > 0.0f ? c.mHorizontalFOV / c.mAspect : c.mHorizontalFOV;
+    if (yfov > 0.0f) cam.yfov_degrees = yfov * 180.0f / 3.14159265f;
+    out.cameras.push_back(cam);
+  }
+  for (unsigned i = 0; i < scene.mNumLights; ++i) {
+    const aiLight& l = *scene.mLights[i];
+    aiMatrix4x4 m = world_transform(scene, l.mName);
+    SceneLight light;
+    if (l.mType == aiLightSource_DIRECTIONAL)
+      light.type = SceneLight::Type::Directional;
+    else if (l.mType == aiLightSource_SPOT)
+      light.type = SceneLight::Type::Spot;
+    else if (l.mType != aiLightSource_POINT)
+      continue;  // area and ambient lights: not punctual
+    light.name = l.mName.C_Str();
+    light.position = to_glm(m * l.mPosition);
+    light.direction = direction(m, l.mDirection);
+    light.color = {l.mColorDiffuse.r, l.mColorDiffuse.g, l.mColorDiffuse.b};
+    if (l.mAngleOuterCone > 0.0f)
+      light.outer_cone_degrees = l.mAngleOuterCone * 180.0f / 3.14159265f;
+    out.lights.push_back(light);
+  }
+}
+
 }  // namespace
 
 std::vector<std::string> scene_file_extensions() {
@@ -179,6 +231,8 @@ Scene import_scene_file(const std::string& path) {
   if (!raw) throw_input_error(path, "", std::string("cannot import: ") + importer.GetErrorString());
   check_log(path, ext, log);
   check_raw_meshes(path, *raw);
+  Scene out;
+  read_cameras_and_lights(*raw, out);
   const aiScene* scene =
       importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |
                                    aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices);
@@ -186,7 +240,6 @@ Scene import_scene_file(const std::string& path) {
     throw_input_error(path, "", std::string("invalid data: ") + importer.GetErrorString());
   check_log(path, ext, log);
 
-  Scene out;
   out.source = path;
   const bool use_materials = has_materials(ext) && scene->mNumMaterials > 0;
   if (use_materials) {

@@ -22,12 +22,10 @@ TEST(Camera, CentreRayIsForwardAndCornersSpanTheFov) {
   EXPECT_LT(left.x, 0.0f);  // x = 0 is the left edge
 }
 
-// Six inward-facing walls of a 20 x 6 x 8 hall: an enclosure, so the camera goes inside and
-// looks along the long axis.
-TEST(Camera, AutoViewStandsInsideAnEnclosure) {
-  Scene s;
+// Six inward-facing walls of the box lo..hi (an interior model's room).
+void add_room(Scene& s, glm::vec3 lo, glm::vec3 hi) {
   Material m = test::material("m", 1.0f);
-  glm::vec3 lo(-10, 0, -4), hi(10, 6, 4);
+  size_t first = s.mesh.triangles.size();
   auto quad = [&](glm::vec3 a, glm::vec3 b, glm::vec3 c, glm::vec3 d) {
     test::add_quad(s, a, b, c, d, m, "w");
   };
@@ -38,7 +36,15 @@ TEST(Camera, AutoViewStandsInsideAnEnclosure) {
   quad({lo.x, lo.y, lo.z}, {lo.x, lo.y, hi.z}, {lo.x, hi.y, hi.z}, {lo.x, hi.y, lo.z});
   quad({hi.x, lo.y, lo.z}, {hi.x, hi.y, lo.z}, {hi.x, hi.y, hi.z}, {hi.x, lo.y, hi.z});
   // Winding above faces outward; an interior model faces inward.
-  for (auto& t : s.mesh.triangles) std::swap(t[1], t[2]);
+  for (size_t t = first; t < s.mesh.triangles.size(); ++t)
+    std::swap(s.mesh.triangles[t][1], s.mesh.triangles[t][2]);
+}
+
+// A 20 x 6 x 8 hall: an enclosure, so the camera goes inside and looks along the long axis.
+TEST(Camera, AutoViewStandsInsideAnEnclosure) {
+  Scene s;
+  glm::vec3 lo(-10, 0, -4), hi(10, 6, 4);
+  add_room(s, lo, hi);
   test::finish(s);
   EmbreeScene embree(s.mesh, 1);
   View v = auto_view(s.mesh, s.bounds, embree, {0, 1, 0}, 60.0f, 16.0f / 9.0f);
@@ -47,6 +53,23 @@ TEST(Camera, AutoViewStandsInsideAnEnclosure) {
   EXPECT_GT(v.position.y, lo.y);
   EXPECT_LT(v.position.y, hi.y);
   EXPECT_GT(std::abs(v.look_at.x - v.position.x), 10.0f) << "looks along the long axis";
+}
+
+// A game map: two rooms in a void whose outer faces are not modelled, the centre of the bounds
+// between them. The camera goes into the larger room, not outside the hull.
+TEST(Camera, AutoViewFindsARoomOfALevelWhoseCentreIsInTheVoid) {
+  Scene s;
+  add_room(s, {-30, 0, -6}, {-10, 5, 6});  // the larger room: 20 x 5 x 12
+  add_room(s, {12, 0, -3}, {22, 4, 3});
+  test::finish(s);
+  EmbreeScene embree(s.mesh, 1);
+  View v = auto_view(s.mesh, s.bounds, embree, {0, 1, 0}, 60.0f, 16.0f / 9.0f);
+  EXPECT_GT(v.position.x, -30.0f);
+  EXPECT_LT(v.position.x, -10.0f);
+  EXPECT_GT(v.position.y, 0.0f);
+  EXPECT_LT(v.position.y, 5.0f);
+  EXPECT_LT(std::abs(v.position.z), 6.0f);
+  EXPECT_GT(glm::length(v.look_at - v.position), 5.0f) << "looks into the room";
 }
 
 TEST(Camera, AutoViewFitsAnObjectFromOutside) {

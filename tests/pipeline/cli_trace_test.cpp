@@ -1,6 +1,7 @@
 // rtsim trace and bench-trace as a user runs them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -55,6 +56,35 @@ TEST(CliTrace, ADegenerateCameraIsBadInputNamingTheSpecAndKey) {
       << r.err;
   EXPECT_FALSE(std::filesystem::exists(out));
   std::remove(file.c_str());
+}
+
+TEST(CliTrace, CameraOptionsPlaceTheViewAndADegenerateOneIsBadInput) {
+  std::string out = tmp("placed.rays");
+  auto r = run_rtsim("trace grid:64 --resolution 16x9 --camera 0,5,-8 --look-at 0,0,0 --up 0,1,0 -o " +
+                     out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  StreamHeader h;
+  std::vector<Ray> rays = read_all_rays(out, &h);
+  ASSERT_FALSE(rays.empty());
+  EXPECT_EQ(rays[0].org, glm::vec3(0, 5, -8)) << "camera rays start at --camera";
+  EXPECT_NE(r.err.find("trace: no light in the spec or in builtin:grid:64: added a directional "
+                       "sun pointing ("),
+            std::string::npos)
+      << r.err;
+  EXPECT_GT(h.counts[size_t(RayType::Shadow)], 0u) << "the added sun gets shadow rays";
+  std::remove(out.c_str());
+
+  for (auto [options, message] :
+       {std::pair{"--camera 1,2,3 --look-at 1,2,3",
+                  "rtsim: error: --camera: the camera position equals the look-at point"},
+        {"--camera 0,5,0 --look-at 0,0,0", "rtsim: error: --up: parallel to the view direction"},
+        {"--camera 1,2", "rtsim: error: --camera 1,2: expected three numbers X,Y,Z"}}) {
+    auto bad = run_rtsim(std::string("trace grid:64 -q --resolution 16x9 ") + options + " -o " + out);
+    EXPECT_EQ(bad.exit_code, 2) << options;
+    EXPECT_EQ(bad.err.rfind(message, 0), 0u) << bad.err;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
 }
 
 TEST(CliTrace, SameInputsSameBytes) {

@@ -183,14 +183,49 @@ TEST(Spec, ResolutionSyntax) {
 TEST(Spec, OverridesReplaceSpecValues) {
   WorkloadSpec s =
       parse_spec("scene = \"cornell\"\nseed = 3\n[camera]\nposition = [1, 2, 3]\n", "w.toml");
-  apply_overrides(s, make_overrides("320x200", 4, 77, "pica"));
+  apply_overrides(s, make_overrides({"320x200", 4, 77, "pica"}));
   EXPECT_FALSE(s.camera.position.has_value());  // a new scene gets an automatic camera
   EXPECT_EQ(s.width, 320u);
   EXPECT_EQ(s.height, 200u);
   EXPECT_EQ(s.frames, 4u);
   EXPECT_EQ(s.seed, 77u);
   EXPECT_EQ(s.scene, "pica");
-  EXPECT_THROW(make_overrides("320", 0, std::nullopt, ""), InputError);
+  EXPECT_THROW(make_overrides({"320"}), InputError);
+}
+
+TEST(Spec, CameraOverridesReplaceTheSpecsViewAndRefuseADegenerateOne) {
+  WorkloadSpec s = parse_spec(
+      "scene = \"cornell\"\n[camera]\nposition = [1, 2, 3]\nlook_at = [0, 0, 0]\n", "w.toml");
+  OverrideText text;
+  text.camera = "0,1,5";
+  text.up = "0,0,1";
+  apply_overrides(s, make_overrides(text));
+  EXPECT_EQ(*s.camera.position, glm::vec3(0, 1, 5));
+  EXPECT_EQ(*s.camera.look_at, glm::vec3(0, 0, 0)) << "the spec's look-at point stays";
+  EXPECT_EQ(s.camera.up, glm::vec3(0, 0, 1));
+  auto message = [&](OverrideText t) {
+    WorkloadSpec spec = s;
+    try {
+      apply_overrides(spec, make_overrides(t));
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  OverrideText same;
+  same.camera = "0,0,0";
+  EXPECT_NE(message(same).find("--camera: the camera position equals the look-at point"),
+            std::string::npos)
+      << message(same);
+  OverrideText parallel;
+  parallel.up = "0,1,5";
+  EXPECT_NE(message(parallel).find("--up: parallel to the view direction"), std::string::npos);
+  OverrideText zero;
+  zero.up = "0,0,0";
+  EXPECT_NE(message(zero).find("--up: must not be zero"), std::string::npos);
+  OverrideText malformed;
+  malformed.look_at = "1,2";
+  EXPECT_EQ(message(malformed), "--look-at 1,2: expected three numbers X,Y,Z, e.g. 0,1.5,4");
 }
 
 TEST(Spec, EveryKeyIsDocumentedOnceWithDescription) {

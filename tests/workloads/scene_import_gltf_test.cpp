@@ -126,6 +126,71 @@ TEST(SceneImportGltf, BinaryGlbMatchesTheTextForm) {
   expect_scene(load_scene(dir.write("nodes.glb", glb)));
 }
 
+// A triangle, a camera turned 90 degrees about y (looking along -x) and three punctual lights.
+std::string gltf_with_view(const std::string& uri) {
+  return R"({
+  "asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_lights_punctual"],
+  "extensions": {"KHR_lights_punctual": {"lights": [
+    {"name": "bulb", "type": "point", "color": [1, 0.5, 0.25], "intensity": 2},
+    {"name": "lamp", "type": "spot", "intensity": 1, "spot": {"outerConeAngle": 0.5}},
+    {"name": "sky", "type": "directional", "intensity": 3}]}},
+  "scene": 0,
+  "scenes": [{"nodes": [0, 1, 2, 3, 4]}],
+  "nodes": [
+    {"name": "tri", "mesh": 0},
+    {"name": "eye", "camera": 0, "translation": [1, 2, 5],
+     "rotation": [0, 0.70710678, 0, 0.70710678]},
+    {"name": "bulb_node", "translation": [0, 3, 0], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+    {"name": "lamp_node", "translation": [2, 0, 0], "extensions": {"KHR_lights_punctual": {"light": 1}}},
+    {"name": "sun_node", "rotation": [-0.70710678, 0, 0, 0.70710678],
+     "extensions": {"KHR_lights_punctual": {"light": 2}}}
+  ],
+  "cameras": [{"type": "perspective",
+               "perspective": {"yfov": 0.8, "aspectRatio": 1.5, "znear": 0.1}}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "buffers": [{"byteLength": 42, "uri": ")" + uri + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+     "min": [0, 0, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}
+  ]
+})";
+}
+
+void expect_near(const glm::vec3& a, const glm::vec3& b) {
+  EXPECT_NEAR(a.x, b.x, 1e-5f);
+  EXPECT_NEAR(a.y, b.y, 1e-5f);
+  EXPECT_NEAR(a.z, b.z, 1e-5f);
+}
+
+TEST(SceneImportGltf, CamerasAndPunctualLightsArePlacedByTheirNodes) {
+  TempDir dir;
+  Scene s = load_scene(dir.write(
+      "view.gltf",
+      gltf_with_view("data:application/octet-stream;base64," + base64(triangle_buffer()))));
+  ASSERT_EQ(s.triangle_count(), 1u);
+  ASSERT_EQ(s.cameras.size(), 1u);
+  const SceneCamera& eye = s.cameras[0];
+  EXPECT_EQ(eye.name, "eye");
+  expect_near(eye.position, {1, 2, 5});
+  expect_near(eye.forward, {-1, 0, 0});
+  expect_near(eye.up, {0, 1, 0});
+  EXPECT_NEAR(eye.yfov_degrees, 0.8 * 180 / 3.14159265, 1e-3);
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_EQ(s.lights[0].type, SceneLight::Type::Point);
+  expect_near(s.lights[0].position, {0, 3, 0});
+  expect_near(s.lights[0].color, {2, 1, 0.5});  // colour times intensity
+  EXPECT_EQ(s.lights[1].type, SceneLight::Type::Spot);
+  expect_near(s.lights[1].position, {2, 0, 0});
+  expect_near(s.lights[1].direction, {0, 0, -1});
+  EXPECT_NEAR(s.lights[1].outer_cone_degrees, 0.5 * 180 / 3.14159265, 1e-3);
+  EXPECT_EQ(s.lights[2].type, SceneLight::Type::Directional);
+  expect_near(s.lights[2].direction, {0, -1, 0});  // -z turned -90 degrees about x
+}
+
 TEST(SceneImportGltf, Base64EncoderMatchesKnownValues) {
   EXPECT_EQ(base64("M"), "TQ==");
   EXPECT_EQ(base64("Ma"), "TWE=");

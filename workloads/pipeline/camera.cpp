@@ -80,6 +80,43 @@ float coverage(const EmbreeScene& embree, const glm::vec3& position, const glm::
   return float(hits) / float(w * kH);
 }
 
+// A room of a level whose centre lies outside every room (a game map: rooms in a void, their
+// outer faces not modelled): the candidate eye point on a grid through the bounds from which
+// nearly every direction meets a front face, with the most room around it. Looks along the
+// longest free horizontal direction. False if no candidate is inside a room.
+bool room_view(const TriangleMesh& mesh, const EmbreeScene& embree, const glm::vec3& c,
+               const Basis& basis, const glm::vec3& half, View& view) {
+  constexpr int kGrid = 6;
+  float best = 0.0f;
+  glm::vec3 eye(0.0f);
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j)
+      for (float height : {-0.3f, 0.2f}) {
+        glm::vec3 local((2.0f * float(i) + 1.0f) / kGrid - 1.0f,
+                        (2.0f * float(j) + 1.0f) / kGrid - 1.0f, height);
+        glm::vec3 p = c + basis.to_world(local * half);
+        Probe probe = probe_from(mesh, embree, p, 64);
+        if (probe.hit_fraction >= 0.95f && probe.front_fraction >= 0.9f &&
+            probe.median_t > best) {
+          best = probe.median_t;
+          eye = p;
+        }
+      }
+  if (best <= 0.0f) return false;
+  float longest = -1.0f;
+  for (int k = 0; k < 8; ++k) {
+    float a = float(k) * kPi / 4.0f;
+    glm::vec3 dir = std::cos(a) * basis.t + std::sin(a) * basis.b;
+    float free = free_distance(embree, eye, dir, basis.n, 2.0f * glm::length(half));
+    if (free > longest) {
+      longest = free;
+      view.position = eye;
+      view.look_at = eye + dir * free;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 Camera Camera::look_at(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up,
@@ -152,6 +189,7 @@ View auto_view(const TriangleMesh& mesh, const Bounds& bounds, const EmbreeScene
     view.look_at = eye_level - best_dir * best_half + up * (0.1f * half.z);
     return view;
   }
+  if (probe.front_fraction < 0.5f && room_view(mesh, embree, c, basis, half, view)) return view;
   float half_fov_min = std::min(half_fov, std::atan(tan_h));
   float distance = radius / std::sin(half_fov_min);
   float best = -1.0f;

@@ -30,7 +30,8 @@ struct View {
 
 // A view that shows the scene: an outside three-quarter view that fits the bounding sphere,
 // or, for an enclosed scene (an interior such as Sponza), a view from inside along its longest
-// horizontal axis. Probe rays decide which (see workloads/README.md).
+// horizontal axis, or, for a level whose centre sees only back faces (rooms in a void), a view
+// from inside its roomiest room. Probe rays decide which (see workloads/README.md).
 View auto_view(const TriangleMesh& mesh, const Bounds& bounds, const EmbreeScene& embree,
                const glm::vec3& up, float fov, float aspect);
 

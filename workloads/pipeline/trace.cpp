@@ -9,12 +9,15 @@
 #include "traces/memory_plan.h"
 #include "traces/stream.h"
 #include "workloads/pipeline/preview.h"
+#include "workloads/pipeline/scene_defaults.h"
 #include "workloads/scene.h"
 
 namespace rtsim::pipeline {
-TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options) {
+TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& options) {
   double start = wall_seconds();
-  Scene scene = load_scene(spec.scene);
+  Scene scene = load_scene(requested.scene);
+  WorkloadSpec spec = requested;
+  std::vector<std::string> notes = adopt_scene_defaults(spec, scene);
   // Measured peaks of rtsim trace: 144 B a triangle (the scene, Embree's BVH, the pipeline's
   // scene data) and 87 B a pixel (G-buffer, lighting and denoiser buffers, the ray queues).
   uint64_t pixels = uint64_t(spec.width) * spec.height;
@@ -52,6 +55,7 @@ TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options
   if (writer) writer->finish();
 
   TraceResult result;
+  result.notes = notes;
   if (!options.preview.empty()) {
     write_preview(options.preview, pipeline, frame);
     result.images.push_back(options.preview);

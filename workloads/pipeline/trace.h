@@ -25,6 +25,7 @@ struct TraceOptions {
 struct TraceResult {
   RunSummary summary;
   std::vector<std::string> images;  // pictures written
+  std::vector<std::string> notes;   // what the scene decided for the spec (adopt_scene_defaults)
 };
 
 TraceResult trace_workload(const WorkloadSpec& spec, const TraceOptions& options);

@@ -1,11 +1,45 @@
 #include "workloads/pipeline/workload.h"
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+
+#include <glm/geometric.hpp>
 
 #include "traces/error.h"
 #include "workloads/scene.h"
 
 namespace rtsim::pipeline {
+
+namespace {
+
+// "X,Y,Z" as three finite numbers.
+std::optional<glm::vec3> parse_point(const std::string& option, const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  glm::vec3 v;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &tail) != 3 ||
+      !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    throw InputError(option + " " + text + ": expected three numbers X,Y,Z, e.g. 0,1.5,4");
+  return v;
+}
+
+// The view the overrides leave must have a direction and an up.
+void check_overridden_view(const CameraSpec& c, const SpecOverrides& o) {
+  if (c.position && c.look_at && *c.position == *c.look_at)
+    throw InputError(std::string(o.camera ? "--camera" : "--look-at") +
+                     ": the camera position equals the look-at point (--camera, --look-at or "
+                     "the spec's [camera]): the camera has no view direction");
+  if (glm::length(c.up) == 0.0f) throw InputError("--up: must not be zero");
+  if (c.position && c.look_at &&
+      glm::length(glm::cross(glm::normalize(*c.look_at - *c.position), glm::normalize(c.up))) <
+          1e-4f)
+    throw InputError(
+        "--up: parallel to the view direction (camera to look-at point): the image has no up; "
+        "choose another --up");
+}
+
+}  // namespace
 
 void apply_overrides(WorkloadSpec& spec, const SpecOverrides& o) {
   if (o.frames) spec.frames = *o.frames;
@@ -19,21 +53,28 @@ void apply_overrides(WorkloadSpec& spec, const SpecOverrides& o) {
     spec.camera.look_at.reset();
     spec.camera.keys.clear();
   }
+  if (o.camera || o.look_at) spec.camera.keys.clear();
+  if (o.camera) spec.camera.position = o.camera;
+  if (o.look_at) spec.camera.look_at = o.look_at;
+  if (o.up) spec.camera.up = *o.up;
+  if (o.camera || o.look_at || o.up) check_overridden_view(spec.camera, o);
 }
 
-SpecOverrides make_overrides(const std::string& resolution, uint32_t frames,
-                             std::optional<uint64_t> seed, const std::string& scene) {
+SpecOverrides make_overrides(const OverrideText& text) {
   SpecOverrides o;
-  if (!resolution.empty()) {
+  if (!text.resolution.empty()) {
     uint32_t w = 0, h = 0;
-    if (!parse_resolution(resolution, w, h))
-      throw InputError("--resolution " + resolution + ": expected WxH, e.g. 1920x1080");
+    if (!parse_resolution(text.resolution, w, h))
+      throw InputError("--resolution " + text.resolution + ": expected WxH, e.g. 1920x1080");
     o.width = w;
     o.height = h;
   }
-  if (frames > 0) o.frames = frames;
-  o.seed = seed;
-  if (!scene.empty()) o.scene = scene;
+  if (text.frames > 0) o.frames = text.frames;
+  o.seed = text.seed;
+  if (!text.scene.empty()) o.scene = text.scene;
+  o.camera = parse_point("--camera", text.camera);
+  o.look_at = parse_point("--look-at", text.look_at);
+  o.up = parse_point("--up", text.up);
   return o;
 }
 

@@ -11,16 +11,27 @@
 namespace rtsim::pipeline {
 
 // Command-line overrides of a spec; unset fields keep the spec's value. A new scene also makes
-// the camera automatic (the spec's lights and material rules stay).
+// the camera automatic (the spec's lights and material rules stay); a camera position or look-at
+// point replaces the spec's camera path. A view without a direction or an up is InputError
+// naming the options.
 struct SpecOverrides {
   std::optional<uint32_t> frames, width, height;
   std::optional<uint64_t> seed;
   std::optional<std::string> scene;
+  std::optional<glm::vec3> camera, look_at, up;
 };
 void apply_overrides(WorkloadSpec& spec, const SpecOverrides& overrides);
-// From command-line text: resolution "WxH" or "" (InputError if malformed), frames 0 = unset.
-SpecOverrides make_overrides(const std::string& resolution, uint32_t frames,
-                             std::optional<uint64_t> seed, const std::string& scene);
+
+// The overrides as command-line text; "" and 0 leave a setting unset.
+struct OverrideText {
+  std::string resolution;  // "WxH"
+  uint32_t frames = 0;
+  std::optional<uint64_t> seed;
+  std::string scene;
+  std::string camera, look_at, up;  // "X,Y,Z"
+};
+// InputError naming the option if a value is malformed.
+SpecOverrides make_overrides(const OverrideText& text);
 
 // A spec file (.toml), or a scene (built-in name or file) with the default spec.
 WorkloadSpec load_workload(const std::string& workload);
