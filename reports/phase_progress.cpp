@@ -29,14 +29,23 @@ std::function<void(uint32_t, uint32_t, pipeline::PassId)> trace_progress() {
   };
 }
 
+constexpr size_t kBvhStepTriangles = 1000000;
+
 BvhImage build_bvh_with_progress(const TriangleMesh& mesh, const BvhConfig& config, bool quiet) {
   if (quiet) return build_bvh_image(mesh, config);
   fmt::print(stderr, "bvh: building {} over {} triangles\n", describe(config),
              mesh.triangles.size());
   double start = wall_seconds();
-  BvhImage image = build_bvh_image(mesh, config);
-  fmt::print(stderr, "bvh: {} nodes, {:.2f} MiB, built in {:.1f} s\n", image.node_count,
-             image.total_bytes() / 1048576.0, wall_seconds() - start);
+  // Large builds take seconds a step: say each as it ends.
+  BvhBuildStep step;
+  if (mesh.triangles.size() >= kBvhStepTriangles)
+    step = [](const char* name, double seconds) {
+      fmt::print(stderr, "bvh:   {} in {:.1f} s\n", name, seconds);
+    };
+  BvhImage image = build_bvh_image(mesh, config, step);
+  fmt::print(stderr, "bvh: {} nodes, {:.2f} MiB ({:.1f} B a triangle), built in {:.1f} s\n",
+             image.node_count, image.total_bytes() / 1048576.0,
+             double(image.total_bytes()) / double(mesh.triangles.size()), wall_seconds() - start);
   return image;
 }
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include <fmt/format.h>
 #include <glm/common.hpp>
 
 #include "model/bvh/binned_sah.h"
@@ -13,6 +14,8 @@
 #include "model/bvh/triangle_format.h"
 #include "model/bvh/wide_bvh.h"
 #include "traces/error.h"
+#include "traces/host_clock.h"
+#include "traces/memory_plan.h"
 
 namespace rtsim {
 namespace {
@@ -52,10 +55,20 @@ uint32_t padded_stride(uint32_t size, uint32_t align) {
 
 }  // namespace
 
-BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
+BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
+                         const BvhBuildStep& on_step) {
   std::string problem = validate(config);
   if (!problem.empty()) throw_input_error("bvh config", "", problem);
   if (mesh.triangle_count() == 0) throw std::invalid_argument("build_bvh_image: no triangles");
+  require_memory(mesh.triangle_count() * kBvhBuildBytesPerTriangle, "bvh",
+                 fmt::format("building a BVH over {} triangles", mesh.triangle_count()),
+                 "use a smaller scene");
+  double step_start = wall_seconds();
+  auto step = [&](const char* name) {
+    double now = wall_seconds();
+    if (on_step) on_step(name, now - step_start);
+    step_start = now;
+  };
   bool groups = config.node_format == NodeFormat::Cwbvh8;
 
   BvhImage image;
@@ -67,11 +80,14 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
 
   // Build, collapse, cut into treelets, order.
   Bvh2 bvh2 = build_binned_sah(mesh, config);
+  step("binned SAH build");
   WideBvh wide = collapse_bvh(bvh2, config.width);
+  step("collapse");
   TreeletRule rule{image.node_stride, image.triangle_stride, groups, config.treelet_bytes,
                    config.treelet_budget};
   Treelets treelets = form_treelets(wide, rule);
   std::vector<uint32_t> order = order_nodes(wide, treelets, config.node_layout, groups);
+  step("treelets and node order");
   std::vector<uint32_t> position(wide.nodes.size());
   for (uint32_t i = 0; i < order.size(); ++i) position[order[i]] = i;
 
@@ -112,6 +128,7 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config) {
   uint64_t nodes_end = image.node_base + image.nodes.size();
   image.triangle_base = (nodes_end + config.region_align - 1) & ~(config.region_align - 1);
 
+  step("encode");
   image.treelets = treelets.stats;
   image.stats.bvh2_nodes = static_cast<uint32_t>(bvh2.nodes.size());
   image.stats.bvh2_depth = bvh2.depth;

@@ -115,6 +115,25 @@ TEST(CliMemoryPlan, ATraceBeyondTheMemoryIsRefusedBeforeItStarts) {
   EXPECT_EQ(count_lines(r.err), 1);
 }
 
+TEST(CliMemoryPlan, ABvhBuildBeyondTheMemoryIsRefusedAndALargeOneSaysEachStep) {
+  std::string stream = ::testing::TempDir() + "cli-memory-grid.rays";
+  ASSERT_EQ(run_rtsim("trace grid:1000000 -q --resolution 16x9 -o " + stream).exit_code, 0);
+  RunResult refused = run_with_memory(
+      "100000000", "sim " + stream + " --no-verify -q -o " + ::testing::TempDir() + "cli-memory-no");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.err,
+            "rtsim: error: bvh: building a BVH over 1000000 triangles needs about 0.2 GB of "
+            "memory, more than the 0.1 GB available; use a smaller scene\n");
+  RunResult built = run_rtsim("sim " + stream + " --no-verify -o " + ::testing::TempDir() +
+                              "cli-memory-grid-sim");
+  ASSERT_EQ(built.exit_code, 0) << built.err;
+  for (const char* step :
+       {"bvh:   binned SAH build in ", "bvh:   collapse in ", "bvh:   treelets and node order in ",
+        "bvh:   encode in ", " B a triangle), built in "})
+    EXPECT_NE(built.err.find(step), std::string::npos) << step << " in:\n" << built.err;
+  std::remove(stream.c_str());
+}
+
 TEST(CliMemoryPlan, ABadLimitIsOneLine) {
   RunResult r = run_with_memory("lots", "scene-info grid:1000");
   EXPECT_EQ(r.exit_code, 2);

@@ -197,7 +197,7 @@ TEST(RunCommand, TheTraceAndBvhPhasesPrintProgress) {
         << r.err;
   EXPECT_NE(r.err.find("bvh: building bvh8 aabb32 raw treelet"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(" over 4144 triangles\nbvh: "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(" MiB, built in "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" B a triangle), built in "), std::string::npos) << r.err;
   EXPECT_LT(r.err.find("bvh: building"), r.err.find("sim: ")) << r.err;
   std::filesystem::remove_all(dir);
 }

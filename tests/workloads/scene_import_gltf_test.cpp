@@ -37,6 +37,20 @@ std::string triangle_buffer() {
   return data;
 }
 
+// The buffer (buffer: its uri field, or "" for a GLB's BIN chunk), views and accessors of
+// triangle_buffer(), as the last members of a glTF document.
+std::string triangle_accessors(const std::string& buffer) {
+  return R"("buffers": [{"byteLength": 42)" + buffer + R"(}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+     "min": [0, 0, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}
+  ]
+)";
+}
+
 // Nodes: "left" at x = -2 and its instance "left_copy" at z = -3 share mesh 0; "child" (mesh 1)
 // sits at z = 1 under "parent", which is at x = 10 and scaled by 2.
 std::string gltf_json(const std::string& buffer) {
@@ -67,16 +81,7 @@ std::string gltf_json(const std::string& buffer) {
                     "KHR_materials_ior": {"ior": 1.45},
                     "KHR_materials_clearcoat": {"clearcoatFactor": 1}}}
   ],
-  "buffers": [{"byteLength": 42)" +
-         buffer + R"(}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
-                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
-  "accessors": [
-    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-     "min": [0, 0, 0], "max": [1, 1, 0]},
-    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}
-  ]
-})";
+  )" + triangle_accessors(buffer) + "}";
 }
 
 void expect_scene(const Scene& s) {
@@ -149,15 +154,7 @@ std::string gltf_with_view(const std::string& uri) {
   "cameras": [{"type": "perspective",
                "perspective": {"yfov": 0.8, "aspectRatio": 1.5, "znear": 0.1}}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-  "buffers": [{"byteLength": 42, "uri": ")" + uri + R"("}],
-  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
-                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
-  "accessors": [
-    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
-     "min": [0, 0, 0], "max": [1, 1, 0]},
-    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}
-  ]
-})";
+  )" + triangle_accessors(R"(, "uri": ")" + uri + "\"") + "}";
 }
 
 void expect_near(const glm::vec3& a, const glm::vec3& b) {
