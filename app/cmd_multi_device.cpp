@@ -57,8 +57,8 @@ std::string trace_input(const MultiOptions& o) {
   pipeline::WorkloadSpec spec = pipeline::load_workload(o.input);
   pipeline::apply_overrides(
       spec,
-      pipeline::make_overrides({o.resolution, o.frames,
-                                o.seed_set ? std::optional<uint64_t>(o.seed) : std::nullopt}));
+      pipeline::make_overrides(
+          {o.resolution, o.frames, o.seed_set ? std::optional<uint64_t>(o.seed) : std::nullopt}));
   if (o.importance) spec.samples.placement = pipeline::Placement::Importance;
   if (o.orbit_set) spec.camera.orbit = o.orbit;
   if (o.warmup_set) spec.warmup_frames = o.warmup_frames;

@@ -25,9 +25,11 @@ void add_scene_info_command(CLI::App& app, int& exit_code) {
     fmt::print("bounds       [{:g}, {:g}, {:g}] .. [{:g}, {:g}, {:g}]\n", b.lo.x, b.lo.y, b.lo.z,
                b.hi.x, b.hi.y, b.hi.z);
     for (const SceneCamera& c : scene.cameras)
-      fmt::print("camera       '{}' at [{:g}, {:g}, {:g}] looking [{:g}, {:g}, {:g}], {:.3g} degrees high\n",
-                 c.name, c.position.x, c.position.y, c.position.z, c.forward.x, c.forward.y,
-                 c.forward.z, c.yfov_degrees);
+      fmt::print(
+          "camera       '{}' at [{:g}, {:g}, {:g}] looking [{:g}, {:g}, {:g}], {:.3g} degrees "
+          "high\n",
+          c.name, c.position.x, c.position.y, c.position.z, c.forward.x, c.forward.y, c.forward.z,
+          c.yfov_degrees);
     for (const SceneLight& l : scene.lights)
       fmt::print("light        '{}' {} at [{:g}, {:g}, {:g}]\n", l.name,
                  l.type == SceneLight::Type::Directional ? "directional"

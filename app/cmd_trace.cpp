@@ -63,9 +63,10 @@ void add_trace_command(CLI::App& app, int& exit_code) {
       throw InputError("trace: nothing to write: give -o OUT.rays and/or --preview OUT.png");
     pipeline::WorkloadSpec spec = pipeline::load_workload(a->workload);
     pipeline::apply_overrides(
-        spec, pipeline::make_overrides({a->resolution, a->frames,
-                                        a->seed_set ? std::optional<uint64_t>(a->seed) : std::nullopt,
-                                        a->scene, a->camera, a->look_at, a->up}));
+        spec,
+        pipeline::make_overrides({a->resolution, a->frames,
+                                  a->seed_set ? std::optional<uint64_t>(a->seed) : std::nullopt,
+                                  a->scene, a->camera, a->look_at, a->up}));
     pipeline::TraceOptions options;
     options.output = a->output;
     options.preview = a->preview;

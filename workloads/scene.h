@@ -38,7 +38,7 @@ struct SceneLight {
   enum class Type { Point, Spot, Directional } type = Type::Point;
   std::string name;
   glm::vec3 position{0.0f}, direction{0.0f, 0.0f, -1.0f};  // direction: where it points
-  glm::vec3 color{1.0f};            // colour times intensity (candela, or lux if directional)
+  glm::vec3 color{1.0f};             // colour times intensity (candela, or lux if directional)
   float outer_cone_degrees = 45.0f;  // spot
 };
 

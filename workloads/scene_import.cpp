@@ -165,7 +165,9 @@ aiMatrix4x4 world_transform(const aiScene& scene, const aiString& node_name) {
   return m;
 }
 
-glm::vec3 to_glm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+glm::vec3 to_glm(const aiVector3D& v) {
+  return {v.x, v.y, v.z};
+}
 
 glm::vec3 direction(const aiMatrix4x4& m, const aiVector3D& v) {
   aiVector3D d = aiMatrix3x3(m) * v;

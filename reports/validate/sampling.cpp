@@ -150,8 +150,8 @@ std::vector<Check> sample_workload(const Target& target, const Workload& w) {
       }
   }
   out[3].measured = double(held) / double(intervals);
-  out[3].detail = fmt::format("{} at {}: intervals that hold the full value, by metric: {}",
-                              w.name, kResolution, coverage_detail);
+  out[3].detail = fmt::format("{} at {}: intervals that hold the full value, by metric: {}", w.name,
+                              kResolution, coverage_detail);
   return out;
 }
 

@@ -118,8 +118,8 @@ TEST(CliMemoryPlan, ATraceBeyondTheMemoryIsRefusedBeforeItStarts) {
 TEST(CliMemoryPlan, ABvhBuildBeyondTheMemoryIsRefusedAndALargeOneSaysEachStep) {
   std::string stream = ::testing::TempDir() + "cli-memory-grid.rays";
   ASSERT_EQ(run_rtsim("trace grid:1000000 -q --resolution 16x9 -o " + stream).exit_code, 0);
-  RunResult refused = run_with_memory(
-      "100000000", "sim " + stream + " --no-verify -q -o " + ::testing::TempDir() + "cli-memory-no");
+  RunResult refused = run_with_memory("100000000", "sim " + stream + " --no-verify -q -o " +
+                                                       ::testing::TempDir() + "cli-memory-no");
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_EQ(refused.err,
             "rtsim: error: bvh: building a BVH over 1000000 triangles needs about 0.2 GB of "

@@ -60,8 +60,8 @@ TEST(CliTrace, ADegenerateCameraIsBadInputNamingTheSpecAndKey) {
 
 TEST(CliTrace, CameraOptionsPlaceTheViewAndADegenerateOneIsBadInput) {
   std::string out = tmp("placed.rays");
-  auto r = run_rtsim("trace grid:64 --resolution 16x9 --camera 0,5,-8 --look-at 0,0,0 --up 0,1,0 -o " +
-                     out);
+  auto r = run_rtsim(
+      "trace grid:64 --resolution 16x9 --camera 0,5,-8 --look-at 0,0,0 --up 0,1,0 -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   StreamHeader h;
   std::vector<Ray> rays = read_all_rays(out, &h);
@@ -79,7 +79,8 @@ TEST(CliTrace, CameraOptionsPlaceTheViewAndADegenerateOneIsBadInput) {
                   "rtsim: error: --camera: the camera position equals the look-at point"},
         {"--camera 0,5,0 --look-at 0,0,0", "rtsim: error: --up: parallel to the view direction"},
         {"--camera 1,2", "rtsim: error: --camera 1,2: expected three numbers X,Y,Z"}}) {
-    auto bad = run_rtsim(std::string("trace grid:64 -q --resolution 16x9 ") + options + " -o " + out);
+    auto bad =
+        run_rtsim(std::string("trace grid:64 -q --resolution 16x9 ") + options + " -o " + out);
     EXPECT_EQ(bad.exit_code, 2) << options;
     EXPECT_EQ(bad.err.rfind(message, 0), 0u) << bad.err;
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;

@@ -81,7 +81,8 @@ std::string gltf_json(const std::string& buffer) {
                     "KHR_materials_ior": {"ior": 1.45},
                     "KHR_materials_clearcoat": {"clearcoatFactor": 1}}}
   ],
-  )" + triangle_accessors(buffer) + "}";
+  )" + triangle_accessors(buffer) +
+         "}";
 }
 
 void expect_scene(const Scene& s) {
@@ -154,7 +155,8 @@ std::string gltf_with_view(const std::string& uri) {
   "cameras": [{"type": "perspective",
                "perspective": {"yfov": 0.8, "aspectRatio": 1.5, "znear": 0.1}}],
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-  )" + triangle_accessors(R"(, "uri": ")" + uri + "\"") + "}";
+  )" + triangle_accessors(R"(, "uri": ")" + uri + "\"") +
+         "}";
 }
 
 void expect_near(const glm::vec3& a, const glm::vec3& b) {
@@ -165,9 +167,9 @@ void expect_near(const glm::vec3& a, const glm::vec3& b) {
 
 TEST(SceneImportGltf, CamerasAndPunctualLightsArePlacedByTheirNodes) {
   TempDir dir;
-  Scene s = load_scene(dir.write(
-      "view.gltf",
-      gltf_with_view("data:application/octet-stream;base64," + base64(triangle_buffer()))));
+  Scene s =
+      load_scene(dir.write("view.gltf", gltf_with_view("data:application/octet-stream;base64," +
+                                                       base64(triangle_buffer()))));
   ASSERT_EQ(s.triangle_count(), 1u);
   ASSERT_EQ(s.cameras.size(), 1u);
   const SceneCamera& eye = s.cameras[0];

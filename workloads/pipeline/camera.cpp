@@ -96,8 +96,7 @@ bool room_view(const TriangleMesh& mesh, const EmbreeScene& embree, const glm::v
                         (2.0f * float(j) + 1.0f) / kGrid - 1.0f, height);
         glm::vec3 p = c + basis.to_world(local * half);
         Probe probe = probe_from(mesh, embree, p, 64);
-        if (probe.hit_fraction >= 0.95f && probe.front_fraction >= 0.9f &&
-            probe.median_t > best) {
+        if (probe.hit_fraction >= 0.95f && probe.front_fraction >= 0.9f && probe.median_t > best) {
           best = probe.median_t;
           eye = p;
         }

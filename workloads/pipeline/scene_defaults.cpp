@@ -9,7 +9,9 @@
 namespace rtsim::pipeline {
 namespace {
 
-std::string vec(const glm::vec3& v) { return fmt::format("({:.3g}, {:.3g}, {:.3g})", v.x, v.y, v.z); }
+std::string vec(const glm::vec3& v) {
+  return fmt::format("({:.3g}, {:.3g}, {:.3g})", v.x, v.y, v.z);
+}
 
 LightSpec light_spec(const SceneLight& l) {
   LightSpec s;

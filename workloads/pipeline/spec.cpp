@@ -32,12 +32,10 @@ void check_view(const SpecReader& r, glm::vec3 position, glm::vec3 look_at, glm:
 }
 
 void read_camera(SpecReader& r, CameraSpec& c) {
-  c.position =
-      r.vec3_or_auto("position", "the scene file's camera, else fit to the scene bounds",
-                     "scene units", "where the camera is");
+  c.position = r.vec3_or_auto("position", "the scene file's camera, else fit to the scene bounds",
+                              "scene units", "where the camera is");
   c.look_at = r.vec3_or_auto("look_at", "the scene file's camera, else fit to the scene bounds",
-                             "scene units",
-                             "the point the camera looks at");
+                             "scene units", "the point the camera looks at");
   c.up = r.vec3("up", c.up, "", "the up direction of the image");
   if (!r.documenting() && glm::length(c.up) == 0.0f) r.fail("up", "must not be zero");
   c.fov = float(r.real("fov", c.fov, "degrees", "vertical field of view", 1.0, 179.0));
