@@ -73,9 +73,8 @@ void add_trace_command(CLI::App& app, int& exit_code) {
     options.generator = "rtsim " RTSIM_VERSION;
     if (!a->quiet) options.progress = reports::trace_progress();
     pipeline::TraceResult result = pipeline::trace_workload(spec, options);
-    if (!a->quiet)
-      for (const std::string& note : result.notes) fmt::print(stderr, "trace: {}\n", note);
     if (!a->quiet) {
+      for (const std::string& note : result.notes) fmt::print(stderr, "trace: {}\n", note);
       fmt::print("{}", pipeline::format_summary(result.summary));
       if (!a->output.empty()) fmt::print("wrote {}\n", a->output);
       for (const auto& image : result.images) fmt::print("wrote {}\n", image);

@@ -19,13 +19,11 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A view direction the image can be built on: position and look_at apart, up not along it
-// (else every ray would be NaN or miss).
 void check_view(const SpecReader& r, glm::vec3 position, glm::vec3 look_at, glm::vec3 up) {
-  glm::vec3 view = look_at - position;
-  if (glm::length(view) == 0.0f)
+  ViewProblem problem = view_problem(position, look_at, up);
+  if (problem == ViewProblem::NoDirection)
     r.fail("look_at", "equals position: the camera has no view direction");
-  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(up))) < 1e-4f)
+  if (problem == ViewProblem::NoUp)
     r.fail("up",
            "is parallel to the view direction (position to look_at): the image has no "
            "up; choose another up");
@@ -279,6 +277,14 @@ WorkloadSpec read_spec(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return parse_spec(text.str(), path);
+}
+
+ViewProblem view_problem(const glm::vec3& position, const glm::vec3& look_at, const glm::vec3& up) {
+  glm::vec3 view = look_at - position;
+  if (glm::length(view) == 0.0f) return ViewProblem::NoDirection;
+  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(up))) < 1e-4f)
+    return ViewProblem::NoUp;
+  return ViewProblem::None;
 }
 
 WorkloadSpec default_spec_for_scene(const std::string& scene) {

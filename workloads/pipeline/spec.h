@@ -124,6 +124,11 @@ struct WorkloadSpec {
   PassSpecs passes;
 };
 
+enum class ViewProblem { None, NoDirection, NoUp };
+// Whether an image can be built looking from position to look_at with up: the two points apart
+// and up not along the view (else every ray would be NaN or miss). Up itself must not be zero.
+ViewProblem view_problem(const glm::vec3& position, const glm::vec3& look_at, const glm::vec3& up);
+
 struct KeyDoc {
   std::string key, type, default_value, unit, description;
 };

@@ -26,14 +26,14 @@ std::optional<glm::vec3> parse_point(const std::string& option, const std::strin
 
 // The view the overrides leave must have a direction and an up.
 void check_overridden_view(const CameraSpec& c, const SpecOverrides& o) {
-  if (c.position && c.look_at && *c.position == *c.look_at)
+  if (glm::length(c.up) == 0.0f) throw InputError("--up: must not be zero");
+  if (!c.position || !c.look_at) return;
+  ViewProblem problem = view_problem(*c.position, *c.look_at, c.up);
+  if (problem == ViewProblem::NoDirection)
     throw InputError(std::string(o.camera ? "--camera" : "--look-at") +
                      ": the camera position equals the look-at point (--camera, --look-at or "
                      "the spec's [camera]): the camera has no view direction");
-  if (glm::length(c.up) == 0.0f) throw InputError("--up: must not be zero");
-  if (c.position && c.look_at &&
-      glm::length(glm::cross(glm::normalize(*c.look_at - *c.position), glm::normalize(c.up))) <
-          1e-4f)
+  if (problem == ViewProblem::NoUp)
     throw InputError(
         "--up: parallel to the view direction (camera to look-at point): the image has no up; "
         "choose another --up");
