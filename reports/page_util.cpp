@@ -63,7 +63,7 @@ Json read_json_file(const std::string& path, const char* schema) {
   } catch (const nlohmann::json::parse_error& e) {
     throw_input_error(path, fmt::format("byte {}", e.byte), "not valid JSON");
   }
-  if (doc.value("schema", "") != schema)
+  if (schema && doc.value("schema", "") != schema)
     throw_input_error(path, "schema", std::string("expected ") + schema);
   return doc;
 }

@@ -16,7 +16,8 @@ std::string html_escape(const std::string& text);
 std::string base64(const std::string& bytes);
 std::string read_file(const std::string& path);  // "" if missing
 // A JSON document rtsim wrote. Throws InputError naming the file if it is missing, not valid
-// JSON (with the byte where parsing stopped) or its "schema" is not the one expected.
+// JSON (with the byte where parsing stopped) or its "schema" is not the one expected (when
+// schema is not null).
 nlohmann::ordered_json read_json_file(const std::string& path, const char* schema);
 
 // The value at a dotted key ("timing.cycles", "workload.passes.0.rays": a number indexes an

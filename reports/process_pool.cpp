@@ -5,9 +5,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <thread>
 
@@ -70,6 +72,53 @@ std::vector<std::string> run_child_argv(const std::string& trace_dir, const std:
                                 std::to_string(sample_rate)};
   if (!config.empty()) argv.insert(argv.end(), {"--config", config});
   return argv;
+}
+
+std::string find_on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/local/bin:/usr/bin:/bin";
+  for (size_t start = 0; start <= dirs.size();) {
+    size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    std::string candidate = dirs.substr(start, end - start) + "/" + program;
+    if (end > start && access(candidate.c_str(), X_OK) == 0) return candidate;
+    start = end + 1;
+  }
+  return "";
+}
+
+CommandOutput run_command(const std::vector<std::string>& argv) {
+  char out_name[] = "/tmp/rtsim-command-XXXXXX", err_name[] = "/tmp/rtsim-command-XXXXXX";
+  int out_fd = mkstemp(out_name), err_fd = mkstemp(err_name);
+  CommandOutput result{127, "", ""};
+  if (out_fd >= 0 && err_fd >= 0) {
+    std::vector<std::string> words = argv;
+    std::vector<char*> args;
+    for (std::string& w : words) args.push_back(w.data());
+    args.push_back(nullptr);
+    pid_t pid = fork_child();
+    if (pid == 0) {
+      dup2(out_fd, STDOUT_FILENO);
+      dup2(err_fd, STDERR_FILENO);
+      execv(args[0], args.data());
+      _exit(127);
+    }
+    int status = 0;
+    if (pid > 0 && waitpid(pid, &status, 0) == pid)
+      result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    auto slurp = [](const char* name) {
+      std::ifstream in(name);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    result.stdout_text = slurp(out_name);
+    result.stderr_text = slurp(err_name);
+  }
+  for (auto [fd, name] : {std::pair{out_fd, out_name}, {err_fd, err_name}})
+    if (fd >= 0) {
+      close(fd);
+      unlink(name);
+    }
+  return result;
 }
 
 uint32_t local_cores() {

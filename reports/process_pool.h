@@ -29,6 +29,17 @@ std::vector<std::string> run_child_argv(const std::string& trace_dir, const std:
 // rtsim are not reused (sweep points).
 std::string executable_fingerprint();
 
+// The full path of a program found on PATH, or "" (sbatch, squeue).
+std::string find_on_path(const std::string& program);
+
+struct CommandOutput {
+  int exit_code = 0;  // as run_processes reports it
+  std::string stdout_text, stderr_text;
+};
+
+// Runs argv (argv[0] a full path) to its end and returns what it printed.
+CommandOutput run_command(const std::vector<std::string>& argv);
+
 // Local cores (at least 1).
 uint32_t local_cores();
 

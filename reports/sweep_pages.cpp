@@ -65,7 +65,7 @@ std::string sweep_html(const Json& doc, const std::string& dir) {
          html_escape(spec["workloads"].dump()) + "</code></p>\n</section>\n";
   out += "<section id=\"points\">\n<h2>Points</h2>\n<table>\n<tr><th>workload</th>";
   for (const Json& k : spec["keys"]) out += "<th>" + html_escape(k.get<std::string>()) + "</th>";
-  out += "<th>status</th>";
+  out += "<th>status</th><th>ran on</th>";
   for (const Metric& m : kMetrics) out += std::string("<th>") + m.title + "</th>";
   out += "</tr>\n";
   const Json& points = doc["points"];
@@ -77,6 +77,7 @@ std::string sweep_html(const Json& doc, const std::string& dir) {
       out += "<td>" + html_escape(show(value, Style::Real)) + "</td>";
     }
     out += html_cell(doc, p + ".status", Style::Text);
+    out += "<td>" + html_escape(points[i].value("ran_on", "")) + "</td>";
     for (const Metric& m : kMetrics) out += html_cell(doc, p + ".metrics." + m.name, m.style);
     out += "</tr>\n";
   }
@@ -93,16 +94,16 @@ std::string sweep_markdown(const Json& doc) {
                     ". Data: sweep.json, sweep.csv; full "
                     "page: sweep.html.\n\n| workload |";
   for (const Json& k : spec["keys"]) out += " " + k.get<std::string>() + " |";
-  out += " status |";
+  out += " status | ran on |";
   for (const Metric& m : kMetrics) out += std::string(" ") + m.title + " |";
   out += "\n|---|";
-  for (size_t i = 0; i < spec["keys"].size() + 1 + std::size(kMetrics); ++i) out += "---|";
+  for (size_t i = 0; i < spec["keys"].size() + 2 + std::size(kMetrics); ++i) out += "---|";
   out += "\n";
   for (const Json& p : doc["points"]) {
     out += "| " + p["workload"].get<std::string>() + " |";
     for (const Json& k : spec["keys"])
       out += " " + show(swept_value(p["values"], k.get<std::string>()), Style::Real) + " |";
-    out += " " + p["status"].get<std::string>() + " |";
+    out += " " + p["status"].get<std::string>() + " | " + p.value("ran_on", "") + " |";
     for (const Metric& m : kMetrics)
       out += " " + show(at_key(p, std::string("metrics.") + m.name), m.style) + " |";
     out += "\n";

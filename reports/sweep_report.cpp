@@ -67,6 +67,12 @@ std::string csv_field(const Json& v) {
   return v.dump();
 }
 
+// A point that never ran (a Slurm sweep collected early) is missing, not failed.
+const char* point_status(const PointRun& p) {
+  if (p.ok) return p.reused ? "reused" : "done";
+  return p.ran_on.empty() && p.exit_code == 0 ? "missing" : "failed";
+}
+
 }  // namespace
 
 Json sweep_json(const SweepSpec& spec, const std::vector<PointRun>& runs) {
@@ -75,10 +81,9 @@ Json sweep_json(const SweepSpec& spec, const std::vector<PointRun>& runs) {
     points.push_back({{"id", p.id},
                       {"workload", p.workload},
                       {"values", p.point->values},
-                      {"status", !p.ok      ? "failed"
-                                 : p.reused ? "reused"
-                                            : "done"},
+                      {"status", point_status(p)},
                       {"exit_code", p.exit_code},
+                      {"ran_on", p.ran_on},
                       {"dir", "points/" + p.id},
                       {"metrics", p.ok ? p.metrics : Json()}});
   Json workloads = Json::array();
@@ -107,13 +112,13 @@ std::string sweep_csv(const Json& doc) {
       for (const auto& [name, value] : p["metrics"].items())
         if (std::find(metrics.begin(), metrics.end(), name) == metrics.end())
           metrics.push_back(name);
-  std::string out = "workload,id,status";
+  std::string out = "workload,id,status,ran_on";
   for (const Json& k : doc["spec"]["keys"]) out += "," + k.get<std::string>();
   for (const std::string& m : metrics) out += "," + m;
   out += "\n";
   for (const Json& p : doc["points"]) {
     out += p["workload"].get<std::string>() + "," + p["id"].get<std::string>() + "," +
-           p["status"].get<std::string>();
+           p["status"].get<std::string>() + "," + p.value("ran_on", "");
     for (const Json& k : doc["spec"]["keys"])
       out += "," + csv_field(swept_value(p["values"], k.get<std::string>()));
     for (const std::string& m : metrics)

@@ -17,10 +17,7 @@ namespace rtsim::reports {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
-namespace {
-
-// The request as recorded: a spec file by absolute path and the hash of its contents.
-Json request_json(const TraceRequest& r) {
+Json trace_request_json(const TraceRequest& r) {
   Json j;
   bool file = fs::is_regular_file(r.workload);
   j["workload"] = file ? fs::absolute(r.workload).lexically_normal().string() : r.workload;
@@ -36,6 +33,8 @@ Json request_json(const TraceRequest& r) {
     if (!value->empty()) j[key] = *value;
   return j;
 }
+
+namespace {
 
 Json summary_json(const pipeline::RunSummary& s) {
   Json passes = Json::array();
@@ -79,15 +78,18 @@ TraceOutcome read_trace_dir(const std::string& dir) {
   return out;
 }
 
+bool trace_is_current(const TraceRequest& request, const std::string& dir) {
+  if (!fs::exists(dir + "/trace.json") || !fs::exists(dir + "/rays.rays")) return false;
+  return read_trace_dir(dir).summary["request"] == trace_request_json(request);
+}
+
 TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, bool quiet) {
-  Json wanted = request_json(request);
-  if (fs::exists(dir + "/trace.json") && fs::exists(dir + "/rays.rays")) {
+  Json wanted = trace_request_json(request);
+  if (trace_is_current(request, dir)) {
     TraceOutcome old = read_trace_dir(dir);
-    if (old.summary["request"] == wanted) {
-      if (!quiet)
-        fmt::print("trace      reusing {} ({} rays)\n", dir, old.summary["rays"].get<uint64_t>());
-      return old;
-    }
+    if (!quiet)
+      fmt::print("trace      reusing {} ({} rays)\n", dir, old.summary["rays"].get<uint64_t>());
+    return old;
   }
   create_output_folder(dir);
   pipeline::WorkloadSpec spec = pipeline::load_workload(request.workload);

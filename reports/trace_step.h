@@ -32,6 +32,13 @@ struct TraceOutcome {
 
 constexpr const char* kTraceSchema = "rtsim.trace/1";
 
+// The request as trace.json records it: a spec file by absolute path and the hash of its
+// contents. Sweeps name their points by it before anything is traced.
+nlohmann::ordered_json trace_request_json(const TraceRequest& request);
+
+// Whether dir holds a finished trace of this request (trace_into would reuse it).
+bool trace_is_current(const TraceRequest& request, const std::string& dir);
+
 // Traces into dir (created if needed), or reuses it. Throws InputError on a bad workload.
 TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, bool quiet);
 

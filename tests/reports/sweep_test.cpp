@@ -16,6 +16,7 @@
 #include <set>
 #include <thread>
 
+#include "reports/sweep_runner.h"
 #include "tests/reports/report_test_util.h"
 
 namespace rtsim {
@@ -48,11 +49,12 @@ TEST(Sweep, FinishesWithCsvJsonChartsAndPages) {
   }
   std::string csv = test::slurp(dir + "/sweep.csv");
   EXPECT_EQ(test::count_lines(csv), 9) << "a header and one row per point";
-  EXPECT_EQ(csv.rfind("workload,id,status,l2.size_bytes,rt.l1.size_bytes,", 0), 0u) << csv;
+  EXPECT_EQ(csv.rfind("workload,id,status,ran_on,l2.size_bytes,rt.l1.size_bytes,", 0), 0u) << csv;
   for (const Json& p : doc["points"]) {
-    std::string row = fmt::format("{},{},done,{},{},", p["workload"].get<std::string>(),
-                                  p["id"].get<std::string>(), p["values"]["l2.size_bytes"].dump(),
-                                  p["values"]["rt.l1.size_bytes"].dump());
+    std::string row =
+        fmt::format("{},{},done,local on {},{},{},", p["workload"].get<std::string>(),
+                    p["id"].get<std::string>(), reports::host_name(),
+                    p["values"]["l2.size_bytes"].dump(), p["values"]["rt.l1.size_bytes"].dump());
     EXPECT_NE(csv.find("\n" + row), std::string::npos) << "the swept values of " << p["id"];
   }
   std::string html = test::slurp(dir + "/sweep.html");
