@@ -171,7 +171,8 @@ TEST_F(SlurmSweep, CancelledResumedCollectedAndIdenticalToALocalSweep) {
     EXPECT_EQ(model_stats(a), model_stats(b)) << id;
     for (const std::string& f : files) {
       bool exact = f.find(".f32") != std::string::npos || f == "config.toml" || f == "request.json";
-      if (exact) EXPECT_EQ(test::slurp(a + "/" + f), test::slurp(b + "/" + f)) << id << "/" << f;
+      if (!exact) continue;
+      EXPECT_EQ(test::slurp(a + "/" + f), test::slurp(b + "/" + f)) << id << "/" << f;
     }
   }
   fs::remove_all(dir);
