@@ -4,6 +4,7 @@
 // DIR/sweep.{json,csv,html,md} with curves and a Pareto chart. `--status DIR` and
 // `--collect DIR` follow and merge a Slurm sweep. Exit 1 if a point failed or its verification
 // found an unexplained mismatch.
+#include <filesystem>
 #include <memory>
 
 #include <fmt/core.h>
@@ -57,8 +58,10 @@ std::string jobs_list(const std::vector<std::string>& jobs) {
 
 int collect(const SweepOptions& o) {
   const std::string& dir = o.collect_dir;
-  reports::SweepSpec spec = reports::read_sweep_spec(reports::slurm_sweep_spec(dir), o.max_points);
+  reports::SweepSpec spec = reports::read_sweep_spec(reports::slurm_sweep_spec(dir),
+                                                     reports::slurm_sweep_max_points(dir));
   lock_output_folder(dir, "rtsim sweep --collect");
+  reports::note_slurm_build(dir);
   std::vector<reports::PointRun> points = reports::plan_sweep(spec, dir);
   for (reports::PointRun& p : points) p.reused = false;
   std::vector<std::string> queued = reports::queued_slurm_jobs(dir);
@@ -68,25 +71,50 @@ int collect(const SweepOptions& o) {
   return write_results(spec, points, dir, o);
 }
 
-void check_engine_options(const SweepOptions& o, CLI::App* cmd) {
-  if (o.engine == "slurm") return;
-  for (const char* name : {"--partition", "--time", "--mem", "--cpus-per-task", "--array-limit",
-                           "--points-per-task", "--sbatch-arg", "--dry-run"})
-    if (cmd->count(name))
-      throw InputError(std::string("sweep: ") + name + " is an option of --engine slurm");
+// One of SPEC, --status, --collect, --slurm-task; options only where they mean something.
+void check_options(const SweepOptions& o, CLI::App* cmd) {
+  int modes =
+      !o.spec.empty() + !o.status_dir.empty() + !o.collect_dir.empty() + !o.slurm_task.empty();
+  if (modes != 1) throw InputError("sweep: give one of SPEC, --status DIR or --collect DIR");
+  if (o.spec.empty())
+    for (const char* name : {"--output", "--engine", "--jobs", "--trace-only"})
+      if (cmd->count(name))
+        throw InputError(std::string("sweep: ") + name + " goes with a SPEC, not --status or " +
+                         "--collect");
+  if (!o.spec.empty() && o.output.empty()) throw InputError("sweep: -o DIR is required");
+  if (o.engine == "slurm" && (cmd->count("--jobs") || o.trace_only))
+    throw InputError(std::string("sweep: ") + (o.trace_only ? "--trace-only" : "--jobs") +
+                     " is an option of the local engine (--array-limit caps Slurm's tasks)");
+  if (o.engine != "slurm" || o.spec.empty())
+    for (const char* name : {"--partition", "--time", "--mem", "--cpus-per-task", "--array-limit",
+                             "--points-per-task", "--sbatch-arg", "--dry-run"})
+      if (cmd->count(name))
+        throw InputError(std::string("sweep: ") + name + " is an option of --engine slurm");
+}
+
+// A Slurm sweep's files read back: a wrong type or a vanished file is bad input, not a bug.
+template <typename F>
+int reading_slurm_files(const std::string& what, F&& f) {
+  try {
+    return f();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(what + ": a file of the Slurm sweep is not as rtsim wrote it: " + e.what());
+  } catch (const std::filesystem::filesystem_error& e) {
+    throw InputError(what + ": " + e.what());
+  }
 }
 
 int run_sweep_command(const SweepOptions& o, CLI::App* cmd) {
-  if (!o.status_dir.empty()) {
-    reports::print_slurm_status(o.status_dir);
-    return 0;
-  }
-  if (!o.collect_dir.empty()) return collect(o);
-  if (!o.slurm_task.empty()) return reports::run_slurm_task(o.slurm_task, o.task);
-  if (o.spec.empty())
-    throw InputError("sweep: a spec is required (or --status DIR, --collect DIR)");
-  if (o.output.empty()) throw InputError("sweep: -o DIR is required");
-  check_engine_options(o, cmd);
+  check_options(o, cmd);
+  if (!o.status_dir.empty())
+    return reading_slurm_files(o.status_dir, [&] {
+      reports::print_slurm_status(o.status_dir);
+      return 0;
+    });
+  if (!o.collect_dir.empty()) return reading_slurm_files(o.collect_dir, [&] { return collect(o); });
+  if (!o.slurm_task.empty())
+    return reading_slurm_files(o.slurm_task,
+                               [&] { return reports::run_slurm_task(o.slurm_task, o.task); });
   reports::SweepSpec spec = reports::read_sweep_spec(o.spec, o.max_points);
   create_output_folder(o.output);
   if (o.trace_only) {  // the first job of a Slurm sweep; the submitter may still hold the lock
@@ -94,10 +122,11 @@ int run_sweep_command(const SweepOptions& o, CLI::App* cmd) {
     return 0;
   }
   lock_output_folder(o.output, "rtsim sweep");
-  if (o.engine == "slurm") {
-    reports::submit_slurm_sweep(spec, o.output, o.slurm);
-    return 0;
-  }
+  if (o.engine == "slurm")
+    return reading_slurm_files(o.output, [&] {
+      reports::submit_slurm_sweep(spec, o.output, o.slurm);
+      return 0;
+    });
   std::vector<std::string> queued = reports::queued_slurm_jobs(o.output);
   if (!queued.empty())
     throw_input_error(o.output, "",

@@ -65,8 +65,10 @@ double SpecReader::non_negative(const toml::node& n, const std::string& what) co
 }
 
 std::string SpecReader::resolve(const std::string& path) const {
-  fs::path candidate = fs::path(file).parent_path() / path;
-  return !path.empty() && fs::exists(candidate) ? candidate.lexically_normal().string() : path;
+  if (path.empty()) return path;
+  fs::path beside = fs::path(file).parent_path() / path;
+  if (fs::exists(beside)) return fs::absolute(beside).lexically_normal().string();
+  return fs::exists(path) ? fs::absolute(path).lexically_normal().string() : path;
 }
 
 }  // namespace rtsim::reports

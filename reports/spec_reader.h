@@ -29,7 +29,9 @@ struct SpecReader {
   int64_t integer(const toml::table& t, const char* key, int64_t def, int64_t lo, int64_t hi) const;
   bool boolean(const toml::node& n, const char* key) const;
   double non_negative(const toml::node& n, const std::string& what) const;
-  // A path relative to the file's folder, if such a file exists; else as written.
+  // An existing file as an absolute path: relative to the file's folder if such a file exists,
+  // else to the current folder; anything else (a built-in scene) as written. Absolute, so that
+  // jobs started elsewhere (Slurm sweeps) find the same files.
   std::string resolve(const std::string& path) const;
 };
 

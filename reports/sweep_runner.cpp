@@ -119,15 +119,16 @@ void trace_sweep_workloads(const SweepSpec& spec, const std::string& output, boo
     trace_into(w.trace, output + "/traces/" + w.name, quiet);
 }
 
-std::vector<std::string> prepare_point(const PointRun& p, Json where) {
+std::vector<std::string> prepare_point(const PointRun& p) {
   fs::create_directories(p.dir);
   for (const auto& entry : fs::directory_iterator(p.dir)) fs::remove_all(entry.path());
   write_file_atomic(p.dir + "/request.json", p.request.dump(2) + "\n");
-  if (!where.is_null()) {
-    where["exit_code"] = nullptr;
-    write_file_atomic(p.dir + "/where.json", where.dump(2) + "\n");
-  }
   return point_argv(p.request, p.trace_dir, p.dir);
+}
+
+void record_where(const PointRun& p, Json where) {
+  where["exit_code"] = nullptr;
+  write_file_atomic(p.dir + "/where.json", where.dump(2) + "\n");
 }
 
 void finish_point(PointRun& p, int exit_code) {
@@ -157,8 +158,8 @@ std::vector<PointRun> run_sweep(const SweepSpec& spec, const SweepRunOptions& o)
   std::vector<size_t> job_point;
   for (size_t i = 0; i < points.size(); ++i)
     if (!points[i].ok) {
-      Json where = {{"engine", "local"}, {"host", host_name()}};
-      jobs.push_back({prepare_point(points[i], where), points[i].dir + "/run.log"});
+      jobs.push_back({prepare_point(points[i]), points[i].dir + "/run.log"});
+      record_where(points[i], {{"engine", "local"}, {"host", host_name()}});
       job_point.push_back(i);
     }
   uint32_t parallel = o.jobs ? o.jobs : spec.jobs ? spec.jobs : local_cores();

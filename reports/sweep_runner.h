@@ -48,9 +48,11 @@ nlohmann::ordered_json finished_report(const std::string& dir,
                                        const nlohmann::ordered_json& request);
 
 // Readies an unfinished point's folder: removes what an interrupted run left, writes
-// request.json and, unless `where` is null, where.json (engine, host, job: where it runs), and
-// returns its `rtsim run` argv.
-std::vector<std::string> prepare_point(const PointRun& point, nlohmann::ordered_json where);
+// request.json, and returns its `rtsim run` argv.
+std::vector<std::string> prepare_point(const PointRun& point);
+
+// Writes where.json: where the point runs (engine, host, job), its exit code still null.
+void record_where(const PointRun& point, nlohmann::ordered_json where);
 
 // After its run: reads the report (ok, metrics) and records the exit code in where.json.
 void finish_point(PointRun& point, int exit_code);

@@ -6,7 +6,8 @@
 //              runs `rtsim sweep --slurm-task tasks.json --task I`, which runs its points'
 //              `rtsim run` into DIR/points/ID exactly as a local sweep does
 // and records the job ids in DIR/slurm/state.json, from which --status and --collect work.
-// A re-submission skips the points done or still queued. Job logs: DIR/slurm/logs/.
+// A re-submission skips the points done or still queued. Job logs: DIR/slurm/logs/. The sweep
+// folder's path must not hold spaces, quotes or % (Slurm's #SBATCH lines and log patterns).
 #pragma once
 
 #include <cstdint>
@@ -42,8 +43,14 @@ int run_slurm_task(const std::string& tasks_file, uint32_t task);
 // `rtsim sweep --status DIR`: points done, running, pending, failed, with the job ids.
 void print_slurm_status(const std::string& dir);
 
-// The spec file a Slurm sweep folder was submitted from (InputError if DIR is not one).
+// The spec file a Slurm sweep folder was submitted from, and the --max-points it was read
+// under (InputError if DIR is not one).
 std::string slurm_sweep_spec(const std::string& dir);
+uint64_t slurm_sweep_max_points(const std::string& dir);
+
+// A line on stderr when DIR's last submission came from another build of rtsim (whose point
+// ids this build does not plan).
+void note_slurm_build(const std::string& dir);
 
 // The jobs of DIR's Slurm sweep still queued or running ("12", "13_4"); empty when there are
 // none, DIR is not a Slurm sweep or Slurm cannot be asked.

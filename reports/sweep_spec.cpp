@@ -111,7 +111,7 @@ void read_workloads(const SpecReader& r, const toml::table& root, SweepSpec& spe
              "resolution '" + w.trace.resolution + "': expected WxH, e.g. \"1920x1080\"");
     w.trace.frames = uint32_t(r.integer(*t, "frames", 0, 0, 1 << 20));
     if (t->get("seed")) w.trace.seed = uint64_t(r.integer(*t, "seed", 1, 0, INT64_MAX));
-    w.trace.scene = r.text(*t, "scene");
+    w.trace.scene = r.resolve(r.text(*t, "scene"));
     for (const SweepWorkload& other : spec.workloads)
       if (other.name == w.name)
         r.fail(n, "two workloads are named '" + w.name + "' (their traces would share a folder)");
@@ -179,6 +179,7 @@ SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points) {
          "the sweep spec");
   SweepSpec spec;
   spec.file = path;
+  spec.max_points = max_points;
   spec.name = r.text(root, "name", fs::path(path).stem().string());
   spec.description = r.text(root, "description");
   spec.config = r.resolve(r.text(root, "config"));

@@ -30,10 +30,15 @@ struct SweepChart {
   std::string x, y, series;  // y may hold "*" for every ray type; series: key or "workload"
 };
 
+// The most grid points a sweep expands unless asked for more (`rtsim sweep --max-points`): a
+// grid is counted before it is expanded, so a mistyped one is refused at once.
+constexpr uint64_t kDefaultMaxSweepPoints = 10000;
+
 struct SweepSpec {
   std::string file, name, description;
-  std::string config;             // base hardware config file ("" = defaults)
-  std::vector<std::string> sets;  // applied to every point, before the point's own
+  uint64_t max_points = kDefaultMaxSweepPoints;  // the limit it was read under
+  std::string config;                            // base hardware config file ("" = defaults)
+  std::vector<std::string> sets;                 // applied to every point, before the point's own
   std::vector<SweepWorkload> workloads;
   std::vector<std::string> keys;  // swept keys, in spec order
   std::vector<SweepPoint> points;
@@ -43,10 +48,6 @@ struct SweepSpec {
   uint32_t jobs = 0;               // parallel runs; 0: every local core
   std::vector<SweepChart> charts;  // empty: curves of cycles and DRAM bytes per swept key
 };
-
-// The most grid points a sweep expands unless asked for more (`rtsim sweep --max-points`): a
-// grid is counted before it is expanded, so a mistyped one is refused at once.
-constexpr uint64_t kDefaultMaxSweepPoints = 10000;
 
 SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points = kDefaultMaxSweepPoints);
 

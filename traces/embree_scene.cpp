@@ -26,34 +26,66 @@ RTCRay to_rtc(const Ray& r) {
   return out;
 }
 
+// A robust, high-quality scene of one triangle geometry.
+RTCScene mesh_scene(RTCDevice device, const TriangleMesh& mesh) {
+  RTCScene scene = rtcNewScene(device);
+  rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  // Embree may read 16 bytes at the last vertex: the buffer gets one float of padding.
+  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                               RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                               mesh.positions.size() + 1));
+  std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+  auto* indices = static_cast<uint32_t*>(
+      rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                              3 * sizeof(uint32_t), mesh.triangles.size()));
+  std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(uint32_t));
+  rtcCommitGeometry(geom);
+  rtcAttachGeometry(scene, geom);
+  rtcReleaseGeometry(geom);
+  rtcCommitScene(scene);
+  return scene;
+}
+
 }  // namespace
 
-EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads) {
+void EmbreeScene::open_device(int threads) {
   std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
   device_ = rtcNewDevice(config.c_str());
   if (!device_) throw std::runtime_error("Embree: cannot create a device");
+}
+
+EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads) {
+  open_device(threads);
+  scene_ = mesh_scene(device_, mesh);
+}
+
+EmbreeScene::EmbreeScene(const InstancedMesh& geometry, int threads) {
+  open_device(threads);
+  for (const TriangleMesh& mesh : geometry.meshes)
+    mesh_scenes_.push_back(mesh_scene(device_, mesh));
   scene_ = rtcNewScene(device_);
   rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-
-  RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  // Embree may read 16 bytes at the last vertex: the buffer gets one float of padding.
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-      geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-      mesh.positions.size() + 1));
-  std::memcpy(vertices, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
-  auto* indices = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-      geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t),
-      mesh.triangles.size()));
-  std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(uint32_t));
-  rtcCommitGeometry(geom);
-  rtcAttachGeometry(scene_, geom);
-  rtcReleaseGeometry(geom);
+  for (const Instance& instance : geometry.instances) {
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(geom, mesh_scenes_[instance.mesh]);
+    float xfm[12];  // 3x4 column major: the linear part's columns, then the offset
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = instance.to_world.linear[c][r];
+    for (int r = 0; r < 3; ++r) xfm[9 + r] = instance.to_world.offset[r];
+    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+    rtcCommitGeometry(geom);
+    rtcAttachGeometry(scene_, geom);  // geometry ids in instance order: id = instance index
+    rtcReleaseGeometry(geom);
+  }
   rtcCommitScene(scene_);
 }
 
 EmbreeScene::~EmbreeScene() {
   if (scene_) rtcReleaseScene(scene_);
+  for (RTCScene scene : mesh_scenes_) rtcReleaseScene(scene);
   if (device_) rtcReleaseDevice(device_);
 }
 
@@ -64,6 +96,7 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
   rh.ray = to_rtc(ray);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(scene_, &context, &rh);
   Hit hit;
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
@@ -71,6 +104,7 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
     hit.u = rh.hit.u;
     hit.v = rh.hit.v;
     hit.prim = rh.hit.primID;
+    if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) hit.instance = rh.hit.instID[0];
   }
   return hit;
 }

@@ -4,6 +4,9 @@
 
 #include <cstdint>
 
+#include <vector>
+
+#include "traces/instances.h"
 #include "traces/ray.h"
 
 struct RTCDeviceTy;
@@ -12,9 +15,13 @@ struct RTCSceneTy;
 namespace rtsim {
 
 class EmbreeScene {
-public:
+ public:
   // threads = 0 lets Embree choose; 1 makes the build single-threaded too.
   explicit EmbreeScene(const TriangleMesh& mesh, int threads = 0);
+  // Two levels: one Embree scene per unique mesh, placed by instance geometries (Embree's
+  // instancing); hits name the instance and the triangle of its mesh. Call
+  // instancing_problem() first: this trusts the geometry.
+  explicit EmbreeScene(const InstancedMesh& geometry, int threads = 0);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -25,9 +32,12 @@ public:
   Hit intersect(const Ray& ray) const;  // closest hit regardless of ray.query
   bool occluded(const Ray& ray) const;  // any hit in [tmin, tmax]
 
-private:
+ private:
+  void open_device(int threads);
+
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;
+  std::vector<RTCSceneTy*> mesh_scenes_;  // instanced: the bottom level
 };
 
 }  // namespace rtsim

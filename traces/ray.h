@@ -66,7 +66,8 @@ constexpr uint32_t kAnyPrim = kNoHit - 1;
 struct Hit {
   float t = std::numeric_limits<float>::infinity();
   float u = 0.0f, v = 0.0f;  // barycentrics of the hit point
-  uint32_t prim = kNoHit;    // triangle index in the TriangleMesh
+  uint32_t prim = kNoHit;    // triangle index in the TriangleMesh (in the instance's mesh)
+  uint32_t instance = kNoHit;  // instanced geometry (traces/instances.h): the instance hit
   bool hit() const { return prim != kNoHit; }
 };
 

@@ -193,7 +193,7 @@ TEST(SlurmSweepScripts, DryRunWritesAndPrintsTheJobScriptsWithoutSubmitting) {
         " sweep --slurm-task "})
     EXPECT_NE(points.find(line), std::string::npos) << line << " in\n" << points;
   std::string trace = test::slurp(dir + "/slurm/submit-1/trace.sh");
-  EXPECT_NE(trace.find(" --trace-only\n"), std::string::npos) << trace;
+  EXPECT_NE(trace.find(" --trace-only --max-points 10000\n"), std::string::npos) << trace;
   EXPECT_NE(r.out.find(points), std::string::npos) << "the scripts are printed";
   EXPECT_NE(r.out.find("--dependency=afterok:"), std::string::npos) << r.out;
   Json tasks = test::read_json(dir + "/slurm/submit-1/tasks.json");
@@ -215,6 +215,12 @@ TEST(SlurmSweepScripts, BadInputEndsWithOneLineAndExit2) {
       {"sweep " + spec() + " -o " + dir + " --partition arch", "an option of --engine slurm"},
       {"sweep --status " + dir, "not a Slurm sweep folder"},
       {"sweep --collect " + dir, "not a Slurm sweep folder"},
+      {"sweep " + spec() + " -o '" + dir + " 2' --engine slurm --dry-run",
+       "which a Slurm job script cannot carry"},
+      {"sweep " + spec() + " -o " + dir + " --engine slurm --dry-run --sbatch-arg=--array=0-3",
+       "rtsim sets that option itself"},
+      {"sweep " + spec() + " -o " + dir + " --engine slurm -j 4", "an option of the local engine"},
+      {"sweep " + spec() + " -o " + dir + " --status " + dir, "give one of SPEC, --status"},
   };
   for (const Case& c : cases) {
     test::RunResult r = test::run_rtsim(c.args);

@@ -1,0 +1,146 @@
+// Instanced geometry (issue 17): the checks on it, flattening, and Embree's two-level reference
+// against Embree on the flattened copy, with translated, scaled, rotated, sheared and mirrored
+// instances.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "traces/embree_scene.h"
+#include "traces/instances.h"
+
+namespace rtsim {
+namespace {
+
+// A closed box of 12 triangles, [-1,1]^3, and a fan of 8 thin triangles in the z = 0 plane.
+TriangleMesh box_mesh() {
+  TriangleMesh m;
+  for (int i = 0; i < 8; ++i)
+    m.positions.push_back({i & 1 ? 1.0f : -1.0f, i & 2 ? 1.0f : -1.0f, i & 4 ? 1.0f : -1.0f});
+  const uint32_t faces[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                                {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  for (const auto& f : faces) {
+    m.triangles.push_back({f[0], f[1], f[2]});
+    m.triangles.push_back({f[0], f[2], f[3]});
+  }
+  return m;
+}
+
+TriangleMesh fan_mesh() {
+  TriangleMesh m;
+  m.positions.push_back({0.0f, 0.0f, 0.0f});
+  for (int i = 0; i <= 8; ++i) {
+    float a = float(i) * 0.7f;
+    m.positions.push_back({1.5f * std::cos(a), 1.5f * std::sin(a), 0.0f});
+  }
+  for (uint32_t i = 1; i <= 8; ++i) m.triangles.push_back({0, i, i + 1});
+  return m;
+}
+
+Transform make(const glm::mat3& linear, const glm::vec3& offset) {
+  Transform t;
+  t.linear = linear;
+  t.offset = offset;
+  return t;
+}
+
+InstancedMesh test_world() {
+  InstancedMesh g;
+  g.meshes = {box_mesh(), fan_mesh()};
+  glm::mat3 rotate =
+      glm::mat3(glm::rotate(glm::mat4(1.0f), 0.65f, glm::normalize(glm::vec3(1, 2, 3))));
+  glm::mat3 shear(1.0f);
+  shear[1][0] = 0.4f;  // x += 0.4 y
+  glm::mat3 mirror(1.0f);
+  mirror[0][0] = -1.0f;
+  g.instances = {
+      {0, make(glm::mat3(1.0f), {0, 0, 0})},
+      {0, make(glm::mat3(glm::vec3(2.0f, 0, 0), glm::vec3(0, 0.5f, 0), glm::vec3(0, 0, 3.0f)),
+               {6, 0, 0})},
+      {0, make(rotate * 1.5f, {-6, 1, 2})},
+      {0, make(mirror * shear, {0, 6, -1})},
+      {1, make(rotate, {0, -6, 0})},
+      {1, make(mirror * glm::mat3(2.0f), {5, -5, 3})},
+      {0, make(glm::mat3(1e-3f), {3, 3, 3})},  // tiny
+  };
+  return g;
+}
+
+TEST(Instances, ChecksNameWhatIsWrong) {
+  InstancedMesh g = test_world();
+  EXPECT_EQ(instancing_problem(g), "");
+  auto problem = [&](auto edit) {
+    InstancedMesh bad = test_world();
+    edit(bad);
+    return instancing_problem(bad);
+  };
+  EXPECT_EQ(problem([](InstancedMesh& b) { b.instances[2].mesh = 7; }),
+            "instance 2 names mesh 7 of 2");
+  EXPECT_EQ(problem([](InstancedMesh& b) { b.instances[1].to_world.linear[2] = glm::vec3(0); }),
+            "instance 1 has a transform that is not invertible");
+  EXPECT_EQ(problem([](InstancedMesh& b) { b.instances[3].to_world.offset.y = NAN; }),
+            "instance 3 has a transform that is not finite");
+  EXPECT_EQ(problem([](InstancedMesh& b) { b.meshes[1].triangles.clear(); }),
+            "mesh 1 has no triangles");
+  EXPECT_EQ(problem([](InstancedMesh& b) { b.instances.clear(); }), "no instances");
+}
+
+TEST(Instances, FlattenPlacesEveryInstanceInWorldSpace) {
+  InstancedMesh g = test_world();
+  EXPECT_EQ(g.unique_triangles(), 12u + 8u);
+  EXPECT_EQ(g.instanced_triangles(), 5u * 12u + 2u * 8u);
+  FlatMesh flat = flatten(g);
+  ASSERT_EQ(flat.mesh.triangle_count(), g.instanced_triangles());
+  ASSERT_EQ(flat.flat_offsets.size(), g.instances.size());
+  EXPECT_EQ(flat.flat_offsets[1], 12u);
+  EXPECT_EQ(flat.flat_offsets[5], 4u * 12u + 8u);
+  const Instance& scaled = g.instances[1];
+  glm::vec3 corner = flat.mesh.vertex(flat.flat_offsets[1] + 0, 0);
+  EXPECT_EQ(corner, scaled.to_world.point(g.meshes[0].vertex(0, 0)));
+  Transform back = inverse(scaled.to_world);
+  glm::vec3 round_trip = back.point(scaled.to_world.point({0.3f, -0.2f, 0.9f}));
+  EXPECT_NEAR(round_trip.x, 0.3f, 1e-6f);
+  EXPECT_NEAR(round_trip.z, 0.9f, 1e-6f);
+}
+
+// Rays from a shell around the world towards random points inside it: the instanced scene and
+// the flattened one find the same triangle at the same t (a ray that lands on an edge shared by
+// two triangles of one mesh may name either, at the same t).
+TEST(Instances, EmbreeInstancesAgreeWithTheFlattenedScene) {
+  InstancedMesh g = test_world();
+  FlatMesh flat = flatten(g);
+  EmbreeScene instanced(g, 1), flattened(flat.mesh, 1);
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  int hits = 0, other_triangle = 0, occluded_checked = 0;
+  for (int i = 0; i < 20000; ++i) {
+    Ray ray;
+    ray.org = glm::vec3(unit(rng), unit(rng), unit(rng)) * 15.0f;
+    glm::vec3 target = glm::vec3(unit(rng), unit(rng), unit(rng)) * 7.0f;
+    ray.dir = target - ray.org;
+    Hit a = instanced.intersect(ray), b = flattened.intersect(ray);
+    ASSERT_EQ(a.hit(), b.hit()) << "ray " << i;
+    if (!a.hit()) {
+      EXPECT_EQ(a.instance, kNoHit);
+      continue;
+    }
+    ++hits;
+    ASSERT_LT(a.instance, g.instances.size());
+    EXPECT_NEAR(a.t, b.t, 1e-4f * b.t) << "ray " << i;
+    uint64_t flat_prim = flat.flat_offsets[a.instance] + a.prim;
+    other_triangle += flat_prim != b.prim;
+    EXPECT_EQ(b.instance, kNoHit) << "a single-level scene names no instance";
+    ray.tmax = b.t * 0.999f;
+    ray.query = Query::AnyHit;
+    EXPECT_EQ(instanced.occluded(ray), flattened.occluded(ray)) << "ray " << i;
+    ++occluded_checked;
+  }
+  EXPECT_GT(hits, 5000) << "the rays must mostly hit for the check to mean something";
+  EXPECT_LE(other_triangle, hits / 500) << "only shared edges may name the other triangle";
+  EXPECT_EQ(occluded_checked, hits);
+}
+
+}  // namespace
+}  // namespace rtsim

@@ -1,0 +1,73 @@
+#include "traces/instances.h"
+
+#include <cmath>
+
+#include <fmt/core.h>
+#include <glm/matrix.hpp>
+
+namespace rtsim {
+
+Transform inverse(const Transform& t) {
+  Transform out;
+  out.linear = glm::inverse(t.linear);
+  out.offset = -(out.linear * t.offset);
+  return out;
+}
+
+uint64_t InstancedMesh::unique_triangles() const {
+  uint64_t n = 0;
+  for (const TriangleMesh& m : meshes) n += m.triangle_count();
+  return n;
+}
+
+uint64_t InstancedMesh::instanced_triangles() const {
+  uint64_t n = 0;
+  for (const Instance& i : instances)
+    n += i.mesh < meshes.size() ? meshes[i.mesh].triangle_count() : 0;
+  return n;
+}
+
+std::string instancing_problem(const InstancedMesh& g) {
+  if (g.instances.empty()) return "no instances";
+  for (size_t m = 0; m < g.meshes.size(); ++m)
+    if (g.meshes[m].triangle_count() == 0) return fmt::format("mesh {} has no triangles", m);
+  for (size_t i = 0; i < g.instances.size(); ++i) {
+    const Instance& inst = g.instances[i];
+    if (inst.mesh >= g.meshes.size())
+      return fmt::format("instance {} names mesh {} of {}", i, inst.mesh, g.meshes.size());
+    const Transform& t = inst.to_world;
+    bool finite =
+        std::isfinite(t.offset.x) && std::isfinite(t.offset.y) && std::isfinite(t.offset.z);
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) finite &= std::isfinite(t.linear[c][r]);
+    if (!finite) return fmt::format("instance {} has a transform that is not finite", i);
+    // Singular (or so nearly that object-space rays would overflow): a flattened instance.
+    float det = glm::determinant(t.linear);
+    float scale = glm::length(t.linear[0]) * glm::length(t.linear[1]) * glm::length(t.linear[2]);
+    if (!(std::fabs(det) > 1e-12f * scale) || scale == 0.0f)
+      return fmt::format("instance {} has a transform that is not invertible", i);
+  }
+  return "";
+}
+
+FlatMesh flatten(const InstancedMesh& g) {
+  FlatMesh out;
+  size_t vertices = 0, triangles = 0;
+  for (const Instance& i : g.instances) {
+    vertices += g.meshes[i.mesh].positions.size();
+    triangles += g.meshes[i.mesh].triangle_count();
+  }
+  out.mesh.positions.reserve(vertices);
+  out.mesh.triangles.reserve(triangles);
+  for (const Instance& i : g.instances) {
+    const TriangleMesh& m = g.meshes[i.mesh];
+    auto base = uint32_t(out.mesh.positions.size());
+    out.flat_offsets.push_back(out.mesh.triangles.size());
+    for (const glm::vec3& p : m.positions) out.mesh.positions.push_back(i.to_world.point(p));
+    for (const auto& tri : m.triangles)
+      out.mesh.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+  }
+  return out;
+}
+
+}  // namespace rtsim

@@ -1,0 +1,56 @@
+// Instanced geometry, as game worlds and two-level ray-tracing hardware have it: unique meshes
+// (bottom level) placed any number of times by instances (top level), each with its own affine
+// transform. An instanced triangle is named by (instance, prim): prim indexes the instance's
+// mesh. Memory holds each unique mesh once; flatten() writes the world-space copy that
+// single-level consumers and the flattened-versus-instanced checks use.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "traces/ray.h"
+
+namespace rtsim {
+
+// world = linear * object + offset.
+struct Transform {
+  glm::mat3 linear{1.0f};
+  glm::vec3 offset{0.0f};
+
+  glm::vec3 point(const glm::vec3& p) const { return linear * p + offset; }
+  glm::vec3 vector(const glm::vec3& v) const { return linear * v; }
+};
+
+// The inverse transform (world to object); the caller checks invertibility first.
+Transform inverse(const Transform& t);
+
+struct Instance {
+  uint32_t mesh = 0;  // index into InstancedMesh::meshes
+  Transform to_world;
+};
+
+struct InstancedMesh {
+  std::vector<TriangleMesh> meshes;  // unique geometry, in object space
+  std::vector<Instance> instances;
+
+  uint64_t unique_triangles() const;
+  uint64_t instanced_triangles() const;  // over every instance
+};
+
+// Why instanced geometry cannot be traced (a mesh index out of range, a mesh without
+// triangles, a transform that is not finite or not invertible, no instance); empty if fine.
+std::string instancing_problem(const InstancedMesh& geometry);
+
+// World-space triangles of every instance, one instance after another: triangle k of instance
+// i is at flat_offsets[i] + k.
+struct FlatMesh {
+  TriangleMesh mesh;
+  std::vector<uint64_t> flat_offsets;  // per instance
+};
+FlatMesh flatten(const InstancedMesh& geometry);
+
+}  // namespace rtsim
