@@ -20,6 +20,13 @@ void add_scene_info_command(CLI::App& app, int& exit_code) {
     fmt::print("triangles    {}\n", scene.triangle_count());
     fmt::print("vertices     {}\n", scene.mesh.positions.size());
     fmt::print("objects      {}\n", scene.object_names.size());
+    const InstancedMesh& inst = scene.instanced;
+    if (inst.instances.empty())
+      fmt::print("instances    none (one flat mesh)\n");
+    else
+      fmt::print("instances    {} of {} unique meshes: {} unique triangles, {} instanced\n",
+                 inst.instances.size(), inst.meshes.size(), inst.unique_triangles(),
+                 inst.instanced_triangles());
     fmt::print("materials    {}\n", scene.materials.size());
     const Bounds& b = scene.bounds;
     fmt::print("bounds       [{:g}, {:g}, {:g}] .. [{:g}, {:g}, {:g}]\n", b.lo.x, b.lo.y, b.lo.z,

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "traces/instances.h"
 #include "traces/ray.h"
 #include "traces/stream.h"
 
@@ -51,6 +52,10 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<SceneCamera> cameras;  // in file order; the first is the one a spec can adopt
   std::vector<SceneLight> lights;
+  // Scene files: the instance structure that `mesh` flattens (each node's mesh reference an
+  // instance; flatten(instanced) gives mesh's triangles in mesh's order). Empty for built-in
+  // scenes, which are one flat mesh.
+  InstancedMesh instanced;
   uint64_t fingerprint = 0;  // mesh_fingerprint(mesh)
   Bounds bounds;
 

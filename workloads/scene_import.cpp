@@ -1,8 +1,9 @@
 // Scene files through assimp: checks the file, imports without post-processing to check the raw
 // vertices, then triangulates and welds, and flattens the node hierarchy into one triangle array
 // (each mesh reference transformed by its node's accumulated matrix, so glTF instances and node
-// transforms come out in world space). Cameras and lights are read before post-processing
-// removes them.
+// transforms come out in world space). The same walk keeps the instance structure: each mesh
+// once in object space, each node's reference to it an instance (Scene::instanced, in the
+// flattened order). Cameras and lights are read before post-processing removes them.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -106,7 +107,8 @@ class Flattener {
   void walk(const aiNode& node, const aiMatrix4x4& parent) {
     aiMatrix4x4 transform = parent * node.mTransformation;
     for (unsigned i = 0; i < node.mNumMeshes; ++i)
-      append(*scene_.mMeshes[node.mMeshes[i]], transform, object_name(node, i));
+      if (append(*scene_.mMeshes[node.mMeshes[i]], transform, object_name(node, i)))
+        add_instance(node.mMeshes[i], transform);
     for (unsigned c = 0; c < node.mNumChildren; ++c) walk(*node.mChildren[c], transform);
   }
 
@@ -124,8 +126,10 @@ class Flattener {
     return it->second;
   }
 
-  // Appends the mesh's triangles and the vertices they use, in order of first use.
-  void append(const aiMesh& mesh, const aiMatrix4x4& transform, const std::string& name) {
+  // Appends the mesh's triangles and the vertices they use, in order of first use, to `into`;
+  // the number of triangles.
+  static size_t append_triangles(const aiMesh& mesh, const aiMatrix4x4& transform,
+                                 TriangleMesh& into) {
     constexpr uint32_t kUnused = ~0u;
     std::vector<uint32_t> remap(mesh.mNumVertices, kUnused);
     size_t added = 0;
@@ -136,19 +140,39 @@ class Flattener {
       for (int k = 0; k < 3; ++k) {
         uint32_t& index = remap[face.mIndices[k]];
         if (index == kUnused) {
-          index = uint32_t(out_.mesh.positions.size());
+          index = uint32_t(into.positions.size());
           aiVector3D p = transform * mesh.mVertices[face.mIndices[k]];
-          out_.mesh.positions.emplace_back(p.x, p.y, p.z);
+          into.positions.emplace_back(p.x, p.y, p.z);
         }
         tri[k] = index;
       }
-      out_.mesh.triangles.push_back(tri);
+      into.triangles.push_back(tri);
       ++added;
     }
-    if (added == 0) return;
+    return added;
+  }
+
+  bool append(const aiMesh& mesh, const aiMatrix4x4& transform, const std::string& name) {
+    size_t added = append_triangles(mesh, transform, out_.mesh);
+    if (added == 0) return false;
     uint32_t material = use_materials_ ? mesh.mMaterialIndex : 0;
     out_.material_ids.insert(out_.material_ids.end(), added, material);
     out_.object_ids.insert(out_.object_ids.end(), added, object_id(name));
+    return true;
+  }
+
+  // The file's mesh reference as an instance: its mesh kept once, in object space.
+  void add_instance(unsigned mesh_index, const aiMatrix4x4& m) {
+    auto [it, inserted] =
+        unique_mesh_.try_emplace(mesh_index, uint32_t(out_.instanced.meshes.size()));
+    if (inserted)
+      append_triangles(*scene_.mMeshes[mesh_index], aiMatrix4x4(),
+                       out_.instanced.meshes.emplace_back());
+    Instance instance;
+    instance.mesh = it->second;
+    instance.to_world.linear = glm::mat3(m.a1, m.b1, m.c1, m.a2, m.b2, m.c2, m.a3, m.b3, m.c3);
+    instance.to_world.offset = {m.a4, m.b4, m.c4};
+    out_.instanced.instances.push_back(instance);
   }
 
   const aiScene& scene_;
@@ -156,6 +180,7 @@ class Flattener {
   bool use_materials_;
   std::string fallback_name_;
   std::unordered_map<std::string, uint32_t> object_ids_;
+  std::unordered_map<unsigned, uint32_t> unique_mesh_;  // assimp mesh -> instanced.meshes
 };
 
 aiMatrix4x4 world_transform(const aiScene& scene, const aiString& node_name) {

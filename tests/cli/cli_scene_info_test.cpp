@@ -15,6 +15,7 @@ TEST(CliSceneInfo, BuiltinGridHasExactlyTheRequestedTriangles) {
   EXPECT_NE(r.out.find("triangles    12345\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("scene        builtin:grid:12345\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("fingerprint  "), std::string::npos);
+  EXPECT_NE(r.out.find("instances    none (one flat mesh)\n"), std::string::npos) << r.out;
 }
 
 TEST(CliSceneInfo, SameSceneSameFingerprint) {
@@ -28,6 +29,9 @@ TEST(CliSceneInfo, SharedCornellBoxLoads) {
   RunResult r = run_rtsim("scene-info " + path);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("triangles    36\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("instances    8 of 8 unique meshes: 36 unique triangles, 36 instanced\n"),
+            std::string::npos)
+      << "each OBJ group is a mesh placed once: " << r.out;
 }
 
 TEST(CliSceneInfo, MissingFileIsOneLineAndExit2) {

@@ -1,5 +1,5 @@
 // glTF 2.0 (.gltf with an embedded buffer, and .glb): node transforms and instancing are applied,
-// nodes name the objects, and metallic-roughness materials with their extensions map directly.
+// the instance structure is kept beside the flattened mesh, nodes name the objects, and metallic-roughness materials with their extensions map directly.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -94,6 +94,22 @@ void expect_scene(const Scene& s) {
   EXPECT_EQ(s.mesh.vertex(1, 0), glm::vec3(10.0f, 0.0f, 2.0f));
   EXPECT_EQ(s.mesh.vertex(1, 1), glm::vec3(12.0f, 0.0f, 2.0f));
   EXPECT_EQ(s.mesh.vertex(2, 2), glm::vec3(-2.0f, 1.0f, -3.0f));
+
+  // The instance structure: "left" and "left_copy" place one mesh twice; flattened, it is the
+  // scene's mesh, triangle for triangle.
+  ASSERT_EQ(s.instanced.instances.size(), 3u);
+  EXPECT_EQ(s.instanced.meshes.size(), 2u);
+  EXPECT_EQ(s.instanced.instances[0].mesh, s.instanced.instances[2].mesh);
+  EXPECT_NE(s.instanced.instances[0].mesh, s.instanced.instances[1].mesh);
+  EXPECT_EQ(s.instanced.unique_triangles(), 2u);
+  EXPECT_EQ(s.instanced.instanced_triangles(), 3u);
+  EXPECT_EQ(s.instanced.instances[1].to_world.linear, glm::mat3(2.0f));
+  EXPECT_EQ(s.instanced.instances[1].to_world.offset, glm::vec3(10.0f, 0.0f, 2.0f));
+  FlatMesh flat = flatten(s.instanced);
+  ASSERT_EQ(flat.mesh.triangle_count(), s.triangle_count());
+  for (size_t t = 0; t < s.triangle_count(); ++t)
+    for (int corner = 0; corner < 3; ++corner)
+      EXPECT_EQ(flat.mesh.vertex(t, corner), s.mesh.vertex(t, corner)) << t << " " << corner;
 
   const Material& metal = s.materials[s.material_ids[0]];
   EXPECT_EQ(metal.name, "red_metal");
