@@ -67,17 +67,9 @@ Split best_split(const std::vector<PrimRef>& refs, uint32_t begin, uint32_t end,
   return best;
 }
 
-}  // namespace
-
-Bvh2 build_binned_sah(const TriangleMesh& mesh, const BvhConfig& config) {
+Bvh2 build_over(std::vector<PrimRef> refs, const BvhConfig& config) {
   Bvh2 bvh;
-  uint32_t n = static_cast<uint32_t>(mesh.triangle_count());
-  std::vector<PrimRef> refs(n);
-  for (uint32_t i = 0; i < n; ++i) {
-    Bounds b;
-    for (int c = 0; c < 3; ++c) b.grow(mesh.vertex(i, c));
-    refs[i] = {b, b.center(), i};
-  }
+  auto n = static_cast<uint32_t>(refs.size());
   bvh.nodes.reserve(2 * size_t(n) + 1);
   bvh.nodes.emplace_back();
   struct Task {
@@ -130,6 +122,24 @@ Bvh2 build_binned_sah(const TriangleMesh& mesh, const BvhConfig& config) {
   bvh.prim_order.resize(n);
   for (uint32_t i = 0; i < n; ++i) bvh.prim_order[i] = refs[i].id;
   return bvh;
+}
+
+}  // namespace
+
+Bvh2 build_binned_sah(const TriangleMesh& mesh, const BvhConfig& config) {
+  std::vector<PrimRef> refs(mesh.triangle_count());
+  for (uint32_t i = 0; i < refs.size(); ++i) {
+    Bounds b;
+    for (int c = 0; c < 3; ++c) b.grow(mesh.vertex(i, c));
+    refs[i] = {b, b.center(), i};
+  }
+  return build_over(std::move(refs), config);
+}
+
+Bvh2 build_binned_sah(const std::vector<Bounds>& boxes, const BvhConfig& config) {
+  std::vector<PrimRef> refs(boxes.size());
+  for (uint32_t i = 0; i < refs.size(); ++i) refs[i] = {boxes[i], boxes[i].center(), i};
+  return build_over(std::move(refs), config);
 }
 
 }  // namespace rtsim

@@ -27,5 +27,7 @@ struct Bvh2 {
 // Builds over every triangle of the mesh (degenerate ones too: they never hit, but they stay
 // in the tree so ids match the scene). Deterministic. Leaves hold at most max_leaf_size.
 Bvh2 build_binned_sah(const TriangleMesh& mesh, const BvhConfig& config);
+// The same over any primitives given by their boxes (a top level over instances).
+Bvh2 build_binned_sah(const std::vector<Bounds>& boxes, const BvhConfig& config);
 
 }  // namespace rtsim

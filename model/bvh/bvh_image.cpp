@@ -63,6 +63,19 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
   require_memory(mesh.triangle_count() * kBvhBuildBytesPerTriangle, "bvh",
                  fmt::format("building a BVH over {} triangles", mesh.triangle_count()),
                  "use a smaller scene");
+  double start = wall_seconds();
+  Bvh2 bvh2 = build_binned_sah(mesh, config);
+  if (on_step) on_step("binned SAH build", wall_seconds() - start);
+  LeafRecords triangles{triangle_stride(config.triangle_format), [&](uint32_t prim, uint8_t* out) {
+                          encode_triangle(config.triangle_format, mesh, prim, out);
+                        }};
+  BvhImage image = encode_bvh_image(bvh2, config, triangles, on_step);
+  set_scene_bounds(mesh, image);
+  return image;
+}
+
+BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafRecords& leaves,
+                          const BvhBuildStep& on_step) {
   double step_start = wall_seconds();
   auto step = [&](const char* name) {
     double now = wall_seconds();
@@ -75,12 +88,9 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
   image.config = config;
   image.node_size = node_stride(config.node_format, config.width);
   image.node_stride = padded_stride(image.node_size, config.node_align);
-  image.triangle_stride = triangle_stride(config.triangle_format);
-  set_scene_bounds(mesh, image);
+  image.triangle_stride = leaves.stride;
 
-  // Build, collapse, cut into treelets, order.
-  Bvh2 bvh2 = build_binned_sah(mesh, config);
-  step("binned SAH build");
+  // Collapse, cut into treelets, order.
   WideBvh wide = collapse_bvh(bvh2, config.width);
   step("collapse");
   TreeletRule rule{image.node_stride, image.triangle_stride, groups, config.treelet_bytes,
@@ -93,7 +103,7 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
 
   // Triangles follow the node order: a node's leaf children, in slot order.
   std::vector<uint32_t> tri_order;
-  tri_order.reserve(mesh.triangle_count());
+  tri_order.reserve(bvh2.prim_order.size());
   std::vector<ChildPlacement> placement(wide.nodes.size());
   for (uint32_t n : order) {
     const WideNode& node = wide.nodes[n];
@@ -122,8 +132,7 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
   }
   image.triangles.assign(size_t(image.triangle_count) * image.triangle_stride, 0);
   for (uint32_t i = 0; i < image.triangle_count; ++i)
-    encode_triangle(config.triangle_format, mesh, tri_order[i],
-                    image.triangles.data() + size_t(i) * image.triangle_stride);
+    leaves.encode(tri_order[i], image.triangles.data() + size_t(i) * image.triangle_stride);
   image.node_base = config.node_base;
   uint64_t nodes_end = image.node_base + image.nodes.size();
   image.triangle_base = (nodes_end + config.region_align - 1) & ~(config.region_align - 1);

@@ -27,6 +27,7 @@ struct BvhBuildStats {
 struct BvhImage {
   BvhConfig config;
   uint32_t node_stride = 0, triangle_stride = 0;  // bytes per record, padding included
+                                                  // (triangle: any leaf record)
   uint32_t node_size = 0;                         // bytes a node fetch reads (no padding)
   uint32_t node_count = 0, triangle_count = 0;
   uint64_t node_base = 0, triangle_base = 0;  // addresses of the two regions
@@ -59,6 +60,19 @@ constexpr uint64_t kBvhBuildBytesPerTriangle = 176;
 
 // Called after each step of a build with its name and host seconds.
 using BvhBuildStep = std::function<void(const char* step, double seconds)>;
+
+struct Bvh2;
+
+// The records leaves point at: triangles, or a top level's instance records.
+struct LeafRecords {
+  uint32_t stride = 0;                                      // bytes per record
+  std::function<void(uint32_t prim, uint8_t* out)> encode;  // writes record `prim`
+};
+
+// Collapses a binary BVH, forms treelets, orders and encodes its nodes and leaf records (the
+// part of build_bvh_image after the binary build). Leaves scene bounds unset.
+BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafRecords& leaves,
+                          const BvhBuildStep& on_step = {});
 
 // Builds, collapses, forms treelets, orders and encodes. Throws InputError (via
 // throw_input_error with place "bvh config") for an invalid config, or naming "bvh" when the

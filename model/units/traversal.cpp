@@ -13,6 +13,7 @@ TraversalCounters& TraversalCounters::operator+=(const TraversalCounters& o) {
   trav_leaves += o.trav_leaves;
   trav_prims += o.trav_prims;
   trav_prim_hits += o.trav_prim_hits;
+  trav_instances += o.trav_instances;
   return *this;
 }
 
@@ -31,12 +32,17 @@ void record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind
 TraversalUnit::TraversalUnit(const BvhImage& image, TraversalConfig config)
     : image_(image), config_(config) {}
 
+TraversalUnit::TraversalUnit(const TwoLevelBvh& bvh, TraversalConfig config)
+    : image_(bvh.top), two_level_(&bvh), config_(config) {}
+
 void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
   s.ray = prepare_ray(ray, image_.scene_extent, config_.box_padding);
   s.query = ray.query;
   s.t_hit = s.ray.tmax;
   s.prim = kNoHit;
   s.u = s.v = 0.0f;
+  s.level = &image_;
+  s.instance = s.hit_instance = kNoHit;
   s.stack.clear();
   s.stack.push_back({0, 0, s.ray.tmin});
   s.max_stack = 1;
@@ -50,23 +56,29 @@ StepResult TraversalUnit::step(TraversalState& s) const {
   while (!s.stack.empty()) {
     StackEntry entry = s.stack.back();
     s.stack.pop_back();
+    if (entry.count == kLeaveInstance) {
+      leave_instance(s);
+      continue;
+    }
     if (entry.tnear > s.t_hit * kSlabFarGrowth) continue;
-    return entry.count == 0 ? visit_node(s, entry) : visit_leaf(s, entry);
+    if (entry.count == 0) return visit_node(s, entry);
+    return two_level_ && s.level == &image_ ? visit_instance(s, entry) : visit_leaf(s, entry);
   }
   s.done = true;
   return {};
 }
 
 StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry) const {
+  const BvhImage& level = *s.level;
   StepResult out{StepKind::Node, static_cast<uint32_t>(s.accesses.size()), 0, 0, 0};
   // Fetch the node.
   s.counters.trav_nodes++;
   if (config_.record_accesses) {
-    record(s, image_.node_address(entry.index), image_.node_size, AccessKind::Node);
+    record(s, level.node_address(entry.index), level.node_size, AccessKind::Node);
     out.access_count = 1;
   }
   NodeView node;
-  decode_node(image_.config.node_format, image_.config.width, image_.node_bytes(entry.index), node);
+  decode_node(level.config.node_format, level.config.width, level.node_bytes(entry.index), node);
   // Test every child box.
   float tnear[kMaxWidth];
   uint32_t hits = intersect_children(s.ray, node, s.t_hit, tnear);
@@ -97,6 +109,7 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
 }
 
 StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry) const {
+  const BvhImage& level = *s.level;
   StepResult out{StepKind::Leaf, static_cast<uint32_t>(s.accesses.size()), 0, 0, 0};
   s.counters.trav_leaves++;
   for (uint32_t i = 0; i < entry.count; ++i) {
@@ -105,12 +118,12 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     s.counters.trav_prims++;
     out.tests++;
     if (config_.record_accesses) {
-      record(s, image_.triangle_address(position), image_.triangle_stride, AccessKind::Triangle);
+      record(s, level.triangle_address(position), level.triangle_stride, AccessKind::Triangle);
       out.access_count++;
     }
     TriangleHit hit;
     uint32_t prim;
-    if (!intersect_triangle(image_.config.triangle_format, s.ray, image_.triangle_bytes(position),
+    if (!intersect_triangle(level.config.triangle_format, s.ray, level.triangle_bytes(position),
                             s.ray.tmin, s.t_hit, hit, prim))
       continue;
     // Keep the hit; the range now ends there.
@@ -118,6 +131,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     out.hits++;
     s.t_hit = hit.t;
     s.prim = prim;
+    s.hit_instance = s.instance;
     s.u = hit.u;
     s.v = hit.v;
     // An any-hit query is answered by its first hit.
@@ -127,6 +141,42 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     }
   }
   return out;
+}
+
+StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& entry) const {
+  StepResult out{StepKind::Instance, static_cast<uint32_t>(s.accesses.size()), 1, 1, 0};
+  // Fetch the instance record.
+  s.counters.trav_instances++;
+  if (config_.record_accesses) {
+    record(s, image_.triangle_address(entry.index), kInstanceRecordBytes, AccessKind::Instance);
+    out.access_count = 1;
+  }
+  InstanceRecord r = read_instance_record(image_, entry.index);
+  const BvhImage& blas = two_level_->bottom[r.blas];
+  // Transform the ray into object space, in the world ray's t units, and enter the BLAS root;
+  // the marker below its entries brings the ray back.
+  Ray object;
+  object.org = r.to_object.point(s.ray.org);
+  object.dir = r.to_object.vector(s.ray.dir);
+  object.tmin = s.ray.tmin;
+  object.tmax = s.t_hit;
+  s.world = s.ray;
+  s.ray = prepare_ray(object, blas.scene_extent, config_.box_padding);
+  s.t_hit = s.ray.tmax;
+  s.level = &blas;
+  s.instance = r.instance;
+  s.stack.push_back({0, kLeaveInstance, 0.0f});
+  s.stack.push_back({0, 0, s.ray.tmin});
+  if (s.stack.size() > s.max_stack) s.max_stack = static_cast<uint32_t>(s.stack.size());
+  return out;
+}
+
+void TraversalUnit::leave_instance(TraversalState& s) const {
+  // Object-space t is world t scaled by a power of two (prepare_ray), so this is exact.
+  s.t_hit = std::ldexp(s.t_hit, s.ray.t_exponent);
+  s.ray = s.world;
+  s.level = &image_;
+  s.instance = kNoHit;
 }
 
 Hit TraversalUnit::result(const TraversalState& s, const Ray& ray) const {
@@ -141,6 +191,7 @@ Hit TraversalUnit::result(const TraversalState& s, const Ray& ray) const {
   hit.u = s.u;
   hit.v = s.v;
   hit.prim = s.prim;
+  hit.instance = s.hit_instance;
   return hit;
 }
 

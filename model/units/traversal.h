@@ -7,12 +7,18 @@
 // Timing assumptions (for the timing model): one node step = one node fetch + one ray-box unit
 // pass + a sort of at most `width` distances; one leaf step = one fetch and one ray-triangle
 // unit pass per triangle. This file itself has no notion of time.
+// Two levels (model/bvh/two_level.h): a top-level leaf is an instance step: one instance record
+// fetch and one pass of the transform unit, which moves the ray into the instance's object
+// space and enters its BLAS at the root; a marker below the BLAS's entries on the stack moves
+// the ray back when they are done. t keeps its meaning across levels (an affine map preserves
+// the ray's parameter), so the closest hit so far bounds both.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/units/prepared_ray.h"
 #include "traces/ray.h"
 
@@ -29,11 +35,12 @@ struct TraversalCounters {
   uint64_t trav_leaves = 0;     // leaf visits
   uint64_t trav_prims = 0;      // ray-triangle tests
   uint64_t trav_prim_hits = 0;  // tests that hit (in range, before later ones shortened it)
+  uint64_t trav_instances = 0;  // instance transforms (two levels: BLAS entries)
 
   TraversalCounters& operator+=(const TraversalCounters& o);
 };
 
-enum class AccessKind : uint8_t { Node, Triangle };
+enum class AccessKind : uint8_t { Node, Triangle, Instance };
 
 struct MemoryAccess {
   uint64_t address = 0;
@@ -41,9 +48,12 @@ struct MemoryAccess {
   AccessKind kind = AccessKind::Node;
 };
 
+// A stack entry whose count is this moves the ray back to world space (two levels).
+constexpr uint32_t kLeaveInstance = ~0u;
+
 struct StackEntry {
-  uint32_t index = 0;  // node position, or first triangle position of a leaf
-  uint32_t count = 0;  // triangles of a leaf; 0 for a node
+  uint32_t index = 0;  // node position, or first triangle (instance record) position of a leaf
+  uint32_t count = 0;  // triangles of a leaf; 0 for a node; kLeaveInstance
   float tnear = 0.0f;  // where the ray enters the box (prepared-ray units)
 };
 
@@ -55,6 +65,11 @@ struct TraversalState {
   float t_hit = 0.0f;      // closest hit so far, or tmax (prepared-ray units)
   uint32_t prim = kNoHit;  // triangle hit (also for any-hit queries)
   float u = 0.0f, v = 0.0f;
+  // Two levels: the level walked now, the world-space ray while in a BLAS, the instance being
+  // walked and the one hit.
+  const BvhImage* level = nullptr;
+  PreparedRay world;
+  uint32_t instance = kNoHit, hit_instance = kNoHit;
   std::vector<StackEntry> stack;
   uint32_t max_stack = 0;  // deepest the stack got, in entries
   TraversalCounters counters;
@@ -62,19 +77,21 @@ struct TraversalState {
   bool done = true;
 };
 
-enum class StepKind : uint8_t { Node, Leaf, Done };
+enum class StepKind : uint8_t { Node, Leaf, Instance, Done };
 
 struct StepResult {
   StepKind kind = StepKind::Done;
   uint32_t first_access = 0;  // this step's fetches: state.accesses[first, first + count)
   uint32_t access_count = 0;
-  uint32_t tests = 0;  // boxes (node) or triangles (leaf) tested
+  uint32_t tests = 0;  // boxes (node) or triangles (leaf) tested; 1 transform (instance)
   uint32_t hits = 0;   // boxes entered, or triangles hit
 };
 
 class TraversalUnit {
-public:
+ public:
   explicit TraversalUnit(const BvhImage& image, TraversalConfig config = {});
+  // Two levels: starts at the top level; hits name the instance and its mesh's triangle.
+  explicit TraversalUnit(const TwoLevelBvh& bvh, TraversalConfig config = {});
 
   // Starts a ray: the root node is the first thing on the stack.
   void begin(TraversalState& state, const Ray& ray) const;
@@ -88,11 +105,14 @@ public:
   const BvhImage& image() const { return image_; }
   const TraversalConfig& config() const { return config_; }
 
-private:
+ private:
   StepResult visit_node(TraversalState& state, const StackEntry& entry) const;
   StepResult visit_leaf(TraversalState& state, const StackEntry& entry) const;
+  StepResult visit_instance(TraversalState& state, const StackEntry& entry) const;
+  void leave_instance(TraversalState& state) const;
 
-  const BvhImage& image_;
+  const BvhImage& image_;  // the only level, or the top one
+  const TwoLevelBvh* two_level_ = nullptr;
   TraversalConfig config_;
 };
 

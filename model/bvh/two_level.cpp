@@ -1,0 +1,107 @@
+#include "model/bvh/two_level.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "model/bvh/binned_sah.h"
+#include "traces/error.h"
+
+namespace rtsim {
+namespace {
+
+uint64_t align_up(uint64_t address, uint64_t align) {
+  return (address + align - 1) / align * align;
+}
+
+// The first free address after an image, aligned for the next region.
+uint64_t image_end(const BvhImage& image) {
+  return align_up(image.triangle_base + image.triangles.size(), image.config.region_align);
+}
+
+Bounds world_box(const Bounds& object, const Transform& to_world) {
+  Bounds out;
+  for (int corner = 0; corner < 8; ++corner)
+    out.grow(to_world.point({corner & 1 ? object.hi.x : object.lo.x,
+                             corner & 2 ? object.hi.y : object.lo.y,
+                             corner & 4 ? object.hi.z : object.lo.z}));
+  return out;
+}
+
+void encode_instance_record(const InstanceRecord& r, uint8_t* out) {
+  float xfm[12];
+  for (int c = 0; c < 3; ++c)
+    for (int row = 0; row < 3; ++row) xfm[c * 3 + row] = r.to_object.linear[c][row];
+  for (int row = 0; row < 3; ++row) xfm[9 + row] = r.to_object.offset[row];
+  std::memcpy(out, xfm, sizeof xfm);
+  std::memcpy(out + 48, &r.blas, 4);
+  std::memcpy(out + 52, &r.instance, 4);
+}
+
+}  // namespace
+
+uint64_t TwoLevelBvh::total_bytes() const {
+  uint64_t bytes = top.total_bytes();
+  for (const BvhImage& b : bottom) bytes += b.total_bytes();
+  return bytes;
+}
+
+InstanceRecord read_instance_record(const BvhImage& top, uint32_t position) {
+  const uint8_t* in = top.triangle_bytes(position);
+  float xfm[12];
+  std::memcpy(xfm, in, sizeof xfm);
+  InstanceRecord r;
+  for (int c = 0; c < 3; ++c)
+    for (int row = 0; row < 3; ++row) r.to_object.linear[c][row] = xfm[c * 3 + row];
+  for (int row = 0; row < 3; ++row) r.to_object.offset[row] = xfm[9 + row];
+  std::memcpy(&r.blas, in + 48, 4);
+  std::memcpy(&r.instance, in + 52, 4);
+  return r;
+}
+
+TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& config,
+                                const BvhBuildStep& on_step) {
+  std::string problem = validate(config);
+  if (!problem.empty()) throw_input_error("bvh config", "", problem);
+  problem = instancing_problem(geometry);
+  if (!problem.empty()) throw_input_error("instances", "", problem);
+  TwoLevelBvh out;
+  // Top level: one instance per leaf, so that each leaf is one transform.
+  BvhConfig top_config = config;
+  top_config.max_leaf_size = 1;
+  std::vector<Bounds> mesh_boxes;
+  for (const TriangleMesh& mesh : geometry.meshes) {
+    Bounds b;
+    for (const glm::vec3& p : mesh.positions) b.grow(p);
+    mesh_boxes.push_back(b);
+  }
+  std::vector<Bounds> boxes;
+  std::vector<InstanceRecord> records;
+  for (size_t i = 0; i < geometry.instances.size(); ++i) {
+    const Instance& inst = geometry.instances[i];
+    boxes.push_back(world_box(mesh_boxes[inst.mesh], inst.to_world));
+    records.push_back({inverse(inst.to_world), inst.mesh, uint32_t(i)});
+  }
+  Bvh2 top2 = build_binned_sah(boxes, top_config);
+  LeafRecords instance_records{kInstanceRecordBytes, [&](uint32_t prim, uint8_t* out) {
+                                 encode_instance_record(records[prim], out);
+                               }};
+  out.top = encode_bvh_image(top2, top_config, instance_records, on_step);
+  Bounds world;
+  for (const Bounds& b : boxes) world.grow(b);
+  out.top.scene_lo = world.lo;
+  out.top.scene_hi = world.hi;
+  glm::vec3 m = glm::max(glm::abs(world.lo), glm::abs(world.hi));
+  out.top.scene_extent = std::max({m.x, m.y, m.z});
+  // Bottom levels, one after another in the address space.
+  uint64_t next = image_end(out.top);
+  for (const TriangleMesh& mesh : geometry.meshes) {
+    BvhConfig bottom_config = config;
+    bottom_config.node_base = next;
+    out.bottom.push_back(build_bvh_image(mesh, bottom_config, on_step));
+    next = image_end(out.bottom.back());
+  }
+  return out;
+}
+
+}  // namespace rtsim
