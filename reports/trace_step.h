@@ -20,9 +20,9 @@ struct TraceRequest {
   std::string workload;    // spec file (.toml) or built-in scene name
   std::string resolution;  // "WxH" or "" (the spec's)
   uint32_t frames = 0;     // 0: the spec's
-  std::optional<uint64_t> seed;
-  std::string scene;                // replaces the spec's scene; "" keeps it
-  std::string camera, look_at, up;  // "X,Y,Z", or "" for the spec's
+  std::optional<uint64_t> seed{};
+  std::string scene{};                    // replaces the spec's scene; "" keeps it
+  std::string camera{}, look_at{}, up{};  // "X,Y,Z", or "" for the spec's
 };
 
 struct TraceOutcome {

@@ -13,14 +13,15 @@ struct Check {
   std::string id;             // suite.name, e.g. "ladder.l1_hit"
   std::string suite;          // closed_form, published, presets
   std::string title;          // what it checks, one line
-  std::string source;         // formula, paper (table or figure) or datasheet
-  std::string unit;           // of expected, lo, hi and measured
+  std::string source{};       // formula, paper (table or figure) or datasheet
+  std::string unit{};         // of expected, lo, hi and measured
   double expected = NAN;      // the closed form or the published figure (NaN: a band only)
   double lo = NAN, hi = NAN;  // pass band, inclusive; NaN: a figure reported, not judged
   double measured = NAN;
-  std::string detail;   // how measured: the runs and the counters
-  std::string look_at;  // where to look when it fails
-  std::string skipped;  // not run, and why (a missing scene); such a check neither passes nor fails
+  std::string detail{};   // how measured: the runs and the counters
+  std::string look_at{};  // where to look when it fails
+  std::string
+      skipped{};  // not run, and why (a missing scene); such a check neither passes nor fails
 
   bool ran() const { return skipped.empty(); }
   bool judged() const { return ran() && !std::isnan(lo); }

@@ -26,9 +26,9 @@ void apply_overrides(WorkloadSpec& spec, const SpecOverrides& overrides);
 struct OverrideText {
   std::string resolution;  // "WxH"
   uint32_t frames = 0;
-  std::optional<uint64_t> seed;
-  std::string scene;
-  std::string camera, look_at, up;  // "X,Y,Z"
+  std::optional<uint64_t> seed{};
+  std::string scene{};
+  std::string camera{}, look_at{}, up{};  // "X,Y,Z"
 };
 // InputError naming the option if a value is malformed.
 SpecOverrides make_overrides(const OverrideText& text);
