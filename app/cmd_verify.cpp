@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "reports/phase_progress.h"
 #include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/config/hw_config.h"
 #include "model/units/traversal.h"
 #include "model/verify/verifier.h"
@@ -28,6 +29,7 @@ struct VerifyOptions {
   std::string stream, scene, config;
   std::vector<std::string> sets;
   bool bvh_flags = false;  // a BVH option was given
+  bool instances = false;  // the two-level BVH over the scene file's instances
   size_t max_print = 10;
   double t_tolerance = 1e-5;
   BvhConfig bvh;
@@ -63,6 +65,17 @@ void print_bvh(const BvhImage& image) {
         treelet_budget_name(image.config.treelet_budget));
 }
 
+void print_two_level(const TwoLevelBvh& bvh, const InstancedMesh& geometry) {
+  fmt::print("model      {}, two levels\n", describe(bvh.top.config));
+  uint64_t bottom_nodes = 0;
+  for (const BvhImage& b : bvh.bottom) bottom_nodes += b.node_count;
+  fmt::print(
+      "bvh        top: {} nodes over {} instances; bottom: {} meshes, {} nodes over {} unique "
+      "triangles ({} instanced); {:.2f} MiB\n",
+      bvh.top.node_count, geometry.instances.size(), bvh.bottom.size(), bottom_nodes,
+      geometry.unique_triangles(), geometry.instanced_triangles(), bvh.total_bytes() / 1048576.0);
+}
+
 void print_report(const VerifyReport& r) {
   fmt::print("\n{:<18} {:>10} {:>10} {:>10}\n", "ray type", "rays", "agree", "mismatch");
   for (int t = 0; t < kRayTypeCount; ++t) {
@@ -82,9 +95,10 @@ void print_report(const VerifyReport& r) {
   double n = r.rays ? double(r.rays) : 1.0;
   fmt::print(
       "\nper ray    trav_nodes {:.2f}  trav_leaves {:.2f}  trav_prims {:.2f}  "
-      "trav_prim_hits {:.2f}  fetches {:.2f}  bytes {:.1f}\n",
+      "trav_prim_hits {:.2f}  trav_instances {:.2f}  fetches {:.2f}  bytes {:.1f}\n",
       r.counters.trav_nodes / n, r.counters.trav_leaves / n, r.counters.trav_prims / n,
-      r.counters.trav_prim_hits / n, r.accesses / n, r.access_bytes / n);
+      r.counters.trav_prim_hits / n, r.counters.trav_instances / n, r.accesses / n,
+      r.access_bytes / n);
   fmt::print("hits       model {}  embree {}\n", r.model_hits, r.embree_hits);
 }
 
@@ -124,18 +138,38 @@ int run_verify(const VerifyOptions& o) {
              header.workload);
   fmt::print("scene      {} ({} triangles, fingerprint {:016x})\n", scene.source,
              scene.triangle_count(), scene.fingerprint);
-  BvhImage image = reports::build_bvh_with_progress(scene.mesh, bvh, false);
-  print_bvh(image);
-  EmbreeScene embree(scene.mesh);
-  TraversalUnit model(image);
   ArbiterConfig arbiter;
   arbiter.t_tolerance = o.t_tolerance;
-  Verifier verifier(scene.mesh, model, embree, arbiter, o.max_print);
+  EmbreeScene flat_embree(scene.mesh);
+  // One level: the flat mesh, both ways. Two: the two-level BVH against Embree's instances,
+  // judged on the flat mesh.
+  std::unique_ptr<BvhImage> image;
+  std::unique_ptr<TwoLevelBvh> two_level;
+  std::unique_ptr<EmbreeScene> instanced_embree;
+  std::unique_ptr<TraversalUnit> model;
+  std::unique_ptr<Verifier> verifier;
+  if (o.instances) {
+    if (scene.instanced.instances.empty())
+      throw_input_error(scene.source, "",
+                        "has no instance structure (a built-in scene is one flat mesh); "
+                        "--instances needs a scene file");
+    two_level = std::make_unique<TwoLevelBvh>(build_two_level_bvh(scene.instanced, bvh));
+    print_two_level(*two_level, scene.instanced);
+    instanced_embree = std::make_unique<EmbreeScene>(scene.instanced);
+    model = std::make_unique<TraversalUnit>(*two_level);
+    verifier = std::make_unique<Verifier>(scene.mesh, flat_offsets(scene.instanced), flat_embree,
+                                          *model, *instanced_embree, arbiter, o.max_print);
+  } else {
+    image = std::make_unique<BvhImage>(reports::build_bvh_with_progress(scene.mesh, bvh, false));
+    print_bvh(*image);
+    model = std::make_unique<TraversalUnit>(*image);
+    verifier = std::make_unique<Verifier>(scene.mesh, *model, flat_embree, arbiter, o.max_print);
+  }
   // Stream the rays in batches: constant memory for any stream length.
   std::vector<Ray> batch;
   while (reader.next_batch(batch, 65536) > 0)
-    for (const Ray& ray : batch) verifier.check(ray);
-  const VerifyReport& report = verifier.report();
+    for (const Ray& ray : batch) verifier->check(ray);
+  const VerifyReport& report = verifier->report();
   print_report(report);
   print_examples(report.examples, "mismatching");
   print_examples(report.unexplained_examples, "unexplained");
@@ -195,6 +229,9 @@ void add_verify_command(CLI::App& app, int& exit_code) {
                   "Verify the BVH this hardware config simulates (.toml; configs/)");
   cmd->add_option("--set", options->sets, "Override a config key: --set bvh.width=4")
       ->allow_extra_args(false);
+  cmd->add_flag("--instances", options->instances,
+                "Check the two-level BVH (top level over the scene file's instances, one bottom "
+                "level per unique mesh) against Embree's instances");
   add_bvh_options(*cmd, options->bvh);
   cmd->callback([cmd, options, &exit_code] {
     for (const char* flag : {"--width", "--format", "--triangles", "--layout", "--treelet-bytes",

@@ -50,8 +50,19 @@ std::string instancing_problem(const InstancedMesh& g) {
   return "";
 }
 
+std::vector<uint64_t> flat_offsets(const InstancedMesh& g) {
+  std::vector<uint64_t> out;
+  uint64_t next = 0;
+  for (const Instance& i : g.instances) {
+    out.push_back(next);
+    next += g.meshes[i.mesh].triangle_count();
+  }
+  return out;
+}
+
 FlatMesh flatten(const InstancedMesh& g) {
   FlatMesh out;
+  out.flat_offsets = flat_offsets(g);
   size_t vertices = 0, triangles = 0;
   for (const Instance& i : g.instances) {
     vertices += g.meshes[i.mesh].positions.size();
@@ -62,7 +73,6 @@ FlatMesh flatten(const InstancedMesh& g) {
   for (const Instance& i : g.instances) {
     const TriangleMesh& m = g.meshes[i.mesh];
     auto base = uint32_t(out.mesh.positions.size());
-    out.flat_offsets.push_back(out.mesh.triangles.size());
     for (const glm::vec3& p : m.positions) out.mesh.positions.push_back(i.to_world.point(p));
     for (const auto& tri : m.triangles)
       out.mesh.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});

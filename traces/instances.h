@@ -52,5 +52,7 @@ struct FlatMesh {
   std::vector<uint64_t> flat_offsets;  // per instance
 };
 FlatMesh flatten(const InstancedMesh& geometry);
+// Just the offsets: where each instance's triangles start in the flattened order.
+std::vector<uint64_t> flat_offsets(const InstancedMesh& geometry);
 
 }  // namespace rtsim

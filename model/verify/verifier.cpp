@@ -1,6 +1,7 @@
 #include "model/verify/verifier.h"
 
 #include <cmath>
+#include <utility>
 
 namespace rtsim {
 
@@ -8,10 +9,27 @@ Verifier::Verifier(const TriangleMesh& mesh, const TraversalUnit& model, const E
                    ArbiterConfig config, size_t max_examples)
     : model_(model), embree_(embree), arbiter_(mesh, embree, config), max_examples_(max_examples) {}
 
+Verifier::Verifier(const TriangleMesh& flat_mesh, std::vector<uint64_t> flat_offsets,
+                   const EmbreeScene& flat_embree, const TraversalUnit& model,
+                   const EmbreeScene& embree, ArbiterConfig config, size_t max_examples)
+    : model_(model),
+      flat_offsets_(std::move(flat_offsets)),
+      embree_(embree),
+      arbiter_(flat_mesh, flat_embree, config),
+      max_examples_(max_examples) {}
+
+uint32_t Verifier::flat_prim(uint32_t instance, uint32_t prim) const {
+  if (flat_offsets_.empty() || prim == kNoHit || prim == kAnyPrim || instance == kNoHit)
+    return prim;
+  return uint32_t(flat_offsets_[instance] + prim);
+}
+
 bool Verifier::check(const Ray& ray) {
   Hit model = model_.trace(state_, ray);
   Hit embree = embree_.trace(ray);
-  uint32_t model_prim = state_.prim;
+  model.prim = flat_prim(model.instance, model.prim);
+  embree.prim = flat_prim(embree.instance, embree.prim);
+  uint32_t model_prim = flat_prim(state_.hit_instance, state_.prim);
   float model_t = std::ldexp(state_.t_hit, state_.ray.t_exponent);
   int type = static_cast<int>(ray.type);
   report_.rays++;

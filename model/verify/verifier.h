@@ -39,16 +39,27 @@ struct VerifyReport {
 };
 
 class Verifier {
-public:
+ public:
   Verifier(const TriangleMesh& mesh, const TraversalUnit& model, const EmbreeScene& embree,
+           ArbiterConfig config = {}, size_t max_examples = 10);
+  // Two levels: the model (a two-level traversal unit) and the reference (Embree over the
+  // instances) name hits by instance and triangle of its mesh; flat_offsets (traces/
+  // instances.h) maps them to the flattened mesh, on which the arbiter judges with
+  // flat_embree, Embree over that mesh.
+  Verifier(const TriangleMesh& flat_mesh, std::vector<uint64_t> flat_offsets,
+           const EmbreeScene& flat_embree, const TraversalUnit& model, const EmbreeScene& embree,
            ArbiterConfig config = {}, size_t max_examples = 10);
 
   // Traces one ray both ways and records the outcome; returns true if they agree.
   bool check(const Ray& ray);
   const VerifyReport& report() const { return report_; }
 
-private:
+ private:
+  // A hit named by instance and triangle, as the flattened mesh's triangle.
+  uint32_t flat_prim(uint32_t instance, uint32_t prim) const;
+
   const TraversalUnit& model_;
+  std::vector<uint64_t> flat_offsets_;  // two levels; empty for one
   const EmbreeScene& embree_;
   Arbiter arbiter_;
   size_t max_examples_;

@@ -7,6 +7,7 @@
 
 #include "model/bvh/two_level.h"
 #include "model/units/traversal.h"
+#include "model/verify/verifier.h"
 #include "model_test_util.h"
 #include "tests/instanced_world.h"
 #include "traces/embree_scene.h"
@@ -99,6 +100,31 @@ TEST(TwoLevel, TraversalFindsWhatEmbreeInstancesAndTheFlatSceneFind) {
     EXPECT_LE(other_triangle, hits / 500) << "only shared edges may name the other triangle";
     EXPECT_GT(transforms, hits) << "rays enter instances they miss, too";
   }
+}
+
+// The verifier of `rtsim verify --instances`: hits named by instance and triangle, judged on
+// the flattened mesh; transformed instances leave nothing unexplained.
+TEST(TwoLevel, VerifierJudgesInstancedHitsOnTheFlatMesh) {
+  InstancedMesh g = test::instanced_world();
+  FlatMesh flat = flatten(g);
+  EmbreeScene instanced(g, 1), flat_embree(flat.mesh, 1);
+  TwoLevelBvh bvh = build_two_level_bvh(g, BvhConfig{});
+  TraversalUnit unit(bvh);
+  Verifier verifier(flat.mesh, flat.flat_offsets, flat_embree, unit, instanced);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit_range(-1.0f, 1.0f);
+  for (int i = 0; i < 3000; ++i) {
+    Ray ray;
+    ray.org = glm::vec3(unit_range(rng), unit_range(rng), unit_range(rng)) * 15.0f;
+    ray.dir = glm::vec3(unit_range(rng), unit_range(rng), unit_range(rng)) * 7.0f - ray.org;
+    ray.query = i % 3 == 0 ? Query::AnyHit : Query::ClosestHit;
+    verifier.check(ray);
+  }
+  const VerifyReport& r = verifier.report();
+  EXPECT_EQ(r.unexplained(), 0u);
+  EXPECT_GE(r.agree, r.rays - r.rays / 500);
+  EXPECT_GT(r.model_hits, 500u) << "the rays must mostly hit for the check to mean something";
+  EXPECT_GT(r.counters.trav_instances, r.model_hits);
 }
 
 TEST(TwoLevel, ARayThatMissesEveryInstanceBoxTransformsNothing) {

@@ -108,6 +108,34 @@ TEST_F(VerifyCli, BadInputExitsTwo) {
   EXPECT_NE(r.err.find("max_leaf_size"), std::string::npos) << r.err;
 }
 
+TEST_F(VerifyCli, InstancesNeedASceneFile) {
+  auto r = test::run_rtsim("verify " + stream_ + " --instances");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--instances needs a scene file"), std::string::npos) << r.err;
+  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+}
+
+// The two-level BVH over a scene file's instances (Sponza: 34 objects, each a mesh placed
+// once), against Embree's instances: every ray agrees or is explained.
+TEST(VerifyCliInstances, TwoLevelSponzaAgreesWithEmbreeInstances) {
+  std::string sponza = std::string(RTSIM_SHARED_SCENES) + "/sponza-dabrovic/sponza.obj";
+  if (!std::filesystem::exists(sponza)) GTEST_SKIP() << "../shared/scenes is absent: " << sponza;
+  std::string stream = temp_path("sponza.rays");
+  auto traced =
+      test::run_rtsim("trace pica --scene " + sponza + " --resolution 96x54 -q -o " + stream);
+  ASSERT_EQ(traced.exit_code, 0) << traced.err;
+  for (std::string format : {"aabb32", "cwbvh8"}) {
+    auto r = test::run_rtsim("verify " + stream + " --instances --format " + format);
+    EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("two levels"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("top: "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("over 34 instances; bottom: 34 meshes"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("unexplained                 0"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("trav_instances 0.00"), std::string::npos) << r.out;
+  }
+  std::remove(stream.c_str());
+}
+
 // A one-ray stream of cornell whose float at byte `field` of the ray record is `value`, with
 // its chunk CRC fixed up, so that only the ray itself is wrong. Returns the record's offset.
 uint64_t write_patched_ray_stream(const std::string& path, size_t field, float value) {
