@@ -3,14 +3,17 @@
 #include <cmath>
 
 #include <fmt/core.h>
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 namespace rtsim {
 
 Transform inverse(const Transform& t) {
+  // In double, rounded once: the inverse of a well-conditioned fp32 matrix to fp32 accuracy.
+  glm::dmat3 linear = glm::inverse(glm::dmat3(t.linear));
   Transform out;
-  out.linear = glm::inverse(t.linear);
-  out.offset = -(out.linear * t.offset);
+  out.linear = glm::mat3(linear);
+  out.offset = glm::vec3(-(linear * glm::dvec3(t.offset)));
   return out;
 }
 
@@ -41,10 +44,12 @@ std::string instancing_problem(const InstancedMesh& g) {
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) finite &= std::isfinite(t.linear[c][r]);
     if (!finite) return fmt::format("instance {} has a transform that is not finite", i);
-    // Singular (or so nearly that object-space rays would overflow): a flattened instance.
-    float det = glm::determinant(t.linear);
-    float scale = glm::length(t.linear[0]) * glm::length(t.linear[1]) * glm::length(t.linear[2]);
-    if (!(std::fabs(det) > 1e-12f * scale) || scale == 0.0f)
+    // Singular, or so skewed (|det| below 1e-6 of the columns' lengths' product) that an fp32
+    // inverse and the boxes' padding would not hold: refused.
+    glm::dmat3 linear(t.linear);
+    double det = glm::determinant(linear);
+    double scale = glm::length(linear[0]) * glm::length(linear[1]) * glm::length(linear[2]);
+    if (!(std::fabs(det) > 1e-6 * scale) || scale == 0.0)
       return fmt::format("instance {} has a transform that is not invertible", i);
   }
   return "";

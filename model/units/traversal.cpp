@@ -134,8 +134,9 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     s.hit_instance = s.instance;
     s.u = hit.u;
     s.v = hit.v;
-    // An any-hit query is answered by its first hit.
+    // An any-hit query is answered by its first hit (and ends in world space).
     if (s.query == Query::AnyHit) {
+      if (s.instance != kNoHit) leave_instance(s);
       s.stack.clear();
       break;
     }
@@ -144,7 +145,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
 }
 
 StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& entry) const {
-  StepResult out{StepKind::Instance, static_cast<uint32_t>(s.accesses.size()), 1, 1, 0};
+  StepResult out{StepKind::Instance, static_cast<uint32_t>(s.accesses.size()), 0, 1, 0};
   // Fetch the instance record.
   s.counters.trav_instances++;
   if (config_.record_accesses) {
@@ -161,6 +162,7 @@ StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& en
   object.tmin = s.ray.tmin;
   object.tmax = s.t_hit;
   s.world = s.ray;
+  s.world_t_hit = s.t_hit;
   s.ray = prepare_ray(object, blas.scene_extent, config_.box_padding);
   s.t_hit = s.ray.tmax;
   s.level = &blas;
@@ -172,8 +174,10 @@ StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& en
 }
 
 void TraversalUnit::leave_instance(TraversalState& s) const {
-  // Object-space t is world t scaled by a power of two (prepare_ray), so this is exact.
-  s.t_hit = std::ldexp(s.t_hit, s.ray.t_exponent);
+  // A hit in the instance moves t (object t is world t scaled by a power of two in prepare_ray:
+  // exact); without one, the world's t stands as it was, also where the scaling overflowed.
+  bool hit_here = s.hit_instance == s.instance;  // each instance is entered at most once
+  s.t_hit = hit_here ? std::ldexp(s.t_hit, s.ray.t_exponent) : s.world_t_hit;
   s.ray = s.world;
   s.level = &image_;
   s.instance = kNoHit;

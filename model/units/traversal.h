@@ -69,6 +69,7 @@ struct TraversalState {
   // walked and the one hit.
   const BvhImage* level = nullptr;
   PreparedRay world;
+  float world_t_hit = 0.0f;  // the closest hit so far when the instance was entered
   uint32_t instance = kNoHit, hit_instance = kNoHit;
   std::vector<StackEntry> stack;
   uint32_t max_stack = 0;  // deepest the stack got, in entries

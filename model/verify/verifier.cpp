@@ -1,6 +1,7 @@
 #include "model/verify/verifier.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <utility>
 
 namespace rtsim {
@@ -16,7 +17,10 @@ Verifier::Verifier(const TriangleMesh& flat_mesh, std::vector<uint64_t> flat_off
       flat_offsets_(std::move(flat_offsets)),
       embree_(embree),
       arbiter_(flat_mesh, flat_embree, config),
-      max_examples_(max_examples) {}
+      max_examples_(max_examples) {
+  if (flat_mesh.triangle_count() >= kAnyPrim)
+    throw std::invalid_argument("Verifier: more flattened triangles than 32-bit ids can name");
+}
 
 uint32_t Verifier::flat_prim(uint32_t instance, uint32_t prim) const {
   if (flat_offsets_.empty() || prim == kNoHit || prim == kAnyPrim || instance == kNoHit)

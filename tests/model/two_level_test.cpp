@@ -43,6 +43,7 @@ TEST(TwoLevel, HoldsUniqueGeometryOnceInDisjointRegions) {
     EXPECT_EQ(r.blas, g.instances[r.instance].mesh);
     glm::vec3 back = r.to_object.point(g.instances[r.instance].to_world.point({0.5f, -0.25f, 1}));
     EXPECT_NEAR(back.x, 0.5f, 1e-4f);
+    EXPECT_NEAR(back.y, -0.25f, 1e-4f);
     EXPECT_NEAR(back.z, 1.0f, 1e-4f);
   }
   EXPECT_EQ(std::count(seen.begin(), seen.end(), true), long(g.instances.size()));
@@ -153,6 +154,43 @@ TEST(TwoLevel, ARayThatMissesEveryInstanceBoxTransformsNothing) {
   ASSERT_TRUE(hit.hit());
   EXPECT_EQ(hit.instance, 0u);
   EXPECT_FLOAT_EQ(hit.t, 0.8f * 0x1p100f);
+}
+
+// An instance scaled by 2^-40: its object-space direction is beyond 2^32, so the BLAS's ray
+// setup rescales it and t must come back through the exponent; an any-hit query that ends in
+// it ends in world space; without an access list an instance step names no fetch.
+TEST(TwoLevel, AnInstanceScaledBy2ToTheMinus40) {
+  InstancedMesh g;
+  g.meshes = {test::box_mesh()};
+  g.instances = {{0, test::make(glm::mat3(0x1p-40f), {0.0f, 0.0f, 0.0f})},
+                 {0, test::make(glm::mat3(1.0f), {0.0f, 0.0f, -10.0f})}};
+  TwoLevelBvh bvh = build_two_level_bvh(g, BvhConfig{});
+  TraversalUnit unit(bvh);
+  TraversalState s;
+  Ray ray = test::ray_to({0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f});
+  Hit hit = unit.trace(s, ray);
+  ASSERT_TRUE(hit.hit());
+  EXPECT_EQ(hit.instance, 0u) << "the tiny box, in front of the big one";
+  EXPECT_FLOAT_EQ(hit.t, 1.0f - 0x1p-40f);
+  EXPECT_EQ(s.level, &bvh.top);
+  ray.query = Query::AnyHit;
+  hit = unit.trace(s, ray);
+  EXPECT_EQ(hit.prim, kAnyPrim);
+  EXPECT_EQ(s.level, &bvh.top) << "an any-hit query ends in world space";
+  EXPECT_EQ(s.instance, kNoHit);
+  EXPECT_EQ(s.ray.t_exponent, 0);
+  // Past the tiny box (its z range is +-2^-40), the big one answers, at world t.
+  ray = test::ray_to({5.0f, 0.0f, 1.0f}, {5.0f, 0.0f, -20.0f});
+  ray.dir = glm::vec3(-5.0f, 0.0f, -11.0f);
+  hit = unit.trace(s, ray);
+  ASSERT_TRUE(hit.hit());
+  EXPECT_EQ(hit.instance, 1u);
+  TraversalConfig quiet;
+  quiet.record_accesses = false;
+  TraversalUnit unrecorded(bvh, quiet);
+  unrecorded.begin(s, test::ray_to({0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, 0.0f}));
+  for (StepResult r = unrecorded.step(s); r.kind != StepKind::Done; r = unrecorded.step(s))
+    EXPECT_EQ(r.access_count, 0u) << "no access list, no fetch named in it";
 }
 
 }  // namespace
