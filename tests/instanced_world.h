@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -62,6 +63,16 @@ inline InstancedMesh instanced_world() {
       {0, make(glm::mat3(1e-3f), {3, 3, 3})},  // tiny
   };
   return g;
+}
+
+// A ray from the box of +-15 around the world towards a random point within +-7 of its centre.
+inline Ray world_ray(std::mt19937& rng) {
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  Ray ray;
+  ray.org = glm::vec3(unit(rng), unit(rng), unit(rng)) * 15.0f;
+  glm::vec3 target = glm::vec3(unit(rng), unit(rng), unit(rng)) * 7.0f;
+  ray.dir = target - ray.org;
+  return ray;
 }
 
 }  // namespace rtsim::test

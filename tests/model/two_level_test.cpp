@@ -73,12 +73,9 @@ TEST(TwoLevel, TraversalFindsWhatEmbreeInstancesAndTheFlatSceneFind) {
     TraversalUnit unit(bvh), flat_unit(flat_image);
     TraversalState s, flat_s;
     std::mt19937 rng(29);
-    std::uniform_real_distribution<float> unit_range(-1.0f, 1.0f);
     int hits = 0, other_triangle = 0, transforms = 0;
     for (int i = 0; i < 4000; ++i) {
-      Ray ray;
-      ray.org = glm::vec3(unit_range(rng), unit_range(rng), unit_range(rng)) * 15.0f;
-      ray.dir = glm::vec3(unit_range(rng), unit_range(rng), unit_range(rng)) * 7.0f - ray.org;
+      Ray ray = test::world_ray(rng);
       Hit ours = unit.trace(s, ray), reference = embree.intersect(ray);
       Hit flat_hit = flat_unit.trace(flat_s, ray);
       transforms += int(s.counters.trav_instances);
@@ -113,11 +110,8 @@ TEST(TwoLevel, VerifierJudgesInstancedHitsOnTheFlatMesh) {
   TraversalUnit unit(bvh);
   Verifier verifier(flat.mesh, flat.flat_offsets, flat_embree, unit, instanced);
   std::mt19937 rng(5);
-  std::uniform_real_distribution<float> unit_range(-1.0f, 1.0f);
   for (int i = 0; i < 3000; ++i) {
-    Ray ray;
-    ray.org = glm::vec3(unit_range(rng), unit_range(rng), unit_range(rng)) * 15.0f;
-    ray.dir = glm::vec3(unit_range(rng), unit_range(rng), unit_range(rng)) * 7.0f - ray.org;
+    Ray ray = test::world_ray(rng);
     ray.query = i % 3 == 0 ? Query::AnyHit : Query::ClosestHit;
     verifier.check(ray);
   }

@@ -58,13 +58,9 @@ TEST(Instances, EmbreeInstancesAgreeWithTheFlattenedScene) {
   FlatMesh flat = flatten(g);
   EmbreeScene instanced(g, 1), flattened(flat.mesh, 1);
   std::mt19937 rng(17);
-  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   int hits = 0, other_triangle = 0, occluded_checked = 0;
   for (int i = 0; i < 20000; ++i) {
-    Ray ray;
-    ray.org = glm::vec3(unit(rng), unit(rng), unit(rng)) * 15.0f;
-    glm::vec3 target = glm::vec3(unit(rng), unit(rng), unit(rng)) * 7.0f;
-    ray.dir = target - ray.org;
+    Ray ray = test::world_ray(rng);
     Hit a = instanced.intersect(ray), b = flattened.intersect(ray);
     ASSERT_EQ(a.hit(), b.hit()) << "ray " << i;
     if (!a.hit()) {
