@@ -1,0 +1,49 @@
+// The two-level part of the traversal unit (traversal.h): instance steps and the way back to
+// world space. In a file of its own, so that the single-level loop compiles as it did.
+#include <cmath>
+
+#include "model/units/traversal.h"
+
+namespace rtsim {
+
+StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& entry) const {
+  StepResult out{StepKind::Instance, static_cast<uint32_t>(s.accesses.size()), 0, 1, 0};
+  // Fetch the instance record.
+  s.counters.trav_instances++;
+  if (config_.record_accesses) {
+    s.accesses.push_back(
+        {image_.triangle_address(entry.index), kInstanceRecordBytes, AccessKind::Instance});
+    out.access_count = 1;
+  }
+  InstanceRecord r = read_instance_record(image_, entry.index);
+  const BvhImage& blas = two_level_->bottom[r.blas];
+  // Transform the ray into object space, in the world ray's t units, and enter the BLAS root;
+  // the marker below its entries brings the ray back.
+  Ray object;
+  object.org = r.to_object.point(s.ray.org);
+  object.dir = r.to_object.vector(s.ray.dir);
+  object.tmin = s.ray.tmin;
+  object.tmax = s.t_hit;
+  s.world = s.ray;
+  s.world_t_hit = s.t_hit;
+  s.ray = prepare_ray(object, blas.scene_extent, config_.box_padding);
+  s.t_hit = s.ray.tmax;
+  s.level = &blas;
+  s.instance = r.instance;
+  s.stack.push_back({0, kLeaveInstance, 0.0f});
+  s.stack.push_back({0, 0, s.ray.tmin});
+  if (s.stack.size() > s.max_stack) s.max_stack = static_cast<uint32_t>(s.stack.size());
+  return out;
+}
+
+void TraversalUnit::leave_instance(TraversalState& s) const {
+  // A hit in the instance moves t (object t is world t scaled by a power of two in prepare_ray:
+  // exact); without one, the world's t stands as it was, also where the scaling overflowed.
+  bool hit_here = s.hit_instance == s.instance;  // each instance is entered at most once
+  s.t_hit = hit_here ? std::ldexp(s.t_hit, s.ray.t_exponent) : s.world_t_hit;
+  s.ray = s.world;
+  s.level = &image_;
+  s.instance = kNoHit;
+}
+
+}  // namespace rtsim
