@@ -19,11 +19,16 @@
 namespace rtsim::reports {
 namespace {
 
-pid_t start(const ProcessJob& job) {
-  std::vector<std::string> words = job.argv;
+// In a forked child: becomes argv (argv[0] a full path), or exits 127.
+[[noreturn]] void exec_child(std::vector<std::string> words) {
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  _exit(127);
+}
+
+pid_t start(const ProcessJob& job) {
   pid_t pid = fork_child();
   if (pid != 0) return pid;
   int fd = open(job.log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -32,8 +37,7 @@ pid_t start(const ProcessJob& job) {
     dup2(fd, STDERR_FILENO);
     close(fd);
   }
-  execv(argv[0], argv.data());
-  _exit(127);
+  exec_child(job.argv);
 }
 
 }  // namespace
@@ -92,16 +96,11 @@ CommandOutput run_command(const std::vector<std::string>& argv) {
   int out_fd = mkstemp(out_name), err_fd = mkstemp(err_name);
   CommandOutput result{127, "", ""};
   if (out_fd >= 0 && err_fd >= 0) {
-    std::vector<std::string> words = argv;
-    std::vector<char*> args;
-    for (std::string& w : words) args.push_back(w.data());
-    args.push_back(nullptr);
     pid_t pid = fork_child();
     if (pid == 0) {
       dup2(out_fd, STDOUT_FILENO);
       dup2(err_fd, STDERR_FILENO);
-      execv(args[0], args.data());
-      _exit(127);
+      exec_child(argv);
     }
     int status = 0;
     if (pid > 0 && waitpid(pid, &status, 0) == pid)

@@ -20,18 +20,6 @@
 namespace rtsim {
 namespace {
 
-void set_scene_bounds(const TriangleMesh& mesh, BvhImage& image) {
-  glm::vec3 lo(std::numeric_limits<float>::infinity()), hi = -lo;
-  for (const auto& p : mesh.positions) {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-  image.scene_lo = lo;
-  image.scene_hi = hi;
-  glm::vec3 m = glm::max(glm::abs(lo), glm::abs(hi));
-  image.scene_extent = std::max({m.x, m.y, m.z});
-}
-
 uint32_t deepest_level(const WideBvh& bvh) {
   std::vector<uint32_t> depth(bvh.nodes.size(), 0);
   uint32_t deepest = 0;
@@ -55,6 +43,13 @@ uint32_t padded_stride(uint32_t size, uint32_t align) {
 
 }  // namespace
 
+void set_scene_bounds(const Bounds& bounds, BvhImage& image) {
+  image.scene_lo = bounds.lo;
+  image.scene_hi = bounds.hi;
+  glm::vec3 m = glm::max(glm::abs(bounds.lo), glm::abs(bounds.hi));
+  image.scene_extent = std::max({m.x, m.y, m.z});
+}
+
 BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
                          const BvhBuildStep& on_step) {
   std::string problem = validate(config);
@@ -70,7 +65,7 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
                           encode_triangle(config.triangle_format, mesh, prim, out);
                         }};
   BvhImage image = encode_bvh_image(bvh2, config, triangles, on_step);
-  set_scene_bounds(mesh, image);
+  set_scene_bounds(mesh_bounds(mesh), image);
   return image;
 }
 

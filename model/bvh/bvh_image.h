@@ -74,6 +74,9 @@ struct LeafRecords {
 BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafRecords& leaves,
                           const BvhBuildStep& on_step = {});
 
+// Sets scene_lo, scene_hi and scene_extent (largest |coordinate|) from the geometry's bounds.
+void set_scene_bounds(const Bounds& bounds, BvhImage& image);
+
 // Builds, collapses, forms treelets, orders and encodes. Throws InputError (via
 // throw_input_error with place "bvh config") for an invalid config, or naming "bvh" when the
 // build needs more memory than there is (memory_plan.h), std::invalid_argument for a mesh

@@ -70,11 +70,7 @@ TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& 
   BvhConfig top_config = config;
   top_config.max_leaf_size = 1;
   std::vector<Bounds> mesh_boxes;
-  for (const TriangleMesh& mesh : geometry.meshes) {
-    Bounds b;
-    for (const glm::vec3& p : mesh.positions) b.grow(p);
-    mesh_boxes.push_back(b);
-  }
+  for (const TriangleMesh& mesh : geometry.meshes) mesh_boxes.push_back(mesh_bounds(mesh));
   std::vector<Bounds> boxes;
   std::vector<InstanceRecord> records;
   for (size_t i = 0; i < geometry.instances.size(); ++i) {
@@ -89,10 +85,7 @@ TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& 
   out.top = encode_bvh_image(top2, top_config, instance_records, on_step);
   Bounds world;
   for (const Bounds& b : boxes) world.grow(b);
-  out.top.scene_lo = world.lo;
-  out.top.scene_hi = world.hi;
-  glm::vec3 m = glm::max(glm::abs(world.lo), glm::abs(world.hi));
-  out.top.scene_extent = std::max({m.x, m.y, m.z});
+  set_scene_bounds(world, out.top);
   // Bottom levels, one after another in the address space.
   uint64_t next = image_end(out.top);
   for (const TriangleMesh& mesh : geometry.meshes) {
