@@ -57,9 +57,13 @@ struct Timing {
   double wall = 1e30, cpu = 1e30;
 };
 
-Timing time_embree(const BenchSimOptions& o, const Scene& scene, const std::vector<Ray>& rays,
-                   uint64_t& count) {
-  EmbreeScene embree(scene.mesh, 1);
+// Embree on one thread over what the simulation traverses: the flat mesh, or the instances.
+Timing time_embree(const BenchSimOptions& o, const Scene& scene, bool instances,
+                   const std::vector<Ray>& rays, uint64_t& count) {
+  std::unique_ptr<EmbreeScene> reference =
+      instances ? std::make_unique<EmbreeScene>(scene.instanced, 1)
+                : std::make_unique<EmbreeScene>(scene.mesh, 1);
+  const EmbreeScene& embree = *reference;
   Timing best;
   for (int run = 0; run < o.repeat; ++run) {
     std::unique_ptr<RayStreamReader> reader;
@@ -76,7 +80,7 @@ Timing time_embree(const BenchSimOptions& o, const Scene& scene, const std::vect
 }
 
 // One simulation in a child process; returns its figures as JSON.
-nlohmann::json simulate(const BenchSimOptions& o, const HwConfig& config, const BvhImage& image,
+nlohmann::json simulate(const BenchSimOptions& o, const HwConfig& config, BvhView image,
                         const std::vector<Ray>& rays) {
   std::string text = run_in_child([&] {
     std::unique_ptr<RayStreamReader> reader;
@@ -125,22 +129,27 @@ int run_bench_sim(const BenchSimOptions& o) {
   std::string spec = o.scene;
   if (!o.stream.empty()) spec = RayStreamReader(o.stream).header().scene_source;
   Scene scene = load_scene(spec);
-  BvhImage image = build_bvh_image(scene.mesh, config.bvh);
+  TwoLevelBvh image = build_scene_levels(scene.mesh, scene.instanced, config.bvh);
+  bool two_levels = !image.bottom.empty();
   std::vector<Ray> rays;
   if (o.stream.empty()) rays = sample_diffuse_rays(scene.mesh, o.rays, o.seed);
   if (!o.write_stream.empty()) {
     write_stream(o, scene, rays);
     return 0;
   }
-  fmt::print("scene      {} ({} triangles), {}\n", scene.source, scene.triangle_count(),
-             describe(config.bvh));
+  fmt::print("scene      {} ({} triangles), {}{}\n", scene.source, scene.triangle_count(),
+             describe(config.bvh),
+             two_levels ? fmt::format(", two levels over {} instances of {} meshes",
+                                      scene.instanced.instances.size(),
+                                      scene.instanced.meshes.size())
+                        : "");
   fmt::print("config     {} ({}, {} RT units, quantum {} cycles)\n", config.name,
              traversal_mode_name(config.rt.mode), config.rt_units, config.sim.quantum_cycles);
   fmt::print("rays       {}\n",
              o.stream.empty() ? fmt::format("{} diffuse-GI-like, seed {}", rays.size(), o.seed)
                               : o.stream);
   uint64_t count = 0;
-  Timing embree = o.no_embree ? Timing{} : time_embree(o, scene, rays, count);
+  Timing embree = o.no_embree ? Timing{} : time_embree(o, scene, two_levels, rays, count);
   if (!o.no_embree)
     fmt::print("embree     {:.3f} s wall, {:.3f} s CPU, 1 thread, best of {} ({:.2f} MRays/s)\n",
                embree.wall, embree.cpu, o.repeat, count / embree.cpu / 1e6);

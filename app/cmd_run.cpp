@@ -130,8 +130,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   reports::add_workload_options(*cmd, o->workload);
   cmd->add_option("--from-trace", o->from_trace, "Reuse a trace folder (DIR/trace of a run)");
   cmd->add_option("--config", o->config, "Hardware config (.toml; see configs/)");
-  cmd->add_option("--set", o->sets, "Override a config key: --set rt.l1.size_bytes=65536")
-      ->allow_extra_args(false);
+  reports::add_config_overrides(*cmd, o->sets);
   cmd->add_option("-o,--output", o->output, "Run folder (report, results, trace)");
   cmd->add_option("--fidelity", o->fidelity, "functional, cache, cycle or sampled")
       ->capture_default_str();

@@ -11,6 +11,7 @@
 #include <fmt/ranges.h>
 
 #include "app/commands.h"
+#include "reports/cli_options.h"
 #include "reports/phase_progress.h"
 #include "model/config/hw_config.h"
 #include "model/sc/sim_report.h"
@@ -136,7 +137,7 @@ int run_sim(const SimOptions& o) {
   StreamHeader header = reader.header();
   RayTypeMask types = selected_ray_types(o, header);
   Scene scene = load_stream_scene(o.stream, header, o.scene);
-  BvhImage image = reports::build_bvh_with_progress(scene.mesh, config.bvh, o.quiet);
+  TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, o.quiet);
   if (!o.quiet) {
     fmt::print(
         "sim        {} rays{} of {} on '{}' ({}, {} RT units, {})\n", rays_of(header, types),
@@ -148,7 +149,7 @@ int run_sim(const SimOptions& o) {
           "config     built in (no --config): the defaults rtsim sim --list-keys shows; presets "
           "are in configs/\n");
   }
-  StreamSim sim(config, image, scene.mesh, reader, !o.no_verify, !o.quiet, types);
+  StreamSim sim(config, bvh, scene.mesh, scene.instanced, reader, !o.no_verify, !o.quiet, types);
   std::fflush(stdout);  // the header before the progress lines, also in a pipe
   double start = wall_seconds();
   try {
@@ -157,7 +158,7 @@ int run_sim(const SimOptions& o) {
     fmt::print(stderr, "rtsim: stall: {}", e.what());
     return 1;
   }
-  SimRunInfo info{o.stream, header, &image, sim.verify_report(), wall_seconds() - start, {}};
+  SimRunInfo info{o.stream, header, BvhView(bvh), sim.verify_report(), wall_seconds() - start, {}};
   info.ray_types = o.ray_types;
   nlohmann::ordered_json doc = write_sim_results(o.output, sim.simulator(), info);
   if (!o.quiet) {
@@ -186,8 +187,7 @@ void add_sim_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<SimOptions>();
   cmd->add_option("stream", options->stream, "Ray stream (.rays)");
   cmd->add_option("--config", options->config, "Hardware config (.toml; see configs/)");
-  cmd->add_option("--set", options->sets, "Override a config key: --set rt.l1.size_bytes=65536")
-      ->allow_extra_args(false);
+  reports::add_config_overrides(*cmd, options->sets);
   cmd->add_option("-o,--output", options->output, "Folder for stats.json, config.toml, pixels");
   cmd->add_option("--scene", options->scene, "Scene file or built-in (default: stream header)");
   cmd->add_option("--ray-types", options->ray_types,

@@ -41,7 +41,7 @@ struct SpeedErrorOptions {
 
 // The run with the least CPU time of `repeat` (host time is noisy; results are deterministic).
 FidelityResult best_of(const SpeedErrorOptions& o, const LevelRequest& request,
-                       const HwConfig& config, const BvhImage& image, const std::string& stream) {
+                       const HwConfig& config, BvhView image, const std::string& stream) {
   FidelityResult best = run_level_in_child(request, config, image, stream);
   for (int i = 1; i < o.repeat; ++i) {
     FidelityResult again = run_level_in_child(request, config, image, stream);
@@ -101,7 +101,8 @@ int run_speed_error(const SpeedErrorOptions& o) {
                         fmt::format("{} rays, too few to sample 1 in {} (at least {} needed)", rays,
                                     r.sampling.rate, 2 * r.sampling.rate));
   Scene scene = load_stream_scene(trace.stream, RayStreamReader(trace.stream).header());
-  BvhImage image = reports::build_bvh_with_progress(scene.mesh, config.bvh, false);
+  TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, false);
+  BvhView image(bvh);
   fmt::print("reference  full cycle-approximate model, {} rays, '{}'\n", rays, config.name);
   reports::LevelRun reference{
       "cycle", best_of(o, {FidelityLevel::Cycle, {}}, config, image, trace.stream), {}};

@@ -29,7 +29,8 @@ struct VerifyOptions {
   std::string stream, scene, config;
   std::vector<std::string> sets;
   bool bvh_flags = false;  // a BVH option was given
-  bool instances = false;  // the two-level BVH over the scene file's instances
+  bool instances = false;  // two levels (bvh.instancing = "two_level")
+  bool flatten = false;    // one level (bvh.instancing = "flatten")
   size_t max_print = 10;
   double t_tolerance = 1e-5;
   BvhConfig bvh;
@@ -140,31 +141,18 @@ int run_verify(const VerifyOptions& o) {
              scene.triangle_count(), scene.fingerprint);
   ArbiterConfig arbiter;
   arbiter.t_tolerance = o.t_tolerance;
-  EmbreeScene flat_embree(scene.mesh);
   // One level: the flat mesh, both ways. Two: the two-level BVH against Embree's instances,
   // judged on the flat mesh.
-  std::unique_ptr<BvhImage> image;
-  std::unique_ptr<TwoLevelBvh> two_level;
-  std::unique_ptr<EmbreeScene> instanced_embree;
-  std::unique_ptr<TraversalUnit> model;
-  std::unique_ptr<Verifier> verifier;
-  if (o.instances) {
-    if (scene.instanced.instances.empty())
-      throw_input_error(scene.source, "",
-                        "has no instance structure (a built-in scene is one flat mesh); "
-                        "--instances needs a scene file");
-    two_level = std::make_unique<TwoLevelBvh>(build_two_level_bvh(scene.instanced, bvh));
-    print_two_level(*two_level, scene.instanced);
-    instanced_embree = std::make_unique<EmbreeScene>(scene.instanced);
-    model = std::make_unique<TraversalUnit>(*two_level);
-    verifier = std::make_unique<Verifier>(scene.mesh, flat_offsets(scene.instanced), flat_embree,
-                                          *model, *instanced_embree, arbiter, o.max_print);
-  } else {
-    image = std::make_unique<BvhImage>(reports::build_bvh_with_progress(scene.mesh, bvh, false));
-    print_bvh(*image);
-    model = std::make_unique<TraversalUnit>(*image);
-    verifier = std::make_unique<Verifier>(scene.mesh, *model, flat_embree, arbiter, o.max_print);
-  }
+  if (o.instances) bvh.instancing = Instancing::TwoLevel;
+  if (o.flatten) bvh.instancing = Instancing::Flatten;
+  TwoLevelBvh levels = reports::build_scene_bvh(scene, bvh, false);
+  if (levels.bottom.empty())
+    print_bvh(levels.top);
+  else
+    print_two_level(levels, scene.instanced);
+  TraversalUnit model(levels);
+  VerifierSetup checks = make_verifier(model, scene.mesh, scene.instanced, arbiter, o.max_print);
+  Verifier* verifier = checks.verifier.get();
   // Stream the rays in batches: constant memory for any stream length.
   std::vector<Ray> batch;
   while (reader.next_batch(batch, 65536) > 0)
@@ -230,8 +218,12 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--set", options->sets, "Override a config key: --set bvh.width=4")
       ->allow_extra_args(false);
   cmd->add_flag("--instances", options->instances,
-                "Check the two-level BVH (top level over the scene file's instances, one bottom "
-                "level per unique mesh) against Embree's instances");
+                "Check the two-level BVH (top level over the scene's instances, one bottom level "
+                "per unique mesh; a flat scene is one instance) against Embree's instances");
+  cmd->add_flag("--flatten", options->flatten,
+                "Check one BVH over the world-space triangles, also where the scene places a "
+                "mesh more than once")
+      ->excludes("--instances");
   add_bvh_options(*cmd, options->bvh);
   cmd->callback([cmd, options, &exit_code] {
     for (const char* flag : {"--width", "--format", "--triangles", "--layout", "--treelet-bytes",

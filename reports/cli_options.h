@@ -48,6 +48,17 @@ inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
   add_camera_options(cmd, request.camera, request.look_at, request.up);
 }
 
+// --set and --flatten, which is --set bvh.instancing="flatten": one BVH level over the
+// world-space triangles, also where the scene places a mesh more than once.
+inline void add_config_overrides(CLI::App& cmd, std::vector<std::string>& sets) {
+  cmd.add_option("--set", sets, "Override a config key: --set rt.l1.size_bytes=65536")
+      ->allow_extra_args(false);
+  // Taken after --set has stored its values (CLI11 runs option callbacks in the order added).
+  cmd.add_flag_callback(
+      "--flatten", [&sets] { sets.push_back("bvh.instancing=\"flatten\""); },
+      "One BVH over the world-space triangles, not two levels over the scene's instances");
+}
+
 // With --from-trace DIR the stream is reused as it was traced: a workload or an option that
 // would trace it differently is refused (InputError), not silently ignored.
 inline void refuse_workload_with_trace(const CLI::App& cmd, const std::string& from_trace) {

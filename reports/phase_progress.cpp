@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -31,22 +32,36 @@ std::function<void(uint32_t, uint32_t, pipeline::PassId)> trace_progress() {
 
 constexpr size_t kBvhStepTriangles = 1000000;
 
-BvhImage build_bvh_with_progress(const TriangleMesh& mesh, const BvhConfig& config, bool quiet) {
-  if (quiet) return build_bvh_image(mesh, config);
-  fmt::print(stderr, "bvh: building {} over {} triangles\n", describe(config),
-             mesh.triangles.size());
-  double start = wall_seconds();
+TwoLevelBvh build_scene_bvh(Scene& scene, const BvhConfig& config, bool quiet) {
+  bool two_levels = wants_two_levels(config, scene.instanced);
+  uint64_t triangles = two_levels && !scene.instanced.instances.empty()
+                           ? scene.instanced.unique_triangles()
+                           : scene.mesh.triangles.size();
   // Large builds take seconds a step: say each as it ends.
   BvhBuildStep step;
-  if (mesh.triangles.size() >= kBvhStepTriangles)
+  if (!quiet && triangles >= kBvhStepTriangles)
     step = [](const char* name, double seconds) {
       fmt::print(stderr, "bvh:   {} in {:.1f} s\n", name, seconds);
     };
-  BvhImage image = build_bvh_image(mesh, config, step);
-  fmt::print(stderr, "bvh: {} nodes, {:.2f} MiB ({:.1f} B a triangle), built in {:.1f} s\n",
-             image.node_count, image.total_bytes() / 1048576.0,
-             double(image.total_bytes()) / double(mesh.triangles.size()), wall_seconds() - start);
-  return image;
+  if (!quiet && two_levels)
+    fmt::print(stderr,
+               "bvh: building two levels, {}, over {} instances of {} meshes ({} unique, {} "
+               "instanced triangles)\n",
+               describe(config), std::max<size_t>(scene.instanced.instances.size(), 1),
+               std::max<size_t>(scene.instanced.meshes.size(), 1), triangles,
+               std::max(scene.instanced.instanced_triangles(), triangles));
+  else if (!quiet)
+    fmt::print(stderr, "bvh: building {} over {} triangles\n", describe(config), triangles);
+  double start = wall_seconds();
+  TwoLevelBvh bvh = build_scene_levels(scene.mesh, scene.instanced, config, step);
+  if (quiet) return bvh;
+  uint64_t nodes = 0;
+  for (const BvhImage* level : BvhView(bvh).levels()) nodes += level->node_count;
+  fmt::print(stderr, "bvh: {} nodes{}, {:.2f} MiB ({:.1f} B a{} triangle), built in {:.1f} s\n",
+             nodes, two_levels ? fmt::format(" ({} in the TLAS)", bvh.top.node_count) : "",
+             bvh.total_bytes() / 1048576.0, double(bvh.total_bytes()) / double(triangles),
+             two_levels ? " unique" : "", wall_seconds() - start);
+  return bvh;
 }
 
 }  // namespace rtsim::reports

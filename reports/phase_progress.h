@@ -5,7 +5,8 @@
 #include <cstdint>
 #include <functional>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
+#include "workloads/scene.h"
 #include "workloads/pipeline/pipeline.h"
 
 namespace rtsim::reports {
@@ -13,7 +14,10 @@ namespace rtsim::reports {
 // For pipeline::TraceOptions::progress: the frame and pass being traced.
 std::function<void(uint32_t frame, uint32_t frames, pipeline::PassId pass)> trace_progress();
 
-// build_bvh_image, saying what it builds before and how long it took after (unless quiet).
-BvhImage build_bvh_with_progress(const TriangleMesh& mesh, const BvhConfig& config, bool quiet);
+// The scene's BVH under config.instancing (model/bvh/two_level.h: one level, or two, then
+// over scene.instanced, which a flat scene gets as one instance), saying what it builds
+// before and how long it took after (unless quiet). A TwoLevelBvh without bottom levels is
+// one level.
+TwoLevelBvh build_scene_bvh(Scene& scene, const BvhConfig& config, bool quiet);
 
 }  // namespace rtsim::reports

@@ -15,10 +15,10 @@
 namespace rtsim::reports {
 namespace {
 
-RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image) {
+RunResult run_cycle(const RunJob& job, const Scene& scene, BvhView bvh) {
   RayStreamReader reader(job.stream);
   StreamHeader header = reader.header();
-  StreamSim sim(job.config, image, scene.mesh, reader, job.verify, job.progress);
+  StreamSim sim(job.config, bvh, scene.mesh, scene.instanced, reader, job.verify, job.progress);
   RunCollector collector;
   sim.listen(&collector);
   HostTimer timer;
@@ -32,7 +32,7 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
   }
   result.fidelity = cycle_level_result(sim.simulator());
   timer.stop(result.fidelity);
-  SimRunInfo info{job.stream, header, &image, sim.verify_report(), result.fidelity.host_seconds,
+  SimRunInfo info{job.stream, header, bvh, sim.verify_report(), result.fidelity.host_seconds,
                   {}};
   result.stats = write_sim_results(job.output, sim.simulator(), info);
   result.collected = collector.to_json();
@@ -45,10 +45,10 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, const BvhImage& image
 RunResult run_job(const RunJob& job) {
   create_output_folder(job.output);
   Scene scene = load_stream_scene(job.stream, RayStreamReader(job.stream).header());
-  BvhImage image = build_bvh_with_progress(scene.mesh, job.config.bvh, !job.progress);
-  if (job.level.level == FidelityLevel::Cycle) return run_cycle(job, scene, image);
+  TwoLevelBvh bvh = build_scene_bvh(scene, job.config.bvh, !job.progress);
+  if (job.level.level == FidelityLevel::Cycle) return run_cycle(job, scene, bvh);
   RunResult result;
-  result.fidelity = run_level(job.level, job.config, image, job.stream);
+  result.fidelity = run_level(job.level, job.config, bvh, job.stream);
   write_file_atomic(job.output + "/config.toml", resolved_toml(job.config));
   write_file_atomic(job.output + "/fidelity.json", result.fidelity.to_json().dump(2) + "\n");
   return result;

@@ -68,6 +68,20 @@ std::optional<NodeLayout> node_layout_from_name(const std::string& name) {
   return std::nullopt;
 }
 
+const char* instancing_name(Instancing instancing) {
+  switch (instancing) {
+    case Instancing::Flatten: return "flatten";
+    case Instancing::TwoLevel: return "two_level";
+    default: return "auto";
+  }
+}
+
+std::optional<Instancing> instancing_from_name(const std::string& name) {
+  for (Instancing i : {Instancing::Auto, Instancing::Flatten, Instancing::TwoLevel})
+    if (name == instancing_name(i)) return i;
+  return std::nullopt;
+}
+
 std::optional<TreeletBudget> treelet_budget_from_name(const std::string& name) {
   if (name == "nodes") return TreeletBudget::Nodes;
   if (name == "nodes_and_triangles") return TreeletBudget::NodesAndTriangles;

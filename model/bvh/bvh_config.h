@@ -30,7 +30,14 @@ enum class TreeletBudget : uint8_t {
   NodesAndTriangles,  // and the triangles of its nodes' leaves
 };
 
+enum class Instancing : uint8_t {
+  Auto,      // two levels when the scene places a mesh more than once, else one
+  Flatten,   // one level over the world-space triangles
+  TwoLevel,  // a TLAS over the instances and a BLAS per mesh (a flat scene: one instance)
+};
+
 struct BvhConfig {
+  Instancing instancing = Instancing::Auto;
   int sah_bins = 16;           // bins per axis of the binned SAH build: 16 or 32
   int max_leaf_size = 3;       // triangles: most triangles in one leaf (cwbvh8: <= 3)
   float sah_node_cost = 1.0f;  // SAH cost of a node visit, in triangle tests
@@ -54,10 +61,12 @@ const char* node_format_name(NodeFormat format);
 const char* triangle_format_name(TriangleFormat format);
 const char* node_layout_name(NodeLayout layout);
 const char* treelet_budget_name(TreeletBudget budget);  // nodes, nodes_and_triangles
+const char* instancing_name(Instancing instancing);     // auto, flatten, two_level
 std::optional<NodeFormat> node_format_from_name(const std::string& name);
 std::optional<TriangleFormat> triangle_format_from_name(const std::string& name);
 std::optional<NodeLayout> node_layout_from_name(const std::string& name);
 std::optional<TreeletBudget> treelet_budget_from_name(const std::string& name);
+std::optional<Instancing> instancing_from_name(const std::string& name);
 
 // "bvh8 aabb32 raw treelet(4096 B)": how a config is named in reports.
 std::string describe(const BvhConfig& config);

@@ -33,6 +33,7 @@ struct BvhImage {
   uint64_t node_base = 0, triangle_base = 0;  // addresses of the two regions
   std::vector<uint8_t> nodes, triangles;      // the bytes of the two regions
   std::vector<uint32_t> node_treelet;         // treelet id of the node at each position
+  uint32_t treelet_base = 0;  // two levels: added to node_treelet to number treelets across levels
   TreeletStats treelets;
   BvhBuildStats stats;
   float scene_extent = 0.0f;                 // largest |coordinate| of any vertex

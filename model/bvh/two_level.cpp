@@ -38,7 +38,37 @@ void encode_instance_record(const InstanceRecord& r, uint8_t* out) {
   std::memcpy(out + 52, &r.instance, 4);
 }
 
+// Treelets a level numbers (the ids its nodes carry may exceed the count formed).
+uint32_t local_treelets(const BvhImage& image) {
+  uint32_t count = std::max<uint32_t>(image.treelets.count, 1);
+  for (uint32_t t : image.node_treelet) count = std::max(count, t + 1);
+  return count;
+}
+
 }  // namespace
+
+std::vector<const BvhImage*> BvhView::levels() const {
+  std::vector<const BvhImage*> out{top};
+  if (bottom)
+    for (const BvhImage& b : *bottom) out.push_back(&b);
+  return out;
+}
+
+uint32_t BvhView::treelet_count() const {
+  const BvhImage& last = bottom ? bottom->back() : *top;
+  return last.treelet_base + local_treelets(last);
+}
+
+uint32_t BvhView::root_treelet() const { return node_treelet(*top, 0); }
+
+uint64_t BvhView::end_address() const {
+  const BvhImage& last = bottom ? bottom->back() : *top;
+  return last.triangle_base + last.triangles.size();
+}
+
+uint64_t BvhView::top_end_address() const {
+  return bottom ? top->triangle_base + top->triangles.size() : top->node_base;
+}
 
 uint64_t TwoLevelBvh::total_bytes() const {
   uint64_t bytes = top.total_bytes();
@@ -57,6 +87,28 @@ InstanceRecord read_instance_record(const BvhImage& top, uint32_t position) {
   std::memcpy(&r.blas, in + 48, 4);
   std::memcpy(&r.instance, in + 52, 4);
   return r;
+}
+
+bool wants_two_levels(const BvhConfig& config, const InstancedMesh& geometry) {
+  if (config.instancing != Instancing::Auto) return config.instancing == Instancing::TwoLevel;
+  std::vector<uint32_t> placed(geometry.meshes.size(), 0);
+  for (const Instance& inst : geometry.instances)
+    if (inst.mesh < placed.size() && ++placed[inst.mesh] > 1) return true;
+  return false;
+}
+
+TwoLevelBvh build_scene_levels(const TriangleMesh& flat, InstancedMesh& instances,
+                               const BvhConfig& config, const BvhBuildStep& on_step) {
+  if (!wants_two_levels(config, instances)) {
+    TwoLevelBvh out;
+    out.top = build_bvh_image(flat, config, on_step);
+    return out;
+  }
+  if (instances.instances.empty()) {
+    instances.meshes = {flat};
+    instances.instances = {{0, Transform{}}};
+  }
+  return build_two_level_bvh(instances, config, on_step);
 }
 
 TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& config,
@@ -91,7 +143,9 @@ TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& 
   for (const TriangleMesh& mesh : geometry.meshes) {
     BvhConfig bottom_config = config;
     bottom_config.node_base = next;
+    uint32_t treelet_base = BvhView(out).treelet_count();
     out.bottom.push_back(build_bvh_image(mesh, bottom_config, on_step));
+    out.bottom.back().treelet_base = treelet_base;
     next = image_end(out.bottom.back());
   }
   return out;

@@ -30,8 +30,47 @@ struct TwoLevelBvh {
   uint64_t total_bytes() const;
 };
 
+// What the traversal and the timing model walk: one BVH image, or both levels of a two-level
+// BVH (a TwoLevelBvh without bottom levels is one level). Cheap to copy; the images must
+// outlive it. Treelets are numbered across levels (BvhImage::treelet_base).
+struct BvhView {
+  BvhView(const BvhImage& image) : top(&image) {}  // NOLINT: one level converts implicitly
+  BvhView(const TwoLevelBvh& bvh)                  // NOLINT
+      : top(&bvh.top), bottom(bvh.bottom.empty() ? nullptr : &bvh.bottom) {}
+
+  const BvhImage* top;
+  const std::vector<BvhImage>* bottom = nullptr;  // null: one level
+
+  bool two_level() const { return bottom != nullptr; }
+  // Every level, the top one first.
+  std::vector<const BvhImage*> levels() const;
+  uint32_t treelet_count() const;
+  uint32_t root_treelet() const;
+  // The byte range all levels occupy: [begin, end).
+  uint64_t begin_address() const { return top->node_base; }
+  uint64_t end_address() const;
+  // The top level's nodes and records (two levels), or nothing: [begin, end).
+  uint64_t top_end_address() const;
+};
+
+// The global id of the treelet of a level's node.
+inline uint32_t node_treelet(const BvhImage& level, uint32_t position) {
+  return level.node_treelet.empty() ? level.treelet_base
+                                    : level.treelet_base + level.node_treelet[position];
+}
+
 // Reads the instance record at a position of the top level's leaf records.
 InstanceRecord read_instance_record(const BvhImage& top, uint32_t position);
+
+// Whether config.instancing asks for two levels over this geometry (auto: a mesh is placed
+// more than once).
+bool wants_two_levels(const BvhConfig& config, const InstancedMesh& geometry);
+
+// The BVH of a scene under config.instancing: one level over `flat` (a TwoLevelBvh without
+// bottom levels), or two over `instances`, whose flattening `flat` is. Two levels over a scene
+// without instance structure (no instances) make it `flat` as one instance, in `instances`.
+TwoLevelBvh build_scene_levels(const TriangleMesh& flat, InstancedMesh& instances,
+                               const BvhConfig& config, const BvhBuildStep& on_step = {});
 
 // Builds both levels. Throws as build_bvh_image does; InputError naming "instances" for
 // geometry that instancing_problem() rejects.

@@ -244,6 +244,7 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                                   "one spilled stack entry", 1, 64));
   read_test_units(rt.section("box"), c.rt.box, "child boxes");
   read_test_units(rt.section("triangle"), c.rt.triangle, "triangles");
+  read_test_units(rt.section("transform"), c.rt.transform, "rays (instance transforms: two levels)");
   ConfigReader packet = rt.section("packet");
   std::string policy =
       packet.text("policy", packet_policy_name(c.rt.packet_policy),
@@ -373,6 +374,13 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                         "most triangles in one leaf", 1, 16));
   c.bvh.sah_bins = int(bvh.integer("sah_bins", uint64_t(c.bvh.sah_bins), "bins",
                                    "bins per axis of the binned SAH build: 16 or 32", 16, 32));
+  std::string instancing =
+      bvh.text("instancing", instancing_name(c.bvh.instancing),
+               "levels: two (a TLAS over instances, a BLAS per mesh) when the scene places a mesh "
+               "more than once (auto), always (two_level; a flat scene is one instance), or one "
+               "over the world-space triangles (flatten)",
+               {"auto", "flatten", "two_level"});
+  c.bvh.instancing = *instancing_from_name(instancing);
 }
 
 std::string toml_literal(const nlohmann::ordered_json& value) {

@@ -19,6 +19,8 @@ AnalyticTime analytic_time(const HwConfig& c, const AnalyticInputs& in) {
     add(p + ".control", double(w.steps) / c.rt.issue_per_cycle);
     add(p + ".box", double(w.box_issues) / c.rt.box.count);
     add(p + ".triangle", double(w.triangle_issues) / c.rt.triangle.count);
+    if (w.transform_issues > 0)
+      add(p + ".transform", double(w.transform_issues) / c.rt.transform.count);
     add(p + ".warp_slots", w.warp_cycles / c.rt.warps);
   }
   out.cycles += in.mean_latency;

@@ -33,7 +33,7 @@ struct Warp {
 
 class CacheWalk {
  public:
-  CacheWalk(const HwConfig& config, const BvhImage& image)
+  CacheWalk(const HwConfig& config, BvhView image)
       : c_(config),
         traversal_(image),
         dram_(config.dram),
@@ -135,10 +135,10 @@ class CacheWalk {
       lane.latency +=
           read(unit, lane, first.address, uint32_t(last.address + last.bytes - first.address));
     }
-    bool node = r.kind == StepKind::Node;
-    const TestUnitConfig& tests = node ? c_.rt.box : c_.rt.triangle;
+    bool node = r.kind == StepKind::Node, leaf = r.kind == StepKind::Leaf;
+    const TestUnitConfig& tests = node ? c_.rt.box : leaf ? c_.rt.triangle : c_.rt.transform;
     uint64_t issues = (std::max<uint32_t>(r.tests, 1) + tests.issue_width - 1) / tests.issue_width;
-    (node ? w.box_issues : w.triangle_issues) += issues;
+    (node ? w.box_issues : leaf ? w.triangle_issues : w.transform_issues) += issues;
     lane.latency += tests.latency + double(issues - 1) + c_.rt.control_latency;
     w.steps++;
     uint32_t size = uint32_t(s.stack.size());
@@ -177,7 +177,7 @@ class CacheWalk {
 
 }  // namespace
 
-FidelityResult run_cache_level(const HwConfig& config, const BvhImage& image,
+FidelityResult run_cache_level(const HwConfig& config, BvhView image,
                                const std::string& stream, AnalyticTime* bounds) {
   HostTimer timer;
   RayStreamReader reader(stream);

@@ -14,7 +14,7 @@
 
 #include <string>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/analytic_time.h"
 #include "model/fidelity/fidelity_result.h"
@@ -22,7 +22,7 @@
 namespace rtsim {
 
 // bounds (optional) receives every resource's lower bound.
-FidelityResult run_cache_level(const HwConfig& config, const BvhImage& image,
+FidelityResult run_cache_level(const HwConfig& config, BvhView image,
                                const std::string& stream, AnalyticTime* bounds = nullptr);
 
 }  // namespace rtsim

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
 #include "model/sc/rt_simulator.h"
@@ -16,7 +16,7 @@ namespace rtsim {
 FidelityResult cycle_level_result(const RtSimulator& sim);
 
 // Simulates every ray of the stream (no verification, no pixel buffers).
-FidelityResult run_cycle_level(const HwConfig& config, const BvhImage& image,
+FidelityResult run_cycle_level(const HwConfig& config, BvhView image,
                                const std::string& stream);
 
 }  // namespace rtsim

@@ -5,7 +5,7 @@
 
 namespace rtsim {
 
-FidelityResult run_functional_level(const BvhImage& image, const std::string& stream) {
+FidelityResult run_functional_level(BvhView image, const std::string& stream) {
   HostTimer timer;
   TraversalConfig config;
   config.record_accesses = false;

@@ -5,12 +5,12 @@
 
 #include <string>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/fidelity/fidelity_result.h"
 
 namespace rtsim {
 
 // Reads the stream at `stream` (InputError on a corrupt file) and counts.
-FidelityResult run_functional_level(const BvhImage& image, const std::string& stream);
+FidelityResult run_functional_level(BvhView image, const std::string& stream);
 
 }  // namespace rtsim

@@ -9,7 +9,7 @@
 
 namespace rtsim {
 
-FidelityResult run_level(const LevelRequest& request, const HwConfig& config, const BvhImage& image,
+FidelityResult run_level(const LevelRequest& request, const HwConfig& config, BvhView image,
                          const std::string& stream) {
   switch (request.level) {
     case FidelityLevel::Functional: return run_functional_level(image, stream);
@@ -23,7 +23,7 @@ FidelityResult run_level(const LevelRequest& request, const HwConfig& config, co
 }
 
 FidelityResult run_level_in_child(const LevelRequest& request, const HwConfig& config,
-                                  const BvhImage& image, const std::string& stream) {
+                                  BvhView image, const std::string& stream) {
   std::string text =
       run_in_child([&] { return run_level(request, config, image, stream).to_json().dump(); });
   return FidelityResult::from_json(nlohmann::json::parse(text));

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
 #include "model/fidelity/sample_plan.h"
@@ -17,10 +17,10 @@ struct LevelRequest {
 };
 
 FidelityResult run_level(const LevelRequest& request, const HwConfig& config,
-                         const BvhImage& image, const std::string& stream);
+                         BvhView image, const std::string& stream);
 
 // The same in a forked child; the parent's state (scene, BVH) is shared copy-on-write.
 FidelityResult run_level_in_child(const LevelRequest& request, const HwConfig& config,
-                                  const BvhImage& image, const std::string& stream);
+                                  BvhView image, const std::string& stream);
 
 }  // namespace rtsim

@@ -11,7 +11,7 @@
 
 #include <string>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
 #include "model/fidelity/sample_plan.h"
@@ -20,7 +20,7 @@ namespace rtsim {
 
 // Runs the model on the sampled windows of the stream in this process (SystemC: once per
 // process). Throws InputError if the stream is too short for the rate.
-FidelityResult run_sampled_level(const HwConfig& config, const BvhImage& image,
+FidelityResult run_sampled_level(const HwConfig& config, BvhView image,
                                  const std::string& stream, const SamplingConfig& sampling);
 
 }  // namespace rtsim

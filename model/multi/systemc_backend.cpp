@@ -46,7 +46,7 @@ DeviceResult decode(const std::string& bytes, const DeviceTask& task) {
   return r;
 }
 
-std::string simulate(const HwConfig& config, const BvhImage& image, const DeviceTask& task,
+std::string simulate(const HwConfig& config, BvhView image, const DeviceTask& task,
                      const ScreenLayout& layout) {
   VectorRaySource source(task.rays);
   SlotCostListener slots(config, layout.pixels());
@@ -66,15 +66,17 @@ std::string simulate(const HwConfig& config, const BvhImage& image, const Device
 
 }  // namespace
 
-SystemCBackend::SystemCBackend(const TriangleMesh& mesh, unsigned jobs)
-    : mesh_(mesh), jobs_(std::max(jobs, 1u)) {
+SystemCBackend::SystemCBackend(const TriangleMesh& mesh, const InstancedMesh& instances,
+                               unsigned jobs)
+    : mesh_(mesh), instances_(instances), jobs_(std::max(jobs, 1u)) {
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
 }
 
-const BvhImage& SystemCBackend::image_for(const HwConfig& config) {
+const TwoLevelBvh& SystemCBackend::bvh_for(const HwConfig& config) {
   std::string key = resolved_json(config)["bvh"].dump();
-  auto it = images_.find(key);
-  if (it == images_.end()) it = images_.emplace(key, build_bvh_image(mesh_, config.bvh)).first;
+  auto it = bvhs_.find(key);
+  if (it == bvhs_.end())
+    it = bvhs_.emplace(key, build_scene_levels(mesh_, instances_, config.bvh)).first;
   return it->second;
 }
 
@@ -85,9 +87,8 @@ std::vector<DeviceResult> SystemCBackend::run(const std::vector<DeviceTask>& tas
   for (size_t i = 0; i < tasks.size(); ++i) {
     const DeviceTask& task = tasks[i];
     if (!task.config) throw std::invalid_argument("SystemCBackend: a task without hardware");
-    const BvhImage& image = image_for(*task.config);
-    work.push_back(
-        [&task, &image, &layout] { return simulate(*task.config, image, task, layout); });
+    const TwoLevelBvh& bvh = bvh_for(*task.config);
+    work.push_back([&task, &bvh, &layout] { return simulate(*task.config, bvh, task, layout); });
     if (!task.rays.empty()) busy.push_back(i);
   }
   std::stable_sort(busy.begin(), busy.end(),

@@ -1,29 +1,32 @@
 // Device tracing times from the cycle-approximate model: each task is one RtSimulator run of
 // the device's hardware config over its rays, in a forked child (SystemC elaborates once per
-// process), up to `jobs` children at a time. A BVH image is built once per distinct BVH config.
+// process), up to `jobs` children at a time. A BVH (one level or two, bvh.instancing) is built
+// once per distinct BVH config.
 // Results are deterministic: they do not depend on jobs or on the order children finish.
 #pragma once
 
 #include <map>
 #include <string>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 #include "model/multi/device_backend.h"
 
 namespace rtsim::multi {
 
 class SystemCBackend : public DeviceBackend {
  public:
-  SystemCBackend(const TriangleMesh& mesh, unsigned jobs);
+  // mesh: the scene's world-space triangles; instances: its instance structure.
+  SystemCBackend(const TriangleMesh& mesh, const InstancedMesh& instances, unsigned jobs);
   std::vector<DeviceResult> run(const std::vector<DeviceTask>& tasks,
                                 const ScreenLayout& layout) override;
 
  private:
-  const BvhImage& image_for(const HwConfig& config);
+  const TwoLevelBvh& bvh_for(const HwConfig& config);
 
   const TriangleMesh& mesh_;
+  InstancedMesh instances_;
   unsigned jobs_;
-  std::map<std::string, BvhImage> images_;  // by resolved BVH config
+  std::map<std::string, TwoLevelBvh> bvhs_;  // by resolved BVH config
 };
 
 }  // namespace rtsim::multi

@@ -23,12 +23,12 @@ Clock clock_of(const HwConfig& c) {
 
 }  // namespace
 
-RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySource& source,
+RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
                          uint32_t width, uint32_t height, RayRetireListener* listener,
                          MemoryBinder bind_memory)
     : config_(config),
       clock_(clock_of(config)),
-      traversal_(image),
+      traversal_(bvh),
       pool_(ray_slots(config)),
       collector_(width, height, config.rt.warp_size) {
   fanout_.add(&collector_);
@@ -38,7 +38,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
                                             config.l1.hit_latency,
                                             [this](std::exception_ptr e) { control_.fail(e); });
   // Compulsory misses at every level; the BVH's blocks in bitmaps.
-  uint64_t bvh_begin = image.node_base, bvh_end = image.triangle_base + image.triangles.size();
+  uint64_t bvh_begin = bvh.begin_address(), bvh_end = bvh.end_address();
   l2_->track_cold_misses(bvh_begin, bvh_end);
   if (bind_memory) {
     bind_memory(*l2_);
@@ -58,16 +58,15 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
   collector_.measure_from(config.sim.warmup_rays, config.sim.warmup_frames);
   RaySupplyIf* supply = dispatch_.get();
   if (config.rt.mode == TraversalMode::Treelet) {
-    uint32_t root = image.node_treelet.empty() ? 0 : image.node_treelet[0];
-    uint32_t count = std::max<uint32_t>(image.treelets.count, root + 1);
-    treelets_ = std::make_unique<TreeletQueueModule>("treelet_queues", config.treelet_queues, count,
-                                                     root, pool_, ray_state_bytes(config.rt.stack));
+    treelets_ = std::make_unique<TreeletQueueModule>(
+        "treelet_queues", config.treelet_queues, bvh.treelet_count(), bvh.root_treelet(), pool_,
+        ray_state_bytes(config.rt.stack, bvh.two_level()));
     treelets_->in.bind(dispatch_->out);
     supply = treelets_.get();
   }
   if (config.sort.key != SortKey::None) {
     sorter_ = std::make_unique<RaySorterModule>("ray_sorter", config.sort,
-                                                SceneBounds{image.scene_lo, image.scene_hi});
+                                                SceneBounds{bvh.top->scene_lo, bvh.top->scene_hi});
     sorter_->in.bind(dispatch_->out);
     supply = sorter_.get();
   }
@@ -76,7 +75,7 @@ RtSimulator::RtSimulator(const HwConfig& config, const BvhImage& image, RaySourc
     sorter_->on_leave(on_hand);
   else
     dispatch_->dispatcher().watch(on_hand);
-  if (config.rt.prefetch.trigger != PrefetchTrigger::None) footprints_ = treelet_footprints(image);
+  if (config.rt.prefetch.trigger != PrefetchTrigger::None) footprints_ = treelet_footprints(bvh);
   for (uint32_t i = 0; i < config.rt_units; ++i) {
     std::string name = "rt" + std::to_string(i);
     units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, l1_as_built(config),

@@ -44,7 +44,7 @@ class RtSimulator {
 
   // width x height: the pixel grid of the rays (0 x 0: no pixel buffers). listener (optional)
   // also sees every retired ray, after the stats (the verifier).
-  RtSimulator(const HwConfig& config, const BvhImage& image, RaySource& source, uint32_t width = 0,
+  RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source, uint32_t width = 0,
               uint32_t height = 0, RayRetireListener* listener = nullptr,
               MemoryBinder bind_memory = {});
   ~RtSimulator();

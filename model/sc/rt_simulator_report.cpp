@@ -145,6 +145,50 @@ void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPoo
   r.ratio(p + ".utilisation", p + ".issues", "cycles", 1.0 / pool.config().count);
 }
 
+// What one kind of read cost, summed over the units: accesses and misses at the L1 and L2,
+// DRAM bytes read.
+void report_reads(StatsRegistry& r, const std::string& p,
+                  const std::vector<std::unique_ptr<RtUnitModule>>& units,
+                  ReadCounts RtCoreStats::*kind) {
+  ReadCounts sum;
+  for (const auto& unit : units) {
+    const ReadCounts& c = unit->core().stats().*kind;
+    sum.l1_accesses += c.l1_accesses;
+    sum.l1_hits += c.l1_hits;
+    sum.l2_accesses += c.l2_accesses;
+    sum.l2_hits += c.l2_hits;
+    sum.dram_bytes += c.dram_bytes;
+  }
+  r.counter(p + ".l1_accesses", sum.l1_accesses);
+  r.counter(p + ".l1_misses", sum.l1_accesses - sum.l1_hits);
+  r.counter(p + ".l2_accesses", sum.l2_accesses);
+  r.counter(p + ".l2_misses", sum.l2_accesses - sum.l2_hits);
+  r.counter(p + ".dram_read_bytes", sum.dram_bytes);
+}
+
+// Two levels: steps and reads of each level, over the units, and per ray.
+void report_levels(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units) {
+  uint64_t instances = 0, top_nodes = 0, nodes = 0;
+  for (const auto& unit : units) {
+    const RtCoreStats& s = unit->core().stats();
+    instances += s.instance_steps;
+    top_nodes += s.top_node_steps;
+    nodes += s.node_steps;
+  }
+  r.counter("bvh.instance_steps", instances);
+  r.counter("bvh.top.node_steps", top_nodes);
+  r.counter("bvh.bottom.node_steps", nodes - top_nodes);
+  r.ratio("bvh.instances_per_ray", "bvh.instance_steps", "rays");
+  for (const char* level : {"top", "bottom"}) {
+    std::string p = std::string("bvh.") + level;
+    report_reads(r, p, units, level[0] == 't' ? &RtCoreStats::top : &RtCoreStats::bottom);
+    r.ratio(p + ".nodes_per_ray", p + ".node_steps", "rays");
+    r.ratio(p + ".l1_miss_rate", p + ".l1_misses", p + ".l1_accesses");
+    r.ratio(p + ".l2_miss_rate", p + ".l2_misses", p + ".l2_accesses");
+    r.ratio(p + ".dram_bytes_per_ray", p + ".dram_read_bytes", "rays");
+  }
+}
+
 // The ray buffer's SRAM, and the states kept in memory: what the units read and wrote through
 // their L1s, and what those reads cost below.
 void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
@@ -164,20 +208,7 @@ void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
   r.counter(p + ".memory_writes", b.memory_writes);
   r.counter(p + ".memory_reads", b.memory_reads);
   r.counter(p + ".memory_bytes", b.memory_bytes);
-  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
-  for (const auto& unit : units) {
-    const auto& state = unit->core().stats().state;
-    l1_accesses += state.l1_accesses;
-    l1_hits += state.l1_hits;
-    l2_accesses += state.l2_accesses;
-    l2_hits += state.l2_hits;
-    dram_bytes += state.dram_bytes;
-  }
-  r.counter(p + ".l1_accesses", l1_accesses);
-  r.counter(p + ".l1_misses", l1_accesses - l1_hits);
-  r.counter(p + ".l2_accesses", l2_accesses);
-  r.counter(p + ".l2_misses", l2_accesses - l2_hits);
-  r.counter(p + ".dram_read_bytes", dram_bytes);
+  report_reads(r, p, units, &RtCoreStats::state);
   r.ratio(p + ".sram_bytes_per_ray", p + ".sram_bytes", "rays");
   r.ratio(p + ".memory_bytes_per_ray", p + ".memory_bytes", "rays");
 }
@@ -268,13 +299,14 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     r.ratio("sort.mean_wait", "sort.wait_cycles", "sort.rays");
   }
 
+  bool two_level = traversal_.bvh().two_level();
   UnitTotals total;
   uint32_t slots = config_.rt.warps * config_.rt.warp_size;
   for (const auto& unit : units_) {
     const RtCore& core = unit->core();
     const RtCoreStats& s = core.stats();
     const std::string p = "rt" + std::to_string(core.id());
-    uint64_t steps = s.node_steps + s.leaf_steps;
+    uint64_t steps = s.node_steps + s.leaf_steps + s.instance_steps;
     r.counter(p + ".rays", s.rays_retired);
     r.counter(p + ".node_steps", s.node_steps);
     r.counter(p + ".leaf_steps", s.leaf_steps);
@@ -295,6 +327,10 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
             1.0 / config_.rt.issue_per_cycle);
     report_test_units(r, p + ".box", core.box());
     report_test_units(r, p + ".triangle", core.triangle());
+    if (two_level) {
+      r.counter(p + ".instance_steps", s.instance_steps);
+      report_test_units(r, p + ".transform", core.transform());
+    }
     report_cache(r, p + ".l1", unit->l1.cache().stats(), true,
                  unit->l1.cache().config().bytes_per_cycle);
     total.steps += steps;
@@ -327,6 +363,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
   r.ratio("rt.slot_occupancy", "rt.ray_slot_cycles", "cycles",
           1.0 / (double(slots) * config_.rt_units));
 
+  if (two_level) report_levels(r, units_);
   if (config_.rt.prefetch.trigger != PrefetchTrigger::None) report_prefetch(r, units_);
   report_l2(r, *l2_);
   if (banked_dram_) report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);
@@ -354,6 +391,10 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     r.counter(p + ".trav_leaves", s.counters.trav_leaves);
     r.counter(p + ".trav_prims", s.counters.trav_prims);
     r.counter(p + ".trav_prim_hits", s.counters.trav_prim_hits);
+    if (two_level) {
+      r.counter(p + ".trav_instances", s.counters.trav_instances);
+      r.ratio(p + ".instances_per_ray", p + ".trav_instances", p + ".rays");
+    }
     r.counter(p + ".l1_accesses", s.l1_accesses);
     r.counter(p + ".l1_hits", s.l1_hits);
     r.counter(p + ".l2_accesses", s.l2_accesses);

@@ -31,7 +31,7 @@ Json latency_json(const LatencyHistogram& h) {
 Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::string& p) {
   Json warps = latency_json(s.warp_latency);
   warps["warps"] = s.warp_latency.count();
-  return {{"rays", s.rays},
+  Json out = {{"rays", s.rays},
           {"hits", s.hits},
           {"latency_cycles", latency_json(s.latency)},
           {"warp_latency_cycles", warps},
@@ -41,6 +41,8 @@ Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::str
           {"l2_hit_rate", r.value(p + ".l2_hit_rate")},
           {"dram_bytes_per_ray", r.value(p + ".dram_bytes_per_ray")},
           {"stack_spills_per_ray", r.value(p + ".stack_spills_per_ray")}};
+  if (r.has(p + ".instances_per_ray")) out["instances_per_ray"] = r.value(p + ".instances_per_ray");
+  return out;
 }
 
 Json mismatch_json(const Mismatch& m) {
@@ -98,12 +100,17 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
                 {"ray_slots", r.value(p + ".slot_occupancy")}};
   }
   auto mean = [&](const char* suffix) { return sum(r, c.rt_units, suffix) / c.rt_units; };
-  return {{"mean",
-           {{"box", mean(".box.utilisation")},
-            {"triangle", mean(".triangle.utilisation")},
-            {"control", mean(".control.utilisation")},
-            {"l1_port", mean(".l1.port_utilisation")},
-            {"ray_slots", r.value("rt.slot_occupancy")}}},
+  Json means = {{"box", mean(".box.utilisation")},
+                {"triangle", mean(".triangle.utilisation")},
+                {"control", mean(".control.utilisation")},
+                {"l1_port", mean(".l1.port_utilisation")},
+                {"ray_slots", r.value("rt.slot_occupancy")}};
+  // Two levels: the instance transform units too.
+  if (r.has("rt0.transform.utilisation")) {
+    for (auto& [name, unit] : units.items()) unit["transform"] = r.value(name + ".transform.utilisation");
+    means["transform"] = mean(".transform.utilisation");
+  }
+  return {{"mean", means},
           {"units", units},
           {"dispatch", r.value("dispatch.utilisation")},
           {"l2_port", r.value("l2.port_utilisation")},
@@ -116,6 +123,7 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
 Json bottleneck_json(const Json& u) {
   static const std::pair<const char*, const char*> kResources[] = {
       {"box", "box-test units"},      {"triangle", "triangle-test units"},
+      {"transform", "instance transform units"},
       {"control", "traversal issue"}, {"l1_port", "L1 data ports"},
       {"l2_port", "L2 data ports"},   {"xbar_busiest_link", "busiest crossbar link"},
       {"dram", "DRAM data bus"},      {"dispatch", "ray dispatch"}};
@@ -189,6 +197,40 @@ Json treelet_sizes_json(const TreeletStats& t) {
           {"max_triangle_bytes", t.max_triangle_bytes}};
 }
 
+// One level: its figures. Two: the sums over the levels (triangles: the unique ones), and each
+// level's nodes, bytes and treelets.
+Json bvh_json(const BvhView& bvh) {
+  const BvhImage& top = *bvh.top;
+  if (!bvh.two_level())
+    return {{"description", describe(top.config)},
+            {"levels", 1},
+            {"nodes", top.node_count},
+            {"triangles", top.triangle_count},
+            {"treelets", top.treelets.count},
+            {"treelet_sizes", treelet_sizes_json(top.treelets)},
+            {"bytes", top.total_bytes()},
+            {"node_padding_bytes", top.node_padding_bytes()}};
+  uint64_t nodes = 0, triangles = 0, bytes = 0, padding = 0;
+  for (const BvhImage& b : *bvh.bottom) {
+    nodes += b.node_count;
+    triangles += b.triangle_count;
+    bytes += b.total_bytes();
+    padding += b.node_padding_bytes();
+  }
+  return {{"description", describe(top.config)},
+          {"levels", 2},
+          {"nodes", nodes + top.node_count},
+          {"triangles", triangles},
+          {"instances", top.triangle_count},
+          {"treelets", bvh.treelet_count()},
+          {"bytes", bytes + top.total_bytes()},
+          {"node_padding_bytes", padding + top.node_padding_bytes()},
+          {"top", {{"nodes", top.node_count}, {"bytes", top.total_bytes()},
+                   {"treelets", bvh.bottom->front().treelet_base}}},
+          {"bottom", {{"meshes", bvh.bottom->size()}, {"nodes", nodes}, {"bytes", bytes},
+                      {"treelets", bvh.treelet_count() - bvh.bottom->front().treelet_base}}}};
+}
+
 }  // namespace
 
 Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRunInfo& info) {
@@ -202,14 +244,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
                   {"width", info.header.width},
                   {"height", info.header.height}};
   if (!info.ray_types.empty()) doc["input"]["ray_types"] = info.ray_types;
-  if (info.image)
-    doc["bvh"] = {{"description", describe(info.image->config)},
-                  {"nodes", info.image->node_count},
-                  {"triangles", info.image->triangle_count},
-                  {"treelets", info.image->treelets.count},
-                  {"treelet_sizes", treelet_sizes_json(info.image->treelets)},
-                  {"bytes", info.image->total_bytes()},
-                  {"node_padding_bytes", info.image->node_padding_bytes()}};
+  if (info.bvh) doc["bvh"] = bvh_json(*info.bvh);
   doc["summary"] = {{"mode", traversal_mode_name(c.rt.mode)},
                     {"rays", sim.rays()},
                     {"cycles", sim.cycles()},

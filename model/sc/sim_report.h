@@ -3,6 +3,7 @@
 // counters come from RtSimulator::report and SimStatsCollector, ratios are derived here.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ namespace rtsim {
 struct SimRunInfo {
   std::string stream;   // the ray stream's path (or a description of generated rays)
   StreamHeader header;  // scene, workload, pixel grid
-  const BvhImage* image = nullptr;
+  std::optional<BvhView> bvh;
   const VerifyReport* verify = nullptr;  // null: verification skipped
   double host_seconds = 0;               // wall time of the run, the Embree check included
   std::vector<std::string> ray_types;    // the stream's ray types simulated; empty: all

@@ -9,18 +9,18 @@ uint64_t rays_of(const StreamHeader& header, RayTypeMask types) {
   return n;
 }
 
-StreamSim::StreamSim(const HwConfig& config, const BvhImage& image, const TriangleMesh& mesh,
-                     RayStreamReader& reader, bool verify, bool progress, RayTypeMask types)
+StreamSim::StreamSim(const HwConfig& config, BvhView bvh, const TriangleMesh& mesh,
+                     const InstancedMesh& instances, RayStreamReader& reader, bool verify,
+                     bool progress, RayTypeMask types)
     : source_(reader, types), progress_(progress ? rays_of(reader.header(), types) : 0) {
   if (progress) listeners_.add(&progress_);
   if (verify) {
-    embree_ = std::make_unique<EmbreeScene>(mesh);
-    model_ = std::make_unique<TraversalUnit>(image);
-    verifier_ = std::make_unique<SimVerifier>(mesh, *model_, *embree_);
+    model_ = std::make_unique<TraversalUnit>(bvh);
+    verifier_ = std::make_unique<SimVerifier>(make_verifier(*model_, mesh, instances));
     listeners_.add(verifier_.get());
   }
   const StreamHeader& header = reader.header();
-  sim_ = std::make_unique<RtSimulator>(config, image, source_, header.width, header.height,
+  sim_ = std::make_unique<RtSimulator>(config, bvh, source_, header.width, header.height,
                                        &listeners_);
 }
 

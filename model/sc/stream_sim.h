@@ -19,8 +19,11 @@ uint64_t rays_of(const StreamHeader& header, RayTypeMask types);
 class StreamSim {
  public:
   // types: the ray types of the stream to simulate (the others are skipped).
-  StreamSim(const HwConfig& config, const BvhImage& image, const TriangleMesh& mesh,
-            RayStreamReader& reader, bool verify, bool progress, RayTypeMask types = kAllRayTypes);
+  // mesh: the scene's world-space triangles; instances: its instance structure (what a
+  // two-level bvh was built over), for verify.
+  StreamSim(const HwConfig& config, BvhView bvh, const TriangleMesh& mesh,
+            const InstancedMesh& instances, RayStreamReader& reader, bool verify, bool progress,
+            RayTypeMask types = kAllRayTypes);
   // Tells the listener of every retired ray; call before run().
   void listen(RayRetireListener* listener) { listeners_.add(listener); }
   // Runs to the end of the stream; throws SimStallError if the machine stalls, InputError for
@@ -30,7 +33,6 @@ class StreamSim {
   const VerifyReport* verify_report() const { return verifier_ ? &verifier_->report() : nullptr; }
 
  private:
-  std::unique_ptr<EmbreeScene> embree_;
   std::unique_ptr<TraversalUnit> model_;
   std::unique_ptr<SimVerifier> verifier_;
   StreamRaySource source_;

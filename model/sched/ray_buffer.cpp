@@ -18,8 +18,8 @@ std::string ray_buffer_config_problem(const RayBufferConfig& c) {
   return {};
 }
 
-uint32_t ray_state_bytes(const StackConfig& stack) {
-  return 32 + 16 + 8 + stack.entries * stack.entry_bytes;
+uint32_t ray_state_bytes(const StackConfig& stack, bool two_level) {
+  return 32 + 16 + 8 + (two_level ? 40 : 0) + stack.entries * stack.entry_bytes;
 }
 
 uint64_t ray_state_address(uint32_t context, uint32_t state_bytes) {

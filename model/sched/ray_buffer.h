@@ -41,8 +41,10 @@ std::string ray_buffer_config_problem(const RayBufferConfig& config);
 uint64_t ray_buffer_capacity(const RayBufferConfig& config, uint32_t state_bytes,
                              uint32_t max_rays);
 // Bytes of one ray's state: the ray (origin, direction, t range: 32), its hit record (t,
-// triangle, barycentrics: 16), its id and treelet (8), and its on-chip stack entries.
-uint32_t ray_state_bytes(const StackConfig& stack);
+// triangle, barycentrics: 16), its id and treelet (8), and its on-chip stack entries; two
+// levels add the world-space ray kept while in an instance (32), its instance and the closest
+// hit when it entered (8).
+uint32_t ray_state_bytes(const StackConfig& stack, bool two_level = false);
 // Where a ray context's state lives in memory: local memory above every stack spill region.
 uint64_t ray_state_address(uint32_t context, uint32_t state_bytes);
 

@@ -38,6 +38,8 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
   if (!problem.empty()) return "box: " + problem;
   problem = test_unit_config_problem(c.triangle);
   if (!problem.empty()) return "triangle: " + problem;
+  problem = test_unit_config_problem(c.transform);
+  if (!problem.empty()) return "transform: " + problem;
   const PrefetchConfig& p = c.prefetch;
   if (p.trigger != PrefetchTrigger::None && c.mode == TraversalMode::Packet)
     return "prefetch: needs per-ray traversal (depth_first or treelet), not packet mode";
@@ -62,13 +64,18 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
     : id_(id),
       config_(config),
       traversal_(traversal),
-      node_treelet_(traversal.image().node_treelet),
+      bvh_begin_(traversal.bvh().begin_address()),
+      top_end_(traversal.bvh().top_end_address()),
+      bvh_end_(traversal.bvh().end_address()),
+      entry_treelets_(config.mode == TraversalMode::Treelet ||
+                      config.prefetch.trigger == PrefetchTrigger::FirstVisit),
       memory_(memory),
       stack_(config.stack,
              config.mode == TraversalMode::Treelet ? 0 : config.warps * config.warp_size),
-      state_bytes_(ray_state_bytes(config.stack)),
+      state_bytes_(ray_state_bytes(config.stack, traversal.bvh().two_level())),
       box_(config.box),
       triangle_(config.triangle),
+      transform_(config.transform),
       prefetcher_(config.prefetch, footprints) {
   std::string problem = rt_core_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
@@ -83,7 +90,7 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
   pending_reads_.assign(slots_.size(), 0);
   data_ready_.assign(slots_.size(), 0);
   step_tests_.assign(slots_.size(), kNoTests);
-  step_leaf_.assign(slots_.size(), 0);
+  step_kind_.assign(slots_.size(), StepKind::Done);
   lane_next_.resize(config.warp_size);
   if (config.mode == TraversalMode::Packet) {
     packet_unit_ = config.reorder.below > 0 ? config.reorder.min_width : config.warp_size;
@@ -148,18 +155,28 @@ bool RtCore::claim_issue(uint32_t item, Cycle now) {
 
 RtCore::Next RtCore::peek(const TraversalState& s) const {
   // The entry step() will visit: the topmost one that may still hold a closer hit (the same
-  // test step() makes; check_kind() catches a disagreement).
+  // test step() makes, passing back to world space as it does; check_kind() catches a
+  // disagreement).
+  float t_hit = s.t_hit;
+  bool top = s.level == traversal_.bvh().top;
   for (size_t i = s.stack.size(); i-- > 0;) {
     const StackEntry& e = s.stack[i];
-    if (e.tnear > s.t_hit * kSlabFarGrowth) continue;
-    return {true, e.count > 0, uint32_t(i)};
+    if (e.count == kLeaveInstance) {
+      t_hit = TraversalUnit::world_t_hit(s);
+      top = true;
+      continue;
+    }
+    if (e.tnear > t_hit * kSlabFarGrowth) continue;
+    StepKind kind = e.count == 0                                  ? StepKind::Node
+                    : top && traversal_.bvh().two_level() ? StepKind::Instance
+                                                                  : StepKind::Leaf;
+    return {true, kind, uint32_t(i)};
   }
   return {};
 }
 
 void RtCore::check_kind(const StepResult& step, const Next& next) const {
-  bool leaf = step.kind == StepKind::Leaf;
-  if (step.kind == StepKind::Done ? next.live : !next.live || leaf != next.leaf)
+  if (step.kind == StepKind::Done ? next.live : !next.live || step.kind != next.kind)
     throw std::logic_error("rt" + std::to_string(id_) +
                            ": traversal visited another entry than the unit predicted; "
                            "RtCore::peek must apply the same cull test as TraversalUnit::step");
@@ -221,7 +238,7 @@ void RtCore::install(RayContext* ray, uint32_t slot, Cycle now) {
     traversal_.begin(ray->state, ray->ray);
     ray->state.accesses.clear();
     stack_.start(*ray);
-    ray->entry_treelet.assign(1, node_treelet_.empty() ? 0 : node_treelet_[0]);
+    ray->entry_treelet.assign(1, traversal_.bvh().root_treelet());
     ray->begun = true;
     ray->ready += config_.setup_latency;
     stats_.rays_started++;

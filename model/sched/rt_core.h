@@ -16,6 +16,9 @@
 // step goes on at that cycle. Data reported for a cycle the unit has already passed (it runs up
 // to a quantum ahead of simulated time) is used at the unit's local cycle, counted as late.
 // The test units are booked when the data is reported (their calendar takes any order).
+// Two levels (model/bvh/two_level.h): a top-level leaf is an instance step: the instance
+// record's read, then a pass of the transform unit pool (like a test unit, a ray per test),
+// which moves the ray into the BLAS; treelets are numbered across both levels.
 #pragma once
 
 #include <cstdint>
@@ -67,6 +70,9 @@ struct RtCoreConfig {
   StackConfig stack;
   TestUnitConfig box{1, 8, 8};        // ray-box units: a BVH8 node per issue
   TestUnitConfig triangle{1, 1, 12};  // ray-triangle units
+  // Instance transform units (two levels): a ray per issue; assumed as deep as the box test
+  // (three chained multiply-adds a component, no published figure).
+  TestUnitConfig transform{1, 1, 8};
   PacketPolicy packet_policy = PacketPolicy::NodeFirst;
   PacketReorderConfig reorder;
   Refill refill = Refill::Warp;
@@ -75,9 +81,15 @@ struct RtCoreConfig {
 
 std::string rt_core_config_problem(const RtCoreConfig& config);
 
+// What reads cost at each level of the memory hierarchy.
+struct ReadCounts {
+  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
+};
+
 struct RtCoreStats {
   uint64_t rays_started = 0, rays_retired = 0;
   uint64_t node_steps = 0, leaf_steps = 0;
+  uint64_t instance_steps = 0, top_node_steps = 0;  // two levels: transforms, TLAS node visits
   uint64_t issues = 0;        // issue slots taken: every step, the step that retires a ray too
   uint64_t issue_stalls = 0;  // step starts deferred a cycle by the issue width
   uint64_t fetches = 0, fetch_bytes = 0;    // reads to the L1 (packet mode: after coalescing)
@@ -85,10 +97,10 @@ struct RtCoreStats {
   uint64_t late_data = 0, late_cycles = 0;  // data reported after the unit's local cycle
   uint64_t spill_writes = 0, spill_entries = 0, refill_reads = 0, refill_entries = 0;
   uint64_t postponed = 0, refused = 0;  // treelet mode: rays queued, rays a full queue refused
-  // Treelet mode: what reading ray states kept in memory (ray_buffer.h) cost at each level.
-  struct {
-    uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
-  } state;
+  // Treelet mode: what reading ray states kept in memory (ray_buffer.h) cost.
+  ReadCounts state;
+  // Two levels: what reading the TLAS (nodes, instance records) and the BLASes cost.
+  ReadCounts top, bottom;
   uint64_t warp_steps = 0, active_lanes = 0;  // packet mode
   uint64_t node_warp_steps = 0, distinct_nodes = 0;
   uint64_t packet_lanes = 0;   // lanes of the packets stepped (SIMD efficiency's denominator)
@@ -130,6 +142,7 @@ class RtCore : private ReadClient {
   const RtCoreStats& stats() const { return stats_; }
   const TestUnitPool& box() const { return box_; }
   const TestUnitPool& triangle() const { return triangle_; }
+  const TestUnitPool& transform() const { return transform_; }
   const PrefetchStats& prefetch_stats() const { return prefetcher_.stats(); }
   const RtCoreConfig& config() const { return config_; }
   uint32_t id() const { return id_; }
@@ -141,7 +154,7 @@ class RtCore : private ReadClient {
   enum class Wait : uint8_t { None, Refill, State, Data };
   struct Next {
     bool live = false;  // an entry that step() will visit (not culled)
-    bool leaf = false;
+    StepKind kind = StepKind::Done;
     uint32_t depth = 0;  // its position in the stack
   };
   Next peek(const TraversalState& state) const;
@@ -157,7 +170,7 @@ class RtCore : private ReadClient {
   void on_ray(uint32_t slot, Cycle now);
   void on_packet(uint32_t item, Cycle now);
   // Regroups the packet at `item` and splits it in two; its lanes' next visits in lane_next_.
-  void reorder(uint32_t item, bool leaf_step, Cycle now);
+  void reorder(uint32_t item, StepKind kind, Cycle now);
   bool refills_warps() const {
     return config_.mode == TraversalMode::Packet ||
            (config_.mode == TraversalMode::DepthFirst && config_.refill == Refill::Warp);
@@ -181,18 +194,27 @@ class RtCore : private ReadClient {
   void load_state(RayContext& ray, Cycle now);
   uint32_t treelet_of(const RayContext& ray, const Next& next) const;
   void settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cycle now);
+  // Two levels: which level an address is in (1 top, 2 bottom; 0 neither, or one level), and
+  // counting a read's cost against it.
+  uint32_t level_of(uint64_t addr) const;
+  // Counts a step by kind (and level: `after` is the ray's state after it).
+  void count_step(StepKind kind, const TraversalState& after);
+  void charge_level(uint32_t level, const ReadCharge& charge);
   void check_kind(const StepResult& step, const Next& next) const;
   void prefetch(const std::vector<ByteRange>& ranges, Cycle now);
 
   uint32_t id_;
   RtCoreConfig config_;
   const TraversalUnit& traversal_;
-  const std::vector<uint32_t>& node_treelet_;
+  // Two levels: the address ranges of the top level [bvh_begin_, top_end_) and the bottom
+  // levels [top_end_, bvh_end_).
+  uint64_t bvh_begin_, top_end_, bvh_end_;
+  bool entry_treelets_;  // keep each stack entry's treelet (treelet mode, first-visit prefetch)
   MemoryTarget& memory_;
   RaySupply* supply_ = nullptr;
   HardwareStack stack_;
   uint32_t state_bytes_;  // treelet mode: one ray's state in the ray buffer
-  TestUnitPool box_, triangle_;
+  TestUnitPool box_, triangle_, transform_;
   TreeletPrefetcher prefetcher_;
   EventQueue events_;
   std::vector<RayContext*> slots_;    // warps * warp_size
@@ -202,11 +224,11 @@ class RtCore : private ReadClient {
   std::vector<Wait> wait_;
   std::vector<uint32_t> pending_reads_;
   std::vector<Cycle> data_ready_;
-  // Per slot: the tests of the step waiting for its data (kNoTests: no step); per item: whether
-  // that step is a leaf step.
+  // Per slot: the tests of the step waiting for its data (kNoTests: no step); per item: that
+  // step's kind.
   static constexpr uint32_t kNoTests = ~0u;
   std::vector<uint32_t> step_tests_;
-  std::vector<uint8_t> step_leaf_;
+  std::vector<StepKind> step_kind_;
   uint32_t waiting_reads_ = 0;
   Cycle data_event_ = kPending;
   std::vector<uint32_t> free_slots_;  // refilled by slot

@@ -1,5 +1,6 @@
 // RtCore, packet mode: the rays of a warp step together (SIMT). Each warp step picks a step
-// kind (packet_policy); the lanes whose next visit is of that kind are active, the others
+// kind (packet_policy: node_first takes nodes while any lane has one, then the more needed of
+// leaves and instance transforms; majority the most needed kind); the lanes whose next visit is of that kind are active, the others
 // idle. Active lanes fetch at once, and fetches of the same address in one warp step are
 // coalesced into one read; their tests pass the unit pool one lane after another. The warp
 // steps again when the slowest active lane is done. SIMD efficiency = active lanes / lanes.
@@ -11,38 +12,50 @@
 #include "model/sched/rt_core.h"
 
 namespace rtsim {
+namespace {
+
+// The kind of a packet step, from the lanes that need each kind (node, leaf, instance).
+StepKind packet_kind(PacketPolicy policy, const uint32_t (&lanes)[3]) {
+  auto most = [&](StepKind a, StepKind b) { return lanes[int(b)] > lanes[int(a)] ? b : a; };
+  if (policy == PacketPolicy::NodeFirst && lanes[int(StepKind::Node)] > 0) return StepKind::Node;
+  StepKind best = most(StepKind::Leaf, StepKind::Instance);
+  return policy == PacketPolicy::NodeFirst ? best : most(StepKind::Node, best);
+}
+
+}  // namespace
 
 void RtCore::on_packet(uint32_t item, Cycle now) {
   if (!claim_issue(item, now)) return;
   uint32_t base = item * packet_unit_, width = packet_width_[item];
   // What each lane visits next; a lane with nothing left retires now.
-  uint32_t nodes = 0, leaves = 0;
+  uint32_t lanes[3] = {0, 0, 0}, live = 0;  // by kind: node, leaf, instance
   for (uint32_t lane = 0; lane < width; ++lane) {
     RayContext* ray = slots_[base + lane];
     if (!ray) continue;
     Next& next = lane_next_[lane];
     next = peek(ray->state);
     if (next.live) {
-      (next.leaf ? leaves : nodes)++;
+      lanes[int(next.kind)]++;
+      live++;
       continue;
     }
     check_kind(traversal_.step(ray->state), next);
     retire(base + lane, now);
   }
-  if (nodes + leaves == 0) {
+  if (live == 0) {
     fill(now);  // the packet is done; once its warp's packets all are, the warp refills
     return;
   }
-  bool leaf_step = config_.packet_policy == PacketPolicy::NodeFirst ? nodes == 0 : leaves > nodes;
-  // Regroup only when lanes of the other kind would idle: empty lanes cost nothing here.
-  uint32_t stepping = leaf_step ? leaves : nodes;
-  if (width > config_.reorder.min_width && stepping < nodes + leaves &&
+  StepKind kind = packet_kind(config_.packet_policy, lanes);
+  // Regroup only when lanes of another kind would idle: empty lanes cost nothing here.
+  uint32_t stepping = lanes[int(kind)];
+  if (width > config_.reorder.min_width && stepping < live &&
       stepping < config_.reorder.below * width) {
-    reorder(item, leaf_step, now);
+    reorder(item, kind, now);
     return;
   }
   auto active = [&](uint32_t lane) {
-    return slots_[base + lane] && lane_next_[lane].leaf == leaf_step;
+    return slots_[base + lane] && lane_next_[lane].kind == kind;
   };
   // Spilled entries the active lanes need come back first; the warp waits for them.
   Cycle ready = now;
@@ -65,6 +78,7 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     StepResult step = traversal_.step(ray.state);
     check_kind(step, lane_next_[lane]);
     ++count;
+    count_step(step.kind, ray.state);
     step_tests_[base + lane] = step.tests;
     if (step.access_count > 0) {
       uint64_t addr = ray.state.accesses[step.first_access].address;
@@ -77,20 +91,19 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     settle(ray, lane_next_[lane].depth, 0, now);
     ray.state.accesses.clear();
   }
-  step_leaf_[item] = leaf_step;
+  step_kind_[item] = kind;
   progress_ += count;
-  (leaf_step ? stats_.leaf_steps : stats_.node_steps) += count;
   stats_.warp_steps++;
   stats_.active_lanes += count;
   stats_.packet_lanes += width;
-  if (!leaf_step) {
+  if (kind == StepKind::Node) {
     stats_.node_warp_steps++;
     stats_.distinct_nodes += warp_reads_.size();
   }
   if (!wait_reads(item, Wait::Data, data)) test_step(item, data);
 }
 
-void RtCore::reorder(uint32_t item, bool leaf_step, Cycle now) {
+void RtCore::reorder(uint32_t item, StepKind kind, Cycle now) {
   if (pending_reads_[item] > 0)
     throw std::logic_error("RtCore: regrouping a packet with reads out");
   uint32_t base = item * packet_unit_, width = packet_width_[item];
@@ -99,7 +112,7 @@ void RtCore::reorder(uint32_t item, bool leaf_step, Cycle now) {
     RayContext* ray = slots_[base + lane];
     if (!ray) continue;
     const Next& next = lane_next_[lane];
-    regroup_.push_back({ray, next.leaf != leaf_step, ray->state.stack[next.depth].index, lane});
+    regroup_.push_back({ray, next.kind != kind, ray->state.stack[next.depth].index, lane});
   }
   std::sort(regroup_.begin(), regroup_.end(), [](const Regroup& a, const Regroup& b) {
     if (a.other_kind != b.other_kind) return b.other_kind;

@@ -19,11 +19,35 @@ void add_charge(Cost& cost, const ReadCharge& c) {
 
 }  // namespace
 
+uint32_t RtCore::level_of(uint64_t addr) const {
+  if (addr < bvh_begin_ || addr >= bvh_end_ || top_end_ == bvh_begin_) return 0;
+  return addr < top_end_ ? 1 : 2;
+}
+
+void RtCore::charge_level(uint32_t level, const ReadCharge& charge) {
+  if (level != 0) add_charge(level == 1 ? stats_.top : stats_.bottom, charge);
+}
+
+void RtCore::count_step(StepKind kind, const TraversalState& after) {
+  switch (kind) {
+    case StepKind::Node:
+      stats_.node_steps++;
+      if (after.level == traversal_.bvh().top && traversal_.bvh().two_level())
+        stats_.top_node_steps++;
+      break;
+    case StepKind::Leaf: stats_.leaf_steps++; break;
+    case StepKind::Instance: stats_.instance_steps++; break;
+    case StepKind::Done: break;
+  }
+}
+
 Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bool state) {
   ReadCharge charge;
-  Cycle ready = memory_.read(addr, bytes, now, this, ray.slot, charge);
+  uint32_t level = level_of(addr);
+  Cycle ready = memory_.read(addr, bytes, now, this, ray.slot | uint64_t(level) << 32, charge);
   add_charge(ray.cost, charge);
   if (state) add_charge(stats_.state, charge);
+  charge_level(level, charge);
   stats_.fetches++;
   stats_.fetch_bytes += bytes;
   if (ready == kPending) {
@@ -37,6 +61,7 @@ Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bo
 void RtCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   auto slot = uint32_t(token);
   add_charge(slots_[slot]->cost, charge);
+  charge_level(uint32_t(token >> 32), charge);
   uint32_t item = item_of(slot);
   if (wait_[item] == Wait::State) add_charge(stats_.state, charge);
   data_ready_[item] = std::max(data_ready_[item], ready);
@@ -67,7 +92,8 @@ bool RtCore::wait_reads(uint32_t item, Wait wait, Cycle known_ready) {
 }
 
 Cycle RtCore::test_step(uint32_t item, Cycle data) {
-  TestUnitPool& unit = step_leaf_[item] ? triangle_ : box_;
+  StepKind kind = step_kind_[item];
+  TestUnitPool& unit = kind == StepKind::Leaf ? triangle_ : kind == StepKind::Node ? box_ : transform_;
   bool packet = config_.mode == TraversalMode::Packet;
   uint32_t first = packet ? item * packet_unit_ : item;
   uint32_t count = packet ? packet_width_[item] : 1;
@@ -130,11 +156,14 @@ void RtCore::settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cy
     stats_.spill_writes++;
     stats_.spill_entries += spill.entries;
   }
-  if (config_.mode != TraversalMode::Treelet) return;
-  // The new entries belong to the visited node's treelet if they are leaves, else to their own.
+  if (!entry_treelets_) return;
+  // The new entries belong to the visited node's treelet if they are leaves (or the way back
+  // from an instance), else to their own, in the level the ray is in now.
+  const BvhImage& level = *ray.state.level;
   ray.entry_treelet.resize(total);
   for (uint32_t i = kept; i < total; ++i)
-    ray.entry_treelet[i] = stack[i].count == 0 ? node_treelet_[stack[i].index] : visited_treelet;
+    ray.entry_treelet[i] =
+        stack[i].count == 0 ? node_treelet(level, stack[i].index) : visited_treelet;
 }
 
 void RtCore::on_ray(uint32_t slot, Cycle now) {
@@ -171,11 +200,10 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
     events_.push(ready, slot);
     return;
   }
-  bool treelets = config_.mode == TraversalMode::Treelet;
-  uint32_t visited_treelet = treelets && next.live ? treelet_of(ray, next) : 0;
-  // The node the step visits, for a prefetch on entering its treelet (after its own read).
+  uint32_t visited_treelet = entry_treelets_ && next.live ? treelet_of(ray, next) : 0;
+  // A node step prefetches on entering its treelet (after its own read).
   bool first_visit = config_.prefetch.trigger == PrefetchTrigger::FirstVisit;
-  uint32_t node = first_visit && next.live && !next.leaf ? ray.state.stack[next.depth].index : ~0u;
+  bool prefetch_node = first_visit && next.kind == StepKind::Node;
   StepResult step = traversal_.step(ray.state);
   check_kind(step, next);
   if (step.kind == StepKind::Done) {
@@ -185,12 +213,12 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   }
   progress_++;
   Cycle data = fetch(ray, step, now);
-  if (node != ~0u) prefetch(prefetcher_.on_node(node_treelet_[node]), now);
-  (step.kind == StepKind::Node ? stats_.node_steps : stats_.leaf_steps)++;
+  if (prefetch_node) prefetch(prefetcher_.on_node(visited_treelet), now);
+  count_step(step.kind, ray.state);
   settle(ray, next.depth, visited_treelet, now);
   ray.state.accesses.clear();
   step_tests_[slot] = step.tests;
-  step_leaf_[slot] = step.kind == StepKind::Leaf;
+  step_kind_[slot] = step.kind;
   if (!wait_reads(slot, Wait::Data, now)) test_step(slot, data);
 }
 

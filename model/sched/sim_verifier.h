@@ -1,8 +1,10 @@
 // Checks every retired ray of the timing model against Embree (robust mode): the answer the
-// timed traversal state holds is compared with EmbreeScene::trace, and every disagreement
-// goes to the double-precision arbiter, exactly as `rtsim verify` does (model/verify). The
-// count that must stay zero is report().unexplained().
+// timed traversal state holds is judged as `rtsim verify` judges it (model/verify), every
+// disagreement by the double-precision arbiter. The count that must stay zero is
+// report().unexplained().
 #pragma once
+
+#include <utility>
 
 #include "model/sched/ray_supply.h"
 #include "model/verify/verifier.h"
@@ -10,18 +12,16 @@
 namespace rtsim {
 
 class SimVerifier : public RayRetireListener {
-public:
-  SimVerifier(const TriangleMesh& mesh, const TraversalUnit& model, const EmbreeScene& embree,
-              ArbiterConfig config = {}, size_t max_examples = 10);
-  void retired(const RayContext& ray, Cycle now) override;
-  const VerifyReport& report() const { return report_; }
+ public:
+  // checks: made over the traversal unit the timing model drives (one or two levels).
+  explicit SimVerifier(VerifierSetup checks) : checks_(std::move(checks)) {}
+  void retired(const RayContext& ray, Cycle) override {
+    checks_.verifier->judge(ray.ray, ray.state, ray.sequence);
+  }
+  const VerifyReport& report() const { return checks_.verifier->report(); }
 
-private:
-  const TraversalUnit& model_;
-  const EmbreeScene& embree_;
-  Arbiter arbiter_;
-  size_t max_examples_;
-  VerifyReport report_;
+ private:
+  VerifierSetup checks_;
 };
 
 }  // namespace rtsim

@@ -25,19 +25,21 @@ const char* prefetch_trigger_name(PrefetchTrigger trigger) {
   }
 }
 
-TreeletFootprints treelet_footprints(const BvhImage& image) {
-  uint32_t count = 0;
-  for (uint32_t t : image.node_treelet) count = std::max(count, t + 1);
+TreeletFootprints treelet_footprints(BvhView bvh) {
+  uint32_t count = bvh.treelet_count();
   std::vector<std::vector<ByteRange>> nodes(count), triangles(count);
   NodeView view;
-  for (uint32_t position = 0; position < image.node_count; ++position) {
-    uint32_t t = image.node_treelet[position];
-    add_range(nodes[t], image.node_address(position), image.node_size);
-    decode_node(image.config.node_format, image.config.width, image.node_bytes(position), view);
-    for (int s = 0; s < view.slots; ++s)
-      if ((view.valid >> s & 1) && view.count[s] > 0)
-        add_range(triangles[t], image.triangle_address(view.index[s]),
-                  view.count[s] * image.triangle_stride);
+  for (const BvhImage* level : bvh.levels()) {
+    const BvhImage& image = *level;
+    for (uint32_t position = 0; position < image.node_count; ++position) {
+      uint32_t t = node_treelet(image, position);
+      add_range(nodes[t], image.node_address(position), image.node_size);
+      decode_node(image.config.node_format, image.config.width, image.node_bytes(position), view);
+      for (int s = 0; s < view.slots; ++s)
+        if ((view.valid >> s & 1) && view.count[s] > 0)
+          add_range(triangles[t], image.triangle_address(view.index[s]),
+                    view.count[s] * image.triangle_stride);
+    }
   }
   for (uint32_t t = 0; t < count; ++t)
     nodes[t].insert(nodes[t].end(), triangles[t].begin(), triangles[t].end());

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "model/bvh/bvh_image.h"
+#include "model/bvh/two_level.h"
 
 namespace rtsim {
 
@@ -38,7 +38,7 @@ struct ByteRange {
 // Per treelet: the byte ranges of its nodes, then of its leaves' triangles. Computed once per
 // simulation and shared by the units.
 using TreeletFootprints = std::vector<std::vector<ByteRange>>;
-TreeletFootprints treelet_footprints(const BvhImage& image);
+TreeletFootprints treelet_footprints(BvhView bvh);
 
 struct PrefetchStats {
   uint64_t treelets = 0;  // prefetches started

@@ -29,11 +29,8 @@ void record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind
 
 }  // namespace
 
-TraversalUnit::TraversalUnit(const BvhImage& image, TraversalConfig config)
-    : image_(image), config_(config) {}
-
-TraversalUnit::TraversalUnit(const TwoLevelBvh& bvh, TraversalConfig config)
-    : image_(bvh.top), two_level_(&bvh), config_(config) {}
+TraversalUnit::TraversalUnit(BvhView bvh, TraversalConfig config)
+    : bvh_(bvh), image_(*bvh.top), two_level_(bvh.two_level()), config_(config) {}
 
 void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
   s.ray = prepare_ray(ray, image_.scene_extent, config_.box_padding);

@@ -90,9 +90,9 @@ struct StepResult {
 
 class TraversalUnit {
  public:
-  explicit TraversalUnit(const BvhImage& image, TraversalConfig config = {});
-  // Two levels: starts at the top level; hits name the instance and its mesh's triangle.
-  explicit TraversalUnit(const TwoLevelBvh& bvh, TraversalConfig config = {});
+  // One level, or two (starts at the top level; hits name the instance and its mesh's
+  // triangle).
+  explicit TraversalUnit(BvhView bvh, TraversalConfig config = {});
 
   // Starts a ray: the root node is the first thing on the stack.
   void begin(TraversalState& state, const Ray& ray) const;
@@ -102,8 +102,11 @@ class TraversalUnit {
   Hit result(const TraversalState& state, const Ray& ray) const;
   // begin, step until Done, result.
   Hit trace(TraversalState& state, const Ray& ray) const;
+  // Two levels, in an instance: the closest hit so far in world units, as leaving it sets it.
+  static float world_t_hit(const TraversalState& state);
 
-  const BvhImage& image() const { return image_; }
+  const BvhImage& image() const { return image_; }  // the only level, or the top one
+  const BvhView& bvh() const { return bvh_; }
   const TraversalConfig& config() const { return config_; }
 
  private:
@@ -112,8 +115,9 @@ class TraversalUnit {
   StepResult visit_instance(TraversalState& state, const StackEntry& entry) const;
   void leave_instance(TraversalState& state) const;
 
+  BvhView bvh_;
   const BvhImage& image_;  // the only level, or the top one
-  const TwoLevelBvh* two_level_ = nullptr;
+  bool two_level_;
   TraversalConfig config_;
 };
 

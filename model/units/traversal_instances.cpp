@@ -16,7 +16,7 @@ StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& en
     out.access_count = 1;
   }
   InstanceRecord r = read_instance_record(image_, entry.index);
-  const BvhImage& blas = two_level_->bottom[r.blas];
+  const BvhImage& blas = (*bvh_.bottom)[r.blas];
   // Transform the ray into object space, in the world ray's t units, and enter the BLAS root;
   // the marker below its entries brings the ray back.
   Ray object;
@@ -36,11 +36,15 @@ StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& en
   return out;
 }
 
-void TraversalUnit::leave_instance(TraversalState& s) const {
+float TraversalUnit::world_t_hit(const TraversalState& s) {
   // A hit in the instance moves t (object t is world t scaled by a power of two in prepare_ray:
   // exact); without one, the world's t stands as it was, also where the scaling overflowed.
   bool hit_here = s.hit_instance == s.instance;  // each instance is entered at most once
-  s.t_hit = hit_here ? std::ldexp(s.t_hit, s.ray.t_exponent) : s.world_t_hit;
+  return hit_here ? std::ldexp(s.t_hit, s.ray.t_exponent) : s.world_t_hit;
+}
+
+void TraversalUnit::leave_instance(TraversalState& s) const {
+  s.t_hit = world_t_hit(s);
   s.ray = s.world;
   s.level = &image_;
   s.instance = kNoHit;

@@ -29,20 +29,25 @@ uint32_t Verifier::flat_prim(uint32_t instance, uint32_t prim) const {
 }
 
 bool Verifier::check(const Ray& ray) {
-  Hit model = model_.trace(state_, ray);
+  model_.trace(state_, ray);
+  return judge(ray, state_, report_.rays);
+}
+
+bool Verifier::judge(const Ray& ray, const TraversalState& state, uint64_t index) {
+  Hit model = model_.result(state, ray);
   Hit embree = embree_.trace(ray);
   model.prim = flat_prim(model.instance, model.prim);
   embree.prim = flat_prim(embree.instance, embree.prim);
-  uint32_t model_prim = flat_prim(state_.hit_instance, state_.prim);
-  float model_t = std::ldexp(state_.t_hit, state_.ray.t_exponent);
+  uint32_t model_prim = flat_prim(state.hit_instance, state.prim);
+  float model_t = std::ldexp(state.t_hit, state.ray.t_exponent);
   int type = static_cast<int>(ray.type);
   report_.rays++;
   report_.rays_by_type[type]++;
   report_.model_hits += model.hit();
   report_.embree_hits += embree.hit();
-  report_.counters += state_.counters;
-  report_.accesses += state_.accesses.size();
-  for (const MemoryAccess& a : state_.accesses) report_.access_bytes += a.bytes;
+  report_.counters += state.counters;
+  report_.accesses += state.accesses.size();
+  for (const MemoryAccess& a : state.accesses) report_.access_bytes += a.bytes;
 
   Verdict verdict = arbiter_.judge(ray, embree, model_prim, model_t);
   if (verdict.agree) {
@@ -53,12 +58,27 @@ bool Verifier::check(const Ray& ray) {
   report_.by_class[cls]++;
   report_.right[cls][static_cast<int>(verdict.right)]++;
   report_.mismatches_by_type[type]++;
-  Mismatch example{report_.rays - 1, ray, embree, model, model_prim, verdict};
+  Mismatch example{index, ray, embree, model, model_prim, verdict};
   if (report_.examples.size() < max_examples_) report_.examples.push_back(example);
   if (verdict.cls == MismatchClass::Unexplained &&
       report_.unexplained_examples.size() < max_examples_)
     report_.unexplained_examples.push_back(example);
   return false;
+}
+
+VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat,
+                            const InstancedMesh& instances, ArbiterConfig config,
+                            size_t max_examples) {
+  VerifierSetup out;
+  out.flat = std::make_unique<EmbreeScene>(flat);
+  if (!model.bvh().two_level()) {
+    out.verifier = std::make_unique<Verifier>(flat, model, *out.flat, config, max_examples);
+    return out;
+  }
+  out.instanced = std::make_unique<EmbreeScene>(instances);
+  out.verifier = std::make_unique<Verifier>(flat, flat_offsets(instances), *out.flat, model,
+                                            *out.instanced, config, max_examples);
+  return out;
 }
 
 }  // namespace rtsim

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "model/units/traversal.h"
@@ -52,6 +53,9 @@ class Verifier {
 
   // Traces one ray both ways and records the outcome; returns true if they agree.
   bool check(const Ray& ray);
+  // Records the outcome of a ray the model has traced already (state: the model's traversal
+  // state at its end; index: the ray's number in the stream); returns true if they agree.
+  bool judge(const Ray& ray, const TraversalState& state, uint64_t index);
   const VerifyReport& report() const { return report_; }
 
  private:
@@ -66,5 +70,16 @@ class Verifier {
   TraversalState state_;
   VerifyReport report_;
 };
+
+// A verifier with the references it checks against: Embree over the flat mesh (the
+// arbiter's), and for a two-level model (model.bvh().two_level()) Embree over `instances`,
+// whose flattening `flat` is.
+struct VerifierSetup {
+  std::unique_ptr<EmbreeScene> flat, instanced;
+  std::unique_ptr<Verifier> verifier;
+};
+VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat,
+                            const InstancedMesh& instances, ArbiterConfig config = {},
+                            size_t max_examples = 10);
 
 }  // namespace rtsim

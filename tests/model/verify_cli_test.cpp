@@ -108,11 +108,13 @@ TEST_F(VerifyCli, BadInputExitsTwo) {
   EXPECT_NE(r.err.find("max_leaf_size"), std::string::npos) << r.err;
 }
 
-TEST_F(VerifyCli, InstancesNeedASceneFile) {
+// A built-in scene has no instance structure: two levels make it one instance.
+TEST_F(VerifyCli, InstancesOfAFlatSceneAreOneInstance) {
   auto r = test::run_rtsim("verify " + stream_ + " --instances");
-  EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("--instances needs a scene file"), std::string::npos) << r.err;
-  EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+  EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("over 1 instances; bottom: 1 meshes"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("trav_instances 0.00"), std::string::npos) << r.out;
+  EXPECT_EQ(test::run_rtsim("verify " + stream_ + " --instances --flatten").exit_code, 2);
 }
 
 // The two-level BVH over a scene file's instances (Sponza: 34 objects, each a mesh placed

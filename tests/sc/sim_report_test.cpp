@@ -69,7 +69,7 @@ TEST(SimReport, WritesStatsConfigAndPixelFiles) {
     RtSimulator sim(config, image, source, 16, 8);
     sim.run();
     SimRunInfo info;
-    info.image = &image;
+    info.bvh = image;
     write_sim_results(dir, sim, info);
     std::string out;
     for (const auto& entry : std::filesystem::directory_iterator(dir))

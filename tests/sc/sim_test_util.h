@@ -44,22 +44,21 @@ inline nlohmann::json simulate(const HwConfig& config, const Scene& scene,
                                const std::vector<Ray>& rays, bool verify = false,
                                uint32_t width = 0, uint32_t height = 0) {
   std::string text = run_in_child([&] {
-    BvhImage image = build_bvh_image(scene.mesh, config.bvh);
-    std::unique_ptr<EmbreeScene> embree;
+    InstancedMesh instances = scene.instanced;
+    TwoLevelBvh bvh = build_scene_levels(scene.mesh, instances, config.bvh);
     std::unique_ptr<TraversalUnit> model;
     std::unique_ptr<SimVerifier> verifier;
     if (verify) {
-      embree = std::make_unique<EmbreeScene>(scene.mesh, 1);
-      model = std::make_unique<TraversalUnit>(image);
-      verifier = std::make_unique<SimVerifier>(scene.mesh, *model, *embree);
+      model = std::make_unique<TraversalUnit>(bvh);
+      verifier = std::make_unique<SimVerifier>(make_verifier(*model, scene.mesh, instances));
     }
     VectorRaySource source(rays);
-    RtSimulator sim(config, image, source, width, height, verifier.get());
+    RtSimulator sim(config, bvh, source, width, height, verifier.get());
     sim.run();
     StatsRegistry stats;
     sim.report(stats);
     SimRunInfo info;
-    info.image = &image;
+    info.bvh = bvh;
     info.verify = verifier ? &verifier->report() : nullptr;
     nlohmann::ordered_json doc = sim_stats_json(sim, stats, info);
     doc.erase("host");

@@ -62,6 +62,45 @@ TEST(RtCoreTiming, EveryStageTakesExactlyItsLatency) {
   EXPECT_EQ(core.stats().issues, 3u) << "the node step, the leaf step and the step that retires";
 }
 
+// Two levels: the triangle as one instance, moved along z. The TLAS root, the instance step
+// (its record, then the transform unit), the BLAS root and the leaf.
+TEST(RtCoreTiming, AnInstanceStepTakesItsRecordFetchAndTheTransformLatency) {
+  OneTriangle scene;
+  InstancedMesh world;
+  world.meshes = {scene.mesh};
+  Transform moved;
+  moved.offset = {0, 0, 2};
+  world.instances = {{0, moved}};
+  TwoLevelBvh bvh = build_two_level_bvh(world, BvhConfig{});
+  TraversalUnit unit(bvh);
+  test::MockRayMemory memory(50);
+  test::MockSupply supply({scene.ray}, unit, 1, {1.0, 10});
+  RtCoreConfig c = timing_config();
+  c.transform = {1, 1, 5};
+  RtCore core(0, c, unit, memory);
+  core.set_supply(&supply.dispatcher);
+  test::drive({&core});
+  ASSERT_EQ(supply.listener.done.size(), 1u);
+  const test::Retired& r = supply.listener.done[0];
+  ASSERT_TRUE(r.hit.hit());
+  EXPECT_FLOAT_EQ(r.hit.t, 7.0f);
+  ASSERT_EQ(memory.reads.size(), 4u);
+  EXPECT_EQ(memory.reads[0].at, 14u) << "TLAS root after dispatch and setup";
+  EXPECT_EQ(memory.reads[1].at, 73u) << "instance record after memory, box unit and control";
+  EXPECT_EQ(memory.reads[1].bytes, kInstanceRecordBytes);
+  EXPECT_EQ(memory.reads[1].addr, bvh.top.triangle_base);
+  // Data at 123, transform 5, control 1.
+  EXPECT_EQ(memory.reads[2].at, 129u) << "BLAS root after memory, transform unit and control";
+  EXPECT_EQ(memory.reads[2].addr, bvh.bottom[0].node_base);
+  EXPECT_EQ(memory.reads[3].at, 188u) << "leaf after memory, box unit and control";
+  // Data at 238, triangle unit 12, control 1; the step that retires pops the way back too.
+  EXPECT_EQ(r.cycle, 251u);
+  EXPECT_EQ(core.stats().node_steps, 2u);
+  EXPECT_EQ(core.stats().top_node_steps, 1u);
+  EXPECT_EQ(core.stats().instance_steps, 1u);
+  EXPECT_EQ(core.transform().stats().tests, 1u);
+}
+
 TEST(RtCoreTiming, DataReportedLaterStepsExactlyAsDataKnownAtOnce) {
   OneTriangle scene;
   TraversalUnit unit(scene.image);

@@ -1,0 +1,119 @@
+// Whole simulations of two-level BVHs (model/bvh/two_level.h): every ray of an instanced world
+// retires with Embree's instanced answer in every traversal mode, the flattened world gives the
+// same hits, and the per-level stats add up.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "tests/instanced_world.h"
+#include "tests/sc/sim_test_util.h"
+
+namespace rtsim {
+namespace {
+
+Scene instanced_scene(const InstancedMesh& geometry) {
+  Scene scene;
+  scene.source = "test:instanced";
+  scene.mesh = flatten(geometry).mesh;
+  scene.instanced = geometry;
+  return scene;
+}
+
+// Closest-hit and any-hit rays through the world, some from inside its instances.
+std::vector<Ray> world_rays(size_t n, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::vector<Ray> rays;
+  for (size_t i = 0; i < n; ++i) {
+    Ray ray = test::world_ray(rng);
+    if (i % 3 == 2) {
+      ray.query = Query::AnyHit;
+      ray.type = RayType::Shadow;
+      ray.tmax = 0.7f;
+    }
+    rays.push_back(ray);
+  }
+  return rays;
+}
+
+HwConfig machine(const char* mode, const char* instancing) {
+  return load_hw_config("", {std::string("rt.mode=\"") + mode + "\"",
+                             std::string("bvh.instancing=\"") + instancing + "\"",
+                             "rt.transform.latency=5", "bvh.treelet_bytes=512"});
+}
+
+class SimInstances : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(SimInstances, EveryRayRetiresWithEmbreesInstancedAnswerAndTheLevelsAddUp) {
+  Scene scene = instanced_scene(test::instanced_world());
+  std::vector<Ray> rays = world_rays(3000, 5);
+  HwConfig config = machine(GetParam(), "two_level");
+  nlohmann::json doc = test::simulate(config, scene, rays, true);
+  EXPECT_EQ(doc["verify"]["rays"], rays.size());
+  EXPECT_EQ(doc["verify"]["unexplained"], 0) << doc["verify"].dump();
+  EXPECT_EQ(doc["bvh"]["levels"], 2);
+  EXPECT_EQ(doc["bvh"]["instances"], scene.instanced.instances.size());
+  EXPECT_EQ(doc["bvh"]["triangles"], scene.instanced.unique_triangles());
+  uint32_t units = config.rt_units;
+  double nodes = 0, instances = 0, transforms = 0;
+  for (uint32_t u = 0; u < units; ++u) {
+    std::string p = "rt" + std::to_string(u);
+    nodes += test::stat(doc, p + ".node_steps");
+    instances += test::stat(doc, p + ".instance_steps");
+    transforms += test::stat(doc, p + ".transform.tests");
+  }
+  EXPECT_GT(instances, rays.size() / 4.0) << "rays enter instances";
+  EXPECT_EQ(test::stat(doc, "bvh.instance_steps"), instances);
+  EXPECT_EQ(transforms, instances) << "one transform per instance entered";
+  EXPECT_EQ(test::stat(doc, "bvh.top.node_steps") + test::stat(doc, "bvh.bottom.node_steps"),
+            nodes);
+  EXPECT_GT(test::stat(doc, "bvh.top.node_steps"), 0);
+  EXPECT_GT(test::stat(doc, "bvh.bottom.node_steps"), 0);
+  EXPECT_GT(test::stat(doc, "bvh.top.l1_accesses"), 0);
+  EXPECT_GT(test::stat(doc, "bvh.bottom.l1_accesses"), 0);
+  double typed = 0;
+  for (auto& [name, t] : doc["ray_types"].items())
+    typed += t["instances_per_ray"].get<double>() * t["rays"].get<double>();
+  EXPECT_NEAR(typed, instances, 0.5) << "per-type transforms add up";
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, SimInstances,
+                         ::testing::Values("depth_first", "treelet", "packet"));
+
+TEST(SimInstancing, FlattenedAndInstancedWorldsGiveTheSameHits) {
+  Scene scene = instanced_scene(test::instanced_world());
+  std::vector<Ray> rays = world_rays(2000, 8);
+  nlohmann::json flat = test::simulate(machine("depth_first", "flatten"), scene, rays, true);
+  nlohmann::json two = test::simulate(machine("depth_first", "two_level"), scene, rays, true);
+  EXPECT_EQ(flat["bvh"]["levels"], 1);
+  EXPECT_EQ(flat["bvh"]["triangles"], scene.mesh.triangle_count());
+  EXPECT_FALSE(flat["stats"]["counters"].contains("bvh.instance_steps"))
+      << "one level reports no levels";
+  EXPECT_EQ(flat["verify"]["unexplained"], 0);
+  EXPECT_EQ(two["verify"]["unexplained"], 0);
+  for (auto& [name, t] : flat["ray_types"].items())
+    EXPECT_EQ(t["hits"], two["ray_types"][name]["hits"]) << name;
+  // auto: two levels here (a mesh is placed more than once), one where each is placed once.
+  nlohmann::json automatic = test::simulate(machine("depth_first", "auto"), scene, rays);
+  EXPECT_EQ(automatic["bvh"]["levels"], 2);
+  InstancedMesh once = test::instanced_world();
+  once.instances.resize(1);
+  once.instances.push_back({1, once.instances[0].to_world});
+  nlohmann::json single =
+      test::simulate(machine("depth_first", "auto"), instanced_scene(once), rays);
+  EXPECT_EQ(single["bvh"]["levels"], 1);
+}
+
+TEST(SimInstancing, AFlatSceneOnTwoLevelsIsOneInstance) {
+  test::SimScene s("grid:64");
+  std::vector<Ray> rays = test::mixed_rays(s.scene, 1000, 2);
+  nlohmann::json doc = test::simulate(machine("treelet", "two_level"), s.scene, rays, true);
+  EXPECT_EQ(doc["bvh"]["levels"], 2);
+  EXPECT_EQ(doc["bvh"]["instances"], 1);
+  EXPECT_EQ(doc["verify"]["unexplained"], 0);
+  double entered = test::stat(doc, "bvh.instances_per_ray");
+  EXPECT_LE(entered, 1.0) << "a ray enters the one instance at most once";
+  EXPECT_GT(entered, 0.5) << "rays that meet the scene's box enter it";
+}
+
+}  // namespace
+}  // namespace rtsim
