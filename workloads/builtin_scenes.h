@@ -33,6 +33,33 @@ MeshTemplate grid_quad(int cells);
 // rationals such as (4/5, 3/5) to stay free of trigonometry.
 glm::mat3 rotation_y(float c, float s);
 
+// PCG32 (O'Neill 2014, pcg-random.org): the same stream on every platform, unlike the
+// std:: distributions.
+class Pcg32 {
+ public:
+  explicit Pcg32(uint64_t seed) {
+    next();
+    state_ += seed;
+    next();
+  }
+  uint32_t next() {
+    uint64_t old = state_;
+    state_ = old * 6364136223846793005ull + kIncrement;
+    auto xorshifted = uint32_t(((old >> 18u) ^ old) >> 27u);
+    auto rot = uint32_t(old >> 59u);
+    return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
+  }
+  // Uniform in [-1, 1) with 24 bits, exact in float.
+  float symmetric() { return float(int32_t(next() >> 8) - (1 << 23)) * 0x1p-23f; }
+
+ private:
+  static constexpr uint64_t kIncrement = 1442695040888963407ull;
+  uint64_t state_ = 0;
+};
+
+// Uniform random rotation: a quaternion drawn uniformly in the unit 4-ball, normalized.
+glm::mat3 random_rotation(Pcg32& rng);
+
 // A dielectric with the given colour and roughness; callers set the other fields.
 Material make_material(const std::string& name, const glm::vec3& color, float roughness);
 
@@ -57,7 +84,7 @@ private:
   Scene scene_;
 };
 
-// Parses the N of "grid:N" / "foliage:N": 1 <= N <= kMaxBuiltinTriangles, else InputError
+// Parses the N of "grid:N", "foliage:N", "forest:N": 1 <= N <= kMaxBuiltinTriangles, else InputError
 // naming source.
 uint64_t parse_triangle_count(const std::string& source, const std::string& text);
 constexpr uint64_t kMaxBuiltinTriangles = 1000000000;
@@ -66,8 +93,9 @@ Scene make_cornell();
 Scene make_pica();
 Scene make_grid(const std::string& source, uint64_t triangles);
 Scene make_foliage(const std::string& source, uint64_t triangles);
+Scene make_forest(const std::string& source, uint64_t triangles);
 
-// Dispatches "cornell", "pica", "grid:N", "foliage:N" ("builtin:" already removed); the Scene is
+// Dispatches "cornell", "pica", "grid:N", "foliage:N", "forest:N" ("builtin:" already removed); the Scene is
 // not yet finalized.
 Scene make_builtin_scene(const std::string& name_and_params);
 

@@ -17,30 +17,6 @@ constexpr float kGridSpacing = 3.0f;  // sphere radius is 1
 constexpr float kFoliageHalfSize = 5.0f;
 constexpr uint64_t kFoliageSeed = 0x5eedf011a6e5ull;
 
-// PCG32 (O'Neill 2014, pcg-random.org): the same stream on every platform, unlike the
-// std:: distributions.
-class Pcg32 {
-public:
-  explicit Pcg32(uint64_t seed) {
-    next();
-    state_ += seed;
-    next();
-  }
-  uint32_t next() {
-    uint64_t old = state_;
-    state_ = old * 6364136223846793005ull + kIncrement;
-    auto xorshifted = uint32_t(((old >> 18u) ^ old) >> 27u);
-    auto rot = uint32_t(old >> 59u);
-    return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
-  }
-  // Uniform in [-1, 1) with 24 bits, exact in float.
-  float symmetric() { return float(int32_t(next() >> 8) - (1 << 23)) * 0x1p-23f; }
-
-private:
-  static constexpr uint64_t kIncrement = 1442695040888963407ull;
-  uint64_t state_ = 0;
-};
-
 // Smallest k with k^3 >= n.
 uint64_t cube_root_up(uint64_t n) {
   uint64_t k = 1;
@@ -48,7 +24,8 @@ uint64_t cube_root_up(uint64_t n) {
   return k;
 }
 
-// Uniform random rotation: a quaternion drawn uniformly in the unit 4-ball, normalized.
+}  // namespace
+
 glm::mat3 random_rotation(Pcg32& rng) {
   float w, x, y, z, n2;
   do {
@@ -60,8 +37,6 @@ glm::mat3 random_rotation(Pcg32& rng) {
                    V(s * (x * y - w * z), 1 - s * (x * x + z * z), s * (y * z + w * x)),
                    V(s * (x * z + w * y), s * (y * z - w * x), 1 - s * (x * x + y * y)));
 }
-
-}  // namespace
 
 Scene make_grid(const std::string& source, uint64_t triangles) {
   const MeshTemplate sphere = octa_sphere(kGridSphereLevel);

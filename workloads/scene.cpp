@@ -46,11 +46,11 @@ bool is_builtin_scene(const std::string& spec) {
   if (starts_with(spec, kBuiltinPrefix)) return true;
   std::string name = spec.substr(0, spec.find(':'));
   return name == "cornell" || name == "pica" || name == "grid" || name == "foliage" ||
-         name == "hardcases";
+         name == "forest" || name == "hardcases";
 }
 
 std::vector<std::string> builtin_scene_names() {
-  return {"cornell", "pica", "grid:N", "foliage:N", "hardcases"};
+  return {"cornell", "pica", "grid:N", "foliage:N", "forest:N", "hardcases"};
 }
 
 Scene load_scene(const std::string& spec) {

@@ -52,9 +52,9 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<SceneCamera> cameras;  // in file order; the first is the one a spec can adopt
   std::vector<SceneLight> lights;
-  // Scene files: the instance structure that `mesh` flattens (each node's mesh reference an
-  // instance; flatten(instanced) gives mesh's triangles in mesh's order). Empty for built-in
-  // scenes, which are one flat mesh.
+  // The instance structure that `mesh` flattens (flatten(instanced) gives mesh's triangles in
+  // mesh's order): scene files (each node's mesh reference an instance) and forest:N. Empty
+  // for the other built-in scenes, which are one flat mesh.
   InstancedMesh instanced;
   uint64_t fingerprint = 0;  // mesh_fingerprint(mesh)
   Bounds bounds;
@@ -62,7 +62,7 @@ struct Scene {
   size_t triangle_count() const { return mesh.triangle_count(); }
 };
 
-// Loads "cornell", "pica", "grid:N", "foliage:N" (optionally prefixed "builtin:"), or a scene
+// Loads "cornell", "pica", "grid:N", "foliage:N", "forest:N" (optionally prefixed "builtin:"), or a scene
 // file (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, OFF, STL). Throws InputError naming the file for a
 // missing or unsupported file, NaN/Inf vertices, or zero triangles.
 Scene load_scene(const std::string& spec);

@@ -103,6 +103,17 @@ TEST(SimInstancing, FlattenedAndInstancedWorldsGiveTheSameHits) {
   EXPECT_EQ(single["bvh"]["levels"], 1);
 }
 
+// The built-in forest gets two levels by itself (auto: its meshes are placed many times).
+TEST(SimInstancing, TheForestRunsOnTwoLevelsInTreeletMode) {
+  test::SimScene s("forest:200000");
+  std::vector<Ray> rays = test::mixed_rays(s.scene, 1500, 4);
+  nlohmann::json doc = test::simulate(machine("treelet", "auto"), s.scene, rays, true);
+  EXPECT_EQ(doc["bvh"]["levels"], 2);
+  EXPECT_EQ(doc["bvh"]["instances"], s.scene.instanced.instances.size());
+  EXPECT_EQ(doc["verify"]["unexplained"], 0) << doc["verify"].dump();
+  EXPECT_GT(test::stat(doc, "bvh.instances_per_ray"), 0.5);
+}
+
 TEST(SimInstancing, AFlatSceneOnTwoLevelsIsOneInstance) {
   test::SimScene s("grid:64");
   std::vector<Ray> rays = test::mixed_rays(s.scene, 1000, 2);

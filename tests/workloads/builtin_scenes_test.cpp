@@ -30,12 +30,14 @@ void expect_vec3_eq(const glm::vec3& a, const glm::vec3& b, const char* what) {
 }
 
 TEST(BuiltinScenes, NamesAreRecognizedWithOrWithoutPrefix) {
-  for (const char* spec : {"cornell", "builtin:cornell", "pica", "grid:10", "builtin:foliage:3"})
+  for (const char* spec :
+       {"cornell", "builtin:cornell", "pica", "grid:10", "builtin:foliage:3", "forest:9"})
     EXPECT_TRUE(is_builtin_scene(spec)) << spec;
   for (const char* spec : {"cornell.obj", "scenes/pica.gltf", "/tmp/grid.ply"})
     EXPECT_FALSE(is_builtin_scene(spec)) << spec;
   EXPECT_EQ(builtin_scene_names(),
-            (std::vector<std::string>{"cornell", "pica", "grid:N", "foliage:N", "hardcases"}));
+            (std::vector<std::string>{"cornell", "pica", "grid:N", "foliage:N", "forest:N",
+                                      "hardcases"}));
   EXPECT_EQ(load_scene("cornell").fingerprint, load_scene("builtin:cornell").fingerprint);
 }
 
@@ -140,8 +142,38 @@ TEST(BuiltinScenes, FoliageLeavesAreRigidlyRotatedCopies) {
   EXPECT_GT(max_nz, 0.99f);
 }
 
+// A forest of instances: the unique meshes held once, placed until N instanced triangles, and
+// the flattened mesh exactly what the instances make.
+TEST(BuiltinScenes, ForestIsInstancesOfAFewUniqueMeshes) {
+  for (uint64_t n : {1u, 100000u, 2000000u}) {
+    Scene s = load_scene("forest:" + std::to_string(n));
+    const InstancedMesh& g = s.instanced;
+    ASSERT_EQ(g.meshes.size(), 5u) << "three trees, a rock, the terrain";
+    EXPECT_EQ(instancing_problem(g), "");
+    EXPECT_GE(g.instanced_triangles(), n);
+    EXPECT_LT(g.instanced_triangles(), std::max<uint64_t>(n, 8192) + 10012 + 288)
+        << "at most one tree (and its rock) past N";
+    EXPECT_EQ(s.triangle_count(), g.instanced_triangles());
+    EXPECT_EQ(g.unique_triangles(), 3 * 12 + 6000 + 8000 + 10000 + 288 + 8192);
+    EXPECT_EQ(s.material_ids.size(), s.triangle_count());
+    EXPECT_EQ(s.object_ids.size(), s.triangle_count());
+    FlatMesh flat = flatten(g);
+    EXPECT_EQ(flat.mesh.positions, s.mesh.positions);
+    EXPECT_EQ(mesh_fingerprint(flat.mesh), s.fingerprint);
+  }
+  Scene s = load_scene("forest:1000000");
+  size_t trees = 0, rocks = 0;
+  for (const Instance& inst : s.instanced.instances) {
+    trees += inst.mesh < 3;
+    rocks += inst.mesh == 3;
+  }
+  EXPECT_EQ(rocks, (trees + 3) / 4) << "a rock beside every fourth tree";
+  EXPECT_EQ(triangles_of(s, object_id(s, "terrain")), 8192u);
+  EXPECT_EQ(load_scene("forest:1000000").fingerprint, s.fingerprint) << "seeded";
+}
+
 TEST(BuiltinScenes, FingerprintsAreStableAndTellScenesApart) {
-  for (const char* spec : {"cornell", "pica", "grid:5000", "foliage:5000"})
+  for (const char* spec : {"cornell", "pica", "grid:5000", "foliage:5000", "forest:50000"})
     EXPECT_EQ(load_scene(spec).fingerprint, load_scene(spec).fingerprint) << spec;
   std::set<uint64_t> distinct;
   for (const char* spec : {"cornell", "pica", "grid:1000", "grid:1001", "grid:2000", "foliage:1000",
@@ -157,6 +189,7 @@ TEST(BuiltinScenes, FingerprintsMatchTheRecordedValues) {
   EXPECT_EQ(load_scene("pica").fingerprint, 0xd97480b2c3196082ull);
   EXPECT_EQ(load_scene("grid:1000").fingerprint, 0x45a8d68f7e3599a7ull);
   EXPECT_EQ(load_scene("foliage:1000").fingerprint, 0x05253d99433d5864ull);
+  EXPECT_EQ(load_scene("forest:1000000").fingerprint, 0x5a0a3baa6feb9c25ull);
 }
 
 TEST(BuiltinScenes, TenMillionTriangles) {

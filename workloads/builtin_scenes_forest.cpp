@@ -1,0 +1,147 @@
+// "forest:N": a forest built as games build worlds, from instances. Unique meshes: three tree
+// variants (a trunk and a crown of separate small leaf triangles), a rock and a terrain mound;
+// instances place them with their own rotation about +y and scale (the terrain non-uniformly).
+// N is the instanced triangles asked for: trees (with a rock beside every fourth) are added on
+// a jittered grid until N is reached. The scene keeps its instance structure (Scene::instanced:
+// bvh.instancing = "auto" builds two levels over it) beside the flattened mesh the workload
+// passes shade. Seeded, bit-identical on every machine (+, *, / and sqrt only).
+#include <cmath>
+
+#include "workloads/builtin_scenes.h"
+
+namespace rtsim::builtin {
+namespace {
+
+using V = glm::vec3;
+
+constexpr uint64_t kForestSeed = 0xf0e57ull;
+constexpr uint32_t kLeaves[3] = {6000, 8000, 10000};  // leaf triangles of each tree variant
+constexpr float kTreeSpacing = 8.0f;
+constexpr int kRockLevel = 6;      // octa_sphere: 288 triangles
+constexpr int kTerrainCells = 64;  // grid_quad: 8192 triangles
+constexpr float kTerrainHeight = 6.0f;
+
+enum Kind : uint32_t { kTrees, kRocks, kTerrain };
+
+// A unique mesh with a material per triangle and the object it belongs to.
+struct Part {
+  TriangleMesh mesh;
+  std::vector<uint32_t> materials;
+  Kind kind = kTrees;
+
+  void add(const MeshTemplate& t, const V& offset, const V& scale, uint32_t material,
+           const glm::mat3& rotation = glm::mat3(1.0f)) {
+    auto base = uint32_t(mesh.positions.size());
+    for (const V& p : t.positions) mesh.positions.push_back(offset + rotation * (scale * p));
+    for (const auto& tri : t.triangles)
+      mesh.triangles.push_back({base + tri[0], base + tri[1], base + tri[2]});
+    materials.insert(materials.end(), t.triangles.size(), material);
+  }
+};
+
+// A trunk and a crown: leaf triangles centred uniformly in an ellipsoid above the trunk.
+Part make_tree(uint32_t leaves, float width, Pcg32& rng, uint32_t bark, uint32_t leaf) {
+  Part tree;
+  tree.add(unit_cube(), V(0, 2.0f, 0), V(0.25f, 2.0f, 0.25f), bark);
+  const float size = 0.35f;
+  const MeshTemplate triangle{
+      {V(0, size, 0), V(-0.5f * size, -0.4f * size, 0), V(0.5f * size, -0.4f * size, 0)},
+      {{0, 1, 2}}};
+  for (uint32_t i = 0; i < leaves; ++i) {
+    V u;
+    do u = V(rng.symmetric(), rng.symmetric(), rng.symmetric());
+    while (u.x * u.x + u.y * u.y + u.z * u.z > 1.0f);
+    tree.add(triangle, V(0, 5.5f, 0) + u * V(width, 2.5f, width), V(1.0f), leaf,
+             random_rotation(rng));
+  }
+  return tree;
+}
+
+// The mound's height at (x, z) in [-1, 1]^2, before the instance's scale.
+float mound(float x, float z) { return (1 - x * x) * (1 - z * z); }
+
+Part make_terrain(uint32_t ground) {
+  Part terrain;
+  terrain.kind = kTerrain;
+  MeshTemplate quad = grid_quad(kTerrainCells);
+  for (V& p : quad.positions) p.y = mound(p.x, p.z);
+  terrain.add(quad, V(0), V(1.0f), ground);
+  return terrain;
+}
+
+// A rotation about +y by a random angle (its cosine and sine from a random direction).
+glm::mat3 random_yaw(Pcg32& rng) {
+  float c, s, n2;
+  do c = rng.symmetric(), s = rng.symmetric(), n2 = c * c + s * s;
+  while (n2 > 1.0f || n2 < 1e-4f);
+  float n = std::sqrt(n2);
+  return rotation_y(c / n, s / n);
+}
+
+Transform place(const glm::mat3& rotation, const V& scale, const V& offset) {
+  Transform t;
+  t.linear = rotation * glm::mat3(V(scale.x, 0, 0), V(0, scale.y, 0), V(0, 0, scale.z));
+  t.offset = offset;
+  return t;
+}
+
+}  // namespace
+
+Scene make_forest(const std::string& source, uint64_t triangles) {
+  Scene scene;
+  scene.source = source;
+  Material leaf = make_material("leaf", V(0.3f, 0.6f, 0.15f), 0.6f);
+  leaf.translucency = 0.5f;
+  scene.materials = {leaf, make_material("bark", V(0.35f, 0.25f, 0.15f), 0.8f),
+                     make_material("rock", V(0.5f, 0.5f, 0.48f), 0.7f),
+                     make_material("ground", V(0.3f, 0.35f, 0.2f), 0.9f)};
+  scene.object_names = {"trees", "rocks", "terrain"};
+  Pcg32 rng(kForestSeed);
+  std::vector<Part> parts;
+  for (uint32_t v = 0; v < 3; ++v)
+    parts.push_back(make_tree(kLeaves[v], 1.6f + 0.3f * float(v), rng, 1, 0));
+  Part rock;
+  rock.kind = kRocks;
+  rock.add(octa_sphere(kRockLevel), V(0), V(1.2f, 0.7f, 1.0f), 2);
+  parts.push_back(std::move(rock));
+  parts.push_back(make_terrain(3));
+  const uint32_t rock_mesh = 3, terrain_mesh = 4;
+
+  // Trees (and rocks) until N instanced triangles, the terrain's included; at least one.
+  uint64_t trees = 0, placed = parts[terrain_mesh].mesh.triangle_count();
+  while (trees == 0 || placed < triangles) {
+    placed += parts[trees % 3].mesh.triangle_count();
+    if (trees % 4 == 0) placed += parts[rock_mesh].mesh.triangle_count();
+    ++trees;
+  }
+  auto side = uint64_t(std::ceil(std::sqrt(double(trees))));
+  const float half = 0.5f * kTreeSpacing * float(side);
+  InstancedMesh& g = scene.instanced;
+  g.instances.push_back(
+      {terrain_mesh, place(glm::mat3(1.0f), V(half, kTerrainHeight, half), V(0))});
+  auto ground = [&](float x, float z) { return kTerrainHeight * mound(x / half, z / half); };
+  for (uint64_t i = 0; i < trees; ++i) {
+    float x = (float(i % side) + 0.5f + 0.3f * rng.symmetric()) * kTreeSpacing - half;
+    float z = (float(i / side) + 0.5f + 0.3f * rng.symmetric()) * kTreeSpacing - half;
+    float scale = 1.0f + 0.2f * rng.symmetric();
+    g.instances.push_back(
+        {uint32_t(i % 3), place(random_yaw(rng), V(scale), V(x, ground(x, z), z))});
+    if (i % 4 != 0) continue;
+    float rx = x + 0.5f * kTreeSpacing, rz = z + 0.25f * kTreeSpacing;
+    float rock_scale = 1.0f + 0.5f * rng.symmetric();
+    g.instances.push_back({rock_mesh, place(random_yaw(rng), V(rock_scale),
+                                            V(rx, ground(rx, rz) - 0.2f * rock_scale, rz))});
+  }
+  // The flattened mesh and its per-triangle materials and objects, instance by instance.
+  for (Part& part : parts) g.meshes.push_back(std::move(part.mesh));
+  scene.mesh = flatten(g).mesh;
+  for (const Instance& inst : g.instances) {
+    const Part& part = parts[inst.mesh];
+    scene.material_ids.insert(scene.material_ids.end(), part.materials.begin(),
+                              part.materials.end());
+    scene.object_ids.insert(scene.object_ids.end(), part.materials.size(), part.kind);
+  }
+  return scene;
+}
+
+}  // namespace rtsim::builtin
