@@ -1,21 +1,34 @@
-// rtsim scene-info FILE|BUILTIN: what a scene holds, and its fingerprint.
+// rtsim scene-info FILE|BUILTIN: what a scene holds, and its fingerprint; with --bvh, the BVH a
+// hardware config would simulate over it (one level or two) and its bytes.
 #include <fmt/core.h>
 
 #include "app/commands.h"
+#include "model/config/hw_config.h"
+#include "reports/phase_progress.h"
 #include "workloads/scene.h"
 
 namespace rtsim::app {
 
 void add_scene_info_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("scene-info", "Print a scene's counts, bounds and fingerprint");
-  auto spec = std::make_shared<std::string>();
+  struct Options {
+    std::string spec, config;
+    std::vector<std::string> sets;
+    bool bvh = false;
+  };
+  auto o = std::make_shared<Options>();
   std::string builtins;
   for (const auto& name : builtin_scene_names()) builtins += (builtins.empty() ? "" : ", ") + name;
-  cmd->add_option("scene", *spec,
+  cmd->add_option("scene", o->spec,
                   "Scene file (OBJ, glTF, GLB, PLY, OFF, STL) or built-in: " + builtins)
       ->required();
-  cmd->callback([spec, &exit_code] {
-    Scene scene = load_scene(*spec);
+  cmd->add_flag("--bvh", o->bvh, "Also build the BVH the hardware config simulates; its bytes");
+  cmd->add_option("--config", o->config, "Hardware config for --bvh (.toml; configs/)");
+  cmd->add_option("--set", o->sets, "Override a config key for --bvh: --set bvh.instancing=flatten")
+      ->allow_extra_args(false);
+  cmd->callback([o, &exit_code] {
+    HwConfig config = load_hw_config(o->config, o->sets);
+    Scene scene = load_scene(o->spec);
     fmt::print("scene        {}\n", scene.source);
     fmt::print("triangles    {}\n", scene.triangle_count());
     fmt::print("vertices     {}\n", scene.mesh.positions.size());
@@ -44,6 +57,17 @@ void add_scene_info_command(CLI::App& app, int& exit_code) {
                                                          : "point",
                  l.position.x, l.position.y, l.position.z);
     fmt::print("fingerprint  {:016x}\n", scene.fingerprint);
+    if (o->bvh) {
+      TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, true);
+      uint64_t nodes = bvh.top.node_count, triangles = bvh.top.triangle_count;
+      for (const BvhImage& b : bvh.bottom) nodes += b.node_count;
+      if (!bvh.bottom.empty()) triangles = scene.instanced.unique_triangles();
+      fmt::print("bvh          {}, {}: {} nodes, {} B = {:.2f} MiB ({:.1f} B a{} triangle)\n",
+                 bvh.bottom.empty() ? "one level" : "two levels", describe(config.bvh), nodes,
+                 bvh.total_bytes(), bvh.total_bytes() / 1048576.0,
+                 double(bvh.total_bytes()) / double(triangles),
+                 bvh.bottom.empty() ? "" : " unique");
+    }
     exit_code = 0;
   });
 }

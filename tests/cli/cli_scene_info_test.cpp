@@ -18,6 +18,25 @@ TEST(CliSceneInfo, BuiltinGridHasExactlyTheRequestedTriangles) {
   EXPECT_NE(r.out.find("instances    none (one flat mesh)\n"), std::string::npos) << r.out;
 }
 
+// The forest is instanced: its BVH is two levels over the unique meshes, far smaller than one
+// level over the flattened triangles.
+TEST(CliSceneInfo, ForestReportsInstancesAndBothBvhs) {
+  RunResult r = run_rtsim("scene-info forest:300000 --bvh");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("of 5 unique meshes: 32516 unique triangles"), std::string::npos) << r.out;
+  auto bytes = [](const std::string& out) {
+    size_t at = out.find(" B = ");
+    return at == std::string::npos ? 0.0 : std::stod(out.substr(out.rfind(' ', at - 1) + 1));
+  };
+  EXPECT_NE(r.out.find("bvh          two levels, bvh8"), std::string::npos) << r.out;
+  RunResult flat = run_rtsim("scene-info forest:300000 --bvh --set bvh.instancing=\"flatten\"");
+  ASSERT_EQ(flat.exit_code, 0) << flat.err;
+  EXPECT_NE(flat.out.find("bvh          one level, bvh8"), std::string::npos) << flat.out;
+  EXPECT_GT(bytes(flat.out), 5 * bytes(r.out)) << r.out << flat.out;
+  EXPECT_EQ(run_rtsim("scene-info forest:10 --bvh --set bvh.instancing=\"sideways\"").exit_code,
+            2);
+}
+
 TEST(CliSceneInfo, SameSceneSameFingerprint) {
   EXPECT_EQ(run_rtsim("scene-info cornell").out, run_rtsim("scene-info builtin:cornell").out);
   EXPECT_NE(run_rtsim("scene-info foliage:100").out, run_rtsim("scene-info foliage:101").out);
