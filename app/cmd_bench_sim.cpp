@@ -60,9 +60,9 @@ struct Timing {
 // Embree on one thread over what the simulation traverses: the flat mesh, or the instances.
 Timing time_embree(const BenchSimOptions& o, const Scene& scene, bool instances,
                    const std::vector<Ray>& rays, uint64_t& count) {
-  std::unique_ptr<EmbreeScene> reference =
-      instances ? std::make_unique<EmbreeScene>(scene.instanced, 1)
-                : std::make_unique<EmbreeScene>(scene.mesh, 1);
+  std::unique_ptr<EmbreeScene> reference = instances
+                                               ? std::make_unique<EmbreeScene>(scene.instanced, 1)
+                                               : std::make_unique<EmbreeScene>(scene.mesh, 1);
   const EmbreeScene& embree = *reference;
   Timing best;
   for (int run = 0; run < o.repeat; ++run) {
@@ -139,10 +139,10 @@ int run_bench_sim(const BenchSimOptions& o) {
   }
   fmt::print("scene      {} ({} triangles), {}{}\n", scene.source, scene.triangle_count(),
              describe(config.bvh),
-             two_levels ? fmt::format(", two levels over {} instances of {} meshes",
-                                      scene.instanced.instances.size(),
-                                      scene.instanced.meshes.size())
-                        : "");
+             two_levels
+                 ? fmt::format(", two levels over {} instances of {} meshes",
+                               scene.instanced.instances.size(), scene.instanced.meshes.size())
+                 : "");
   fmt::print("config     {} ({}, {} RT units, quantum {} cycles)\n", config.name,
              traversal_mode_name(config.rt.mode), config.rt_units, config.sim.quantum_cycles);
   fmt::print("rays       {}\n",

@@ -32,8 +32,7 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, BvhView bvh) {
   }
   result.fidelity = cycle_level_result(sim.simulator());
   timer.stop(result.fidelity);
-  SimRunInfo info{job.stream, header, bvh, sim.verify_report(), result.fidelity.host_seconds,
-                  {}};
+  SimRunInfo info{job.stream, header, bvh, sim.verify_report(), result.fidelity.host_seconds, {}};
   result.stats = write_sim_results(job.output, sim.simulator(), info);
   result.collected = collector.to_json();
   write_file_atomic(job.output + "/fidelity.json", result.fidelity.to_json().dump(2) + "\n");

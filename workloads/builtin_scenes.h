@@ -11,6 +11,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include "workloads/pipeline/rng.h"
 #include "workloads/scene.h"
 
 namespace rtsim::builtin {
@@ -33,28 +34,16 @@ MeshTemplate grid_quad(int cells);
 // rationals such as (4/5, 3/5) to stay free of trigonometry.
 glm::mat3 rotation_y(float c, float s);
 
-// PCG32 (O'Neill 2014, pcg-random.org): the same stream on every platform, unlike the
-// std:: distributions.
-class Pcg32 {
+// PCG32 (pipeline/rng.h) on the stream whose increment is O'Neill's reference one
+// (pcg-random.org): the same numbers on every platform, unlike the std:: distributions.
+class Pcg32 : public pipeline::Pcg32 {
  public:
-  explicit Pcg32(uint64_t seed) {
-    next();
-    state_ += seed;
-    next();
-  }
-  uint32_t next() {
-    uint64_t old = state_;
-    state_ = old * 6364136223846793005ull + kIncrement;
-    auto xorshifted = uint32_t(((old >> 18u) ^ old) >> 27u);
-    auto rot = uint32_t(old >> 59u);
-    return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
-  }
+  explicit Pcg32(uint64_t seed) : pipeline::Pcg32(seed, kReferenceIncrement >> 1) {}
   // Uniform in [-1, 1) with 24 bits, exact in float.
   float symmetric() { return float(int32_t(next() >> 8) - (1 << 23)) * 0x1p-23f; }
 
  private:
-  static constexpr uint64_t kIncrement = 1442695040888963407ull;
-  uint64_t state_ = 0;
+  static constexpr uint64_t kReferenceIncrement = 1442695040888963407ull;
 };
 
 // Uniform random rotation: a quaternion drawn uniformly in the unit 4-ball, normalized.
@@ -65,7 +54,7 @@ Material make_material(const std::string& name, const glm::vec3& color, float ro
 
 // Appends geometry, materials and object names to a Scene.
 class SceneBuilder {
-public:
+ public:
   explicit SceneBuilder(std::string source);
 
   uint32_t material(const Material& m);
@@ -80,12 +69,12 @@ public:
 
   Scene& scene() { return scene_; }
 
-private:
+ private:
   Scene scene_;
 };
 
-// Parses the N of "grid:N", "foliage:N", "forest:N": 1 <= N <= kMaxBuiltinTriangles, else InputError
-// naming source.
+// Parses the N of "grid:N", "foliage:N", "forest:N": 1 <= N <= kMaxBuiltinTriangles, else
+// InputError naming source.
 uint64_t parse_triangle_count(const std::string& source, const std::string& text);
 constexpr uint64_t kMaxBuiltinTriangles = 1000000000;
 
@@ -95,8 +84,8 @@ Scene make_grid(const std::string& source, uint64_t triangles);
 Scene make_foliage(const std::string& source, uint64_t triangles);
 Scene make_forest(const std::string& source, uint64_t triangles);
 
-// Dispatches "cornell", "pica", "grid:N", "foliage:N", "forest:N" ("builtin:" already removed); the Scene is
-// not yet finalized.
+// Dispatches "cornell", "pica", "grid:N", "foliage:N", "forest:N" ("builtin:" already removed); the
+// Scene is not yet finalized.
 Scene make_builtin_scene(const std::string& name_and_params);
 
 }  // namespace rtsim::builtin

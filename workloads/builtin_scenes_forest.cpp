@@ -58,7 +58,9 @@ Part make_tree(uint32_t leaves, float width, Pcg32& rng, uint32_t bark, uint32_t
 }
 
 // The mound's height at (x, z) in [-1, 1]^2, before the instance's scale.
-float mound(float x, float z) { return (1 - x * x) * (1 - z * z); }
+float mound(float x, float z) {
+  return (1 - x * x) * (1 - z * z);
+}
 
 Part make_terrain(uint32_t ground) {
   Part terrain;

@@ -62,8 +62,8 @@ struct Scene {
   size_t triangle_count() const { return mesh.triangle_count(); }
 };
 
-// Loads "cornell", "pica", "grid:N", "foliage:N", "forest:N" (optionally prefixed "builtin:"), or a scene
-// file (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, OFF, STL). Throws InputError naming the file for a
+// Loads "cornell", "pica", "grid:N", "foliage:N", "forest:N" (optionally prefixed "builtin:"), or a
+// scene file (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, OFF, STL). Throws InputError naming the file for a
 // missing or unsupported file, NaN/Inf vertices, or zero triangles.
 Scene load_scene(const std::string& spec);
 

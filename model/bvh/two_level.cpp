@@ -59,7 +59,9 @@ uint32_t BvhView::treelet_count() const {
   return last.treelet_base + local_treelets(last);
 }
 
-uint32_t BvhView::root_treelet() const { return node_treelet(*top, 0); }
+uint32_t BvhView::root_treelet() const {
+  return node_treelet(*top, 0);
+}
 
 uint64_t BvhView::end_address() const {
   const BvhImage& last = bottom ? bottom->back() : *top;

@@ -244,7 +244,8 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                                   "one spilled stack entry", 1, 64));
   read_test_units(rt.section("box"), c.rt.box, "child boxes");
   read_test_units(rt.section("triangle"), c.rt.triangle, "triangles");
-  read_test_units(rt.section("transform"), c.rt.transform, "rays (instance transforms: two levels)");
+  read_test_units(rt.section("transform"), c.rt.transform,
+                  "rays (instance transforms: two levels)");
   ConfigReader packet = rt.section("packet");
   std::string policy =
       packet.text("policy", packet_policy_name(c.rt.packet_policy),

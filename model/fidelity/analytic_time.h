@@ -18,11 +18,11 @@
 namespace rtsim {
 
 struct UnitWork {
-  uint64_t steps = 0;            // node and leaf steps
-  uint64_t box_issues = 0;       // ray-box unit issues (ceil(boxes / issue_width) per node)
-  uint64_t triangle_issues = 0;  // ray-triangle unit issues
+  uint64_t steps = 0;             // node and leaf steps
+  uint64_t box_issues = 0;        // ray-box unit issues (ceil(boxes / issue_width) per node)
+  uint64_t triangle_issues = 0;   // ray-triangle unit issues
   uint64_t transform_issues = 0;  // instance transform unit issues (two levels)
-  double warp_cycles = 0;        // sum over the unit's warps of their slowest ray's latency
+  double warp_cycles = 0;         // sum over the unit's warps of their slowest ray's latency
 };
 
 struct AnalyticInputs {

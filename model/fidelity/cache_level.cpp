@@ -177,8 +177,8 @@ class CacheWalk {
 
 }  // namespace
 
-FidelityResult run_cache_level(const HwConfig& config, BvhView image,
-                               const std::string& stream, AnalyticTime* bounds) {
+FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std::string& stream,
+                               AnalyticTime* bounds) {
   HostTimer timer;
   RayStreamReader reader(stream);
   HwConfig analysed = config;  // a banked DRAM as its bandwidth and unloaded latency

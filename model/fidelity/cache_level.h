@@ -22,7 +22,7 @@
 namespace rtsim {
 
 // bounds (optional) receives every resource's lower bound.
-FidelityResult run_cache_level(const HwConfig& config, BvhView image,
-                               const std::string& stream, AnalyticTime* bounds = nullptr);
+FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std::string& stream,
+                               AnalyticTime* bounds = nullptr);
 
 }  // namespace rtsim

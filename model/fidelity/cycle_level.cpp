@@ -32,8 +32,7 @@ FidelityResult cycle_level_result(const RtSimulator& sim) {
   return result;
 }
 
-FidelityResult run_cycle_level(const HwConfig& config, BvhView image,
-                               const std::string& stream) {
+FidelityResult run_cycle_level(const HwConfig& config, BvhView image, const std::string& stream) {
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   HostTimer timer;
   RayStreamReader reader(stream);

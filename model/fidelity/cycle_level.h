@@ -16,7 +16,6 @@ namespace rtsim {
 FidelityResult cycle_level_result(const RtSimulator& sim);
 
 // Simulates every ray of the stream (no verification, no pixel buffers).
-FidelityResult run_cycle_level(const HwConfig& config, BvhView image,
-                               const std::string& stream);
+FidelityResult run_cycle_level(const HwConfig& config, BvhView image, const std::string& stream);
 
 }  // namespace rtsim

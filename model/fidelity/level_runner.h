@@ -16,8 +16,8 @@ struct LevelRequest {
   SamplingConfig sampling;  // sampled level only
 };
 
-FidelityResult run_level(const LevelRequest& request, const HwConfig& config,
-                         BvhView image, const std::string& stream);
+FidelityResult run_level(const LevelRequest& request, const HwConfig& config, BvhView image,
+                         const std::string& stream);
 
 // The same in a forked child; the parent's state (scene, BVH) is shared copy-on-write.
 FidelityResult run_level_in_child(const LevelRequest& request, const HwConfig& config,

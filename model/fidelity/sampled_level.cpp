@@ -162,8 +162,8 @@ void estimate(FidelityResult& r, const SamplePlan& plan, const SampledSequence& 
 
 }  // namespace
 
-FidelityResult run_sampled_level(const HwConfig& config, BvhView image,
-                                 const std::string& stream, const SamplingConfig& sampling) {
+FidelityResult run_sampled_level(const HwConfig& config, BvhView image, const std::string& stream,
+                                 const SamplingConfig& sampling) {
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   HostTimer timer;
   RayRangeReader reader(stream);

@@ -20,7 +20,7 @@ namespace rtsim {
 
 // Runs the model on the sampled windows of the stream in this process (SystemC: once per
 // process). Throws InputError if the stream is too short for the rate.
-FidelityResult run_sampled_level(const HwConfig& config, BvhView image,
-                                 const std::string& stream, const SamplingConfig& sampling);
+FidelityResult run_sampled_level(const HwConfig& config, BvhView image, const std::string& stream,
+                                 const SamplingConfig& sampling);
 
 }  // namespace rtsim

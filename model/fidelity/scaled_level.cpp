@@ -191,8 +191,8 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   return m;
 }
 
-FidelityResult run_scaled_level(const HwConfig& config, BvhView image,
-                                const std::string& stream, const SamplingConfig& sampling) {
+FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std::string& stream,
+                                const SamplingConfig& sampling) {
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   HostTimer timer;
   RayRangeReader reader(stream);

@@ -57,7 +57,7 @@ std::vector<uint64_t> scale_model_warps(uint64_t warps, uint32_t rate, uint32_t 
 
 // Runs the scale model of the stream in this process (SystemC: once per process). Throws
 // InputError if the stream is too short for the rate.
-FidelityResult run_scaled_level(const HwConfig& config, BvhView image,
-                                const std::string& stream, const SamplingConfig& sampling);
+FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std::string& stream,
+                                const SamplingConfig& sampling);
 
 }  // namespace rtsim

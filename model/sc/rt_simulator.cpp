@@ -23,9 +23,8 @@ Clock clock_of(const HwConfig& c) {
 
 }  // namespace
 
-RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
-                         uint32_t width, uint32_t height, RayRetireListener* listener,
-                         MemoryBinder bind_memory)
+RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source, uint32_t width,
+                         uint32_t height, RayRetireListener* listener, MemoryBinder bind_memory)
     : config_(config),
       clock_(clock_of(config)),
       traversal_(bvh),

@@ -32,15 +32,15 @@ Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::str
   Json warps = latency_json(s.warp_latency);
   warps["warps"] = s.warp_latency.count();
   Json out = {{"rays", s.rays},
-          {"hits", s.hits},
-          {"latency_cycles", latency_json(s.latency)},
-          {"warp_latency_cycles", warps},
-          {"nodes_per_ray", r.value(p + ".nodes_per_ray")},
-          {"triangles_per_ray", r.value(p + ".triangles_per_ray")},
-          {"l1_hit_rate", r.value(p + ".l1_hit_rate")},
-          {"l2_hit_rate", r.value(p + ".l2_hit_rate")},
-          {"dram_bytes_per_ray", r.value(p + ".dram_bytes_per_ray")},
-          {"stack_spills_per_ray", r.value(p + ".stack_spills_per_ray")}};
+              {"hits", s.hits},
+              {"latency_cycles", latency_json(s.latency)},
+              {"warp_latency_cycles", warps},
+              {"nodes_per_ray", r.value(p + ".nodes_per_ray")},
+              {"triangles_per_ray", r.value(p + ".triangles_per_ray")},
+              {"l1_hit_rate", r.value(p + ".l1_hit_rate")},
+              {"l2_hit_rate", r.value(p + ".l2_hit_rate")},
+              {"dram_bytes_per_ray", r.value(p + ".dram_bytes_per_ray")},
+              {"stack_spills_per_ray", r.value(p + ".stack_spills_per_ray")}};
   if (r.has(p + ".instances_per_ray")) out["instances_per_ray"] = r.value(p + ".instances_per_ray");
   return out;
 }
@@ -107,7 +107,8 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
                 {"ray_slots", r.value("rt.slot_occupancy")}};
   // Two levels: the instance transform units too.
   if (r.has("rt0.transform.utilisation")) {
-    for (auto& [name, unit] : units.items()) unit["transform"] = r.value(name + ".transform.utilisation");
+    for (auto& [name, unit] : units.items())
+      unit["transform"] = r.value(name + ".transform.utilisation");
     means["transform"] = mean(".transform.utilisation");
   }
   return {{"mean", means},
@@ -122,11 +123,15 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
 // half busy, none of them does: rays wait on latency (memory), which the slots' occupancy shows.
 Json bottleneck_json(const Json& u) {
   static const std::pair<const char*, const char*> kResources[] = {
-      {"box", "box-test units"},      {"triangle", "triangle-test units"},
+      {"box", "box-test units"},
+      {"triangle", "triangle-test units"},
       {"transform", "instance transform units"},
-      {"control", "traversal issue"}, {"l1_port", "L1 data ports"},
-      {"l2_port", "L2 data ports"},   {"xbar_busiest_link", "busiest crossbar link"},
-      {"dram", "DRAM data bus"},      {"dispatch", "ray dispatch"}};
+      {"control", "traversal issue"},
+      {"l1_port", "L1 data ports"},
+      {"l2_port", "L2 data ports"},
+      {"xbar_busiest_link", "busiest crossbar link"},
+      {"dram", "DRAM data bus"},
+      {"dispatch", "ray dispatch"}};
   const Json none = Json::object();
   const Json& mean = u.contains("mean") ? u["mean"] : none;
   auto value = [&](const char* key) {
@@ -225,10 +230,15 @@ Json bvh_json(const BvhView& bvh) {
           {"treelets", bvh.treelet_count()},
           {"bytes", bytes + top.total_bytes()},
           {"node_padding_bytes", padding + top.node_padding_bytes()},
-          {"top", {{"nodes", top.node_count}, {"bytes", top.total_bytes()},
-                   {"treelets", bvh.bottom->front().treelet_base}}},
-          {"bottom", {{"meshes", bvh.bottom->size()}, {"nodes", nodes}, {"bytes", bytes},
-                      {"treelets", bvh.treelet_count() - bvh.bottom->front().treelet_base}}}};
+          {"top",
+           {{"nodes", top.node_count},
+            {"bytes", top.total_bytes()},
+            {"treelets", bvh.bottom->front().treelet_base}}},
+          {"bottom",
+           {{"meshes", bvh.bottom->size()},
+            {"nodes", nodes},
+            {"bytes", bytes},
+            {"treelets", bvh.treelet_count() - bvh.bottom->front().treelet_base}}}};
 }
 
 }  // namespace

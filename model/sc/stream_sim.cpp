@@ -20,8 +20,8 @@ StreamSim::StreamSim(const HwConfig& config, BvhView bvh, const TriangleMesh& me
     listeners_.add(verifier_.get());
   }
   const StreamHeader& header = reader.header();
-  sim_ = std::make_unique<RtSimulator>(config, bvh, source_, header.width, header.height,
-                                       &listeners_);
+  sim_ =
+      std::make_unique<RtSimulator>(config, bvh, source_, header.width, header.height, &listeners_);
 }
 
 void StreamSim::run() {

@@ -167,9 +167,9 @@ RtCore::Next RtCore::peek(const TraversalState& s) const {
       continue;
     }
     if (e.tnear > t_hit * kSlabFarGrowth) continue;
-    StepKind kind = e.count == 0                                  ? StepKind::Node
+    StepKind kind = e.count == 0                          ? StepKind::Node
                     : top && traversal_.bvh().two_level() ? StepKind::Instance
-                                                                  : StepKind::Leaf;
+                                                          : StepKind::Leaf;
     return {true, kind, uint32_t(i)};
   }
   return {};

@@ -1,11 +1,12 @@
 // RtCore, packet mode: the rays of a warp step together (SIMT). Each warp step picks a step
 // kind (packet_policy: node_first takes nodes while any lane has one, then the more needed of
-// leaves and instance transforms; majority the most needed kind); the lanes whose next visit is of that kind are active, the others
-// idle. Active lanes fetch at once, and fetches of the same address in one warp step are
-// coalesced into one read; their tests pass the unit pool one lane after another. The warp
-// steps again when the slowest active lane is done. SIMD efficiency = active lanes / lanes.
-// A warp starts as one packet; with packet reordering (PacketReorderConfig) it may go on as
-// narrower packets, each stepping on its own, until all its rays retire and it refills.
+// leaves and instance transforms; majority the most needed kind); the lanes whose next visit is of
+// that kind are active, the others idle. Active lanes fetch at once, and fetches of the same
+// address in one warp step are coalesced into one read; their tests pass the unit pool one lane
+// after another. The warp steps again when the slowest active lane is done. SIMD efficiency =
+// active lanes / lanes. A warp starts as one packet; with packet reordering (PacketReorderConfig)
+// it may go on as narrower packets, each stepping on its own, until all its rays retire and it
+// refills.
 #include <algorithm>
 #include <stdexcept>
 
@@ -54,9 +55,7 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     reorder(item, kind, now);
     return;
   }
-  auto active = [&](uint32_t lane) {
-    return slots_[base + lane] && lane_next_[lane].kind == kind;
-  };
+  auto active = [&](uint32_t lane) { return slots_[base + lane] && lane_next_[lane].kind == kind; };
   // Spilled entries the active lanes need come back first; the warp waits for them.
   Cycle ready = now;
   bool refilled = false;

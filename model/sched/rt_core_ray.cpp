@@ -93,7 +93,9 @@ bool RtCore::wait_reads(uint32_t item, Wait wait, Cycle known_ready) {
 
 Cycle RtCore::test_step(uint32_t item, Cycle data) {
   StepKind kind = step_kind_[item];
-  TestUnitPool& unit = kind == StepKind::Leaf ? triangle_ : kind == StepKind::Node ? box_ : transform_;
+  TestUnitPool& unit = kind == StepKind::Leaf   ? triangle_
+                       : kind == StepKind::Node ? box_
+                                                : transform_;
   bool packet = config_.mode == TraversalMode::Packet;
   uint32_t first = packet ? item * packet_unit_ : item;
   uint32_t count = packet ? packet_width_[item] : 1;

@@ -33,8 +33,7 @@ TEST(CliSceneInfo, ForestReportsInstancesAndBothBvhs) {
   ASSERT_EQ(flat.exit_code, 0) << flat.err;
   EXPECT_NE(flat.out.find("bvh          one level, bvh8"), std::string::npos) << flat.out;
   EXPECT_GT(bytes(flat.out), 5 * bytes(r.out)) << r.out << flat.out;
-  EXPECT_EQ(run_rtsim("scene-info forest:10 --bvh --set bvh.instancing=\"sideways\"").exit_code,
-            2);
+  EXPECT_EQ(run_rtsim("scene-info forest:10 --bvh --set bvh.instancing=\"sideways\"").exit_code, 2);
 }
 
 TEST(CliSceneInfo, SameSceneSameFingerprint) {
