@@ -70,6 +70,7 @@ std::string coherence(const Json& r) {
           {"distinct nodes per warp step", "coherence.distinct_nodes_per_warp_step", Style::Real},
           {"rays per treelet visit", "coherence.rays_per_treelet_visit", Style::Real},
           {"mean rays queued (treelets)", "coherence.treelet_queue_mean_rays", Style::Real}});
+  if (!at_key(r, "coherence.instances_per_ray").is_null()) out += html_rows(r, two_level_rows());
   return out + html_type_table(r, "coherence.by_type",
                                {{"nodes/ray", "nodes_per_ray", kReal},
                                 {"triangles/ray", "triangles_per_ray", kReal},

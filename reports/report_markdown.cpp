@@ -73,6 +73,8 @@ std::string report_markdown(const Json& r) {
   if (!r["dram"]["by_channel"].empty())
     out += "\n" + markdown_type_table(r, "dram.by_channel",
                                       {{"data bus utilisation", "utilisation", kPct}}, "channel");
+  if (!at_key(r, "coherence.instances_per_ray").is_null())
+    out += "\n## Two BVH levels\n\n" + markdown_rows(r, two_level_rows());
   out += "\n## Coherence\n\n" +
          markdown_type_table(r, "coherence.by_type",
                              {{"nodes/ray", "nodes_per_ray", kReal},

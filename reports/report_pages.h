@@ -21,6 +21,8 @@ std::string report_markdown(const nlohmann::ordered_json& report);
 const std::vector<Row>& summary_rows();
 const std::vector<Row>& workload_rows();
 const std::vector<Row>& hardware_rows();
+// Two BVH levels (coherence.instances_per_ray not null): transforms, and each level's figures.
+const std::vector<Row>& two_level_rows();
 const std::vector<Row>& timing_rows();
 const std::vector<Row>& bandwidth_rows();
 const std::vector<Row>& dram_rows();

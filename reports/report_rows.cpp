@@ -53,6 +53,20 @@ const std::vector<Row>& hardware_rows() {
   return rows;
 }
 
+const std::vector<Row>& two_level_rows() {
+  static const std::vector<Row> rows{
+      {"instance transforms per ray", "coherence.instances_per_ray", Style::Real},
+      {"TLAS nodes per ray", "coherence.tlas_nodes_per_ray", Style::Real},
+      {"BLAS nodes per ray", "coherence.blas_nodes_per_ray", Style::Real},
+      {"TLAS L1 miss rate", "coherence.tlas_l1_miss_rate", Style::Percent},
+      {"BLAS L1 miss rate", "coherence.blas_l1_miss_rate", Style::Percent},
+      {"TLAS L2 miss rate", "coherence.tlas_l2_miss_rate", Style::Percent, false},
+      {"BLAS L2 miss rate", "coherence.blas_l2_miss_rate", Style::Percent, false},
+      {"TLAS DRAM bytes per ray", "coherence.tlas_dram_bytes_per_ray", Style::Real},
+      {"BLAS DRAM bytes per ray", "coherence.blas_dram_bytes_per_ray", Style::Real}};
+  return rows;
+}
+
 const std::vector<Row>& timing_rows() {
   static const std::vector<Row> rows{
       {"fidelity level", "timing.level", Style::Text, false},

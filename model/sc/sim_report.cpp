@@ -288,6 +288,14 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
       {"treelet_queue_mean_rays", when(treelet, "treelet_queues.mean_queued")},
       {"treelet_queue_max_rays", when(treelet, "treelet_queues.max_queued")},
       {"rays_per_treelet_visit", when(treelet, "treelet_queues.rays_per_visit")}};
+  // Two levels: transforms, and each level's nodes and misses per ray.
+  bool levels = r.has("bvh.instances_per_ray");
+  for (const char* level : {"top", "bottom"}) {
+    std::string key = level[0] == 't' ? "tlas_" : "blas_", stat = std::string("bvh.") + level;
+    for (const char* name : {"nodes_per_ray", "l1_miss_rate", "l2_miss_rate", "dram_bytes_per_ray"})
+      doc["coherence"][key + name] = when(levels, (stat + "." + name).c_str());
+  }
+  doc["coherence"]["instances_per_ray"] = when(levels, "bvh.instances_per_ray");
   double rays = double(std::max<uint64_t>(sim.rays(), 1));
   doc["stack"] = {{"spill_entries", r.value("rt.stack.spill_entries")},
                   {"refill_entries", r.value("rt.stack.refill_entries")},

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "reports/report_doc.h"
+#include "reports/report_pages.h"
 #include "tests/reports/report_test_util.h"
 
 namespace rtsim {
@@ -183,6 +184,30 @@ TEST(RunCommand, ASampledRunShowsItsInterval) {
   EXPECT_NE(test::slurp(dir + "/report.md").find("| cycles, 95% interval (±) | "),
             std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+// An instanced scene's report shows its two BVH levels; one level's shows none.
+TEST(RunCommand, AForestRunReportsItsTwoLevels) {
+  std::string dir = test::fresh_dir("forest");
+  test::RunResult r = test::run_rtsim(
+      "run pica --scene forest:100000 --resolution 64x36 --report json -q -o " + dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  Json report = test::read_json(dir + "/report.json");
+  EXPECT_GT(report["coherence"]["instances_per_ray"].get<double>(), 0.0);
+  EXPECT_GT(report["coherence"]["tlas_nodes_per_ray"].get<double>(), 0.0);
+  EXPECT_GT(report["coherence"]["blas_nodes_per_ray"].get<double>(), 0.0);
+  std::string md = reports::report_markdown(report);
+  EXPECT_NE(md.find("## Two BVH levels"), std::string::npos);
+  EXPECT_NE(md.find("| TLAS L1 miss rate | "), std::string::npos) << md;
+  std::string flat_dir = test::fresh_dir("forest-flat");
+  test::RunResult flat = test::run_rtsim("run --from-trace " + dir +
+                                         "/trace --flatten --report json -q -o " + flat_dir);
+  ASSERT_EQ(flat.exit_code, 0) << flat.err;
+  Json one = test::read_json(flat_dir + "/report.json");
+  EXPECT_TRUE(one["coherence"]["instances_per_ray"].is_null());
+  EXPECT_EQ(reports::report_markdown(one).find("## Two BVH levels"), std::string::npos);
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove_all(flat_dir);
 }
 
 // The phases before the simulation say what they do: the trace's passes and the BVH build.
