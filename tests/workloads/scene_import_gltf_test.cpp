@@ -1,5 +1,6 @@
 // glTF 2.0 (.gltf with an embedded buffer, and .glb): node transforms and instancing are applied,
-// the instance structure is kept beside the flattened mesh, nodes name the objects, and metallic-roughness materials with their extensions map directly.
+// the instance structure is kept beside the flattened mesh, nodes name the objects, and
+// metallic-roughness materials with their extensions map directly.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -204,6 +205,45 @@ TEST(SceneImportGltf, CamerasAndPunctualLightsArePlacedByTheirNodes) {
   EXPECT_NEAR(s.lights[1].outer_cone_degrees, 0.5 * 180 / 3.14159265, 1e-3);
   EXPECT_EQ(s.lights[2].type, SceneLight::Type::Directional);
   expect_near(s.lights[2].direction, {0, -1, 0});  // -z turned -90 degrees about x
+}
+
+// A node rotated by a quaternion and one placed by a column-major matrix: each instance's
+// transform has the node's columns (images of x, y, z) and offset, and flattens to the mesh.
+TEST(SceneImportGltf, RotatedAndMatrixNodesKeepTheirColumns) {
+  TempDir dir;
+  std::string json = R"({
+  "asset": {"version": "2.0"},
+  "scene": 0,
+  "scenes": [{"nodes": [0, 1]}],
+  "nodes": [
+    {"name": "turned", "mesh": 0, "rotation": [0, 0, 0.70710678, 0.70710678]},
+    {"name": "placed", "mesh": 0, "matrix": [0, 0, -1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 5, 6, 7, 1]}
+  ],
+  "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  )" +
+                     triangle_accessors(R"(, "uri": "data:application/octet-stream;base64,)" +
+                                        base64(triangle_buffer()) + "\"") +
+                     "}";
+  Scene s = load_scene(dir.write("turned.gltf", json));
+  ASSERT_EQ(s.instanced.instances.size(), 2u);
+  ASSERT_EQ(s.instanced.meshes.size(), 1u);
+  const Transform& turned = s.instanced.instances[0].to_world;
+  // 90 degrees about +z: x goes to y, y to -x.
+  EXPECT_NEAR(turned.linear[0].y, 1.0f, 1e-6f);
+  EXPECT_NEAR(turned.linear[1].x, -1.0f, 1e-6f);
+  EXPECT_NEAR(turned.linear[2].z, 1.0f, 1e-6f);
+  const Transform& placed = s.instanced.instances[1].to_world;
+  EXPECT_EQ(placed.linear[0], glm::vec3(0, 0, -1));
+  EXPECT_EQ(placed.linear[1], glm::vec3(0, 1, 0));
+  EXPECT_EQ(placed.linear[2], glm::vec3(1, 0, 0));
+  EXPECT_EQ(placed.offset, glm::vec3(5, 6, 7));
+  EXPECT_EQ(s.mesh.vertex(1, 1), glm::vec3(5, 6, 6)) << "(1,0,0) through the matrix";
+  EXPECT_NEAR(s.mesh.vertex(0, 2).x, -1.0f, 1e-6f) << "(0,1,0) turned to -x";
+  FlatMesh flat = flatten(s.instanced);
+  for (size_t t = 0; t < s.triangle_count(); ++t)
+    for (int corner = 0; corner < 3; ++corner)
+      for (int axis = 0; axis < 3; ++axis)
+        EXPECT_NEAR(flat.mesh.vertex(t, corner)[axis], s.mesh.vertex(t, corner)[axis], 1e-6f);
 }
 
 TEST(SceneImportGltf, Base64EncoderMatchesKnownValues) {
