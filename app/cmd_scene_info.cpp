@@ -59,14 +59,8 @@ void add_scene_info_command(CLI::App& app, int& exit_code) {
     fmt::print("fingerprint  {:016x}\n", scene.fingerprint);
     if (o->bvh) {
       TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, true);
-      uint64_t nodes = bvh.top.node_count, triangles = bvh.top.triangle_count;
-      for (const BvhImage& b : bvh.bottom) nodes += b.node_count;
-      if (!bvh.bottom.empty()) triangles = scene.instanced.unique_triangles();
-      fmt::print("bvh          {}, {}: {} nodes, {} B = {:.2f} MiB ({:.1f} B a{} triangle)\n",
-                 bvh.bottom.empty() ? "one level" : "two levels", describe(config.bvh), nodes,
-                 bvh.total_bytes(), bvh.total_bytes() / 1048576.0,
-                 double(bvh.total_bytes()) / double(triangles),
-                 bvh.bottom.empty() ? "" : " unique");
+      fmt::print("bvh          {}, {}: {} B, {}\n", bvh.bottom.empty() ? "one level" : "two levels",
+                 describe(config.bvh), bvh.total_bytes(), reports::bvh_summary(bvh));
     }
     exit_code = 0;
   });

@@ -68,13 +68,12 @@ void print_bvh(const BvhImage& image) {
 
 void print_two_level(const TwoLevelBvh& bvh, const InstancedMesh& geometry) {
   fmt::print("model      {}, two levels\n", describe(bvh.top.config));
-  uint64_t bottom_nodes = 0;
-  for (const BvhImage& b : bvh.bottom) bottom_nodes += b.node_count;
   fmt::print(
       "bvh        top: {} nodes over {} instances; bottom: {} meshes, {} nodes over {} unique "
       "triangles ({} instanced); {:.2f} MiB\n",
-      bvh.top.node_count, geometry.instances.size(), bvh.bottom.size(), bottom_nodes,
-      geometry.unique_triangles(), geometry.instanced_triangles(), bvh.total_bytes() / 1048576.0);
+      bvh.top.node_count, geometry.instances.size(), bvh.bottom.size(),
+      bvh.node_count() - bvh.top.node_count, geometry.unique_triangles(),
+      geometry.instanced_triangles(), bvh.total_bytes() / 1048576.0);
 }
 
 void print_report(const VerifyReport& r) {

@@ -54,14 +54,18 @@ TwoLevelBvh build_scene_bvh(Scene& scene, const BvhConfig& config, bool quiet) {
     fmt::print(stderr, "bvh: building {} over {} triangles\n", describe(config), triangles);
   double start = wall_seconds();
   TwoLevelBvh bvh = build_scene_levels(scene.mesh, scene.instanced, config, step);
-  if (quiet) return bvh;
-  uint64_t nodes = 0;
-  for (const BvhImage* level : BvhView(bvh).levels()) nodes += level->node_count;
-  fmt::print(stderr, "bvh: {} nodes{}, {:.2f} MiB ({:.1f} B a{} triangle), built in {:.1f} s\n",
-             nodes, two_levels ? fmt::format(" ({} in the TLAS)", bvh.top.node_count) : "",
-             bvh.total_bytes() / 1048576.0, double(bvh.total_bytes()) / double(triangles),
-             two_levels ? " unique" : "", wall_seconds() - start);
+  if (!quiet)
+    fmt::print(stderr, "bvh: {}, built in {:.1f} s\n", bvh_summary(bvh), wall_seconds() - start);
   return bvh;
+}
+
+std::string bvh_summary(const TwoLevelBvh& bvh) {
+  bool two_levels = !bvh.bottom.empty();
+  return fmt::format("{} nodes{}, {:.2f} MiB ({:.1f} B a{} triangle)", bvh.node_count(),
+                     two_levels ? fmt::format(" ({} in the TLAS)", bvh.top.node_count) : "",
+                     bvh.total_bytes() / 1048576.0,
+                     double(bvh.total_bytes()) / double(bvh.triangle_count()),
+                     two_levels ? " unique" : "");
 }
 
 }  // namespace rtsim::reports

@@ -20,4 +20,7 @@ std::function<void(uint32_t frame, uint32_t frames, pipeline::PassId pass)> trac
 // one level.
 TwoLevelBvh build_scene_bvh(Scene& scene, const BvhConfig& config, bool quiet);
 
+// "N nodes (M in the TLAS), X MiB (Y B a unique triangle)": what a built BVH holds.
+std::string bvh_summary(const TwoLevelBvh& bvh);
+
 }  // namespace rtsim::reports

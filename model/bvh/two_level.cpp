@@ -78,6 +78,19 @@ uint64_t TwoLevelBvh::total_bytes() const {
   return bytes;
 }
 
+uint64_t TwoLevelBvh::node_count() const {
+  uint64_t nodes = top.node_count;
+  for (const BvhImage& b : bottom) nodes += b.node_count;
+  return nodes;
+}
+
+uint64_t TwoLevelBvh::triangle_count() const {
+  if (bottom.empty()) return top.triangle_count;
+  uint64_t triangles = 0;
+  for (const BvhImage& b : bottom) triangles += b.triangle_count;
+  return triangles;
+}
+
 InstanceRecord read_instance_record(const BvhImage& top, uint32_t position) {
   const uint8_t* in = top.triangle_bytes(position);
   float xfm[12];

@@ -28,6 +28,8 @@ struct TwoLevelBvh {
   std::vector<BvhImage> bottom;  // per unique mesh, in InstancedMesh::meshes order
 
   uint64_t total_bytes() const;
+  uint64_t node_count() const;      // over the levels
+  uint64_t triangle_count() const;  // the unique ones: the bottom levels', or the one level's
 };
 
 // What the traversal and the timing model walk: one BVH image, or both levels of a two-level

@@ -30,7 +30,7 @@ void record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind
 }  // namespace
 
 TraversalUnit::TraversalUnit(BvhView bvh, TraversalConfig config)
-    : bvh_(bvh), image_(*bvh.top), two_level_(bvh.two_level()), config_(config) {}
+    : bvh_(bvh), image_(*bvh.top), config_(config) {}
 
 void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
   s.ray = prepare_ray(ray, image_.scene_extent, config_.box_padding);
@@ -59,7 +59,7 @@ StepResult TraversalUnit::step(TraversalState& s) const {
     }
     if (entry.tnear > s.t_hit * kSlabFarGrowth) continue;
     if (entry.count == 0) return visit_node(s, entry);
-    return two_level_ && s.level == &image_ ? visit_instance(s, entry) : visit_leaf(s, entry);
+    return bvh_.two_level() && s.level == &image_ ? visit_instance(s, entry) : visit_leaf(s, entry);
   }
   s.done = true;
   return {};

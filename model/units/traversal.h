@@ -116,8 +116,7 @@ class TraversalUnit {
   void leave_instance(TraversalState& state) const;
 
   BvhView bvh_;
-  const BvhImage& image_;  // the only level, or the top one
-  bool two_level_;
+  const BvhImage& image_;  // *bvh_.top: the only level, or the top one
   TraversalConfig config_;
 };
 

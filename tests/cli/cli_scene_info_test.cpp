@@ -25,8 +25,8 @@ TEST(CliSceneInfo, ForestReportsInstancesAndBothBvhs) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("of 5 unique meshes: 32516 unique triangles"), std::string::npos) << r.out;
   auto bytes = [](const std::string& out) {
-    size_t at = out.find(" B = ");
-    return at == std::string::npos ? 0.0 : std::stod(out.substr(out.rfind(' ', at - 1) + 1));
+    size_t at = out.find("): ", out.find("bvh "));
+    return at == std::string::npos ? 0.0 : std::stod(out.substr(at + 3));
   };
   EXPECT_NE(r.out.find("bvh          two levels, bvh8"), std::string::npos) << r.out;
   RunResult flat = run_rtsim("scene-info forest:300000 --bvh --set bvh.instancing=\"flatten\"");
