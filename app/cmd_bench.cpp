@@ -50,7 +50,7 @@ int run_bench(const BenchOptions& o) {
   fmt::print("scene      {} ({} triangles, loaded in {:.2f} s)\n", scene.source,
              scene.triangle_count(), seconds_since(start));
   start = std::chrono::steady_clock::now();
-  BvhImage image = build_bvh_image(scene.mesh, o.bvh);
+  BvhImage image = build_bvh_image(flat_mesh(scene), o.bvh);
   double model_build = seconds_since(start);
   start = std::chrono::steady_clock::now();
   EmbreeScene embree(scene.mesh, 1);

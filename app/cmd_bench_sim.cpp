@@ -129,10 +129,11 @@ int run_bench_sim(const BenchSimOptions& o) {
   std::string spec = o.scene;
   if (!o.stream.empty()) spec = RayStreamReader(o.stream).header().scene_source;
   Scene scene = load_scene(spec);
+  if (!wants_two_levels(config.bvh, scene.instanced)) flat_mesh(scene);
   TwoLevelBvh image = build_scene_levels(scene.mesh, scene.instanced, config.bvh);
   bool two_levels = !image.bottom.empty();
   std::vector<Ray> rays;
-  if (o.stream.empty()) rays = sample_diffuse_rays(scene.mesh, o.rays, o.seed);
+  if (o.stream.empty()) rays = sample_diffuse_rays(scene.triangles(), o.rays, o.seed);
   if (!o.write_stream.empty()) {
     write_stream(o, scene, rays);
     return 0;

@@ -29,7 +29,7 @@ struct BenchArgs {
 
 // Seconds for one thread of Embree to trace every ray of the stream (reading excluded).
 double embree_reference(const std::string& stream, const Scene& scene, uint64_t& rays) {
-  EmbreeScene embree(scene.mesh, 1);
+  std::unique_ptr<EmbreeScene> embree = embree_scene(scene, 1);
   RayStreamReader reader(stream);
   std::vector<Ray> batch;
   double seconds = 0.0;
@@ -37,7 +37,7 @@ double embree_reference(const std::string& stream, const Scene& scene, uint64_t&
   rays = 0;
   while (reader.next_batch(batch, 1u << 16) > 0) {
     double start = wall_seconds();
-    for (const Ray& ray : batch) hits += embree.trace(ray).hit() ? 1 : 0;
+    for (const Ray& ray : batch) hits += embree->trace(ray).hit() ? 1 : 0;
     seconds += wall_seconds() - start;
     rays += batch.size();
   }

@@ -31,7 +31,13 @@ void add_scene_info_command(CLI::App& app, int& exit_code) {
     Scene scene = load_scene(o->spec);
     fmt::print("scene        {}\n", scene.source);
     fmt::print("triangles    {}\n", scene.triangle_count());
-    fmt::print("vertices     {}\n", scene.mesh.positions.size());
+    if (scene.flattened()) {
+      fmt::print("vertices     {}\n", scene.mesh.positions.size());
+    } else {
+      size_t vertices = 0;
+      for (const TriangleMesh& mesh : scene.instanced.meshes) vertices += mesh.positions.size();
+      fmt::print("vertices     {} in the unique meshes (no flattened copy is kept)\n", vertices);
+    }
     fmt::print("objects      {}\n", scene.object_names.size());
     const InstancedMesh& inst = scene.instanced;
     if (inst.instances.empty())

@@ -141,7 +141,7 @@ int run_verify(const VerifyOptions& o) {
   ArbiterConfig arbiter;
   arbiter.t_tolerance = o.t_tolerance;
   // One level: the flat mesh, both ways. Two: the two-level BVH against Embree's instances,
-  // judged on the flat mesh.
+  // hits judged as flat triangle ids.
   if (o.instances) bvh.instancing = Instancing::TwoLevel;
   if (o.flatten) bvh.instancing = Instancing::Flatten;
   TwoLevelBvh levels = reports::build_scene_bvh(scene, bvh, false);

@@ -36,7 +36,7 @@ TwoLevelBvh build_scene_bvh(Scene& scene, const BvhConfig& config, bool quiet) {
   bool two_levels = wants_two_levels(config, scene.instanced);
   uint64_t triangles = two_levels && !scene.instanced.instances.empty()
                            ? scene.instanced.unique_triangles()
-                           : scene.mesh.triangles.size();
+                           : scene.triangle_count();
   // Large builds take seconds a step: say each as it ends.
   BvhBuildStep step;
   if (!quiet && triangles >= kBvhStepTriangles)
@@ -53,6 +53,7 @@ TwoLevelBvh build_scene_bvh(Scene& scene, const BvhConfig& config, bool quiet) {
   else if (!quiet)
     fmt::print(stderr, "bvh: building {} over {} triangles\n", describe(config), triangles);
   double start = wall_seconds();
+  if (!two_levels) flat_mesh(scene);
   TwoLevelBvh bvh = build_scene_levels(scene.mesh, scene.instanced, config, step);
   if (!quiet)
     fmt::print(stderr, "bvh: {}, built in {:.1f} s\n", bvh_summary(bvh), wall_seconds() - start);

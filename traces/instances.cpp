@@ -1,10 +1,13 @@
 #include "traces/instances.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+
+#include "traces/hash.h"
 
 namespace rtsim {
 
@@ -83,6 +86,60 @@ FlatMesh flatten(const InstancedMesh& g) {
       out.mesh.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
   }
   return out;
+}
+
+uint64_t instanced_fingerprint(const InstancedMesh& g) {
+  uint64_t n[2] = {g.meshes.size(), g.instances.size()};
+  uint64_t h = fnv1a64(n, sizeof n);
+  for (const TriangleMesh& m : g.meshes) {
+    uint64_t mesh = mesh_fingerprint(m);
+    h = fnv1a64(&mesh, sizeof mesh, h);
+  }
+  for (const Instance& i : g.instances) {
+    h = fnv1a64(&i.mesh, sizeof i.mesh, h);
+    h = fnv1a64(&i.to_world.linear, sizeof i.to_world.linear, h);
+    h = fnv1a64(&i.to_world.offset, sizeof i.to_world.offset, h);
+  }
+  return h;
+}
+
+FlatTriangles::FlatTriangles(const TriangleMesh& flat)
+    : flat_(&flat), count_(flat.triangle_count()) {}
+
+FlatTriangles::FlatTriangles(const InstancedMesh& geometry)
+    : instances_(&geometry),
+      offsets_(flat_offsets(geometry)),
+      count_(geometry.instanced_triangles()) {}
+
+FlatTriangles::Place FlatTriangles::locate(uint64_t tri) const {
+  if (flat_) return {0, uint32_t(tri)};
+  auto at = std::upper_bound(offsets_.begin(), offsets_.end(), tri) - 1;
+  return {uint32_t(at - offsets_.begin()), uint32_t(tri - *at)};
+}
+
+std::array<glm::vec3, 3> FlatTriangles::corners(uint64_t tri) const {
+  if (flat_) return flat_->corners(tri);
+  Place at = locate(tri);
+  const Instance& inst = instances_->instances[at.instance];
+  const TriangleMesh& mesh = instances_->meshes[inst.mesh];
+  return {inst.to_world.point(mesh.vertex(at.prim, 0)),
+          inst.to_world.point(mesh.vertex(at.prim, 1)),
+          inst.to_world.point(mesh.vertex(at.prim, 2))};
+}
+
+Bounds FlatTriangles::bounds() const {
+  if (flat_) return mesh_bounds(*flat_);
+  Bounds b;
+  for (const Instance& inst : instances_->instances)
+    for (const glm::vec3& p : instances_->meshes[inst.mesh].positions)
+      b.grow(inst.to_world.point(p));
+  return b;
+}
+
+Hit FlatTriangles::flat(Hit hit) const {
+  if (instances_ && hit.instance != kNoHit && hit.prim != kNoHit && hit.prim != kAnyPrim)
+    hit.prim = uint32_t(offsets_[hit.instance] + hit.prim);
+  return hit;
 }
 
 }  // namespace rtsim

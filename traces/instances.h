@@ -5,6 +5,7 @@
 // single-level consumers and the flattened-versus-instanced checks use.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -54,5 +55,38 @@ struct FlatMesh {
 FlatMesh flatten(const InstancedMesh& geometry);
 // Just the offsets: where each instance's triangles start in the flattened order.
 std::vector<uint64_t> flat_offsets(const InstancedMesh& geometry);
+
+// Fingerprint of instanced geometry: its unique meshes and its instances (mesh, transform).
+uint64_t instanced_fingerprint(const InstancedMesh& geometry);
+
+// World-space triangles by flat id (flatten()'s order), read from a flat mesh or transformed from
+// the instances on demand (bit for bit what flatten() writes), so that consumers of flat ids need
+// no flattened copy. Refers to the mesh or instances it is made from: they must outlive it.
+class FlatTriangles {
+ public:
+  FlatTriangles() = default;                // no triangles
+  FlatTriangles(const TriangleMesh& flat);  // NOLINT: a flat mesh is its own flat triangles
+  explicit FlatTriangles(const InstancedMesh& geometry);
+
+  uint64_t count() const { return count_; }
+  std::array<glm::vec3, 3> corners(uint64_t tri) const;
+  Bounds bounds() const;  // of every world-space vertex
+
+  // Where a flat triangle is: its instance (0 for a flat mesh) and its triangle in that
+  // instance's mesh.
+  struct Place {
+    uint32_t instance = 0, prim = 0;
+  };
+  Place locate(uint64_t tri) const;
+  // A hit that names an instance and a triangle of its mesh (Embree's instances, the two-level
+  // model), with prim made the flat id; other hits as they are.
+  Hit flat(Hit hit) const;
+
+ private:
+  const TriangleMesh* flat_ = nullptr;
+  const InstancedMesh* instances_ = nullptr;
+  std::vector<uint64_t> offsets_;  // instances: flat_offsets()
+  uint64_t count_ = 0;
+};
 
 }  // namespace rtsim

@@ -65,8 +65,8 @@ constexpr uint32_t kAnyPrim = kNoHit - 1;
 
 struct Hit {
   float t = std::numeric_limits<float>::infinity();
-  float u = 0.0f, v = 0.0f;  // barycentrics of the hit point
-  uint32_t prim = kNoHit;    // triangle index in the TriangleMesh (in the instance's mesh)
+  float u = 0.0f, v = 0.0f;    // barycentrics of the hit point
+  uint32_t prim = kNoHit;      // triangle index in the TriangleMesh (in the instance's mesh)
   uint32_t instance = kNoHit;  // instanced geometry (traces/instances.h): the instance hit
   bool hit() const { return prim != kNoHit; }
 };
@@ -78,6 +78,9 @@ struct TriangleMesh {
 
   size_t triangle_count() const { return triangles.size(); }
   glm::vec3 vertex(size_t tri, int corner) const { return positions[triangles[tri][corner]]; }
+  std::array<glm::vec3, 3> corners(size_t tri) const {
+    return {vertex(tri, 0), vertex(tri, 1), vertex(tri, 2)};
+  }
 };
 
 // Hash of positions and indices: identifies a scene's geometry in ray-stream headers.

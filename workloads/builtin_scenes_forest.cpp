@@ -2,9 +2,10 @@
 // variants (a trunk and a crown of separate small leaf triangles), a rock and a terrain mound;
 // instances place them with their own rotation about +y and scale (the terrain non-uniformly).
 // N is the instanced triangles asked for: trees (with a rock beside every fourth) are added on
-// a jittered grid until N is reached. The scene keeps its instance structure (Scene::instanced:
-// bvh.instancing = "auto" builds two levels over it) beside the flattened mesh the workload
-// passes shade. Seeded, bit-identical on every machine (+, *, / and sqrt only).
+// a jittered grid until N is reached. The scene keeps only its unique geometry and instances
+// (Scene::instanced, no flattened copy: bvh.instancing = "auto" builds two levels over it, and
+// the workload passes trace Embree's instances). Seeded, bit-identical on every machine (+, *,
+// / and sqrt only).
 #include <cmath>
 
 #include "workloads/builtin_scenes.h"
@@ -134,14 +135,12 @@ Scene make_forest(const std::string& source, uint64_t triangles) {
     g.instances.push_back({rock_mesh, place(random_yaw(rng), V(rock_scale),
                                             V(rx, ground(rx, rz) - 0.2f * rock_scale, rz))});
   }
-  // The flattened mesh and its per-triangle materials and objects, instance by instance.
-  for (Part& part : parts) g.meshes.push_back(std::move(part.mesh));
-  scene.mesh = flatten(g).mesh;
-  for (const Instance& inst : g.instances) {
-    const Part& part = parts[inst.mesh];
-    scene.material_ids.insert(scene.material_ids.end(), part.materials.begin(),
-                              part.materials.end());
-    scene.object_ids.insert(scene.object_ids.end(), part.materials.size(), part.kind);
+  // Unique geometry only: materials per mesh triangle, objects per instance.
+  for (const Instance& inst : g.instances)
+    scene.instance_object_ids.push_back(parts[inst.mesh].kind);
+  for (Part& part : parts) {
+    g.meshes.push_back(std::move(part.mesh));
+    scene.mesh_material_ids.push_back(std::move(part.materials));
   }
   return scene;
 }

@@ -29,15 +29,70 @@ bool finite(const glm::vec3& p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
-void check_ids(const Scene& s, const std::vector<uint32_t>& ids, size_t limit, const char* what) {
-  if (ids.size() != s.triangle_count())
+void check_ids(const Scene& s, const std::vector<uint32_t>& ids, uint64_t count, size_t limit,
+               const char* what, const std::string& items) {
+  if (ids.size() != count)
     throw_input_error(s.source, "",
-                      std::to_string(ids.size()) + " " + what + " ids for " +
-                          std::to_string(s.triangle_count()) + " triangles");
+                      fmt::format("{} {} ids for {} {}", ids.size(), what, count, items));
   for (size_t t = 0; t < ids.size(); ++t)
     if (ids[t] >= limit)
-      throw_input_error(s.source, "triangle " + std::to_string(t),
-                        std::string(what) + " id " + std::to_string(ids[t]) + " out of range");
+      throw_input_error(s.source, fmt::format("{} {}", items.substr(0, items.size() - 1), t),
+                        fmt::format("{} id {} out of range", what, ids[t]));
+}
+
+void check_vertex(const Scene& scene, const glm::vec3& p, const std::string& where) {
+  if (!finite(p)) throw_input_error(scene.source, where, "position is NaN or Inf");
+  float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  if (largest > kMaxSceneCoordinate)
+    throw_input_error(
+        scene.source, where,
+        fmt::format("coordinate {:g} is beyond +-{:g}, the range rtsim traces (cameras and ray "
+                    "offsets must stay inside Embree's +-1.8e18); scale the scene down",
+                    largest, kMaxSceneCoordinate));
+}
+
+void check_indices(const Scene& scene, const TriangleMesh& mesh, const std::string& prefix) {
+  for (size_t t = 0; t < mesh.triangle_count(); ++t)
+    for (uint32_t index : mesh.triangles[t])
+      if (index >= mesh.positions.size())
+        throw_input_error(scene.source, prefix + "triangle " + std::to_string(t),
+                          "vertex index " + std::to_string(index) + " out of range");
+}
+
+// A scene that keeps only its instances: checked and bounded in world space, vertex by vertex,
+// without a flattened copy.
+void finalize_instanced(Scene& scene) {
+  const InstancedMesh& g = scene.instanced;
+  std::string problem = instancing_problem(g);
+  if (!problem.empty()) throw_input_error(scene.source, "instances", problem);
+  if (g.instanced_triangles() >= kAnyPrim)
+    throw_input_error(scene.source, "instances",
+                      fmt::format("{} instanced triangles; rtsim names triangles with 32-bit ids "
+                                  "(at most {})",
+                                  g.instanced_triangles(), kAnyPrim - 1));
+  for (size_t m = 0; m < g.meshes.size(); ++m)
+    check_indices(scene, g.meshes[m], fmt::format("mesh {} ", m));
+  if (scene.mesh_material_ids.size() != g.meshes.size())
+    throw_input_error(scene.source, "",
+                      fmt::format("{} meshes with material ids for {} meshes",
+                                  scene.mesh_material_ids.size(), g.meshes.size()));
+  for (size_t m = 0; m < g.meshes.size(); ++m)
+    check_ids(scene, scene.mesh_material_ids[m], g.meshes[m].triangle_count(),
+              scene.materials.size(), "material", fmt::format("mesh {} triangles", m));
+  check_ids(scene, scene.instance_object_ids, g.instances.size(), scene.object_names.size(),
+            "object", "instances");
+  Bounds bounds;
+  for (size_t i = 0; i < g.instances.size(); ++i) {
+    const Instance& inst = g.instances[i];
+    const std::vector<glm::vec3>& positions = g.meshes[inst.mesh].positions;
+    for (size_t v = 0; v < positions.size(); ++v) {
+      glm::vec3 p = inst.to_world.point(positions[v]);
+      check_vertex(scene, p, fmt::format("instance {} vertex {}", i, v));
+      bounds.grow(p);
+    }
+  }
+  scene.bounds = bounds;
+  scene.fingerprint = instanced_fingerprint(g);
 }
 
 }  // namespace
@@ -61,30 +116,44 @@ Scene load_scene(const std::string& spec) {
 }
 
 void finalize_scene(Scene& scene) {
+  if (!scene.flattened() && !scene.instanced.instances.empty()) return finalize_instanced(scene);
   const TriangleMesh& mesh = scene.mesh;
   if (mesh.triangle_count() == 0) throw_input_error(scene.source, "", "the scene has no triangles");
-  for (size_t v = 0; v < mesh.positions.size(); ++v) {
-    const glm::vec3& p = mesh.positions[v];
-    if (!finite(p))
-      throw_input_error(scene.source, "vertex " + std::to_string(v), "position is NaN or Inf");
-    float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-    if (largest > kMaxSceneCoordinate)
-      throw_input_error(
-          scene.source, "vertex " + std::to_string(v),
-          fmt::format("coordinate {:g} is beyond +-{:g}, the range rtsim traces (cameras and ray "
-                      "offsets must stay inside Embree's +-1.8e18); scale the scene down",
-                      largest, kMaxSceneCoordinate));
-  }
-  for (size_t t = 0; t < mesh.triangle_count(); ++t) {
-    for (uint32_t index : mesh.triangles[t])
-      if (index >= mesh.positions.size())
-        throw_input_error(scene.source, "triangle " + std::to_string(t),
-                          "vertex index " + std::to_string(index) + " out of range");
-  }
-  check_ids(scene, scene.material_ids, scene.materials.size(), "material");
-  check_ids(scene, scene.object_ids, scene.object_names.size(), "object");
+  for (size_t v = 0; v < mesh.positions.size(); ++v)
+    check_vertex(scene, mesh.positions[v], "vertex " + std::to_string(v));
+  check_indices(scene, mesh, "");
+  check_ids(scene, scene.material_ids, mesh.triangle_count(), scene.materials.size(), "material",
+            "triangles");
+  check_ids(scene, scene.object_ids, mesh.triangle_count(), scene.object_names.size(), "object",
+            "triangles");
   scene.bounds = mesh_bounds(mesh);
   scene.fingerprint = mesh_fingerprint(mesh);
+}
+
+TriangleAttributes Scene::attributes(const FlatTriangles& triangles, uint64_t tri) const {
+  if (flattened())
+    return {tri < material_ids.size() ? material_ids[tri] : 0,
+            tri < object_ids.size() ? object_ids[tri] : 0};
+  FlatTriangles::Place at = triangles.locate(tri);
+  return {mesh_material_ids[instanced.instances[at.instance].mesh][at.prim],
+          instance_object_ids[at.instance]};
+}
+
+const TriangleMesh& flat_mesh(Scene& scene) {
+  if (scene.flattened()) return scene.mesh;
+  scene.mesh = flatten(scene.instanced).mesh;
+  for (size_t i = 0; i < scene.instanced.instances.size(); ++i) {
+    const std::vector<uint32_t>& materials =
+        scene.mesh_material_ids[scene.instanced.instances[i].mesh];
+    scene.material_ids.insert(scene.material_ids.end(), materials.begin(), materials.end());
+    scene.object_ids.insert(scene.object_ids.end(), materials.size(), scene.instance_object_ids[i]);
+  }
+  return scene.mesh;
+}
+
+std::unique_ptr<EmbreeScene> embree_scene(const Scene& scene, int threads) {
+  if (scene.flattened()) return std::make_unique<EmbreeScene>(scene.mesh, threads);
+  return std::make_unique<EmbreeScene>(scene.instanced, threads);
 }
 
 Scene load_stream_scene(const std::string& stream, const StreamHeader& header,

@@ -3,11 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "traces/embree_scene.h"
 #include "traces/instances.h"
 #include "traces/ray.h"
 #include "traces/stream.h"
@@ -43,6 +45,17 @@ struct SceneLight {
   float outer_cone_degrees = 45.0f;  // spot
 };
 
+// A triangle's material and object.
+struct TriangleAttributes {
+  uint32_t material = 0, object = 0;
+};
+
+// A scene's triangles are named by flat ids: the order flatten(instanced) gives, instance after
+// instance. A scene whose instances place each mesh once (or that has no instances) keeps the
+// flattened copy in `mesh`, with per-triangle material and object ids. One that places a mesh
+// more than once (forest:N, glTF files that reuse a mesh) keeps only its unique geometry: `mesh`
+// and the per-triangle ids stay empty, and materials are named per unique mesh's triangle and
+// objects per instance; flat_mesh() makes the copy for consumers that need one.
 struct Scene {
   std::string source;  // file path, or "builtin:NAME[:PARAMS]" as written in stream headers
   TriangleMesh mesh;
@@ -52,15 +65,32 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<SceneCamera> cameras;  // in file order; the first is the one a spec can adopt
   std::vector<SceneLight> lights;
-  // The instance structure that `mesh` flattens (flatten(instanced) gives mesh's triangles in
-  // mesh's order): scene files (each node's mesh reference an instance) and forest:N. Empty
-  // for the other built-in scenes, which are one flat mesh.
+  // The instance structure (scene files: each node's mesh reference an instance; forest:N).
+  // Empty for the other built-in scenes, which are one flat mesh.
   InstancedMesh instanced;
-  uint64_t fingerprint = 0;  // mesh_fingerprint(mesh)
+  std::vector<std::vector<uint32_t>> mesh_material_ids;  // unflattened: per mesh, per triangle
+  std::vector<uint32_t> instance_object_ids;             // unflattened: per instance
+  uint64_t fingerprint = 0;  // mesh_fingerprint(mesh), or instanced_fingerprint(instanced)
   Bounds bounds;
 
-  size_t triangle_count() const { return mesh.triangle_count(); }
+  bool flattened() const { return mesh.triangle_count() > 0; }
+  uint64_t triangle_count() const {
+    return flattened() ? mesh.triangle_count() : instanced.instanced_triangles();
+  }
+  // The world-space triangles by flat id; refers to this scene.
+  FlatTriangles triangles() const {
+    return flattened() ? FlatTriangles(mesh) : FlatTriangles(instanced);
+  }
+  // Material and object of flat triangle tri (triangles: this scene's).
+  TriangleAttributes attributes(const FlatTriangles& triangles, uint64_t tri) const;
 };
+
+// The scene's flattened mesh, made (with its per-triangle ids) if the scene keeps none.
+const TriangleMesh& flat_mesh(Scene& scene);
+
+// Embree over the scene as it is kept: its flattened mesh, or its instances (hits then name
+// the instance; Scene::triangles().flat() makes them flat ids).
+std::unique_ptr<EmbreeScene> embree_scene(const Scene& scene, int threads = 0);
 
 // Loads "cornell", "pica", "grid:N", "foliage:N", "forest:N" (optionally prefixed "builtin:"), or a
 // scene file (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, OFF, STL). Throws InputError naming the file for a
@@ -85,8 +115,9 @@ std::vector<std::string> scene_file_extensions();
 // that cameras placed around the scene and the rays' offsets stay inside it.
 constexpr float kMaxSceneCoordinate = 1e15f;
 
-// Fills fingerprint and bounds, and checks the invariants (ids in range, finite vertices within
-// +-kMaxSceneCoordinate, at least one triangle); throws InputError naming source.
+// Fills fingerprint and bounds, and checks the invariants (ids in range, finite world-space
+// vertices within +-kMaxSceneCoordinate, at least one triangle, instances that can be traced);
+// throws InputError naming source.
 void finalize_scene(Scene& scene);
 
 }  // namespace rtsim

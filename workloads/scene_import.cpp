@@ -1,9 +1,9 @@
 // Scene files through assimp: checks the file, imports without post-processing to check the raw
-// vertices, then triangulates and welds, and flattens the node hierarchy into one triangle array
-// (each mesh reference transformed by its node's accumulated matrix, so glTF instances and node
-// transforms come out in world space). The same walk keeps the instance structure: each mesh
-// once in object space, each node's reference to it an instance (Scene::instanced, in the
-// flattened order). Cameras and lights are read before post-processing removes them.
+// vertices, then triangulates and welds, and walks the node hierarchy: each mesh kept once in
+// object space, each node's reference to it an instance (Scene::instanced). A file that places
+// each mesh once is also flattened into one world-space triangle array (each mesh reference
+// transformed by its node's accumulated matrix); one that reuses a mesh keeps only its instances
+// (workloads/scene.h). Cameras and lights are read before post-processing removes them.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -95,20 +95,46 @@ void check_log(const std::string& path, const std::string& ext, const AssimpErro
   throw_input_error(path, "", "cannot import: " + log.errors().front());
 }
 
-// Appends the triangles of every mesh under node, transformed to world space.
-class Flattener {
+bool has_triangles(const aiMesh& mesh) {
+  for (unsigned f = 0; f < mesh.mNumFaces; ++f)
+    if (mesh.mFaces[f].mNumIndices == 3) return true;
+  return false;
+}
+
+// How many times the node hierarchy places each mesh.
+void count_placements(const aiNode& node, std::vector<unsigned>& placed) {
+  for (unsigned i = 0; i < node.mNumMeshes; ++i) placed[node.mMeshes[i]]++;
+  for (unsigned c = 0; c < node.mNumChildren; ++c) count_placements(*node.mChildren[c], placed);
+}
+
+// Walks the node hierarchy: each mesh reference with triangles becomes an instance of the mesh
+// (kept once, in object space); if no mesh is placed twice, the walk also appends the
+// transformed triangles to the flattened mesh, else the scene keeps its instances only.
+class SceneWalk {
  public:
-  Flattener(const aiScene& scene, Scene& out, bool use_materials, std::string fallback_name)
+  SceneWalk(const aiScene& scene, Scene& out, bool use_materials, std::string fallback_name)
       : scene_(scene),
         out_(out),
         use_materials_(use_materials),
-        fallback_name_(std::move(fallback_name)) {}
+        fallback_name_(std::move(fallback_name)) {
+    std::vector<unsigned> placed(scene.mNumMeshes, 0);
+    count_placements(*scene.mRootNode, placed);
+    flatten_ = std::all_of(placed.begin(), placed.end(), [](unsigned n) { return n <= 1; });
+  }
 
   void walk(const aiNode& node, const aiMatrix4x4& parent) {
     aiMatrix4x4 transform = parent * node.mTransformation;
-    for (unsigned i = 0; i < node.mNumMeshes; ++i)
-      if (append(*scene_.mMeshes[node.mMeshes[i]], transform, object_name(node, i)))
-        add_instance(node.mMeshes[i], transform);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
+      const aiMesh& mesh = *scene_.mMeshes[node.mMeshes[i]];
+      if (!has_triangles(mesh)) continue;  // points and lines only
+      uint32_t material = use_materials_ ? mesh.mMaterialIndex : 0;
+      uint32_t object = object_id(object_name(node, i));
+      add_instance(node.mMeshes[i], transform, material, object);
+      if (!flatten_) continue;
+      size_t added = append_triangles(mesh, transform, out_.mesh);
+      out_.material_ids.insert(out_.material_ids.end(), added, material);
+      out_.object_ids.insert(out_.object_ids.end(), added, object);
+    }
     for (unsigned c = 0; c < node.mNumChildren; ++c) walk(*node.mChildren[c], transform);
   }
 
@@ -152,32 +178,27 @@ class Flattener {
     return added;
   }
 
-  bool append(const aiMesh& mesh, const aiMatrix4x4& transform, const std::string& name) {
-    size_t added = append_triangles(mesh, transform, out_.mesh);
-    if (added == 0) return false;
-    uint32_t material = use_materials_ ? mesh.mMaterialIndex : 0;
-    out_.material_ids.insert(out_.material_ids.end(), added, material);
-    out_.object_ids.insert(out_.object_ids.end(), added, object_id(name));
-    return true;
-  }
-
   // The file's mesh reference as an instance: its mesh kept once, in object space.
-  void add_instance(unsigned mesh_index, const aiMatrix4x4& m) {
+  void add_instance(unsigned mesh_index, const aiMatrix4x4& m, uint32_t material, uint32_t object) {
     auto [it, inserted] =
         unique_mesh_.try_emplace(mesh_index, uint32_t(out_.instanced.meshes.size()));
-    if (inserted)
-      append_triangles(*scene_.mMeshes[mesh_index], aiMatrix4x4(),
-                       out_.instanced.meshes.emplace_back());
+    if (inserted) {
+      size_t added = append_triangles(*scene_.mMeshes[mesh_index], aiMatrix4x4(),
+                                      out_.instanced.meshes.emplace_back());
+      if (!flatten_) out_.mesh_material_ids.emplace_back(added, material);
+    }
     Instance instance;
     instance.mesh = it->second;
     instance.to_world.linear = glm::mat3(m.a1, m.b1, m.c1, m.a2, m.b2, m.c2, m.a3, m.b3, m.c3);
     instance.to_world.offset = {m.a4, m.b4, m.c4};
     out_.instanced.instances.push_back(instance);
+    if (!flatten_) out_.instance_object_ids.push_back(object);
   }
 
   const aiScene& scene_;
   Scene& out_;
   bool use_materials_;
+  bool flatten_ = true;
   std::string fallback_name_;
   std::unordered_map<std::string, uint32_t> object_ids_;
   std::unordered_map<unsigned, uint32_t> unique_mesh_;  // assimp mesh -> instanced.meshes
@@ -275,9 +296,9 @@ Scene import_scene_file(const std::string& path) {
   } else {
     out.materials.push_back(Material{"default"});
   }
-  Flattener(*scene, out, use_materials, fs::path(path).stem().string())
+  SceneWalk(*scene, out, use_materials, fs::path(path).stem().string())
       .walk(*scene->mRootNode, aiMatrix4x4());
-  if (out.mesh.triangles.empty()) throw_input_error(path, "", "the file has no triangles");
+  if (out.instanced.instances.empty()) throw_input_error(path, "", "the file has no triangles");
   return out;
 }
 

@@ -75,9 +75,13 @@ SystemCBackend::SystemCBackend(const TriangleMesh& mesh, const InstancedMesh& in
 const TwoLevelBvh& SystemCBackend::bvh_for(const HwConfig& config) {
   std::string key = resolved_json(config)["bvh"].dump();
   auto it = bvhs_.find(key);
-  if (it == bvhs_.end())
-    it = bvhs_.emplace(key, build_scene_levels(mesh_, instances_, config.bvh)).first;
-  return it->second;
+  if (it != bvhs_.end()) return it->second;
+  // A scene kept without a flattened copy gets one when a device's config asks for one level.
+  bool one_level = !wants_two_levels(config.bvh, instances_);
+  if (one_level && mesh_.triangle_count() == 0 && flattened_.triangle_count() == 0)
+    flattened_ = flatten(instances_).mesh;
+  const TriangleMesh& flat = mesh_.triangle_count() > 0 ? mesh_ : flattened_;
+  return bvhs_.emplace(key, build_scene_levels(flat, instances_, config.bvh)).first->second;
 }
 
 std::vector<DeviceResult> SystemCBackend::run(const std::vector<DeviceTask>& tasks,

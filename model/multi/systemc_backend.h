@@ -15,7 +15,8 @@ namespace rtsim::multi {
 
 class SystemCBackend : public DeviceBackend {
  public:
-  // mesh: the scene's world-space triangles; instances: its instance structure.
+  // mesh: the scene's world-space triangles (empty for a scene kept as instances only);
+  // instances: its instance structure.
   SystemCBackend(const TriangleMesh& mesh, const InstancedMesh& instances, unsigned jobs);
   std::vector<DeviceResult> run(const std::vector<DeviceTask>& tasks,
                                 const ScreenLayout& layout) override;
@@ -24,6 +25,7 @@ class SystemCBackend : public DeviceBackend {
   const TwoLevelBvh& bvh_for(const HwConfig& config);
 
   const TriangleMesh& mesh_;
+  TriangleMesh flattened_;  // made from instances_ when mesh_ is empty and needed
   InstancedMesh instances_;
   unsigned jobs_;
   std::map<std::string, TwoLevelBvh> bvhs_;  // by resolved BVH config

@@ -1,7 +1,9 @@
 #include "model/verify/arbiter.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 #include <glm/geometric.hpp>
 
 namespace rtsim {
@@ -41,11 +43,12 @@ const char* right_side_name(RightSide side) {
   }
 }
 
-ExactHit exact_intersect(const TriangleMesh& mesh, uint32_t prim, const Ray& ray) {
+ExactHit exact_intersect(const FlatTriangles& triangles, uint64_t prim, const Ray& ray) {
   ExactHit ex;
   glm::dvec3 o(ray.org), d(ray.dir);
+  std::array<glm::vec3, 3> corners = triangles.corners(prim);
   glm::dvec3 v[3];
-  for (int c = 0; c < 3; ++c) v[c] = glm::dvec3(mesh.vertex(prim, c)) - o;
+  for (int c = 0; c < 3; ++c) v[c] = glm::dvec3(corners[c]) - o;
   // Shape: normal, cosine with the ray, area against the longest edge.
   glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
   double longest =
@@ -91,13 +94,13 @@ bool same_t(double a, double b, const Ray& ray, double t_tolerance) {
          diff <= t_slack(ray, std::max(a, b));
 }
 
-Arbiter::Arbiter(const TriangleMesh& mesh, const EmbreeScene& embree, ArbiterConfig config)
-    : mesh_(mesh), embree_(embree), config_(config) {}
+Arbiter::Arbiter(FlatTriangles triangles, const EmbreeScene& embree, ArbiterConfig config)
+    : triangles_(std::move(triangles)), embree_(embree), config_(config) {}
 
 Verdict Arbiter::classify(const Ray& ray, uint32_t prim, bool model_reported,
                           double other_t) const {
   Verdict out{false, MismatchClass::Unexplained, RightSide::Both, prim};
-  ExactHit ex = exact_intersect(mesh_, prim, ray);
+  ExactHit ex = exact_intersect(triangles_, prim, ray);
   double slack = t_slack(ray, ex.t);
   bool near_edge = ex.near_edge(config_.edge_epsilon);
   bool at_tmin = std::fabs(ex.t - ray.tmin) <= config_.range_epsilon * std::fabs(ex.t) + slack;
@@ -124,11 +127,11 @@ Verdict Arbiter::classify(const Ray& ray, uint32_t prim, bool model_reported,
 }
 
 uint32_t Arbiter::find_candidate(const Ray& ray) const {
-  Hit closest = embree_.intersect(ray);
+  Hit closest = triangles_.flat(embree_.intersect(ray));
   if (closest.hit()) return closest.prim;
   // Embree's occlusion query saw something its closest-hit query did not: search all.
-  for (uint32_t p = 0; p < mesh_.triangle_count(); ++p) {
-    ExactHit ex = exact_intersect(mesh_, p, ray);
+  for (uint32_t p = 0; p < triangles_.count(); ++p) {
+    ExactHit ex = exact_intersect(triangles_, p, ray);
     double slack = t_slack(ray, ex.t) + config_.range_epsilon * std::fabs(ex.t);
     if ((ex.inside || ex.near_edge(config_.edge_epsilon)) && ex.t >= ray.tmin - slack &&
         ex.t <= ray.tmax + slack)
@@ -154,8 +157,8 @@ Verdict Arbiter::judge(const Ray& ray, const Hit& embree, uint32_t model_prim,
     if (same_distance && model_prim == embree.prim) return {};
     if (same_distance) {
       // Two triangles at one distance: through their shared edge, a tie, or one is not hit.
-      ExactHit a = exact_intersect(mesh_, model_prim, ray);
-      ExactHit b = exact_intersect(mesh_, embree.prim, ray);
+      ExactHit a = exact_intersect(triangles_, model_prim, ray);
+      ExactHit b = exact_intersect(triangles_, embree.prim, ray);
       bool a_edge = a.near_edge(config_.edge_epsilon);
       bool b_edge = b.near_edge(config_.edge_epsilon);
       if (a_edge && b_edge)
@@ -169,7 +172,7 @@ Verdict Arbiter::judge(const Ray& ray, const Hit& embree, uint32_t model_prim,
       // One triangle, two distances: only ill-conditioning excuses that. fp32 t errs by about
       // the coordinates' ulps over the cosine of the angle to the plane.
       Verdict v = classify(ray, model_prim, true, kNone);
-      ExactHit ex = exact_intersect(mesh_, model_prim, ray);
+      ExactHit ex = exact_intersect(triangles_, model_prim, ray);
       double conditioned = t_slack(ray, ex.t) / std::max(ex.cosine, 1e-12);
       bool ill_conditioned = std::fabs(double(model_t) - embree.t) <= conditioned;
       if (v.cls != MismatchClass::Degenerate && v.cls != MismatchClass::Grazing)

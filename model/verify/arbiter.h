@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "traces/embree_scene.h"
+#include "traces/instances.h"
 #include "traces/ray.h"
 
 namespace rtsim {
@@ -62,7 +63,7 @@ struct ExactHit {
   }
 };
 
-ExactHit exact_intersect(const TriangleMesh& mesh, uint32_t prim, const Ray& ray);
+ExactHit exact_intersect(const FlatTriangles& triangles, uint64_t prim, const Ray& ray);
 
 // True if a and b are the same distance within the tolerance of fp32 hit computation:
 // relative t_tolerance plus a few ulps of the coordinates' magnitude along the ray.
@@ -76,18 +77,21 @@ struct Verdict {
 };
 
 class Arbiter {
-public:
-  Arbiter(const TriangleMesh& mesh, const EmbreeScene& embree, ArbiterConfig config = {});
+ public:
+  // triangles: the scene by flat id; embree: Embree over the same scene, flat or instanced
+  // (its hits are mapped to flat ids).
+  Arbiter(FlatTriangles triangles, const EmbreeScene& embree, ArbiterConfig config = {});
 
   // Compares one ray's answers. model_prim is the triangle the model hit, also for any-hit
   // queries (kNoHit on a miss); embree is EmbreeScene::trace's answer.
   Verdict judge(const Ray& ray, const Hit& embree, uint32_t model_prim, float model_t) const;
+  const FlatTriangles& triangles() const { return triangles_; }
 
-private:
+ private:
   Verdict classify(const Ray& ray, uint32_t prim, bool model_reported, double other_t) const;
   uint32_t find_candidate(const Ray& ray) const;
 
-  const TriangleMesh& mesh_;
+  FlatTriangles triangles_;
   const EmbreeScene& embree_;
   ArbiterConfig config_;
 };

@@ -13,7 +13,9 @@ uint64_t SeededRandom::next() {
   return z ^ (z >> 31);
 }
 
-float SeededRandom::uniform() { return static_cast<float>(next() >> 40) * 0x1p-24f; }
+float SeededRandom::uniform() {
+  return static_cast<float>(next() >> 40) * 0x1p-24f;
+}
 
 glm::vec3 random_direction(SeededRandom& random) {
   float z = 1.0f - 2.0f * random.uniform();
@@ -22,24 +24,24 @@ glm::vec3 random_direction(SeededRandom& random) {
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
-std::vector<Ray> sample_diffuse_rays(const TriangleMesh& mesh, size_t count, uint64_t seed) {
+std::vector<Ray> sample_diffuse_rays(const FlatTriangles& triangles, size_t count, uint64_t seed) {
   // Cumulative areas, to pick triangles in proportion to their area.
-  std::vector<double> cumulative(mesh.triangle_count());
+  std::vector<double> cumulative(triangles.count());
   double total = 0.0;
-  for (size_t i = 0; i < mesh.triangle_count(); ++i) {
-    glm::vec3 a = mesh.vertex(i, 0), b = mesh.vertex(i, 1), c = mesh.vertex(i, 2);
+  for (uint64_t i = 0; i < triangles.count(); ++i) {
+    auto [a, b, c] = triangles.corners(i);
     total += 0.5 * glm::length(glm::cross(b - a, c - a));
     cumulative[i] = total;
   }
-  float nudge = 1e-4f * glm::length(mesh_bounds(mesh).extent());
+  float nudge = 1e-4f * glm::length(triangles.bounds().extent());
   SeededRandom random(seed);
   std::vector<Ray> rays;
   rays.reserve(count);
   while (rays.size() < count && total > 0.0) {
     double pick = double(random.uniform()) * total;
     size_t tri = std::upper_bound(cumulative.begin(), cumulative.end(), pick) - cumulative.begin();
-    tri = std::min(tri, mesh.triangle_count() - 1);
-    glm::vec3 a = mesh.vertex(tri, 0), b = mesh.vertex(tri, 1), c = mesh.vertex(tri, 2);
+    tri = std::min<uint64_t>(tri, triangles.count() - 1);
+    auto [a, b, c] = triangles.corners(tri);
     glm::vec3 n = glm::cross(b - a, c - a);
     if (!(glm::length(n) > 0.0f)) continue;
     n = glm::normalize(n);
@@ -60,8 +62,9 @@ std::vector<Ray> sample_diffuse_rays(const TriangleMesh& mesh, size_t count, uin
   return rays;
 }
 
-std::vector<Ray> sample_camera_rays(const TriangleMesh& mesh, uint32_t width, uint32_t height) {
-  Bounds bounds = mesh_bounds(mesh);
+std::vector<Ray> sample_camera_rays(const FlatTriangles& triangles, uint32_t width,
+                                    uint32_t height) {
+  Bounds bounds = triangles.bounds();
   glm::vec3 center = bounds.center();
   float radius = 0.5f * glm::length(bounds.extent());
   glm::vec3 eye = center + glm::vec3(0.3f, 0.4f, 1.0f) * (1.6f * radius);
@@ -83,9 +86,9 @@ std::vector<Ray> sample_camera_rays(const TriangleMesh& mesh, uint32_t width, ui
   return rays;
 }
 
-std::vector<Ray> sample_random_rays(const TriangleMesh& mesh, size_t count, uint64_t seed,
+std::vector<Ray> sample_random_rays(const FlatTriangles& triangles, size_t count, uint64_t seed,
                                     float margin) {
-  Bounds bounds = mesh_bounds(mesh);
+  Bounds bounds = triangles.bounds();
   glm::vec3 grow(margin * glm::length(bounds.extent()));
   glm::vec3 lo = bounds.lo - grow, size = bounds.extent() + 2.0f * grow;
   SeededRandom random(seed);

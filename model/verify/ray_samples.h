@@ -6,29 +6,33 @@
 #include <cstdint>
 #include <vector>
 
+#include "traces/instances.h"
 #include "traces/ray.h"
 
 namespace rtsim {
 
 // Small portable generator (SplitMix64): identical sequences on every platform.
 class SeededRandom {
-public:
+ public:
   explicit SeededRandom(uint64_t seed) : state_(seed) {}
   uint64_t next();
   float uniform();  // in [0, 1), 24 random bits
-private:
+ private:
   uint64_t state_;
 };
 
 // Rays leaving random surface points (area-weighted) on a random side, cosine-distributed
 // about the normal, origin nudged off the surface; closest-hit, tmax = +inf, type DiffuseGI.
-std::vector<Ray> sample_diffuse_rays(const TriangleMesh& mesh, size_t count, uint64_t seed);
+// triangles: a flat mesh, or a scene's instances without a flattened copy.
+std::vector<Ray> sample_diffuse_rays(const FlatTriangles& triangles, size_t count, uint64_t seed);
 
-// A width x height pinhole camera outside the mesh bounds looking at their center.
-std::vector<Ray> sample_camera_rays(const TriangleMesh& mesh, uint32_t width, uint32_t height);
+// A width x height pinhole camera outside the triangles' bounds looking at their center.
+std::vector<Ray> sample_camera_rays(const FlatTriangles& triangles, uint32_t width,
+                                    uint32_t height);
 
-// Origins uniform in the mesh bounds (grown by `margin` of the diagonal), directions uniform.
-std::vector<Ray> sample_random_rays(const TriangleMesh& mesh, size_t count, uint64_t seed,
+// Origins uniform in the triangles' bounds (grown by `margin` of the diagonal), directions
+// uniform.
+std::vector<Ray> sample_random_rays(const FlatTriangles& triangles, size_t count, uint64_t seed,
                                     float margin = 0.1f);
 
 // Uniformly distributed unit vector.

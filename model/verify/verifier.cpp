@@ -6,27 +6,12 @@
 
 namespace rtsim {
 
-Verifier::Verifier(const TriangleMesh& mesh, const TraversalUnit& model, const EmbreeScene& embree,
+Verifier::Verifier(FlatTriangles triangles, const TraversalUnit& model, const EmbreeScene& embree,
                    ArbiterConfig config, size_t max_examples)
-    : model_(model), embree_(embree), arbiter_(mesh, embree, config), max_examples_(max_examples) {}
-
-Verifier::Verifier(const TriangleMesh& flat_mesh, std::vector<uint64_t> flat_offsets,
-                   const EmbreeScene& flat_embree, const TraversalUnit& model,
-                   const EmbreeScene& embree, ArbiterConfig config, size_t max_examples)
     : model_(model),
-      flat_offsets_(std::move(flat_offsets)),
       embree_(embree),
-      arbiter_(flat_mesh, flat_embree, config),
-      max_examples_(max_examples) {
-  if (flat_mesh.triangle_count() >= kAnyPrim)
-    throw std::invalid_argument("Verifier: more flattened triangles than 32-bit ids can name");
-}
-
-uint32_t Verifier::flat_prim(uint32_t instance, uint32_t prim) const {
-  if (flat_offsets_.empty() || prim == kNoHit || prim == kAnyPrim || instance == kNoHit)
-    return prim;
-  return uint32_t(flat_offsets_[instance] + prim);
-}
+      arbiter_(std::move(triangles), embree, config),
+      max_examples_(max_examples) {}
 
 bool Verifier::check(const Ray& ray) {
   model_.trace(state_, ray);
@@ -36,9 +21,13 @@ bool Verifier::check(const Ray& ray) {
 bool Verifier::judge(const Ray& ray, const TraversalState& state, uint64_t index) {
   Hit model = model_.result(state, ray);
   Hit embree = embree_.trace(ray);
-  model.prim = flat_prim(model.instance, model.prim);
-  embree.prim = flat_prim(embree.instance, embree.prim);
-  uint32_t model_prim = flat_prim(state.hit_instance, state.prim);
+  const FlatTriangles& triangles = arbiter_.triangles();
+  model = triangles.flat(model);
+  embree = triangles.flat(embree);
+  Hit reached;
+  reached.prim = state.prim;
+  reached.instance = state.hit_instance;
+  uint32_t model_prim = triangles.flat(reached).prim;
   float model_t = std::ldexp(state.t_hit, state.ray.t_exponent);
   int type = static_cast<int>(ray.type);
   report_.rays++;
@@ -70,14 +59,16 @@ VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat
                             const InstancedMesh& instances, ArbiterConfig config,
                             size_t max_examples) {
   VerifierSetup out;
-  out.flat = std::make_unique<EmbreeScene>(flat);
   if (!model.bvh().two_level()) {
-    out.verifier = std::make_unique<Verifier>(flat, model, *out.flat, config, max_examples);
+    out.reference = std::make_unique<EmbreeScene>(flat);
+    out.verifier = std::make_unique<Verifier>(flat, model, *out.reference, config, max_examples);
     return out;
   }
-  out.instanced = std::make_unique<EmbreeScene>(instances);
-  out.verifier = std::make_unique<Verifier>(flat, flat_offsets(instances), *out.flat, model,
-                                            *out.instanced, config, max_examples);
+  if (instances.instanced_triangles() >= kAnyPrim)
+    throw std::invalid_argument("Verifier: more instanced triangles than 32-bit ids can name");
+  out.reference = std::make_unique<EmbreeScene>(instances);
+  out.verifier = std::make_unique<Verifier>(FlatTriangles(instances), model, *out.reference, config,
+                                            max_examples);
   return out;
 }
 

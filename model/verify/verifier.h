@@ -41,14 +41,10 @@ struct VerifyReport {
 
 class Verifier {
  public:
-  Verifier(const TriangleMesh& mesh, const TraversalUnit& model, const EmbreeScene& embree,
-           ArbiterConfig config = {}, size_t max_examples = 10);
-  // Two levels: the model (a two-level traversal unit) and the reference (Embree over the
-  // instances) name hits by instance and triangle of its mesh; flat_offsets (traces/
-  // instances.h) maps them to the flattened mesh, on which the arbiter judges with
-  // flat_embree, Embree over that mesh.
-  Verifier(const TriangleMesh& flat_mesh, std::vector<uint64_t> flat_offsets,
-           const EmbreeScene& flat_embree, const TraversalUnit& model, const EmbreeScene& embree,
+  // triangles: the scene by flat id; embree: the reference over the same scene, flat, or over
+  // its instances for a two-level model. Hits that name an instance and a triangle of its mesh
+  // (the two-level model's, Embree's instances') are compared and judged as flat ids.
+  Verifier(FlatTriangles triangles, const TraversalUnit& model, const EmbreeScene& embree,
            ArbiterConfig config = {}, size_t max_examples = 10);
 
   // Traces one ray both ways and records the outcome; returns true if they agree.
@@ -59,11 +55,7 @@ class Verifier {
   const VerifyReport& report() const { return report_; }
 
  private:
-  // A hit named by instance and triangle, as the flattened mesh's triangle.
-  uint32_t flat_prim(uint32_t instance, uint32_t prim) const;
-
   const TraversalUnit& model_;
-  std::vector<uint64_t> flat_offsets_;  // two levels; empty for one
   const EmbreeScene& embree_;
   Arbiter arbiter_;
   size_t max_examples_;
@@ -71,11 +63,11 @@ class Verifier {
   VerifyReport report_;
 };
 
-// A verifier with the references it checks against: Embree over the flat mesh (the
-// arbiter's), and for a two-level model (model.bvh().two_level()) Embree over `instances`,
-// whose flattening `flat` is.
+// A verifier with the reference it checks against: Embree over the flat mesh, or for a
+// two-level model (model.bvh().two_level()) over `instances`, whose flattening `flat` is (flat
+// may be empty then: a scene that keeps no flattened copy).
 struct VerifierSetup {
-  std::unique_ptr<EmbreeScene> flat, instanced;
+  std::unique_ptr<EmbreeScene> reference;
   std::unique_ptr<Verifier> verifier;
 };
 VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat,

@@ -13,8 +13,8 @@
 namespace rtsim::test {
 
 inline std::string small_stream(const std::string& scene_spec, size_t rays, uint64_t seed = 7) {
-  std::string path = "/tmp/rtsim-fidelity-" + std::to_string(getpid()) + "-" +
-                     std::to_string(rays) + ".rays";
+  std::string path =
+      "/tmp/rtsim-fidelity-" + std::to_string(getpid()) + "-" + std::to_string(rays) + ".rays";
   Scene scene = load_scene(scene_spec);
   StreamHeader header;
   header.scene_source = scene.source;
@@ -24,7 +24,7 @@ inline std::string small_stream(const std::string& scene_spec, size_t rays, uint
   header.seed = seed;
   header.chunk_rays = 1000;  // several chunks, so range reads cross chunk boundaries
   RayStreamWriter writer(path, header);
-  for (const Ray& ray : sample_diffuse_rays(scene.mesh, rays, seed)) writer.write(ray);
+  for (const Ray& ray : sample_diffuse_rays(scene.triangles(), rays, seed)) writer.write(ray);
   writer.finish();
   return path;
 }

@@ -100,15 +100,38 @@ TEST(TwoLevel, TraversalFindsWhatEmbreeInstancesAndTheFlatSceneFind) {
   }
 }
 
-// The verifier of `rtsim verify --instances`: hits named by instance and triangle, judged on
-// the flattened mesh; transformed instances leave nothing unexplained.
-TEST(TwoLevel, VerifierJudgesInstancedHitsOnTheFlatMesh) {
+// Flat ids without a flattened copy: the corners are flatten()'s, bit for bit, and a hit that
+// names an instance becomes the flattened mesh's triangle.
+TEST(TwoLevel, FlatTrianglesOfInstancesAreTheFlattenedMesh) {
   InstancedMesh g = test::instanced_world();
   FlatMesh flat = flatten(g);
-  EmbreeScene instanced(g, 1), flat_embree(flat.mesh, 1);
+  FlatTriangles triangles(g);
+  ASSERT_EQ(triangles.count(), flat.mesh.triangle_count());
+  for (uint64_t t = 0; t < triangles.count(); ++t) {
+    std::array<glm::vec3, 3> c = triangles.corners(t);
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(c[k], flat.mesh.vertex(t, k)) << "triangle " << t;
+    FlatTriangles::Place at = triangles.locate(t);
+    ASSERT_EQ(flat.flat_offsets[at.instance] + at.prim, t);
+  }
+  Hit hit;
+  hit.instance = 3;
+  hit.prim = 2;
+  EXPECT_EQ(triangles.flat(hit).prim, flat.flat_offsets[3] + 2);
+  hit.prim = kAnyPrim;
+  EXPECT_EQ(triangles.flat(hit).prim, kAnyPrim) << "an any-hit answer names no triangle";
+  EXPECT_NE(instanced_fingerprint(g), mesh_fingerprint(flat.mesh));
+  g.instances[1].to_world.offset.x += 1.0f;
+  EXPECT_NE(instanced_fingerprint(g), instanced_fingerprint(test::instanced_world()));
+}
+
+// The verifier of `rtsim verify --instances`: hits named by instance and triangle, judged as
+// flat ids with no flattened copy; transformed instances leave nothing unexplained.
+TEST(TwoLevel, VerifierJudgesInstancedHitsAsFlatIds) {
+  InstancedMesh g = test::instanced_world();
+  EmbreeScene instanced(g, 1);
   TwoLevelBvh bvh = build_two_level_bvh(g, BvhConfig{});
   TraversalUnit unit(bvh);
-  Verifier verifier(flat.mesh, flat.flat_offsets, flat_embree, unit, instanced);
+  Verifier verifier(FlatTriangles(g), unit, instanced);
   std::mt19937 rng(5);
   for (int i = 0; i < 3000; ++i) {
     Ray ray = test::world_ray(rng);

@@ -28,12 +28,12 @@ TEST(Offset, HitPointAndFaceNormal) {
   TriangleMesh m;
   m.positions = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
   m.triangles = {{0, 1, 2}};
-  glm::vec3 p = hit_point(m, 0, 0.25f, 0.5f);
+  glm::vec3 p = hit_point(m.corners(0), 0.25f, 0.5f);
   EXPECT_FLOAT_EQ(p.x, 0.5f);
   EXPECT_FLOAT_EQ(p.y, 1.0f);
-  EXPECT_EQ(face_normal(m, 0), glm::vec3(0, 0, 1));
+  EXPECT_EQ(face_normal(m.corners(0)), glm::vec3(0, 0, 1));
   m.positions[2] = {4, 0, 0};  // degenerate
-  EXPECT_EQ(face_normal(m, 0), glm::vec3(0.0f));
+  EXPECT_EQ(face_normal(m.corners(0)), glm::vec3(0.0f));
 }
 
 // Seeded property test: 100,000 rays leave random points of random triangles (scales 1e-3 to
@@ -54,7 +54,7 @@ TEST(Offset, RaysNeverRehitTheirOwnTriangle) {
   int self_hits = 0, rays = 0;
   for (int i = 0; i < 100000; ++i) {
     auto t = uint32_t(r.below(triangles));
-    glm::vec3 n = face_normal(mesh, t);
+    glm::vec3 n = face_normal(mesh.corners(t));
     if (n == glm::vec3(0.0f)) continue;
     float u = r.uniform(), v = r.uniform();
     if (u + v > 1.0f) {
@@ -65,7 +65,7 @@ TEST(Offset, RaysNeverRehitTheirOwnTriangle) {
     glm::vec3 local = sample_cosine_hemisphere({r.uniform(), r.uniform()});
     local.z = std::max(local.z, 1e-3f);  // include grazing directions
     Ray ray;
-    ray.org = offset_ray_origin(hit_point(mesh, t, u, v), n);
+    ray.org = offset_ray_origin(hit_point(mesh.corners(t), u, v), n);
     ray.dir = glm::normalize(Basis(n).to_world(local));
     Hit hit = embree.intersect(ray);
     self_hits += hit.prim == t;

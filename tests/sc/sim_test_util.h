@@ -76,8 +76,8 @@ inline double stat(const nlohmann::json& doc, const std::string& name) {
 
 // Camera and diffuse rays of a scene, seeded.
 inline std::vector<Ray> mixed_rays(const Scene& scene, size_t diffuse, uint64_t seed) {
-  std::vector<Ray> rays = sample_camera_rays(scene.mesh, 32, 24);
-  std::vector<Ray> more = sample_diffuse_rays(scene.mesh, diffuse, seed);
+  std::vector<Ray> rays = sample_camera_rays(scene.triangles(), 32, 24);
+  std::vector<Ray> more = sample_diffuse_rays(scene.triangles(), diffuse, seed);
   rays.insert(rays.end(), more.begin(), more.end());
   for (size_t i = 0; i < rays.size(); i += 5) rays[i].query = Query::AnyHit;
   return rays;

@@ -92,12 +92,14 @@ void expect_scene(const Scene& s) {
   EXPECT_EQ(s.bounds.lo, glm::vec3(-2.0f, 0.0f, -3.0f));
   EXPECT_EQ(s.bounds.hi, glm::vec3(12.0f, 2.0f, 2.0f));
   // child: parent (translate 10, scale 2) applied to (translate z 1) applied to the triangle.
-  EXPECT_EQ(s.mesh.vertex(1, 0), glm::vec3(10.0f, 0.0f, 2.0f));
-  EXPECT_EQ(s.mesh.vertex(1, 1), glm::vec3(12.0f, 0.0f, 2.0f));
-  EXPECT_EQ(s.mesh.vertex(2, 2), glm::vec3(-2.0f, 1.0f, -3.0f));
+  FlatTriangles triangles = s.triangles();
+  EXPECT_EQ(triangles.corners(1)[0], glm::vec3(10.0f, 0.0f, 2.0f));
+  EXPECT_EQ(triangles.corners(1)[1], glm::vec3(12.0f, 0.0f, 2.0f));
+  EXPECT_EQ(triangles.corners(2)[2], glm::vec3(-2.0f, 1.0f, -3.0f));
 
-  // The instance structure: "left" and "left_copy" place one mesh twice; flattened, it is the
-  // scene's mesh, triangle for triangle.
+  // The instance structure: "left" and "left_copy" place one mesh twice, so the scene keeps no
+  // flattened copy; flattened, it is the scene's triangles, one for one.
+  EXPECT_FALSE(s.flattened());
   ASSERT_EQ(s.instanced.instances.size(), 3u);
   EXPECT_EQ(s.instanced.meshes.size(), 2u);
   EXPECT_EQ(s.instanced.instances[0].mesh, s.instanced.instances[2].mesh);
@@ -110,9 +112,10 @@ void expect_scene(const Scene& s) {
   ASSERT_EQ(flat.mesh.triangle_count(), s.triangle_count());
   for (size_t t = 0; t < s.triangle_count(); ++t)
     for (int corner = 0; corner < 3; ++corner)
-      EXPECT_EQ(flat.mesh.vertex(t, corner), s.mesh.vertex(t, corner)) << t << " " << corner;
+      EXPECT_EQ(flat.mesh.vertex(t, corner), triangles.corners(t)[corner]) << t << " " << corner;
 
-  const Material& metal = s.materials[s.material_ids[0]];
+  auto material = [&](uint64_t t) { return s.attributes(triangles, t).material; };
+  const Material& metal = s.materials[material(0)];
   EXPECT_EQ(metal.name, "red_metal");
   EXPECT_FLOAT_EQ(metal.base_color.x, 0.9f);
   EXPECT_FLOAT_EQ(metal.metalness, 1.0f);
@@ -120,8 +123,9 @@ void expect_scene(const Scene& s) {
   EXPECT_FLOAT_EQ(metal.emission.y, 0.5f);
   EXPECT_EQ(metal.transmission, 0.0f);
   EXPECT_EQ(metal.layers, 1);
-  EXPECT_EQ(s.material_ids[2], s.material_ids[0]);
-  const Material& glass = s.materials[s.material_ids[1]];
+  EXPECT_EQ(material(2), material(0));
+  EXPECT_EQ(s.object_names[s.attributes(triangles, 2).object], "left_copy");
+  const Material& glass = s.materials[material(1)];
   EXPECT_EQ(glass.name, "coated_glass");
   EXPECT_FLOAT_EQ(glass.transmission, 1.0f);
   EXPECT_FLOAT_EQ(glass.ior, 1.45f);
@@ -237,13 +241,9 @@ TEST(SceneImportGltf, RotatedAndMatrixNodesKeepTheirColumns) {
   EXPECT_EQ(placed.linear[1], glm::vec3(0, 1, 0));
   EXPECT_EQ(placed.linear[2], glm::vec3(1, 0, 0));
   EXPECT_EQ(placed.offset, glm::vec3(5, 6, 7));
-  EXPECT_EQ(s.mesh.vertex(1, 1), glm::vec3(5, 6, 6)) << "(1,0,0) through the matrix";
-  EXPECT_NEAR(s.mesh.vertex(0, 2).x, -1.0f, 1e-6f) << "(0,1,0) turned to -x";
-  FlatMesh flat = flatten(s.instanced);
-  for (size_t t = 0; t < s.triangle_count(); ++t)
-    for (int corner = 0; corner < 3; ++corner)
-      for (int axis = 0; axis < 3; ++axis)
-        EXPECT_NEAR(flat.mesh.vertex(t, corner)[axis], s.mesh.vertex(t, corner)[axis], 1e-6f);
+  FlatTriangles triangles = s.triangles();
+  EXPECT_EQ(triangles.corners(1)[1], glm::vec3(5, 6, 6)) << "(1,0,0) through the matrix";
+  EXPECT_NEAR(triangles.corners(0)[2].x, -1.0f, 1e-6f) << "(0,1,0) turned to -x";
 }
 
 TEST(SceneImportGltf, Base64EncoderMatchesKnownValues) {

@@ -22,7 +22,7 @@ struct Probe {
 };
 
 // Shoots rays in `count` directions spread over the sphere (a Fibonacci lattice).
-Probe probe_from(const TriangleMesh& mesh, const EmbreeScene& embree, const glm::vec3& origin,
+Probe probe_from(const FlatTriangles& triangles, const EmbreeScene& embree, const glm::vec3& origin,
                  int count) {
   std::vector<float> ts;
   int front = 0;
@@ -33,10 +33,10 @@ Probe probe_from(const TriangleMesh& mesh, const EmbreeScene& embree, const glm:
     Ray ray;
     ray.org = origin;
     ray.dir = glm::vec3(r * std::cos(phi), z, r * std::sin(phi));
-    Hit hit = embree.intersect(ray);
+    Hit hit = triangles.flat(embree.intersect(ray));
     if (!hit.hit()) continue;
     ts.push_back(hit.t);
-    if (glm::dot(face_normal(mesh, hit.prim), ray.dir) < 0.0f) ++front;
+    if (glm::dot(face_normal(triangles.corners(hit.prim)), ray.dir) < 0.0f) ++front;
   }
   Probe p;
   if (ts.empty()) return p;
@@ -84,7 +84,7 @@ float coverage(const EmbreeScene& embree, const glm::vec3& position, const glm::
 // outer faces not modelled): the candidate eye point on a grid through the bounds from which
 // nearly every direction meets a front face, with the most room around it. Looks along the
 // longest free horizontal direction. False if no candidate is inside a room.
-bool room_view(const TriangleMesh& mesh, const EmbreeScene& embree, const glm::vec3& c,
+bool room_view(const FlatTriangles& triangles, const EmbreeScene& embree, const glm::vec3& c,
                const Basis& basis, const glm::vec3& half, View& view) {
   constexpr int kGrid = 6;
   float best = 0.0f;
@@ -95,7 +95,7 @@ bool room_view(const TriangleMesh& mesh, const EmbreeScene& embree, const glm::v
         glm::vec3 local((2.0f * float(i) + 1.0f) / kGrid - 1.0f,
                         (2.0f * float(j) + 1.0f) / kGrid - 1.0f, height);
         glm::vec3 p = c + basis.to_world(local * half);
-        Probe probe = probe_from(mesh, embree, p, 64);
+        Probe probe = probe_from(triangles, embree, p, 64);
         if (probe.hit_fraction >= 0.95f && probe.front_fraction >= 0.9f && probe.median_t > best) {
           best = probe.median_t;
           eye = p;
@@ -142,7 +142,7 @@ glm::vec3 Camera::direction(float sx, float sy) const {
   return glm::normalize(forward + px * right + py * up);
 }
 
-View auto_view(const TriangleMesh& mesh, const Bounds& bounds, const EmbreeScene& embree,
+View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const EmbreeScene& embree,
                const glm::vec3& up_in, float fov, float aspect) {
   glm::vec3 up = glm::normalize(up_in);
   glm::vec3 c = bounds.center();
@@ -156,7 +156,7 @@ View auto_view(const TriangleMesh& mesh, const Bounds& bounds, const EmbreeScene
     half = glm::max(half, glm::abs(basis.to_local(corner - c)));
   }
   glm::vec3 eye_level = c - up * (0.15f * 2.0f * half.z);
-  Probe probe = probe_from(mesh, embree, eye_level, 64);
+  Probe probe = probe_from(triangles, embree, eye_level, 64);
   bool enclosed = probe.hit_fraction >= 0.7f && probe.front_fraction >= 0.5f &&
                   probe.median_t >= 0.15f * radius;
   View view;
@@ -188,7 +188,8 @@ View auto_view(const TriangleMesh& mesh, const Bounds& bounds, const EmbreeScene
     view.look_at = eye_level - best_dir * best_half + up * (0.1f * half.z);
     return view;
   }
-  if (probe.front_fraction < 0.5f && room_view(mesh, embree, c, basis, half, view)) return view;
+  if (probe.front_fraction < 0.5f && room_view(triangles, embree, c, basis, half, view))
+    return view;
   float half_fov_min = std::min(half_fov, std::atan(tan_h));
   float distance = radius / std::sin(half_fov_min);
   float best = -1.0f;

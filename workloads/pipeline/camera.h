@@ -32,7 +32,7 @@ struct View {
 // or, for an enclosed scene (an interior such as Sponza), a view from inside along its longest
 // horizontal axis, or, for a level whose centre sees only back faces (rooms in a void), a view
 // from inside its roomiest room. Probe rays decide which (see workloads/README.md).
-View auto_view(const TriangleMesh& mesh, const Bounds& bounds, const EmbreeScene& embree,
+View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const EmbreeScene& embree,
                const glm::vec3& up, float fov, float aspect);
 
 // The camera of frame `frame` of `frames`: auto parts filled by auto_view, then the keys or the

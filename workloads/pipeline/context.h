@@ -17,16 +17,22 @@
 
 namespace rtsim::pipeline {
 
+struct Surface;
+
 struct SceneContext {
   const Scene& scene;
   const MaterialTable& materials;
-  const EmbreeScene& embree;
+  const EmbreeScene& embree;  // over the scene's flattened mesh, or over its instances
   std::vector<Light> lights;
   glm::vec3 sky{0.0f};
   float diagonal = 1.0f;           // length of the scene bounds' diagonal
   bool emission_is_light = false;  // emissive objects were turned into lights
 
   const ShadingMaterial& material_of(uint32_t prim) const { return materials.of(prim); }
+  // Embree's closest hit, its triangle named by flat id.
+  Hit intersect(const Ray& ray) const { return materials.triangles.flat(embree.intersect(ray)); }
+  // The surface of the closest hit.
+  Surface surface(const Ray& ray) const;
 };
 
 struct FrameContext {
@@ -48,7 +54,8 @@ struct Surface {
   bool hit() const { return prim != kNoHit; }
 };
 
-Surface surface_at(const TriangleMesh& mesh, const Ray& ray, const Hit& hit);
+// The surface of a hit named by flat id.
+Surface surface_at(const FlatTriangles& triangles, const Ray& ray, const Hit& hit);
 
 // What a pass did: if it shot nothing, why (for the run summary).
 struct PassOutcome {

@@ -1,15 +1,51 @@
 #include "workloads/pipeline/lights.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <unordered_set>
 
 #include "workloads/pipeline/offset.h"
 #include "workloads/pipeline/sampling.h"
 
 namespace rtsim::pipeline {
 namespace {
+
+struct EmissiveTriangle {
+  std::array<glm::vec3, 3> corners;
+  uint32_t object = 0;
+  glm::vec3 emission{0.0f};
+};
+
+// The scene's emissive triangles in world space. An unflattened scene's are looked for only in
+// the instances whose object makes some material of their mesh emissive.
+std::vector<EmissiveTriangle> emissive_triangles(const Scene& scene,
+                                                 const MaterialTable& materials) {
+  std::vector<EmissiveTriangle> out;
+  const FlatTriangles& triangles = materials.triangles;
+  auto add = [&](uint64_t tri) {
+    const ShadingMaterial& m = materials.of(uint32_t(tri));
+    if (m.emissive())
+      out.push_back({triangles.corners(tri), scene.attributes(triangles, tri).object, m.emission});
+  };
+  if (scene.flattened()) {
+    for (uint64_t tri = 0; tri < triangles.count(); ++tri) add(tri);
+    return out;
+  }
+  std::unordered_set<uint32_t> emitting;  // objects with an emissive material
+  for (const auto& [key, index] : materials.of_pair)
+    if (materials.materials[index].emissive()) emitting.insert(uint32_t(key >> 32));
+  std::vector<uint64_t> offsets = flat_offsets(scene.instanced);
+  for (size_t i = 0; i < scene.instanced.instances.size(); ++i) {
+    uint32_t mesh = scene.instanced.instances[i].mesh;
+    if (!emitting.count(scene.instance_object_ids[i])) continue;
+    for (uint64_t prim = 0; prim < scene.instanced.meshes[mesh].triangle_count(); ++prim)
+      add(offsets[i] + prim);
+  }
+  return out;
+}
 
 // One spherical light per emissive object, placed so that shadow rays end before they reach
 // the emitter's own triangles (which stay in the scene).
@@ -20,23 +56,20 @@ void add_emissive_lights(const Scene& scene, const MaterialTable& materials, flo
     glm::dvec3 centroid{0.0}, normal{0.0}, power{0.0};
   };
   std::vector<Acc> acc(std::max<size_t>(scene.object_names.size(), 1));
-  for (uint32_t tri = 0; tri < scene.triangle_count(); ++tri) {
-    const ShadingMaterial& m = materials.of(tri);
-    if (!m.emissive()) continue;
-    glm::dvec3 v0 = scene.mesh.vertex(tri, 0), v1 = scene.mesh.vertex(tri, 1),
-               v2 = scene.mesh.vertex(tri, 2);
+  std::vector<EmissiveTriangle> emissive = emissive_triangles(scene, materials);
+  for (const EmissiveTriangle& e : emissive) {
+    glm::dvec3 v0 = e.corners[0], v1 = e.corners[1], v2 = e.corners[2];
     glm::dvec3 cross = glm::cross(v1 - v0, v2 - v0);
     double area = 0.5 * glm::length(cross);
     if (!(area > 0.0)) continue;
-    uint32_t obj = tri < scene.object_ids.size() ? scene.object_ids[tri] : 0;
-    Acc& a = acc[std::min<size_t>(obj, acc.size() - 1)];
+    Acc& a = acc[std::min<size_t>(e.object, acc.size() - 1)];
     glm::dvec3 centre = (v0 + v1 + v2) / 3.0;
     glm::dvec3 n = cross / (2.0 * area);
     if (glm::dot(n, glm::dvec3(scene.bounds.center()) - centre) < 0.0) n = -n;
     a.area += area;
     a.centroid += centre * area;
     a.normal += n * area;
-    a.power += glm::dvec3(m.emission) * area;
+    a.power += glm::dvec3(e.emission) * area;
   }
   for (size_t obj = 0; obj < acc.size(); ++obj) {
     const Acc& a = acc[obj];
@@ -55,11 +88,10 @@ void add_emissive_lights(const Scene& scene, const MaterialTable& materials, flo
     } else {
       // Closed (a bulb): a sphere around it; a convex emitter shows a quarter of its area.
       double reach = 0.0;
-      for (uint32_t tri = 0; tri < scene.triangle_count(); ++tri) {
-        uint32_t o = tri < scene.object_ids.size() ? scene.object_ids[tri] : 0;
-        if (std::min<size_t>(o, acc.size() - 1) != obj || !materials.of(tri).emissive()) continue;
-        for (int k = 0; k < 3; ++k)
-          reach = std::max(reach, glm::length(glm::dvec3(scene.mesh.vertex(tri, k)) - centroid));
+      for (const EmissiveTriangle& e : emissive) {
+        if (std::min<size_t>(e.object, acc.size() - 1) != obj) continue;
+        for (const glm::vec3& corner : e.corners)
+          reach = std::max(reach, glm::length(glm::dvec3(corner) - centroid));
       }
       l.radius = float(reach + gap);
       l.position = glm::vec3(centroid);

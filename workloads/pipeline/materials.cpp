@@ -1,6 +1,7 @@
 #include "workloads/pipeline/materials.h"
 
-#include <map>
+#include <algorithm>
+#include <set>
 #include <utility>
 
 namespace rtsim::pipeline {
@@ -56,30 +57,43 @@ bool glob_match(const std::string& pattern, const std::string& text) {
 
 MaterialTable assign_materials(const Scene& scene, const std::vector<MaterialRule>& rules) {
   MaterialTable table;
+  table.scene = &scene;
+  table.triangles = scene.triangles();
   // A triangle's result depends only on its (material, object) pair.
-  std::map<std::pair<uint32_t, uint32_t>, uint32_t> made;
-  table.of_triangle.resize(scene.triangle_count());
-  for (size_t tri = 0; tri < scene.triangle_count(); ++tri) {
-    uint32_t mat = tri < scene.material_ids.size() ? scene.material_ids[tri] : 0;
-    uint32_t obj = tri < scene.object_ids.size() ? scene.object_ids[tri] : 0;
-    auto key = std::make_pair(mat, obj);
-    auto found = made.find(key);
-    if (found != made.end()) {
-      table.of_triangle[tri] = found->second;
-      continue;
-    }
-    ShadingMaterial m =
-        mat < scene.materials.size() ? from_scene(scene.materials[mat]) : ShadingMaterial{};
-    const std::string object = obj < scene.object_names.size() ? scene.object_names[obj] : "";
+  auto resolve = [&](TriangleAttributes a) {
+    auto [found, inserted] =
+        table.of_pair.try_emplace(uint64_t(a.object) << 32 | a.material, table.materials.size());
+    if (!inserted) return found->second;
+    ShadingMaterial m = a.material < scene.materials.size()
+                            ? from_scene(scene.materials[a.material])
+                            : ShadingMaterial{};
+    const std::string object =
+        a.object < scene.object_names.size() ? scene.object_names[a.object] : "";
     for (const MaterialRule& rule : rules)
       if (glob_match(rule.match, object) || glob_match(rule.match, m.name)) apply(rule, m);
-    auto id = static_cast<uint32_t>(table.materials.size());
     table.materials.push_back(m);
-    made.emplace(key, id);
-    table.of_triangle[tri] = id;
+    return found->second;
+  };
+  if (scene.flattened()) {
+    table.of_triangle.resize(scene.triangle_count());
+    for (uint64_t tri = 0; tri < scene.triangle_count(); ++tri)
+      table.of_triangle[tri] = resolve(scene.attributes(table.triangles, tri));
+  } else {
+    // Each instance's object with each material its mesh uses.
+    std::vector<std::set<uint32_t>> used(scene.mesh_material_ids.size());
+    for (size_t m = 0; m < used.size(); ++m)
+      used[m].insert(scene.mesh_material_ids[m].begin(), scene.mesh_material_ids[m].end());
+    for (size_t i = 0; i < scene.instanced.instances.size(); ++i)
+      for (uint32_t material : used[scene.instanced.instances[i].mesh])
+        resolve({material, scene.instance_object_ids[i]});
   }
   if (table.materials.empty()) table.materials.emplace_back();
   return table;
+}
+
+bool MaterialTable::any_emissive() const {
+  return std::any_of(materials.begin(), materials.end(),
+                     [](const ShadingMaterial& m) { return m.emissive(); });
 }
 
 }  // namespace rtsim::pipeline

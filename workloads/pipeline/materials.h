@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <glm/vec3.hpp>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "workloads/pipeline/spec.h"
@@ -32,11 +33,23 @@ struct ShadingMaterial {
   bool emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
 };
 
+// One shading material per (scene material, object) pair the scene uses. A flattened scene's
+// triangles find theirs in a per-triangle array; an unflattened one's through their instance.
 struct MaterialTable {
   std::vector<ShadingMaterial> materials;
-  std::vector<uint32_t> of_triangle;  // material index per triangle
+  std::vector<uint32_t> of_triangle;               // flattened scenes: index per triangle
+  std::unordered_map<uint64_t, uint32_t> of_pair;  // object << 32 | material -> index
+  const Scene* scene = nullptr;
+  FlatTriangles triangles;  // the scene's
 
-  const ShadingMaterial& of(uint32_t prim) const { return materials[of_triangle[prim]]; }
+  uint32_t index_of(TriangleAttributes a) const {
+    return of_pair.at(uint64_t(a.object) << 32 | a.material);
+  }
+  uint32_t index_of(uint32_t prim) const {
+    return of_triangle.empty() ? index_of(scene->attributes(triangles, prim)) : of_triangle[prim];
+  }
+  const ShadingMaterial& of(uint32_t prim) const { return materials[index_of(prim)]; }
+  bool any_emissive() const;
 };
 
 MaterialTable assign_materials(const Scene& scene, const std::vector<MaterialRule>& rules);

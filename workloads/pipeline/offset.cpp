@@ -24,14 +24,14 @@ float offset_coordinate(float p, float n) {
 
 }  // namespace
 
-glm::vec3 hit_point(const TriangleMesh& mesh, uint32_t prim, float u, float v) {
-  glm::vec3 v0 = mesh.vertex(prim, 0), v1 = mesh.vertex(prim, 1), v2 = mesh.vertex(prim, 2);
+glm::vec3 hit_point(const std::array<glm::vec3, 3>& corners, float u, float v) {
+  const glm::vec3 &v0 = corners[0], &v1 = corners[1], &v2 = corners[2];
   return v0 + u * (v1 - v0) + v * (v2 - v0);
 }
 
-glm::vec3 face_normal(const TriangleMesh& mesh, uint32_t prim) {
+glm::vec3 face_normal(const std::array<glm::vec3, 3>& corners) {
   // In double: the cross product of tiny edges underflows in float.
-  glm::dvec3 v0 = mesh.vertex(prim, 0), v1 = mesh.vertex(prim, 1), v2 = mesh.vertex(prim, 2);
+  glm::dvec3 v0 = corners[0], v1 = corners[1], v2 = corners[2];
   glm::dvec3 n = glm::cross(v1 - v0, v2 - v0);
   double len = glm::length(n);
   return len > 0.0 && std::isfinite(len) ? glm::vec3(n / len) : glm::vec3(0.0f);

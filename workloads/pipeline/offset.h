@@ -5,6 +5,7 @@
 // where ulps vanish), so float error never leaves a secondary ray behind its own triangle.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
 
@@ -12,11 +13,11 @@
 
 namespace rtsim::pipeline {
 
-// Hit point on triangle prim at barycentrics (u, v): v0 + u (v1 - v0) + v (v2 - v0).
-glm::vec3 hit_point(const TriangleMesh& mesh, uint32_t prim, float u, float v);
+// Hit point on a triangle at barycentrics (u, v): v0 + u (v1 - v0) + v (v2 - v0).
+glm::vec3 hit_point(const std::array<glm::vec3, 3>& corners, float u, float v);
 
 // Unit geometric normal (v1 - v0) x (v2 - v0); zero for a degenerate triangle.
-glm::vec3 face_normal(const TriangleMesh& mesh, uint32_t prim);
+glm::vec3 face_normal(const std::array<glm::vec3, 3>& corners);
 
 // p moved off the surface along n (unit, pointing to the side the new ray leaves from).
 glm::vec3 offset_ray_origin(const glm::vec3& p, const glm::vec3& n);

@@ -20,17 +20,17 @@ GBuffer run_camera_pass(const FrameContext& ctx, const std::vector<SamplePositio
     ray.sample = p.index;
     ray.frame = ctx.frame;
     if (sink) sink->emit(ray);
-    Hit hit = ctx.scene.embree.intersect(ray);
+    Hit hit = ctx.scene.intersect(ray);
     GSample& s = g.samples[i];
     s.sx = p.sx;
     s.sy = p.sy;
     s.pixel = p.pixel;
     s.index = p.index;
     s.view = ray.dir;
-    s.surface = surface_at(ctx.scene.scene.mesh, ray, hit);
+    s.surface = surface_at(ctx.scene.materials.triangles, ray, hit);
     if (s.surface.hit()) {
       s.depth = hit.t;
-      s.material = ctx.scene.materials.of_triangle[hit.prim];
+      s.material = ctx.scene.materials.index_of(hit.prim);
     }
   }
   return g;

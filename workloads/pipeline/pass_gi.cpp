@@ -37,7 +37,7 @@ void shoot_gi_rays(const FrameContext& ctx, SurfelCache& cache, RaySink& sink,
       ray.sample = uint16_t(k);
       ray.frame = ctx.frame;
       sink.emit(ray, surfel.prim);
-      Surface hit = surface_at(ctx.scene.scene.mesh, ray, ctx.scene.embree.intersect(ray));
+      Surface hit = ctx.scene.surface(ray);
       if (hit.hit()) {
         hits.push_back({s, hit, -1.0f, 0});
       } else {

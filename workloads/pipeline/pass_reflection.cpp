@@ -66,7 +66,7 @@ PassOutcome run_reflection_pass(const FrameContext& ctx, const GBuffer& g, RaySi
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, j);
       ray.frame = ctx.frame;
       sink.emit(ray, s.surface.prim);
-      rec.hit = surface_at(ctx.scene.scene.mesh, ray, ctx.scene.embree.intersect(ray));
+      rec.hit = ctx.scene.surface(ray);
       out.rays.push_back(rec);
     }
   }

@@ -54,7 +54,7 @@ PassOutcome run_refraction_pass(const FrameContext& ctx, const GBuffer& g, RaySi
         ray.sample = ray_sample_id(s.index, per_sample, j * spec.max_depth + depth);
         ray.frame = ctx.frame;
         sink.emit(ray, at.prim);
-        Surface next = surface_at(ctx.scene.scene.mesh, ray, ctx.scene.embree.intersect(ray));
+        Surface next = ctx.scene.surface(ray);
         bool more = next.hit() && ctx.scene.material_of(next.prim).transmission > 0.0f;
         at = next;
         incident = ray.dir;

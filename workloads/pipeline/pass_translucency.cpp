@@ -34,7 +34,7 @@ PassOutcome run_translucency_pass(const FrameContext& ctx, const GBuffer& g, Ray
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, k);
       ray.frame = ctx.frame;
       sink.emit(ray, s.surface.prim);
-      Surface hit = surface_at(ctx.scene.scene.mesh, ray, ctx.scene.embree.intersect(ray));
+      Surface hit = ctx.scene.surface(ray);
       if (!hit.hit()) {
         sum += ctx.scene.sky;
         continue;

@@ -68,8 +68,8 @@ Pipeline::Pipeline(const WorkloadSpec& spec, const Scene& scene, const EmbreeSce
       scene_(make_scene_context(spec_, scene, materials_, embree)),
       surfels_(spec.passes.gi.surfel_radius.value_or(0.0f)) {
   if (!spec.camera.position || !spec.camera.look_at)
-    auto_fit_ = auto_view(scene.mesh, scene.bounds, embree, spec.camera.up, spec.camera.fov,
-                          float(spec.width) / float(spec.height));
+    auto_fit_ = auto_view(materials_.triangles, scene.bounds, embree, spec.camera.up,
+                          spec.camera.fov, float(spec.width) / float(spec.height));
   summary_.workload = spec.name;
   summary_.scene_source = scene.source;
   summary_.triangles = scene.triangle_count();

@@ -27,10 +27,7 @@ LightSpec light_spec(const SceneLight& l) {
 
 bool has_emissive_surface(const WorkloadSpec& spec, const Scene& scene) {
   if (!spec.lights_from_emission) return false;
-  MaterialTable materials = assign_materials(scene, spec.materials);
-  for (uint32_t tri = 0; tri < scene.triangle_count(); ++tri)
-    if (materials.of(tri).emissive()) return true;
-  return false;
+  return assign_materials(scene, spec.materials).any_emissive();
 }
 
 }  // namespace

@@ -18,21 +18,26 @@ TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& op
   Scene scene = load_scene(requested.scene);
   WorkloadSpec spec = requested;
   std::vector<std::string> notes = adopt_scene_defaults(spec, scene);
-  // Measured peaks of rtsim trace: 144 B a triangle (the scene, Embree's BVH, the pipeline's
-  // scene data) and 87 B a pixel (G-buffer, lighting and denoiser buffers, the ray queues).
+  // Measured peaks of rtsim trace: 144 B a triangle kept (the scene, Embree's BVH, the
+  // pipeline's scene data; an unflattened scene keeps its unique triangles and an instance
+  // record and Embree instance per instance) and 87 B a pixel (G-buffer, lighting and denoiser
+  // buffers, the ray queues).
   uint64_t pixels = uint64_t(spec.width) * spec.height;
-  require_memory(scene.triangle_count() * 160 + pixels * 96 + (uint64_t(100) << 20),
+  uint64_t kept = scene.flattened()
+                      ? scene.triangle_count()
+                      : scene.instanced.unique_triangles() + scene.instanced.instances.size();
+  require_memory(kept * 160 + pixels * 96 + (uint64_t(100) << 20),
                  spec.file.empty() ? spec.name : spec.file,
                  fmt::format("tracing {} x {} pixels of a {}-triangle scene", spec.width,
                              spec.height, scene.triangle_count()),
                  "lower the resolution");
   double load_seconds = wall_seconds() - start;
   start = wall_seconds();
-  EmbreeScene embree(scene.mesh, options.embree_threads);
+  std::unique_ptr<EmbreeScene> embree = embree_scene(scene, options.embree_threads);
   double build_seconds = wall_seconds() - start;
   start = wall_seconds();
 
-  Pipeline pipeline(spec, scene, embree);
+  Pipeline pipeline(spec, scene, *embree);
   std::unique_ptr<RayStreamWriter> writer;
   if (!options.output.empty()) {
     StreamHeader header;
