@@ -20,6 +20,15 @@ Transform inverse(const Transform& t) {
   return out;
 }
 
+Bounds world_box(const Bounds& object, const Transform& to_world) {
+  Bounds out;
+  for (int corner = 0; corner < 8; ++corner)
+    out.grow(to_world.point({corner & 1 ? object.hi.x : object.lo.x,
+                             corner & 2 ? object.hi.y : object.lo.y,
+                             corner & 4 ? object.hi.z : object.lo.z}));
+  return out;
+}
+
 uint64_t InstancedMesh::unique_triangles() const {
   uint64_t n = 0;
   for (const TriangleMesh& m : meshes) n += m.triangle_count();

@@ -26,6 +26,9 @@ struct Transform {
   glm::vec3 vector(const glm::vec3& v) const { return linear * v; }
 };
 
+// The box around an object-space box's eight corners in world space.
+Bounds world_box(const Bounds& object, const Transform& to_world);
+
 // The inverse transform (world to object); the caller checks invertibility first.
 Transform inverse(const Transform& t);
 

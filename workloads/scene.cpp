@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include <fmt/core.h>
 
@@ -40,15 +41,15 @@ void check_ids(const Scene& s, const std::vector<uint32_t>& ids, uint64_t count,
                         fmt::format("{} id {} out of range", what, ids[t]));
 }
 
-void check_vertex(const Scene& scene, const glm::vec3& p, const std::string& where) {
-  if (!finite(p)) throw_input_error(scene.source, where, "position is NaN or Inf");
+// Why a world-space vertex cannot be traced; empty if fine.
+std::string vertex_problem(const glm::vec3& p) {
+  if (!finite(p)) return "position is NaN or Inf";
   float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-  if (largest > kMaxSceneCoordinate)
-    throw_input_error(
-        scene.source, where,
-        fmt::format("coordinate {:g} is beyond +-{:g}, the range rtsim traces (cameras and ray "
-                    "offsets must stay inside Embree's +-1.8e18); scale the scene down",
-                    largest, kMaxSceneCoordinate));
+  if (largest <= kMaxSceneCoordinate) return "";
+  return fmt::format(
+      "coordinate {:g} is beyond +-{:g}, the range rtsim traces (cameras and ray offsets must "
+      "stay inside Embree's +-1.8e18); scale the scene down",
+      largest, kMaxSceneCoordinate);
 }
 
 void check_indices(const Scene& scene, const TriangleMesh& mesh, const std::string& prefix) {
@@ -81,16 +82,34 @@ void finalize_instanced(Scene& scene) {
               scene.materials.size(), "material", fmt::format("mesh {} triangles", m));
   check_ids(scene, scene.instance_object_ids, g.instances.size(), scene.object_names.size(),
             "object", "instances");
-  Bounds bounds;
+  std::vector<Bounds> mesh_boxes;
+  for (size_t m = 0; m < g.meshes.size(); ++m) {
+    for (size_t v = 0; v < g.meshes[m].positions.size(); ++v)
+      if (!finite(g.meshes[m].positions[v]))
+        throw_input_error(scene.source, fmt::format("mesh {} vertex {}", m, v),
+                          "position is NaN or Inf");
+    mesh_boxes.push_back(mesh_bounds(g.meshes[m]));
+  }
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (size_t i = 0; i < g.instances.size(); ++i) {
     const Instance& inst = g.instances[i];
     const std::vector<glm::vec3>& positions = g.meshes[inst.mesh].positions;
-    for (size_t v = 0; v < positions.size(); ++v) {
-      glm::vec3 p = inst.to_world.point(positions[v]);
-      check_vertex(scene, p, fmt::format("instance {} vertex {}", i, v));
-      bounds.grow(p);
+    // Vertex by vertex only where the instance's box leaves the range rtsim traces.
+    Bounds box = world_box(mesh_boxes[inst.mesh], inst.to_world);
+    if (!vertex_problem(box.lo).empty() || !vertex_problem(box.hi).empty())
+      for (size_t v = 0; v < positions.size(); ++v)
+        if (std::string problem = vertex_problem(inst.to_world.point(positions[v]));
+            !problem.empty())
+          throw_input_error(scene.source, fmt::format("instance {} vertex {}", i, v), problem);
+    for (const glm::vec3& object : positions) {
+      glm::vec3 p = inst.to_world.point(object);
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
     }
   }
+  Bounds bounds;
+  bounds.lo = lo;
+  bounds.hi = hi;
   scene.bounds = bounds;
   scene.fingerprint = instanced_fingerprint(g);
 }
@@ -120,7 +139,8 @@ void finalize_scene(Scene& scene) {
   const TriangleMesh& mesh = scene.mesh;
   if (mesh.triangle_count() == 0) throw_input_error(scene.source, "", "the scene has no triangles");
   for (size_t v = 0; v < mesh.positions.size(); ++v)
-    check_vertex(scene, mesh.positions[v], "vertex " + std::to_string(v));
+    if (std::string problem = vertex_problem(mesh.positions[v]); !problem.empty())
+      throw_input_error(scene.source, "vertex " + std::to_string(v), problem);
   check_indices(scene, mesh, "");
   check_ids(scene, scene.material_ids, mesh.triangle_count(), scene.materials.size(), "material",
             "triangles");

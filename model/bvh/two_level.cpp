@@ -19,15 +19,6 @@ uint64_t image_end(const BvhImage& image) {
   return align_up(image.triangle_base + image.triangles.size(), image.config.region_align);
 }
 
-Bounds world_box(const Bounds& object, const Transform& to_world) {
-  Bounds out;
-  for (int corner = 0; corner < 8; ++corner)
-    out.grow(to_world.point({corner & 1 ? object.hi.x : object.lo.x,
-                             corner & 2 ? object.hi.y : object.lo.y,
-                             corner & 4 ? object.hi.z : object.lo.z}));
-  return out;
-}
-
 void encode_instance_record(const InstanceRecord& r, uint8_t* out) {
   float xfm[12];
   for (int c = 0; c < 3; ++c)
