@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 #include "traces/error.h"
+#include "traces/memory_plan.h"
 #include "workloads/builtin_scenes.h"
 #include "workloads/scene_import.h"
 
@@ -120,11 +121,11 @@ bool is_builtin_scene(const std::string& spec) {
   if (starts_with(spec, kBuiltinPrefix)) return true;
   std::string name = spec.substr(0, spec.find(':'));
   return name == "cornell" || name == "pica" || name == "grid" || name == "foliage" ||
-         name == "forest" || name == "hardcases";
+         name == "forest" || name == "city" || name == "hardcases";
 }
 
 std::vector<std::string> builtin_scene_names() {
-  return {"cornell", "pica", "grid:N", "foliage:N", "forest:N", "hardcases"};
+  return {"cornell", "pica", "grid:N", "foliage:N", "forest:N", "city:N", "hardcases"};
 }
 
 Scene load_scene(const std::string& spec) {
@@ -161,6 +162,15 @@ TriangleAttributes Scene::attributes(const FlatTriangles& triangles, uint64_t tr
 
 const TriangleMesh& flat_mesh(Scene& scene) {
   if (scene.flattened()) return scene.mesh;
+  // The flattened arrays: 12 B a vertex, 12 B a triangle and its two ids.
+  uint64_t bytes = 0;
+  for (const Instance& inst : scene.instanced.instances) {
+    const TriangleMesh& mesh = scene.instanced.meshes[inst.mesh];
+    bytes += 12 * mesh.positions.size() + 20 * mesh.triangle_count();
+  }
+  require_memory(bytes, scene.source,
+                 fmt::format("flattening {} instanced triangles", scene.triangle_count()),
+                 "keep its instances (bvh.instancing = \"auto\" or \"two_level\", no --flatten)");
   scene.mesh = flatten(scene.instanced).mesh;
   for (size_t i = 0; i < scene.instanced.instances.size(); ++i) {
     const std::vector<uint32_t>& materials =

@@ -156,6 +156,17 @@ TEST(CliMemoryPlan, ABvhBuildBeyondTheMemoryIsRefusedAndALargeOneSaysEachStep) {
   std::remove(stream.c_str());
 }
 
+TEST(CliMemoryPlan, FlatteningAForestBeyondTheMemoryIsRefusedWithTheEstimate) {
+  const std::string forest = "scene-info forest:100000000 --bvh";
+  RunResult r = run_with_memory("1000000000", forest + " --set bvh.instancing=\"flatten\"");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "rtsim: error: builtin:forest:100000000: flattening 100005416 instanced triangles needs "
+            "about 5.6 GB of memory, more than the 1.0 GB available; keep its instances "
+            "(bvh.instancing = \"auto\" or \"two_level\", no --flatten)\n");
+  EXPECT_EQ(run_with_memory("1000000000", forest).exit_code, 0) << "its instances fit";
+}
+
 TEST(CliMemoryPlan, ABadLimitIsOneLine) {
   RunResult r = run_with_memory("lots", "scene-info grid:1000");
   EXPECT_EQ(r.exit_code, 2);
