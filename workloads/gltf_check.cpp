@@ -1,15 +1,22 @@
 // The glTF 2.0 checks of scene_file_check.h: the GLB container, the JSON document, and every
 // triangle index against its primitive's POSITION count (assimp drops the faces of a primitive
-// with an index out of range and then reports only that the mesh "has no faces").
+// with an index out of range and then reports only that the mesh "has no faces"); and the node
+// tree with the EXT_mesh_gpu_instancing instances, which assimp 5.2 ignores.
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <map>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
 #include "traces/error.h"
@@ -117,34 +124,30 @@ Json parse_document(const std::string& path, const GltfFile& f) {
   }
 }
 
-// Reads the integers of index accessors; anything it cannot reach (an external buffer that is
-// missing, a sparse accessor) is left to assimp, which says so in its own words.
-class IndexChecker {
+// The JSON document and its buffers, each loaded on first use.
+class GltfDocument {
  public:
-  IndexChecker(const std::string& path, const GltfFile& f, const Json& doc)
+  GltfDocument(const std::string& path, const GltfFile& f, const Json& doc)
       : path_(path), file_(f), doc_(doc) {}
 
-  void check() {
-    const Json& meshes = member("meshes");
-    for (size_t m = 0; m < meshes.size(); ++m) {
-      const Json& prims = meshes[m].value("primitives", Json::array());
-      for (size_t p = 0; p < prims.size(); ++p) check_primitive(prims[p], m, p);
-    }
-  }
+  const std::string& path() const { return path_; }
 
- private:
+  // The document's array `key`; empty if it has none.
   const Json& member(const char* key) const {
     static const Json kEmpty = Json::array();
     auto it = doc_.find(key);
     return it != doc_.end() && it->is_array() ? *it : kEmpty;
   }
 
+  // The element of array `array` that `index` names; nullptr if it names none.
   const Json* element(const char* array, const Json& index) const {
     const Json& a = member(array);
     if (!index.is_number_unsigned() || index.get<size_t>() >= a.size()) return nullptr;
     return &a[index.get<size_t>()];
   }
 
+  // Buffer i's bytes; nullptr if there is no such buffer or it cannot be read (an external file
+  // that is missing, a broken data: URI).
   const std::string* buffer(size_t i) {
     if (loaded_.count(i)) return &loaded_[i];
     const Json* b = element("buffers", Json(i));
@@ -166,17 +169,39 @@ class IndexChecker {
     return &(loaded_[i] = std::move(data));
   }
 
+ private:
+  const std::string& path_;
+  const GltfFile& file_;
+  const Json& doc_;
+  std::map<size_t, std::string> loaded_;
+};
+
+// Reads the integers of index accessors; anything it cannot reach (an external buffer that is
+// missing, a sparse accessor) is left to assimp, which says so in its own words.
+class IndexChecker {
+ public:
+  explicit IndexChecker(GltfDocument& doc) : doc_(doc) {}
+
+  void check() {
+    const Json& meshes = doc_.member("meshes");
+    for (size_t m = 0; m < meshes.size(); ++m) {
+      const Json& prims = meshes[m].value("primitives", Json::array());
+      for (size_t p = 0; p < prims.size(); ++p) check_primitive(prims[p], m, p);
+    }
+  }
+
+ private:
   void check_primitive(const Json& prim, size_t m, size_t p) {
     if (!prim.is_object() || prim.value("mode", 4) != 4 || !prim.contains("indices")) return;
     const Json* attributes = prim.contains("attributes") ? &prim["attributes"] : nullptr;
     if (!attributes || !attributes->contains("POSITION")) return;
-    const Json* position = element("accessors", (*attributes)["POSITION"]);
-    const Json* indices = element("accessors", prim["indices"]);
+    const Json* position = doc_.element("accessors", (*attributes)["POSITION"]);
+    const Json* indices = doc_.element("accessors", prim["indices"]);
     if (!position || !indices || indices->contains("sparse")) return;
     uint64_t vertices = position->value("count", uint64_t(0));
-    const Json* view = element("bufferViews", indices->value("bufferView", Json()));
+    const Json* view = doc_.element("bufferViews", indices->value("bufferView", Json()));
     if (!view) return;
-    const std::string* data = buffer(view->value("buffer", size_t(0)));
+    const std::string* data = doc_.buffer(view->value("buffer", size_t(0)));
     int size = indices->value("componentType", 0) == 5121   ? 1
                : indices->value("componentType", 0) == 5123 ? 2
                : indices->value("componentType", 0) == 5125 ? 4
@@ -191,25 +216,285 @@ class IndexChecker {
       std::memcpy(&index, data->data() + start + k * size, size);
       if (index < vertices) continue;
       throw_input_error(
-          path_, fmt::format("meshes[{}].primitives[{}]", m, p),
+          doc_.path(), fmt::format("meshes[{}].primitives[{}]", m, p),
           fmt::format("index {} of accessor {} is {}, beyond the {} vertices of its POSITION "
                       "accessor",
                       k, prim["indices"].get<size_t>(), index, vertices));
     }
   }
 
-  const std::string& path_;
-  const GltfFile& file_;
-  const Json& doc_;
-  std::map<size_t, std::string> loaded_;
+  GltfDocument& doc_;
 };
+
+constexpr int kFloat = 5126, kByte = 5120, kShort = 5122;
+
+// An instance attribute of EXT_mesh_gpu_instancing: its accessor type and whether it may hold
+// normalized BYTE or SHORT components besides FLOAT (the extension allows them for ROTATION).
+struct InstanceAttribute {
+  const char* name;
+  const char* type;
+  int components;
+  bool normalized_integers;
+};
+constexpr InstanceAttribute kTranslation{"TRANSLATION", "VEC3", 3, false};
+constexpr InstanceAttribute kRotation{"ROTATION", "VEC4", 4, true};
+constexpr InstanceAttribute kScale{"SCALE", "VEC3", 3, false};
+
+int component_bytes(int component_type) {
+  return component_type == kFloat ? 4 : component_type == kShort ? 2 : 1;
+}
+
+// A component as a float; normalized integers as glTF maps them to [-1, 1].
+float component_value(const char* p, int component_type) {
+  if (component_type == kFloat) {
+    float f;
+    std::memcpy(&f, p, 4);
+    return f;
+  }
+  if (component_type == kByte) return std::max(float(int8_t(*p)) / 127.0f, -1.0f);
+  int16_t v;
+  std::memcpy(&v, p, 2);
+  return std::max(float(v) / 32767.0f, -1.0f);
+}
+
+std::string format_values(const float* v, int n) {
+  std::string text;
+  for (int i = 0; i < n; ++i) text += (i ? ", " : "") + fmt::format("{}", v[i]);
+  return "(" + text + ")";
+}
+
+// The rotation of a quaternion (x, y, z, w), normalized first: quantized ones are only close to
+// unit length.
+glm::mat3 rotation_matrix(const float* q) {
+  glm::vec4 u = glm::normalize(glm::vec4(q[0], q[1], q[2], q[3]));
+  float x = u.x, y = u.y, z = u.z, w = u.w;
+  return glm::mat3(1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w),
+                   2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
+                   2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y));
+}
+
+// EXT_mesh_gpu_instancing, which assimp 5.2 ignores: the instances of a node's mesh, one per
+// element of its attributes' accessors.
+class GpuInstanceReader {
+ public:
+  explicit GpuInstanceReader(GltfDocument& doc) : doc_(doc) {}
+
+  // The node's instances; none if it has no EXT_mesh_gpu_instancing.
+  std::optional<std::vector<Transform>> read(const Json& node, size_t node_index) {
+    auto extensions = node.find("extensions");
+    if (extensions == node.end() || !extensions->is_object()) return std::nullopt;
+    auto extension = extensions->find("EXT_mesh_gpu_instancing");
+    if (extension == extensions->end()) return std::nullopt;
+    node_ = node_index;
+    const Json& attributes = attributes_of(*extension);
+    uint64_t count = instance_count(attributes);
+    std::vector<float> translation = read_attribute(attributes, kTranslation, count);
+    std::vector<float> rotation = read_attribute(attributes, kRotation, count);
+    std::vector<float> scale = read_attribute(attributes, kScale, count);
+    std::vector<Transform> instances(count);
+    for (uint64_t k = 0; k < count; ++k) {
+      Transform& t = instances[k];
+      if (!rotation.empty()) t.linear = rotation_matrix(&rotation[4 * k]);
+      for (int axis = 0; axis < 3 && !scale.empty(); ++axis) t.linear[axis] *= scale[3 * k + axis];
+      if (!translation.empty()) t.offset = glm::make_vec3(&translation[3 * k]);
+    }
+    return instances;
+  }
+
+ private:
+  std::string place(const std::string& attribute = "") const {
+    return fmt::format("node {} EXT_mesh_gpu_instancing{}", node_,
+                       attribute.empty() ? "" : " " + attribute);
+  }
+
+  [[noreturn]] void fail(const std::string& attribute, const std::string& what) const {
+    throw_input_error(doc_.path(), place(attribute), what);
+  }
+
+  const Json& attributes_of(const Json& extension) const {
+    auto attributes = extension.is_object() ? extension.find("attributes") : extension.end();
+    if (attributes == extension.end() || !attributes->is_object() || attributes->empty())
+      fail("", "has no attributes, so no instances");
+    return *attributes;
+  }
+
+  const Json& accessor(const Json& attributes, const std::string& name) const {
+    const Json* a = doc_.element("accessors", attributes[name]);
+    if (!a || !a->is_object())
+      fail(name, fmt::format("accessor {} does not exist (the file has {})",
+                             attributes[name].dump(), doc_.member("accessors").size()));
+    return *a;
+  }
+
+  // The count every attribute's accessor has (custom "_" ones included, as the extension asks).
+  uint64_t instance_count(const Json& attributes) const {
+    std::string first;
+    uint64_t count = 0;
+    for (const auto& item : attributes.items()) {
+      const std::string& name = item.key();
+      uint64_t n = whole(accessor(attributes, name), "count", name);
+      if (first.empty()) {
+        first = name;
+        count = n;
+      } else if (n != count) {
+        fail(name, fmt::format("accessor {} has {} elements, {}'s accessor {} has {}: every "
+                               "attribute needs one per instance",
+                               item.value().dump(), n, first, attributes[first].dump(), count));
+      }
+    }
+    if (count > std::numeric_limits<uint32_t>::max())
+      fail(first,
+           fmt::format("{} instances: more than rtsim's 32-bit instance ids can name", count));
+    return count;
+  }
+
+  // object[key] as a whole number; `fallback` if absent.
+  uint64_t whole(const Json& object, const char* key, const std::string& attribute,
+                 uint64_t fallback = 0) const {
+    auto it = object.find(key);
+    if (it == object.end()) return fallback;
+    if (!it->is_number_unsigned())
+      fail(attribute, fmt::format("{} {} is not a whole number", key, it->dump()));
+    return it->get<uint64_t>();
+  }
+
+  void check_format(const Json& a, const InstanceAttribute& attribute, size_t index) const {
+    std::string type = a.value("type", "");
+    if (type != attribute.type)
+      fail(attribute.name,
+           fmt::format("accessor {} is {}; it must be {}", index, type, attribute.type));
+    int component_type = a.value("componentType", 0);
+    bool integer = component_type == kByte || component_type == kShort;
+    if (component_type != kFloat && !(integer && attribute.normalized_integers))
+      fail(attribute.name,
+           fmt::format(
+               "accessor {} has componentType {}; it must be FLOAT (5126){}", index, component_type,
+               attribute.normalized_integers ? ", or normalized BYTE (5120) or SHORT (5122)" : ""));
+    if (integer && !a.value("normalized", false))
+      fail(attribute.name, fmt::format("accessor {} has integer components that are not "
+                                       "normalized",
+                                       index));
+    if (a.contains("sparse"))
+      fail(attribute.name, fmt::format("accessor {} is sparse; rtsim reads instances from plain "
+                                       "accessors only",
+                                       index));
+  }
+
+  // Where the accessor's elements lie: the first one's bytes and the stride; nullptr for an
+  // accessor without a bufferView, which glTF fills with zeros.
+  std::pair<const char*, uint64_t> elements(const Json& a, size_t index, uint64_t element_bytes,
+                                            const char* attribute) {
+    uint64_t count = whole(a, "count", attribute);
+    if (!a.contains("bufferView") || count == 0) return {nullptr, 0};
+    const Json* view = doc_.element("bufferViews", a["bufferView"]);
+    if (!view || !view->is_object())
+      fail(attribute, fmt::format("accessor {}'s bufferView {} does not exist", index,
+                                  a["bufferView"].dump()));
+    uint64_t buffer_index = whole(*view, "buffer", attribute);
+    const std::string* data = doc_.buffer(buffer_index);
+    if (!data)
+      fail(attribute, fmt::format("buffer {} of accessor {} cannot be read", buffer_index, index));
+    uint64_t stride = whole(*view, "byteStride", attribute, element_bytes);
+    uint64_t view_start = whole(*view, "byteOffset", attribute);
+    uint64_t view_bytes = whole(*view, "byteLength", attribute);
+    uint64_t start = whole(a, "byteOffset", attribute);
+    if (stride < element_bytes)
+      fail(attribute, fmt::format("bufferView {}'s byteStride {} is shorter than the {} bytes of "
+                                  "accessor {}'s elements",
+                                  a["bufferView"].dump(), stride, element_bytes, index));
+    if (view_start > data->size() || view_bytes > data->size() - view_start || start > view_bytes ||
+        element_bytes > view_bytes - start ||
+        (count - 1) > (view_bytes - start - element_bytes) / stride)
+      fail(attribute, fmt::format("the {} elements of accessor {} run past the end of its "
+                                  "bufferView or buffer",
+                                  count, index));
+    return {data->data() + view_start + start, stride};
+  }
+
+  // The attribute's values, count x components floats, each checked to be finite; empty if the
+  // node does not give the attribute.
+  std::vector<float> read_attribute(const Json& attributes, const InstanceAttribute& attribute,
+                                    uint64_t count) {
+    if (!attributes.contains(attribute.name)) return {};
+    const Json& a = accessor(attributes, attribute.name);
+    size_t index = attributes[attribute.name].get<size_t>();
+    check_format(a, attribute, index);
+    int component_type = a.value("componentType", 0);
+    int bytes = component_bytes(component_type);
+    auto [first, stride] =
+        elements(a, index, uint64_t(bytes) * attribute.components, attribute.name);
+    std::vector<float> values(count * attribute.components, 0.0f);
+    for (uint64_t k = 0; first && k < count; ++k)
+      for (int c = 0; c < attribute.components; ++c)
+        values[k * attribute.components + c] =
+            component_value(first + k * stride + c * bytes, component_type);
+    check_values(values, attribute);
+    return values;
+  }
+
+  void check_values(const std::vector<float>& values, const InstanceAttribute& attribute) const {
+    for (size_t k = 0; k * attribute.components < values.size(); ++k) {
+      const float* v = &values[k * attribute.components];
+      bool finite =
+          std::all_of(v, v + attribute.components, [](float x) { return std::isfinite(x); });
+      if (!finite)
+        fail(attribute.name, fmt::format("instance {} is {}: NaN or Inf", k,
+                                         format_values(v, attribute.components)));
+      bool zero = std::all_of(v, v + attribute.components, [](float x) { return x == 0.0f; });
+      if (zero && &attribute == &kRotation)
+        fail(attribute.name, fmt::format("instance {} is (0, 0, 0, 0), not a rotation", k));
+    }
+  }
+
+  GltfDocument& doc_;
+  size_t node_ = 0;
+};
+
+// The unsigned entries of array `key` of object (assimp skips the others).
+std::vector<size_t> node_indices(const Json& object, const char* key) {
+  std::vector<size_t> indices;
+  auto array = object.is_object() ? object.find(key) : object.end();
+  if (array == object.end() || !array->is_array()) return indices;
+  for (const Json& i : *array)
+    if (i.is_number_unsigned()) indices.push_back(i.get<size_t>());
+  return indices;
+}
+
+GltfNodeTree read_node_tree(GltfDocument& doc, const Json& json) {
+  GltfNodeTree tree;
+  GpuInstanceReader instances(doc);
+  const Json& nodes = doc.member("nodes");
+  for (size_t n = 0; n < nodes.size(); ++n) {
+    GltfNode& node = tree.nodes.emplace_back();
+    if (!nodes[n].is_object()) continue;
+    node.children = node_indices(nodes[n], "children");
+    node.gpu_instances = instances.read(nodes[n], n);
+  }
+  const Json& scenes = doc.member("scenes");
+  const Json scene = json.value("scene", Json(0));
+  size_t shown = scene.is_number_unsigned() ? scene.get<size_t>() : 0;
+  if (shown < scenes.size()) tree.roots = node_indices(scenes[shown], "nodes");
+  return tree;
+}
 
 }  // namespace
 
-void check_gltf(const std::string& path, bool glb) {
+bool GltfNodeTree::has_gpu_instances() const {
+  return std::any_of(nodes.begin(), nodes.end(),
+                     [](const GltfNode& n) { return n.gpu_instances.has_value(); });
+}
+
+GltfNodeTree check_gltf(const std::string& path, bool glb) {
   GltfFile file = read_container(path, glb);
-  Json doc = parse_document(path, file);
-  if (doc.is_object()) IndexChecker(path, file, doc).check();
+  Json json = parse_document(path, file);
+  if (!json.is_object()) return {};
+  GltfDocument doc(path, file, json);
+  try {
+    IndexChecker(doc).check();
+    return read_node_tree(doc, json);
+  } catch (const Json::type_error& e) {  // a member of the wrong JSON type
+    throw_input_error(path, "", std::string("malformed glTF: ") + e.what());
+  }
 }
 
 }  // namespace rtsim

@@ -1,9 +1,11 @@
 // Scene files through assimp: checks the file, imports without post-processing to check the raw
 // vertices, then triangulates and welds, and walks the node hierarchy: each mesh kept once in
-// object space, each node's reference to it an instance (Scene::instanced). A file that places
-// each mesh once is also flattened into one world-space triangle array (each mesh reference
-// transformed by its node's accumulated matrix); one that reuses a mesh keeps only its instances
-// (workloads/scene.h). Cameras and lights are read before post-processing removes them.
+// object space, each node's reference to it an instance (Scene::instanced), or one instance per
+// element of the node's glTF EXT_mesh_gpu_instancing attributes, which assimp 5.2 ignores and
+// gltf_check.cpp reads. A file that places each mesh once is also flattened into one world-space
+// triangle array (each mesh reference transformed by its node's accumulated matrix); one that
+// reuses a mesh keeps only its instances (workloads/scene.h). Cameras and lights are read before
+// post-processing removes them.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -101,44 +103,117 @@ bool has_triangles(const aiMesh& mesh) {
   return false;
 }
 
-// How many times the node hierarchy places each mesh.
-void count_placements(const aiNode& node, std::vector<unsigned>& placed) {
-  for (unsigned i = 0; i < node.mNumMeshes; ++i) placed[node.mMeshes[i]]++;
-  for (unsigned c = 0; c < node.mNumChildren; ++c) count_placements(*node.mChildren[c], placed);
+aiMatrix4x4 to_assimp(const Transform& t) {
+  const glm::mat3& m = t.linear;
+  return aiMatrix4x4(m[0][0], m[1][0], m[2][0], t.offset.x, m[0][1], m[1][1], m[2][1], t.offset.y,
+                     m[0][2], m[1][2], m[2][2], t.offset.z, 0.0f, 0.0f, 0.0f, 1.0f);
+}
+
+// The EXT_mesh_gpu_instancing instances of the aiNodes assimp made of glTF nodes.
+using GpuInstances = std::unordered_map<const aiNode*, const std::vector<Transform>*>;
+
+// assimp names an unnamed glTF node by an id whose form changes between versions ("nodes[3]" in
+// 5.2, "nodes_3" later), and glTF names need not be unique, so the nodes are matched by position:
+// assimp builds its tree child for child from the scene's, under a "ROOT" node it adds when the
+// scene has several root nodes.
+void match_gltf_node(const aiNode& node, size_t index, const GltfNodeTree& tree,
+                     const std::string& path, GpuInstances& out);
+
+[[noreturn]] void node_tree_mismatch(const std::string& path) {
+  throw_input_error(path, "",
+                    "assimp's node tree differs from the file's, so rtsim cannot place its "
+                    "EXT_mesh_gpu_instancing instances");
+}
+
+void match_gltf_children(const aiNode& parent, const std::vector<size_t>& children,
+                         const GltfNodeTree& tree, const std::string& path, GpuInstances& out) {
+  if (parent.mNumChildren != children.size()) node_tree_mismatch(path);
+  for (unsigned c = 0; c < parent.mNumChildren; ++c)
+    match_gltf_node(*parent.mChildren[c], children[c], tree, path, out);
+}
+
+void match_gltf_node(const aiNode& node, size_t index, const GltfNodeTree& tree,
+                     const std::string& path, GpuInstances& out) {
+  if (index >= tree.nodes.size()) node_tree_mismatch(path);
+  const GltfNode& gltf = tree.nodes[index];
+  if (gltf.gpu_instances) out[&node] = &*gltf.gpu_instances;
+  match_gltf_children(node, gltf.children, tree, path, out);
+}
+
+GpuInstances match_gpu_instances(const aiScene& scene, const GltfNodeTree& tree,
+                                 const std::string& path) {
+  GpuInstances out;
+  if (!tree.has_gpu_instances()) return out;
+  if (tree.roots.size() == 1)
+    match_gltf_node(*scene.mRootNode, tree.roots[0], tree, path, out);
+  else
+    match_gltf_children(*scene.mRootNode, tree.roots, tree, path, out);
+  return out;
 }
 
 // Walks the node hierarchy: each mesh reference with triangles becomes an instance of the mesh
-// (kept once, in object space); if no mesh is placed twice, the walk also appends the
-// transformed triangles to the flattened mesh, else the scene keeps its instances only.
+// (kept once, in object space), or one per EXT_mesh_gpu_instancing instance of its node; if no
+// mesh is placed twice, the walk also appends the transformed triangles to the flattened mesh,
+// else the scene keeps its instances only.
 class SceneWalk {
  public:
-  SceneWalk(const aiScene& scene, Scene& out, bool use_materials, std::string fallback_name)
+  SceneWalk(const aiScene& scene, Scene& out, const GpuInstances& gpu_instances, bool use_materials,
+            std::string fallback_name)
       : scene_(scene),
         out_(out),
+        gpu_instances_(gpu_instances),
         use_materials_(use_materials),
         fallback_name_(std::move(fallback_name)) {
-    std::vector<unsigned> placed(scene.mNumMeshes, 0);
+    std::vector<size_t> placed(scene.mNumMeshes, 0);
     count_placements(*scene.mRootNode, placed);
-    flatten_ = std::all_of(placed.begin(), placed.end(), [](unsigned n) { return n <= 1; });
+    flatten_ = std::all_of(placed.begin(), placed.end(), [](size_t n) { return n <= 1; });
   }
 
   void walk(const aiNode& node, const aiMatrix4x4& parent) {
     aiMatrix4x4 transform = parent * node.mTransformation;
-    for (unsigned i = 0; i < node.mNumMeshes; ++i) {
-      const aiMesh& mesh = *scene_.mMeshes[node.mMeshes[i]];
-      if (!has_triangles(mesh)) continue;  // points and lines only
-      uint32_t material = use_materials_ ? mesh.mMaterialIndex : 0;
-      uint32_t object = object_id(object_name(node, i));
-      add_instance(node.mMeshes[i], transform, material, object);
-      if (!flatten_) continue;
-      size_t added = append_triangles(mesh, transform, out_.mesh);
-      out_.material_ids.insert(out_.material_ids.end(), added, material);
-      out_.object_ids.insert(out_.object_ids.end(), added, object);
-    }
+    for (const aiMatrix4x4& placement : placements(node, transform))
+      for (unsigned i = 0; i < node.mNumMeshes; ++i) place_mesh(node, i, placement);
     for (unsigned c = 0; c < node.mNumChildren; ++c) walk(*node.mChildren[c], transform);
   }
 
  private:
+  const std::vector<Transform>* gpu_instances(const aiNode& node) const {
+    auto it = gpu_instances_.find(&node);
+    return it == gpu_instances_.end() ? nullptr : it->second;
+  }
+
+  // How many times the node hierarchy places each mesh.
+  void count_placements(const aiNode& node, std::vector<size_t>& placed) const {
+    const std::vector<Transform>* instances = gpu_instances(node);
+    for (unsigned i = 0; i < node.mNumMeshes; ++i)
+      placed[node.mMeshes[i]] += instances ? instances->size() : 1;
+    for (unsigned c = 0; c < node.mNumChildren; ++c) count_placements(*node.mChildren[c], placed);
+  }
+
+  // Where the node places its meshes: at its world transform, or at each of its
+  // EXT_mesh_gpu_instancing instances in its frame.
+  std::vector<aiMatrix4x4> placements(const aiNode& node, const aiMatrix4x4& world) const {
+    const std::vector<Transform>* instances = gpu_instances(node);
+    if (!instances) return {world};
+    std::vector<aiMatrix4x4> out;
+    out.reserve(instances->size());
+    for (const Transform& instance : *instances) out.push_back(world * to_assimp(instance));
+    return out;
+  }
+
+  // The node's mesh reference i, placed by transform: an instance, and flattened triangles.
+  void place_mesh(const aiNode& node, unsigned i, const aiMatrix4x4& transform) {
+    const aiMesh& mesh = *scene_.mMeshes[node.mMeshes[i]];
+    if (!has_triangles(mesh)) return;  // points and lines only
+    uint32_t material = use_materials_ ? mesh.mMaterialIndex : 0;
+    uint32_t object = object_id(object_name(node, i));
+    add_instance(node.mMeshes[i], transform, material, object);
+    if (!flatten_) return;
+    size_t added = append_triangles(mesh, transform, out_.mesh);
+    out_.material_ids.insert(out_.material_ids.end(), added, material);
+    out_.object_ids.insert(out_.object_ids.end(), added, object);
+  }
+
   // An object is the named node (OBJ o/g groups, glTF nodes), else the mesh, else the file.
   std::string object_name(const aiNode& node, unsigned i) const {
     if (&node != scene_.mRootNode && node.mName.length > 0) return node.mName.C_Str();
@@ -197,6 +272,7 @@ class SceneWalk {
 
   const aiScene& scene_;
   Scene& out_;
+  const GpuInstances& gpu_instances_;
   bool use_materials_;
   bool flatten_ = true;
   std::string fallback_name_;
@@ -266,7 +342,8 @@ std::vector<std::string> scene_file_extensions() {
 Scene import_scene_file(const std::string& path) {
   const std::string ext = checked_extension(path);
   if (ext == ".obj") check_obj_indices(path);
-  if (ext == ".gltf" || ext == ".glb") check_gltf(path, ext == ".glb");
+  GltfNodeTree gltf_nodes;
+  if (ext == ".gltf" || ext == ".glb") gltf_nodes = check_gltf(path, ext == ".glb");
   Assimp::Importer importer;
   // Only positions matter; dropping the rest lets the weld merge vertices by position alone.
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
@@ -296,7 +373,8 @@ Scene import_scene_file(const std::string& path) {
   } else {
     out.materials.push_back(Material{"default"});
   }
-  SceneWalk(*scene, out, use_materials, fs::path(path).stem().string())
+  GpuInstances gpu_instances = match_gpu_instances(*scene, gltf_nodes, path);
+  SceneWalk(*scene, out, gpu_instances, use_materials, fs::path(path).stem().string())
       .walk(*scene->mRootNode, aiMatrix4x4());
   if (out.instanced.instances.empty()) throw_input_error(path, "", "the file has no triangles");
   return out;

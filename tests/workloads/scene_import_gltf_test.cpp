@@ -1,15 +1,21 @@
 // glTF 2.0 (.gltf with an embedded buffer, and .glb): node transforms and instancing are applied,
-// the instance structure is kept beside the flattened mesh, nodes name the objects, and
-// metallic-roughness materials with their extensions map directly.
+// the instance structure is kept beside the flattened mesh, nodes name the objects,
+// metallic-roughness materials with their extensions map directly, and EXT_mesh_gpu_instancing
+// places a node's mesh once per instance.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
+#include <limits>
+
+#include <fmt/format.h>
 
 #include "scene_test_util.h"
 
 namespace rtsim {
 namespace {
 
+using test::expect_input_error;
 using test::TempDir;
 
 std::string base64(const std::string& in) {
@@ -244,6 +250,181 @@ TEST(SceneImportGltf, RotatedAndMatrixNodesKeepTheirColumns) {
   FlatTriangles triangles = s.triangles();
   EXPECT_EQ(triangles.corners(1)[1], glm::vec3(5, 6, 6)) << "(1,0,0) through the matrix";
   EXPECT_NEAR(triangles.corners(0)[2].x, -1.0f, 1e-6f) << "(0,1,0) turned to -x";
+}
+
+// A document with the one-triangle mesh (mesh 0; accessors 0 and 1) and the accessors that
+// add() appends (2, 3, ...), all in one embedded buffer.
+class InstancingGltf {
+ public:
+  // An accessor of `type` ("VEC3", "VEC4") holding the floats; its index.
+  int add(const std::string& type, const std::vector<float>& values) {
+    size_t components = type == "VEC4" ? 4 : 3;
+    return add(
+        type, 5126,
+        std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(float)),
+        values.size() / components);
+  }
+
+  // An accessor of count elements of `type` and component_type (normalized if an integer type)
+  // whose bytes are `bytes`; its index.
+  int add(const std::string& type, int component_type, const std::string& bytes, size_t count) {
+    views_ += fmt::format(R"(, {{"buffer": 0, "byteOffset": {}, "byteLength": {}}})", data_.size(),
+                          bytes.size());
+    accessors_ +=
+        fmt::format(R"(, {{"bufferView": {}, "componentType": {}, "count": {}, "type": "{}"{}}})",
+                    accessor_count_, component_type, count, type,
+                    component_type == 5126 ? "" : R"(, "normalized": true)");
+    data_ += bytes;
+    data_.append((4 - data_.size() % 4) % 4, '\0');
+    return accessor_count_++;
+  }
+
+  // The document: scene 0 has the root nodes `roots` (a JSON array) of `nodes`.
+  std::string json(const std::string& roots, const std::string& nodes) const {
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": )" + roots +
+           R"(}], "nodes": )" + nodes + R"(,
+  "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+  "buffers": [{"byteLength": )" +
+           std::to_string(data_.size()) + R"(, "uri": "data:application/octet-stream;base64,)" +
+           base64(data_) + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 36, "byteLength": 6})" +
+           views_ + R"(],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"})" +
+           accessors_ + "]}";
+  }
+
+ private:
+  std::string data_ = triangle_buffer() + std::string(2, '\0');
+  std::string views_, accessors_;
+  int accessor_count_ = 2;
+};
+
+std::string gpu_instancing(const std::string& attributes) {
+  return R"("extensions": {"EXT_mesh_gpu_instancing": {"attributes": {)" + attributes + "}}}";
+}
+
+void expect_corners(const FlatTriangles& triangles, uint64_t tri,
+                    const std::array<glm::vec3, 3>& expected) {
+  for (int corner = 0; corner < 3; ++corner) {
+    SCOPED_TRACE(fmt::format("triangle {} corner {}", tri, corner));
+    expect_near(triangles.corners(tri)[corner], expected[corner]);
+  }
+}
+
+// An unnamed node with three instances (translation x rotation x scale each) under a named
+// parent that translates and scales, beside a named node that places the mesh once: the
+// instances come first in flat order, each in the parent's frame.
+TEST(SceneImportGltf, GpuInstancingPlacesTheMeshOncePerInstance) {
+  const float h = 0.70710678f;
+  InstancingGltf gltf;
+  int translation = gltf.add("VEC3", {1, 0, 0, 0, 2, 0, 0, 0, 3});
+  int rotation = gltf.add("VEC4", {0, 0, 0, 1, 0, 0, h, h, 1, 0, 0, 0});  // none, z 90, x 180
+  int scale = gltf.add("VEC3", {1, 1, 1, 2, 2, 2, 1, 1, 3});
+  std::string nodes =
+      R"([
+    {"name": "parent", "translation": [0, 0, 10], "scale": [2, 2, 2], "children": [1]},
+    {"mesh": 0, )" +
+      gpu_instancing(fmt::format(R"("TRANSLATION": {}, "ROTATION": {}, "SCALE": {})", translation,
+                                 rotation, scale)) +
+      R"(},
+    {"name": "solo", "mesh": 0, "translation": [-5, 0, 0]}])";
+  TempDir dir;
+  Scene s = load_scene(dir.write("instanced.gltf", gltf.json("[0, 2]", nodes)));
+
+  EXPECT_FALSE(s.flattened()) << "one mesh placed four times keeps no flattened copy";
+  ASSERT_EQ(s.instanced.instances.size(), 4u);
+  EXPECT_EQ(s.instanced.meshes.size(), 1u);
+  EXPECT_EQ(s.triangle_count(), 4u);
+  FlatTriangles triangles = s.triangles();
+  // Each instance: parent (x2, then +10 z) after the instance's T x R x S.
+  expect_corners(triangles, 0, {glm::vec3(2, 0, 10), glm::vec3(4, 0, 10), glm::vec3(2, 2, 10)});
+  expect_corners(triangles, 1, {glm::vec3(0, 4, 10), glm::vec3(0, 8, 10), glm::vec3(-4, 4, 10)});
+  expect_corners(triangles, 2, {glm::vec3(0, 0, 16), glm::vec3(2, 0, 16), glm::vec3(0, -2, 16)});
+  expect_corners(triangles, 3, {glm::vec3(-5, 0, 0), glm::vec3(-4, 0, 0), glm::vec3(-5, 1, 0)});
+  EXPECT_EQ(s.object_names[s.attributes(triangles, 3).object], "solo");
+  EXPECT_EQ(s.attributes(triangles, 0).object, s.attributes(triangles, 2).object);
+}
+
+// Only TRANSLATION: the instances keep the node's rotation and scale. The node's child, named
+// like it, is placed once: nodes are matched by their place in the tree, not by name.
+TEST(SceneImportGltf, GpuInstancingWithTranslationsOnly) {
+  InstancingGltf gltf;
+  int translation = gltf.add("VEC3", {0, 0, 0, 3, 0, 0});
+  std::string nodes = R"([
+    {"name": "row", "mesh": 0, "translation": [0, 5, 0], "children": [1], )" +
+                      gpu_instancing(fmt::format(R"("TRANSLATION": {})", translation)) + R"(},
+    {"name": "row", "mesh": 0, "translation": [0, 0, -7]}])";
+  TempDir dir;
+  Scene s = load_scene(dir.write("row.gltf", gltf.json("[0]", nodes)));
+  EXPECT_FALSE(s.flattened());
+  ASSERT_EQ(s.instanced.instances.size(), 3u);
+  EXPECT_EQ(s.triangle_count(), 3u);
+  const std::vector<Instance>& instances = s.instanced.instances;
+  EXPECT_EQ(instances[0].to_world.offset, glm::vec3(0, 5, 0));
+  EXPECT_EQ(instances[1].to_world.offset, glm::vec3(3, 5, 0));
+  EXPECT_EQ(instances[2].to_world.offset, glm::vec3(0, 5, -7)) << "the child: not instanced";
+  for (const Instance& instance : instances) EXPECT_EQ(instance.to_world.linear, glm::mat3(1.0f));
+}
+
+// A normalized BYTE rotation (quantized, so only close to unit length) of a single instance:
+// the mesh is placed once, so the scene stays flattened.
+TEST(SceneImportGltf, GpuInstancingReadsNormalizedByteRotations) {
+  InstancingGltf gltf;
+  const int8_t quarter_turn_z[4] = {0, 0, 127, 127};
+  int rotation =
+      gltf.add("VEC4", 5120, std::string(reinterpret_cast<const char*>(quarter_turn_z), 4), 1);
+  std::string nodes = R"([{"name": "turned", "mesh": 0, )" +
+                      gpu_instancing(fmt::format(R"("ROTATION": {})", rotation)) + "}]";
+  TempDir dir;
+  Scene s = load_scene(dir.write("turned.gltf", gltf.json("[0]", nodes)));
+  EXPECT_TRUE(s.flattened());
+  ASSERT_EQ(s.triangle_count(), 1u);
+  expect_corners(s.triangles(), 0, {glm::vec3(0, 0, 0), glm::vec3(0, 1, 0), glm::vec3(-1, 0, 0)});
+}
+
+// Broken extension data: one InputError line naming the file, the node and the attribute.
+TEST(SceneImportGltf, GpuInstancingErrorsNameTheNodeAndAttribute) {
+  TempDir dir;
+  auto file = [&](const std::string& name, InstancingGltf& gltf, const std::string& attributes) {
+    std::string nodes = R"([{"name": "base"}, {"mesh": 0, )" + gpu_instancing(attributes) + "}]";
+    return dir.write(name, gltf.json("[0, 1]", nodes));
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const float inf = std::numeric_limits<float>::infinity();
+
+  InstancingGltf counts;
+  int three = counts.add("VEC3", {0, 0, 0, 1, 0, 0, 2, 0, 0});
+  int two = counts.add("VEC3", {1, 1, 1, 1, 1, 1});
+  expect_input_error(
+      file("counts.gltf", counts, fmt::format(R"("TRANSLATION": {}, "SCALE": {})", three, two)),
+      "node 1 EXT_mesh_gpu_instancing TRANSLATION: accessor 2 has 3 elements, SCALE's accessor "
+      "3 has 2");
+
+  InstancingGltf missing;
+  missing.add("VEC3", {0, 0, 0});
+  expect_input_error(file("missing.gltf", missing, R"("TRANSLATION": 2, "ROTATION": 9)"),
+                     "node 1 EXT_mesh_gpu_instancing ROTATION: accessor 9 does not exist (the "
+                     "file has 3)");
+
+  InstancingGltf not_finite;
+  int translation = not_finite.add("VEC3", {0, 0, 0, nan, 0, 0});
+  int scale = not_finite.add("VEC3", {1, 1, 1, 1, inf, 1});
+  expect_input_error(file("nan.gltf", not_finite, fmt::format(R"("TRANSLATION": {})", translation)),
+                     "node 1 EXT_mesh_gpu_instancing TRANSLATION: instance 1 is (nan, 0, 0): NaN "
+                     "or Inf");
+  expect_input_error(file("inf.gltf", not_finite, fmt::format(R"("SCALE": {})", scale)),
+                     "node 1 EXT_mesh_gpu_instancing SCALE: instance 1 is (1, inf, 1): NaN or Inf");
+
+  InstancingGltf types;
+  int vec4 = types.add("VEC4", {0, 0, 0, 1});
+  int bytes = types.add("VEC3", 5121, std::string(4, '\1'), 1);
+  expect_input_error(file("type.gltf", types, fmt::format(R"("TRANSLATION": {})", vec4)),
+                     "TRANSLATION: accessor 2 is VEC4; it must be VEC3");
+  expect_input_error(file("component.gltf", types, fmt::format(R"("SCALE": {})", bytes)),
+                     "SCALE: accessor 3 has componentType 5121; it must be FLOAT (5126)");
 }
 
 TEST(SceneImportGltf, Base64EncoderMatchesKnownValues) {
