@@ -28,13 +28,14 @@ Scene make_builtin_scene(const std::string& name_and_params) {
   if (name_and_params == "hardcases") return hardcases::make_hardcases_scene();
   auto colon = name_and_params.find(':');
   std::string name = name_and_params.substr(0, colon);
-  if (name == "grid" || name == "foliage" || name == "forest") {
+  if (name == "grid" || name == "foliage" || name == "forest" || name == "city") {
     if (colon == std::string::npos)
       throw_input_error(source, "", "needs a triangle count, as in '" + name + ":100000'");
     uint64_t n = parse_triangle_count(source, name_and_params.substr(colon + 1));
     std::string canonical = "builtin:" + name + ":" + std::to_string(n);
-    // A forest holds its few unique meshes and an instance per tree, whatever N.
+    // A forest or a city holds its few unique meshes and the instances placing them, whatever N.
     if (name == "forest") return make_forest(canonical, n);
+    if (name == "city") return make_city(canonical, n);
     // Measured: 26 B a triangle at the peak of scene-info grid:4000000 (positions, indices,
     // materials and the fingerprint pass).
     require_memory(n * 28, source, fmt::format("a scene of {} triangles", n),

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -41,6 +42,12 @@ class Pcg32 : public pipeline::Pcg32 {
   explicit Pcg32(uint64_t seed) : pipeline::Pcg32(seed, kReferenceIncrement >> 1) {}
   // Uniform in [-1, 1) with 24 bits, exact in float.
   float symmetric() { return float(int32_t(next() >> 8) - (1 << 23)) * 0x1p-23f; }
+  // Three symmetric() draws, z first: the order GCC's right-to-left argument evaluation gave the
+  // scenes whose fingerprints are pinned, spelled out so that every compiler agrees.
+  glm::vec3 symmetric_vector() {
+    float z = symmetric(), y = symmetric(), x = symmetric();
+    return {x, y, z};
+  }
 
  private:
   static constexpr uint64_t kReferenceIncrement = 1442695040888963407ull;
@@ -48,6 +55,46 @@ class Pcg32 : public pipeline::Pcg32 {
 
 // Uniform random rotation: a quaternion drawn uniformly in the unit 4-ball, normalized.
 glm::mat3 random_rotation(Pcg32& rng);
+
+// A unique mesh of an instanced built-in, made from templates: a material per triangle and the
+// object its instances belong to.
+struct UniqueMesh {
+  TriangleMesh mesh;
+  std::vector<uint32_t> materials;
+  uint32_t object = 0;
+
+  // Appends the template transformed as p -> offset + rotation * (scale * p).
+  void add(const MeshTemplate& t, const glm::vec3& offset, const glm::vec3& scale,
+           uint32_t material, const glm::mat3& rotation = glm::mat3(1.0f)) {
+    auto base = uint32_t(mesh.positions.size());
+    for (const glm::vec3& p : t.positions)
+      mesh.positions.push_back(offset + rotation * (scale * p));
+    for (const auto& tri : t.triangles)
+      mesh.triangles.push_back({base + tri[0], base + tri[1], base + tri[2]});
+    materials.insert(materials.end(), t.triangles.size(), material);
+  }
+};
+
+// The instance transform p -> offset + rotation * (scale * p).
+inline Transform placement(const glm::mat3& rotation, const glm::vec3& scale,
+                           const glm::vec3& offset) {
+  Transform t;
+  t.linear = rotation * glm::mat3(glm::vec3(scale.x, 0, 0), glm::vec3(0, scale.y, 0),
+                                  glm::vec3(0, 0, scale.z));
+  t.offset = offset;
+  return t;
+}
+
+// Moves the unique meshes into scene.instanced, whose instances place them, with materials per
+// mesh triangle and objects per instance (no flattened copy: scene.mesh stays empty).
+inline void keep_unique_meshes(std::vector<UniqueMesh> meshes, Scene& scene) {
+  for (const Instance& inst : scene.instanced.instances)
+    scene.instance_object_ids.push_back(meshes[inst.mesh].object);
+  for (UniqueMesh& m : meshes) {
+    scene.instanced.meshes.push_back(std::move(m.mesh));
+    scene.mesh_material_ids.push_back(std::move(m.materials));
+  }
+}
 
 // A dielectric with the given colour and roughness; callers set the other fields.
 Material make_material(const std::string& name, const glm::vec3& color, float roughness);
@@ -73,7 +120,7 @@ class SceneBuilder {
   Scene scene_;
 };
 
-// Parses the N of "grid:N", "foliage:N", "forest:N": 1 <= N <= kMaxBuiltinTriangles, else
+// Parses the N of "grid:N", "foliage:N", "forest:N", "city:N": 1 <= N <= kMaxBuiltinTriangles, else
 // InputError naming source.
 uint64_t parse_triangle_count(const std::string& source, const std::string& text);
 constexpr uint64_t kMaxBuiltinTriangles = 1000000000;
@@ -83,9 +130,10 @@ Scene make_pica();
 Scene make_grid(const std::string& source, uint64_t triangles);
 Scene make_foliage(const std::string& source, uint64_t triangles);
 Scene make_forest(const std::string& source, uint64_t triangles);
+Scene make_city(const std::string& source, uint64_t triangles);
 
-// Dispatches "cornell", "pica", "grid:N", "foliage:N", "forest:N" ("builtin:" already removed); the
-// Scene is not yet finalized.
+// Dispatches "cornell", "pica", "grid:N", "foliage:N", "forest:N", "city:N" ("builtin:" already
+// removed); the Scene is not yet finalized.
 Scene make_builtin_scene(const std::string& name_and_params);
 
 }  // namespace rtsim::builtin

@@ -24,25 +24,9 @@ constexpr float kTerrainHeight = 6.0f;
 
 enum Kind : uint32_t { kTrees, kRocks, kTerrain };
 
-// A unique mesh with a material per triangle and the object it belongs to.
-struct Part {
-  TriangleMesh mesh;
-  std::vector<uint32_t> materials;
-  Kind kind = kTrees;
-
-  void add(const MeshTemplate& t, const V& offset, const V& scale, uint32_t material,
-           const glm::mat3& rotation = glm::mat3(1.0f)) {
-    auto base = uint32_t(mesh.positions.size());
-    for (const V& p : t.positions) mesh.positions.push_back(offset + rotation * (scale * p));
-    for (const auto& tri : t.triangles)
-      mesh.triangles.push_back({base + tri[0], base + tri[1], base + tri[2]});
-    materials.insert(materials.end(), t.triangles.size(), material);
-  }
-};
-
 // A trunk and a crown: leaf triangles centred uniformly in an ellipsoid above the trunk.
-Part make_tree(uint32_t leaves, float width, Pcg32& rng, uint32_t bark, uint32_t leaf) {
-  Part tree;
+UniqueMesh make_tree(uint32_t leaves, float width, Pcg32& rng, uint32_t bark, uint32_t leaf) {
+  UniqueMesh tree;
   tree.add(unit_cube(), V(0, 2.0f, 0), V(0.25f, 2.0f, 0.25f), bark);
   const float size = 0.35f;
   const MeshTemplate triangle{
@@ -50,7 +34,7 @@ Part make_tree(uint32_t leaves, float width, Pcg32& rng, uint32_t bark, uint32_t
       {{0, 1, 2}}};
   for (uint32_t i = 0; i < leaves; ++i) {
     V u;
-    do u = V(rng.symmetric(), rng.symmetric(), rng.symmetric());
+    do u = rng.symmetric_vector();
     while (u.x * u.x + u.y * u.y + u.z * u.z > 1.0f);
     tree.add(triangle, V(0, 5.5f, 0) + u * V(width, 2.5f, width), V(1.0f), leaf,
              random_rotation(rng));
@@ -63,9 +47,9 @@ float mound(float x, float z) {
   return (1 - x * x) * (1 - z * z);
 }
 
-Part make_terrain(uint32_t ground) {
-  Part terrain;
-  terrain.kind = kTerrain;
+UniqueMesh make_terrain(uint32_t ground) {
+  UniqueMesh terrain;
+  terrain.object = kTerrain;
   MeshTemplate quad = grid_quad(kTerrainCells);
   for (V& p : quad.positions) p.y = mound(p.x, p.z);
   terrain.add(quad, V(0), V(1.0f), ground);
@@ -81,13 +65,6 @@ glm::mat3 random_yaw(Pcg32& rng) {
   return rotation_y(c / n, s / n);
 }
 
-Transform place(const glm::mat3& rotation, const V& scale, const V& offset) {
-  Transform t;
-  t.linear = rotation * glm::mat3(V(scale.x, 0, 0), V(0, scale.y, 0), V(0, 0, scale.z));
-  t.offset = offset;
-  return t;
-}
-
 }  // namespace
 
 Scene make_forest(const std::string& source, uint64_t triangles) {
@@ -100,11 +77,11 @@ Scene make_forest(const std::string& source, uint64_t triangles) {
                      make_material("ground", V(0.3f, 0.35f, 0.2f), 0.9f)};
   scene.object_names = {"trees", "rocks", "terrain"};
   Pcg32 rng(kForestSeed);
-  std::vector<Part> parts;
+  std::vector<UniqueMesh> parts;
   for (uint32_t v = 0; v < 3; ++v)
     parts.push_back(make_tree(kLeaves[v], 1.6f + 0.3f * float(v), rng, 1, 0));
-  Part rock;
-  rock.kind = kRocks;
+  UniqueMesh rock;
+  rock.object = kRocks;
   rock.add(octa_sphere(kRockLevel), V(0), V(1.2f, 0.7f, 1.0f), 2);
   parts.push_back(std::move(rock));
   parts.push_back(make_terrain(3));
@@ -121,27 +98,21 @@ Scene make_forest(const std::string& source, uint64_t triangles) {
   const float half = 0.5f * kTreeSpacing * float(side);
   InstancedMesh& g = scene.instanced;
   g.instances.push_back(
-      {terrain_mesh, place(glm::mat3(1.0f), V(half, kTerrainHeight, half), V(0))});
+      {terrain_mesh, placement(glm::mat3(1.0f), V(half, kTerrainHeight, half), V(0))});
   auto ground = [&](float x, float z) { return kTerrainHeight * mound(x / half, z / half); };
   for (uint64_t i = 0; i < trees; ++i) {
     float x = (float(i % side) + 0.5f + 0.3f * rng.symmetric()) * kTreeSpacing - half;
     float z = (float(i / side) + 0.5f + 0.3f * rng.symmetric()) * kTreeSpacing - half;
     float scale = 1.0f + 0.2f * rng.symmetric();
     g.instances.push_back(
-        {uint32_t(i % 3), place(random_yaw(rng), V(scale), V(x, ground(x, z), z))});
+        {uint32_t(i % 3), placement(random_yaw(rng), V(scale), V(x, ground(x, z), z))});
     if (i % 4 != 0) continue;
     float rx = x + 0.5f * kTreeSpacing, rz = z + 0.25f * kTreeSpacing;
     float rock_scale = 1.0f + 0.5f * rng.symmetric();
-    g.instances.push_back({rock_mesh, place(random_yaw(rng), V(rock_scale),
-                                            V(rx, ground(rx, rz) - 0.2f * rock_scale, rz))});
+    g.instances.push_back({rock_mesh, placement(random_yaw(rng), V(rock_scale),
+                                                V(rx, ground(rx, rz) - 0.2f * rock_scale, rz))});
   }
-  // Unique geometry only: materials per mesh triangle, objects per instance.
-  for (const Instance& inst : g.instances)
-    scene.instance_object_ids.push_back(parts[inst.mesh].kind);
-  for (Part& part : parts) {
-    g.meshes.push_back(std::move(part.mesh));
-    scene.mesh_material_ids.push_back(std::move(part.materials));
-  }
+  keep_unique_meshes(std::move(parts), scene);
   return scene;
 }
 

@@ -24,14 +24,17 @@ MeshTemplate octa_sphere(int level) {
     int sx = octant & 1 ? -1 : 1, sy = octant & 2 ? -1 : 1, sz = octant & 4 ? -1 : 1;
     bool flip = sx * sy * sz < 0;
     auto at = [&](int a, int b) { return vertex(sx * a, sy * b, sz * (level - a - b)); };
-    auto emit = [&](uint32_t i, uint32_t j, uint32_t k) {
+    // Corners numbered last to first: the order GCC's right-to-left argument evaluation gave
+    // the pinned fingerprints, spelled out so that every compiler agrees.
+    auto emit = [&](std::array<int, 2> p, std::array<int, 2> q, std::array<int, 2> r) {
+      uint32_t k = at(r[0], r[1]), j = at(q[0], q[1]), i = at(p[0], p[1]);
       t.triangles.push_back(flip ? std::array<uint32_t, 3>{i, k, j}
                                  : std::array<uint32_t, 3>{i, j, k});
     };
     for (int a = 0; a < level; ++a) {
       for (int b = 0; a + b < level; ++b) {
-        emit(at(a, b), at(a + 1, b), at(a, b + 1));
-        if (a + b + 1 < level) emit(at(a + 1, b), at(a + 1, b + 1), at(a, b + 1));
+        emit({a, b}, {a + 1, b}, {a, b + 1});
+        if (a + b + 1 < level) emit({a + 1, b}, {a + 1, b + 1}, {a, b + 1});
       }
     }
   }
@@ -79,7 +82,9 @@ Material make_material(const std::string& name, const glm::vec3& color, float ro
   return m;
 }
 
-SceneBuilder::SceneBuilder(std::string source) { scene_.source = std::move(source); }
+SceneBuilder::SceneBuilder(std::string source) {
+  scene_.source = std::move(source);
+}
 
 uint32_t SceneBuilder::material(const Material& m) {
   scene_.materials.push_back(m);

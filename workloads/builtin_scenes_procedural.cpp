@@ -92,7 +92,7 @@ Scene make_foliage(const std::string& source, uint64_t triangles) {
   Pcg32 rng(kFoliageSeed);
   V* out = scene.mesh.positions.data();
   for (uint64_t i = 0; i < triangles; ++i) {
-    V center = kFoliageHalfSize * V(rng.symmetric(), rng.symmetric(), rng.symmetric());
+    V center = kFoliageHalfSize * rng.symmetric_vector();
     float scale = 1.0f + 0.5f * rng.symmetric();
     glm::mat3 rotation = random_rotation(rng);
     for (int k = 0; k < 3; ++k) *out++ = center + rotation * (scale * corners[k]);

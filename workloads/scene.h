@@ -92,9 +92,9 @@ const TriangleMesh& flat_mesh(Scene& scene);
 // the instance; Scene::triangles().flat() makes them flat ids).
 std::unique_ptr<EmbreeScene> embree_scene(const Scene& scene, int threads = 0);
 
-// Loads "cornell", "pica", "grid:N", "foliage:N", "forest:N" (optionally prefixed "builtin:"), or a
-// scene file (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, OFF, STL). Throws InputError naming the file for a
-// missing or unsupported file, NaN/Inf vertices, or zero triangles.
+// Loads "cornell", "pica", "grid:N", "foliage:N", "forest:N", "city:N" (optionally prefixed
+// "builtin:"), or a scene file (OBJ+MTL, glTF 2.0 .gltf/.glb, PLY, OFF, STL). Throws InputError
+// naming the file for a missing or unsupported file, NaN/Inf vertices, or zero triangles.
 Scene load_scene(const std::string& spec);
 
 // The scene a ray stream was traced on: the one its header names, or scene_override if not

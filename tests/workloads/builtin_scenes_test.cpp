@@ -35,13 +35,13 @@ void expect_vec3_eq(const glm::vec3& a, const glm::vec3& b, const char* what) {
 
 TEST(BuiltinScenes, NamesAreRecognizedWithOrWithoutPrefix) {
   for (const char* spec :
-       {"cornell", "builtin:cornell", "pica", "grid:10", "builtin:foliage:3", "forest:9"})
+       {"cornell", "builtin:cornell", "pica", "grid:10", "builtin:foliage:3", "forest:9", "city:9"})
     EXPECT_TRUE(is_builtin_scene(spec)) << spec;
   for (const char* spec : {"cornell.obj", "scenes/pica.gltf", "/tmp/grid.ply"})
     EXPECT_FALSE(is_builtin_scene(spec)) << spec;
   EXPECT_EQ(builtin_scene_names(),
             (std::vector<std::string>{"cornell", "pica", "grid:N", "foliage:N", "forest:N",
-                                      "hardcases"}));
+                                      "city:N", "hardcases"}));
   EXPECT_EQ(load_scene("cornell").fingerprint, load_scene("builtin:cornell").fingerprint);
 }
 
@@ -187,14 +187,69 @@ TEST(BuiltinScenes, ForestIsInstancesOfAFewUniqueMeshes) {
   EXPECT_EQ(load_scene("forest:1000000").fingerprint, s.fingerprint) << "seeded";
 }
 
+// A city of instances: buildings, props and street tiles held once and no flattened copy, whole
+// blocks placed until N instanced triangles; flat_mesh() makes exactly what the instances make.
+TEST(BuiltinScenes, CityIsInstancesOfAFewUniqueMeshes) {
+  // A street tile, four of the largest building, 8 lamps, 4 trees, 4 benches and 8 cars.
+  const uint64_t largest_block = 548 + 4 * 5652 + 8 * 108 + 4 * 212 + 4 * 48 + 8 * 324;
+  for (uint64_t n : {1u, 100000u, 2000000u}) {
+    Scene s = load_scene("city:" + std::to_string(n));
+    const InstancedMesh& g = s.instanced;
+    ASSERT_EQ(g.meshes.size(), 11u) << "a lamp, a car, a bench, a tree, a street tile, 6 buildings";
+    EXPECT_EQ(instancing_problem(g), "");
+    EXPECT_GE(g.instanced_triangles(), n);
+    EXPECT_LE(g.instanced_triangles(), n - 1 + largest_block) << "at most one block past N";
+    EXPECT_EQ(s.triangle_count(), g.instanced_triangles());
+    EXPECT_EQ(g.unique_triangles(), 108 + 324 + 48 + 212 + 548 + 20016);
+    EXPECT_FALSE(s.flattened());
+    EXPECT_TRUE(s.mesh.positions.empty() && s.material_ids.empty() && s.object_ids.empty());
+    ASSERT_EQ(s.mesh_material_ids.size(), 11u);
+    EXPECT_EQ(s.mesh_material_ids[4].size(), 548u) << "materials per unique triangle";
+    EXPECT_EQ(s.instance_object_ids.size(), g.instances.size());
+    EXPECT_EQ(instanced_fingerprint(g), s.fingerprint);
+    FlatMesh flat = flatten(g);
+    Scene copy = s;
+    EXPECT_EQ(flat_mesh(copy).positions, flat.mesh.positions);
+    EXPECT_EQ(copy.material_ids.size(), s.triangle_count());
+    FlatTriangles triangles = s.triangles();
+    for (uint64_t t = 0; t < s.triangle_count(); t += 997) {
+      TriangleAttributes a = s.attributes(triangles, t);
+      EXPECT_EQ(a.material, copy.material_ids[t]);
+      EXPECT_EQ(a.object, copy.object_ids[t]);
+    }
+  }
+  Scene s = load_scene("city:1000000");
+  EXPECT_EQ(s.object_names, (std::vector<std::string>{"buildings", "props", "ground"}));
+  ASSERT_EQ(s.cameras.size(), 1u) << "a view into the city, however wide it is";
+  std::vector<size_t> placements(s.instanced.meshes.size());
+  for (const Instance& inst : s.instanced.instances) {
+    ++placements[inst.mesh];
+    // Turned by quarter turns about +y: exact, no trigonometry.
+    const glm::mat3& m = inst.to_world.linear;
+    EXPECT_TRUE(m[0].y == 0 && m[2].y == 0 && m[1].x == 0 && m[1].z == 0);
+    EXPECT_TRUE((m[0].x == 0 && m[2].z == 0) || (m[0].z == 0 && m[2].x == 0));
+  }
+  EXPECT_GT(*std::max_element(placements.begin(), placements.end()), 100u)
+      << "a mesh placed many times";
+  for (size_t building = 5; building < 11; ++building)
+    EXPECT_GT(s.instanced.meshes[building].triangle_count(), 900u) << "facades of inset windows";
+  EXPECT_EQ(triangles_of(s, object_id(s, "ground")), 548 * placements[4]) << "a tile a block";
+  bool glossy_glass = false;
+  for (const Material& m : s.materials)
+    glossy_glass |= m.name == "window_glass" && m.roughness <= 0.1f;
+  EXPECT_TRUE(glossy_glass) << "windows give the reflection pass work";
+  EXPECT_EQ(load_scene("city:1000000").fingerprint, s.fingerprint) << "seeded";
+}
+
 TEST(BuiltinScenes, FingerprintsAreStableAndTellScenesApart) {
-  for (const char* spec : {"cornell", "pica", "grid:5000", "foliage:5000", "forest:50000"})
+  for (const char* spec :
+       {"cornell", "pica", "grid:5000", "foliage:5000", "forest:50000", "city:50000"})
     EXPECT_EQ(load_scene(spec).fingerprint, load_scene(spec).fingerprint) << spec;
   std::set<uint64_t> distinct;
   for (const char* spec : {"cornell", "pica", "grid:1000", "grid:1001", "grid:2000", "foliage:1000",
-                           "foliage:1001", "foliage:2000"})
+                           "foliage:1001", "foliage:2000", "city:1000", "city:50000"})
     distinct.insert(load_scene(spec).fingerprint);
-  EXPECT_EQ(distinct.size(), 8u);
+  EXPECT_EQ(distinct.size(), 10u);
 }
 
 // Built-ins use no trigonometry and their own RNG, so these values hold on every machine. If a
@@ -205,6 +260,8 @@ TEST(BuiltinScenes, FingerprintsMatchTheRecordedValues) {
   EXPECT_EQ(load_scene("grid:1000").fingerprint, 0x45a8d68f7e3599a7ull);
   EXPECT_EQ(load_scene("foliage:1000").fingerprint, 0x05253d99433d5864ull);
   EXPECT_EQ(load_scene("forest:1000000").fingerprint, 0x103955757d7387aeull)
+      << "its unique meshes and instances (instanced_fingerprint)";
+  EXPECT_EQ(load_scene("city:1000000").fingerprint, 0x7bacd6216199162dull)
       << "its unique meshes and instances (instanced_fingerprint)";
 }
 

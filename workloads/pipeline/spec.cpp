@@ -188,9 +188,10 @@ void read_root(SpecReader& r, WorkloadSpec& s, const std::string& stem) {
   s.preset =
       r.text("preset", s.preset, "pass budgets the pass sections start from", preset_names());
   s.passes = preset_passes(s.preset);
-  s.scene = r.text("scene", "",
-                   "built-in scene (cornell, pica, grid:N, foliage:N) or a scene file; a "
-                   "relative path is relative to this spec's folder");
+  s.scene = r.text(
+      "scene", "",
+      "built-in scene (cornell, pica, grid:N, foliage:N, forest:N, city:N) or a scene file; a "
+      "relative path is relative to this spec's folder");
   s.seed = uint64_t(r.integer("seed", int64_t(s.seed), "", "random seed", 0,
                               std::numeric_limits<int64_t>::max()));
   s.frames = uint32_t(r.integer("frames", s.frames, "frames", "frames to trace", 1, 100000));
