@@ -146,6 +146,26 @@ TEST(BuiltinScenes, FoliageLeavesAreRigidlyRotatedCopies) {
   EXPECT_GT(max_nz, 0.99f);
 }
 
+// A scene kept as instances: no flattened copy, materials per unique mesh and objects per
+// instance that flat_mesh() turns into the flattened mesh's, triangle for triangle.
+void expect_kept_as_instances(const Scene& s) {
+  const InstancedMesh& g = s.instanced;
+  EXPECT_FALSE(s.flattened());
+  EXPECT_TRUE(s.mesh.positions.empty() && s.material_ids.empty() && s.object_ids.empty());
+  ASSERT_EQ(s.mesh_material_ids.size(), g.meshes.size());
+  EXPECT_EQ(s.instance_object_ids.size(), g.instances.size());
+  EXPECT_EQ(instanced_fingerprint(g), s.fingerprint);
+  Scene copy = s;
+  EXPECT_EQ(flat_mesh(copy).positions, flatten(g).mesh.positions);
+  ASSERT_EQ(copy.material_ids.size(), s.triangle_count());
+  FlatTriangles triangles = s.triangles();
+  for (uint64_t t = 0; t < s.triangle_count(); t += 997) {
+    TriangleAttributes a = s.attributes(triangles, t);
+    EXPECT_EQ(a.material, copy.material_ids[t]);
+    EXPECT_EQ(a.object, copy.object_ids[t]);
+  }
+}
+
 // A forest of instances: the unique meshes held once and no flattened copy, placed until N
 // instanced triangles; flat_mesh() makes exactly what the instances make.
 TEST(BuiltinScenes, ForestIsInstancesOfAFewUniqueMeshes) {
@@ -159,22 +179,8 @@ TEST(BuiltinScenes, ForestIsInstancesOfAFewUniqueMeshes) {
         << "at most one tree (and its rock) past N";
     EXPECT_EQ(s.triangle_count(), g.instanced_triangles());
     EXPECT_EQ(g.unique_triangles(), 3 * 12 + 6000 + 8000 + 10000 + 288 + 8192);
-    EXPECT_FALSE(s.flattened());
-    EXPECT_TRUE(s.mesh.positions.empty() && s.material_ids.empty() && s.object_ids.empty());
-    ASSERT_EQ(s.mesh_material_ids.size(), 5u);
+    expect_kept_as_instances(s);
     EXPECT_EQ(s.mesh_material_ids[4].size(), 8192u) << "materials per unique triangle";
-    EXPECT_EQ(s.instance_object_ids.size(), g.instances.size());
-    EXPECT_EQ(instanced_fingerprint(g), s.fingerprint);
-    FlatMesh flat = flatten(g);
-    Scene copy = s;
-    EXPECT_EQ(flat_mesh(copy).positions, flat.mesh.positions);
-    EXPECT_EQ(copy.material_ids.size(), s.triangle_count());
-    FlatTriangles triangles = s.triangles();
-    for (uint64_t t = 0; t < s.triangle_count(); t += 997) {
-      TriangleAttributes a = s.attributes(triangles, t);
-      EXPECT_EQ(a.material, copy.material_ids[t]);
-      EXPECT_EQ(a.object, copy.object_ids[t]);
-    }
   }
   Scene s = load_scene("forest:1000000");
   size_t trees = 0, rocks = 0;
@@ -201,22 +207,8 @@ TEST(BuiltinScenes, CityIsInstancesOfAFewUniqueMeshes) {
     EXPECT_LE(g.instanced_triangles(), n - 1 + largest_block) << "at most one block past N";
     EXPECT_EQ(s.triangle_count(), g.instanced_triangles());
     EXPECT_EQ(g.unique_triangles(), 108 + 324 + 48 + 212 + 548 + 20016);
-    EXPECT_FALSE(s.flattened());
-    EXPECT_TRUE(s.mesh.positions.empty() && s.material_ids.empty() && s.object_ids.empty());
-    ASSERT_EQ(s.mesh_material_ids.size(), 11u);
+    expect_kept_as_instances(s);
     EXPECT_EQ(s.mesh_material_ids[4].size(), 548u) << "materials per unique triangle";
-    EXPECT_EQ(s.instance_object_ids.size(), g.instances.size());
-    EXPECT_EQ(instanced_fingerprint(g), s.fingerprint);
-    FlatMesh flat = flatten(g);
-    Scene copy = s;
-    EXPECT_EQ(flat_mesh(copy).positions, flat.mesh.positions);
-    EXPECT_EQ(copy.material_ids.size(), s.triangle_count());
-    FlatTriangles triangles = s.triangles();
-    for (uint64_t t = 0; t < s.triangle_count(); t += 997) {
-      TriangleAttributes a = s.attributes(triangles, t);
-      EXPECT_EQ(a.material, copy.material_ids[t]);
-      EXPECT_EQ(a.object, copy.object_ids[t]);
-    }
   }
   Scene s = load_scene("city:1000000");
   EXPECT_EQ(s.object_names, (std::vector<std::string>{"buildings", "props", "ground"}));
