@@ -21,6 +21,7 @@
 #include "model/sc/fork_run.h"
 #include "model/sc/rt_simulator.h"
 #include "model/verify/ray_samples.h"
+#include "reports/phase_progress.h"
 #include "traces/embree_scene.h"
 #include "traces/error.h"
 #include "traces/host_clock.h"
@@ -129,8 +130,7 @@ int run_bench_sim(const BenchSimOptions& o) {
   std::string spec = o.scene;
   if (!o.stream.empty()) spec = RayStreamReader(o.stream).header().scene_source;
   Scene scene = load_scene(spec);
-  if (!wants_two_levels(config.bvh, scene.instanced)) flat_mesh(scene);
-  TwoLevelBvh image = build_scene_levels(scene.mesh, scene.instanced, config.bvh);
+  TwoLevelBvh image = reports::build_scene_bvh(scene, config.bvh, true);
   bool two_levels = !image.bottom.empty();
   std::vector<Ray> rays;
   if (o.stream.empty()) rays = sample_diffuse_rays(scene.triangles(), o.rays, o.seed);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/core.h>
 #include <glm/geometric.hpp>
@@ -138,17 +139,23 @@ std::array<glm::vec3, 3> FlatTriangles::corners(uint64_t tri) const {
 
 Bounds FlatTriangles::bounds() const {
   if (flat_) return mesh_bounds(*flat_);
-  Bounds b;
+  // Bounds::grow is out of line: a 100M-triangle forest transforms ~10^8 vertices here.
+  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (const Instance& inst : instances_->instances)
-    for (const glm::vec3& p : instances_->meshes[inst.mesh].positions)
-      b.grow(inst.to_world.point(p));
+    for (const glm::vec3& object : instances_->meshes[inst.mesh].positions) {
+      glm::vec3 p = inst.to_world.point(object);
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  Bounds b;
+  b.lo = lo;
+  b.hi = hi;
   return b;
 }
 
-Hit FlatTriangles::flat(Hit hit) const {
-  if (instances_ && hit.instance != kNoHit && hit.prim != kNoHit && hit.prim != kAnyPrim)
-    hit.prim = uint32_t(offsets_[hit.instance] + hit.prim);
-  return hit;
+uint32_t FlatTriangles::flat_id(uint32_t instance, uint32_t prim) const {
+  if (!instances_ || instance == kNoHit || prim == kNoHit || prim == kAnyPrim) return prim;
+  return uint32_t(offsets_[instance] + prim);
 }
 
 }  // namespace rtsim

@@ -81,9 +81,15 @@ class FlatTriangles {
     uint32_t instance = 0, prim = 0;
   };
   Place locate(uint64_t tri) const;
+  // The flat id of triangle prim of an instance's mesh (prim itself for a flat mesh, for kNoHit,
+  // kAnyPrim or no instance).
+  uint32_t flat_id(uint32_t instance, uint32_t prim) const;
   // A hit that names an instance and a triangle of its mesh (Embree's instances, the two-level
   // model), with prim made the flat id; other hits as they are.
-  Hit flat(Hit hit) const;
+  Hit flat(Hit hit) const {
+    hit.prim = flat_id(hit.instance, hit.prim);
+    return hit;
+  }
 
  private:
   const TriangleMesh* flat_ = nullptr;

@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
@@ -263,14 +264,10 @@ std::string format_values(const float* v, int n) {
   return "(" + text + ")";
 }
 
-// The rotation of a quaternion (x, y, z, w), normalized first: quantized ones are only close to
-// unit length.
+// The rotation of a glTF quaternion (x, y, z, w), normalized first: quantized ones are only
+// close to unit length.
 glm::mat3 rotation_matrix(const float* q) {
-  glm::vec4 u = glm::normalize(glm::vec4(q[0], q[1], q[2], q[3]));
-  float x = u.x, y = u.y, z = u.z, w = u.w;
-  return glm::mat3(1 - 2 * (y * y + z * z), 2 * (x * y + z * w), 2 * (x * z - y * w),
-                   2 * (x * y - z * w), 1 - 2 * (x * x + z * z), 2 * (y * z + x * w),
-                   2 * (x * z + y * w), 2 * (y * z - x * w), 1 - 2 * (x * x + y * y));
+  return glm::mat3_cast(glm::normalize(glm::quat(q[3], q[0], q[1], q[2])));
 }
 
 // EXT_mesh_gpu_instancing, which assimp 5.2 ignores: the instances of a node's mesh, one per

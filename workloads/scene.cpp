@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 
 #include <fmt/core.h>
 
@@ -61,8 +60,8 @@ void check_indices(const Scene& scene, const TriangleMesh& mesh, const std::stri
                           "vertex index " + std::to_string(index) + " out of range");
 }
 
-// A scene that keeps only its instances: checked and bounded in world space, vertex by vertex,
-// without a flattened copy.
+// A scene that keeps only its instances: checked and bounded in world space without a
+// flattened copy.
 void finalize_instanced(Scene& scene) {
   const InstancedMesh& g = scene.instanced;
   std::string problem = instancing_problem(g);
@@ -91,7 +90,6 @@ void finalize_instanced(Scene& scene) {
                           "position is NaN or Inf");
     mesh_boxes.push_back(mesh_bounds(g.meshes[m]));
   }
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
   for (size_t i = 0; i < g.instances.size(); ++i) {
     const Instance& inst = g.instances[i];
     const std::vector<glm::vec3>& positions = g.meshes[inst.mesh].positions;
@@ -102,16 +100,8 @@ void finalize_instanced(Scene& scene) {
         if (std::string problem = vertex_problem(inst.to_world.point(positions[v]));
             !problem.empty())
           throw_input_error(scene.source, fmt::format("instance {} vertex {}", i, v), problem);
-    for (const glm::vec3& object : positions) {
-      glm::vec3 p = inst.to_world.point(object);
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
   }
-  Bounds bounds;
-  bounds.lo = lo;
-  bounds.hi = hi;
-  scene.bounds = bounds;
+  scene.bounds = FlatTriangles(g).bounds();
   scene.fingerprint = instanced_fingerprint(g);
 }
 

@@ -24,10 +24,7 @@ bool Verifier::judge(const Ray& ray, const TraversalState& state, uint64_t index
   const FlatTriangles& triangles = arbiter_.triangles();
   model = triangles.flat(model);
   embree = triangles.flat(embree);
-  Hit reached;
-  reached.prim = state.prim;
-  reached.instance = state.hit_instance;
-  uint32_t model_prim = triangles.flat(reached).prim;
+  uint32_t model_prim = triangles.flat_id(state.hit_instance, state.prim);
   float model_t = std::ldexp(state.t_hit, state.ray.t_exponent);
   int type = static_cast<int>(ray.type);
   report_.rays++;
