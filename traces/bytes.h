@@ -54,6 +54,8 @@ public:
   }
   bool ok() const { return ok_; }
   size_t pos() const { return pos_; }
+  size_t left() const { return size_ - pos_; }
+  void fail() { ok_ = false; }
 
 private:
   const uint8_t* data_;

@@ -2,14 +2,17 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
+#include "traces/host_clock.h"
+
 namespace rtsim {
 namespace {
 
-RTCRay to_rtc(const Ray& r) {
+RTCRay to_rtc(const Ray& r, uint32_t mask) {
   RTCRay out;
   out.org_x = r.org.x;
   out.org_y = r.org.y;
@@ -20,7 +23,7 @@ RTCRay to_rtc(const Ray& r) {
   out.tnear = r.tmin;
   out.tfar = r.tmax;
   out.time = 0.0f;
-  out.mask = 0xffffffffu;
+  out.mask = mask;
   out.id = 0;
   out.flags = 0;
   return out;
@@ -58,33 +61,71 @@ void EmbreeScene::open_device(int threads) {
 
 EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads) {
   open_device(threads);
+  ray_masks_.fill(~0u);
   scene_ = mesh_scene(device_, mesh);
 }
 
-EmbreeScene::EmbreeScene(const InstancedMesh& geometry, int threads) {
+EmbreeScene::EmbreeScene(const InstancedMesh& geometry, int threads)
+    : EmbreeScene(geometry, InstanceSettings{}, threads) {}
+
+EmbreeScene::EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& settings,
+                         int threads, uint32_t still_frames)
+    : still_frames_(still_frames) {
   open_device(threads);
+  for (int t = 0; t < kRayTypeCount; ++t) ray_masks_[size_t(t)] = settings.ray_masks[size_t(t)];
   for (const TriangleMesh& mesh : geometry.meshes)
     mesh_scenes_.push_back(mesh_scene(device_, mesh));
-  scene_ = rtcNewScene(device_);
-  rtcSetSceneFlags(scene_, RTC_SCENE_FLAG_ROBUST);
-  rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
-  for (const Instance& instance : geometry.instances) {
-    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
-    rtcSetGeometryInstancedScene(geom, mesh_scenes_[instance.mesh]);
-    float xfm[12];  // 3x4 column major: the linear part's columns, then the offset
-    for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = instance.to_world.linear[c][r];
-    for (int r = 0; r < 3; ++r) xfm[9 + r] = instance.to_world.offset[r];
-    rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(scene_, geom);  // geometry ids in instance order: id = instance index
-    rtcReleaseGeometry(geom);
+  std::vector<RTCGeometry> geometries(geometry.instances.size(), nullptr);
+  std::vector<bool> moving(geometry.instances.size(), false);
+  for (const auto& [instance, motion] : settings.moving) moving[instance] = true;
+  std::vector<bool> all(geometry.instances.size(), true);
+  uint32_t frames = settings.animated() ? settings.frames : 1;
+  for (uint32_t f = 0; f < frames; ++f) {
+    double start = wall_seconds();
+    RTCScene top = build_top(instances_at(geometry.instances, settings, f), geometries,
+                             f == 0 ? all : moving);
+    top_seconds_.push_back(wall_seconds() - start);
+    (f == 0 ? scene_ : frame_scenes_.emplace_back()) = top;
   }
-  rtcCommitScene(scene_);
+  for (RTCGeometry geom : geometries) rtcReleaseGeometry(geom);
+}
+
+RTCScene EmbreeScene::build_top(const std::vector<Instance>& instances,
+                                std::vector<RTCGeometry>& geometries,
+                                const std::vector<bool>& rebuild) {
+  RTCScene top = rtcNewScene(device_);
+  rtcSetSceneFlags(top, RTC_SCENE_FLAG_ROBUST);
+  rtcSetSceneBuildQuality(top, RTC_BUILD_QUALITY_HIGH);
+  for (size_t i = 0; i < instances.size(); ++i) {
+    const Instance& instance = instances[i];
+    if (rebuild[i]) {
+      if (geometries[i]) rtcReleaseGeometry(geometries[i]);
+      RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
+      rtcSetGeometryInstancedScene(geom, mesh_scenes_[instance.mesh]);
+      float xfm[12];  // 3x4 column major: the linear part's columns, then the offset
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) xfm[c * 3 + r] = instance.to_world.linear[c][r];
+      for (int r = 0; r < 3; ++r) xfm[9 + r] = instance.to_world.offset[r];
+      rtcSetGeometryTransform(geom, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+      rtcSetGeometryMask(geom, instance.mask);
+      rtcCommitGeometry(geom);
+      geometries[i] = geom;
+    }
+    rtcAttachGeometry(top, geometries[i]);  // geometry ids in instance order: id = instance index
+  }
+  rtcCommitScene(top);
+  return top;
+}
+
+RTCScene EmbreeScene::scene_of(const Ray& ray) const {
+  if (frame_scenes_.empty() || ray.frame <= still_frames_) return scene_;
+  size_t f = std::min<size_t>(ray.frame - still_frames_, frame_scenes_.size());
+  return frame_scenes_[f - 1];
 }
 
 EmbreeScene::~EmbreeScene() {
   if (scene_) rtcReleaseScene(scene_);
+  for (RTCScene scene : frame_scenes_) rtcReleaseScene(scene);
   for (RTCScene scene : mesh_scenes_) rtcReleaseScene(scene);
   if (device_) rtcReleaseDevice(device_);
 }
@@ -93,11 +134,11 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh;
-  rh.ray = to_rtc(ray);
+  rh.ray = to_rtc(ray, ray_masks_[size_t(ray.type)]);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_, &context, &rh);
+  rtcIntersect1(scene_of(ray), &context, &rh);
   Hit hit;
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
     hit.t = rh.ray.tfar;
@@ -112,8 +153,8 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
 bool EmbreeScene::occluded(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay r = to_rtc(ray);
-  rtcOccluded1(scene_, &context, &r);
+  RTCRay r = to_rtc(ray, ray_masks_[size_t(ray.type)]);
+  rtcOccluded1(scene_of(ray), &context, &r);
   return r.tfar == -std::numeric_limits<float>::infinity();
 }
 

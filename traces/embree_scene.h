@@ -2,15 +2,17 @@
 // pipeline passes (workloads/) and checks every ray of the model (model/verify/).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include <vector>
 
-#include "traces/instances.h"
+#include "traces/instance_settings.h"
 #include "traces/ray.h"
 
 struct RTCDeviceTy;
 struct RTCSceneTy;
+struct RTCGeometryTy;
 
 namespace rtsim {
 
@@ -22,6 +24,12 @@ class EmbreeScene {
   // instancing); hits name the instance and the triangle of its mesh. Call
   // instancing_problem() first: this trusts the geometry.
   explicit EmbreeScene(const InstancedMesh& geometry, int threads = 0);
+  // Two levels under a workload's instance settings: instance masks are Embree's geometry masks
+  // and each ray carries its type's inclusion mask; with motion, one top level per frame (the
+  // unique meshes shared) and a ray is traced in its frame's. The first still_frames frames
+  // stand at frame 0's pose (a pipeline's warm-up frames); frames past the last use the last.
+  EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& settings, int threads = 0,
+              uint32_t still_frames = 0);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -32,12 +40,24 @@ class EmbreeScene {
   Hit intersect(const Ray& ray) const;  // closest hit regardless of ray.query
   bool occluded(const Ray& ray) const;  // any hit in [tmin, tmax]
 
+  // Host seconds Embree took to build each frame's top level (one entry without motion).
+  const std::vector<double>& top_build_seconds() const { return top_seconds_; }
+
  private:
   void open_device(int threads);
+  // A top level over instances; reuses `shared` geometries where non-null (static instances).
+  RTCSceneTy* build_top(const std::vector<Instance>& instances,
+                        std::vector<RTCGeometryTy*>& geometries,
+                        const std::vector<bool>& rebuild);
+  RTCSceneTy* scene_of(const Ray& ray) const;
 
   RTCDeviceTy* device_ = nullptr;
-  RTCSceneTy* scene_ = nullptr;
-  std::vector<RTCSceneTy*> mesh_scenes_;  // instanced: the bottom level
+  RTCSceneTy* scene_ = nullptr;           // one level, or frame 0's top level
+  std::vector<RTCSceneTy*> frame_scenes_;  // with motion: frames 1.. (top levels)
+  std::vector<RTCSceneTy*> mesh_scenes_;   // instanced: the bottom level
+  std::array<uint32_t, kRayTypeCount> ray_masks_;
+  uint32_t still_frames_ = 0;
+  std::vector<double> top_seconds_;
 };
 
 }  // namespace rtsim

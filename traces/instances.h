@@ -32,9 +32,13 @@ Bounds world_box(const Bounds& object, const Transform& to_world);
 // The inverse transform (world to object); the caller checks invertibility first.
 Transform inverse(const Transform& t);
 
+// An instance is visible to a ray when (mask & the ray type's inclusion mask) != 0.
+constexpr uint8_t kAllInstances = 0xFF;
+
 struct Instance {
   uint32_t mesh = 0;  // index into InstancedMesh::meshes
   Transform to_world;
+  uint8_t mask = kAllInstances;  // visibility mask (traces/instance_settings.h)
 };
 
 struct InstancedMesh {

@@ -8,12 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "traces/instance_settings.h"
 #include "traces/output_file.h"
 #include "traces/ray.h"
 
 namespace rtsim {
 
-constexpr uint32_t kStreamVersion = 1;
+constexpr uint32_t kStreamVersion = 2;  // also reads version 1 (no instance settings)
 constexpr uint32_t kDefaultChunkRays = 16384;
 constexpr uint32_t kMaxChunkRays = 1u << 20;
 constexpr size_t kRayRecordBytes = 44;
@@ -28,6 +29,8 @@ struct StreamHeader {
   uint32_t width = 0, height = 0;  // pixel grid that Ray::pixel indexes
   uint32_t chunk_rays = kDefaultChunkRays;
   std::array<uint64_t, kRayTypeCount> counts{};  // rays per RayType
+  // The workload's masks and motion (settings.frames is frame_count).
+  InstanceSettings instances;
 
   uint64_t total_rays() const;
 };

@@ -28,10 +28,75 @@ std::vector<uint8_t> encode_header(const StreamHeader& h) {
   w.put_string(h.scene_source);
   w.put_string(h.workload);
   w.put_string(h.generator);
+  encode_instance_settings(h.instances, out);
   auto total = static_cast<uint32_t>(out.size() + 4);
   std::memcpy(out.data() + 12, &total, 4);
   w.put(crc32(out.data(), out.size()));
   return out;
+}
+
+void encode_instance_settings(const InstanceSettings& s, std::vector<uint8_t>& out) {
+  ByteWriter w(out);
+  auto put_vec = [&](const glm::vec3& v) {
+    for (int i = 0; i < 3; ++i) w.put(v[i]);
+  };
+  for (uint8_t m : s.ray_masks) w.put(m);
+  w.put(uint32_t(s.masks.size()));
+  for (const auto& [instance, mask] : s.masks) {
+    w.put(instance);
+    w.put(mask);
+  }
+  w.put(uint32_t(s.motions.size()));
+  for (const Motion& m : s.motions) {
+    put_vec(m.axis);
+    w.put(uint32_t(m.keys.size()));
+    for (const MotionKey& k : m.keys) {
+      put_vec(k.translate);
+      w.put(k.rotate);
+      w.put(k.scale);
+    }
+  }
+  w.put(uint32_t(s.moving.size()));
+  for (const auto& [instance, motion] : s.moving) {
+    w.put(instance);
+    w.put(motion);
+  }
+}
+
+bool decode_instance_settings(ByteReader& in, InstanceSettings& s) {
+  auto get_vec = [&] {
+    glm::vec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = in.get<float>();
+    return v;
+  };
+  // A count is trusted only as far as the bytes left could hold it.
+  auto count = [&](size_t item_bytes) {
+    auto n = in.get<uint32_t>();
+    if (in.ok() && n > in.left() / item_bytes) in.fail();
+    return in.ok() ? n : 0;
+  };
+  for (uint8_t& m : s.ray_masks) m = in.get<uint8_t>();
+  s.masks.resize(count(5));
+  for (auto& [instance, mask] : s.masks) {
+    instance = in.get<uint32_t>();
+    mask = in.get<uint8_t>();
+  }
+  s.motions.resize(count(16));
+  for (Motion& m : s.motions) {
+    m.axis = get_vec();
+    m.keys.resize(count(20));
+    for (MotionKey& k : m.keys) {
+      k.translate = get_vec();
+      k.rotate = in.get<float>();
+      k.scale = in.get<float>();
+    }
+  }
+  s.moving.resize(count(8));
+  for (auto& [instance, motion] : s.moving) {
+    instance = in.get<uint32_t>();
+    motion = in.get<uint32_t>();
+  }
+  return in.ok();
 }
 
 void encode_ray(const Ray& r, std::vector<uint8_t>& out) {

@@ -28,8 +28,8 @@ void RayStreamReader::read_header() {
   uint32_t version, header_bytes;
   std::memcpy(&version, head.data() + 8, 4);
   std::memcpy(&header_bytes, head.data() + 12, 4);
-  if (version != kStreamVersion)
-    fail(8, "stream version " + std::to_string(version) + " is not supported (this rtsim reads " +
+  if (version != 1 && version != kStreamVersion)
+    fail(8, "stream version " + std::to_string(version) + " is not supported (this rtsim reads 1 to " +
                 std::to_string(kStreamVersion) + ")");
   if (header_bytes < kHeaderFixedBytes + 16 || header_bytes > kMaxHeaderBytes)
     fail(12, "header size " + std::to_string(header_bytes) + " is out of range");
@@ -51,8 +51,14 @@ void RayStreamReader::read_header() {
   header_.scene_source = in.get_string();
   header_.workload = in.get_string();
   header_.generator = in.get_string();
+  size_t settings_at = 16 + in.pos();
+  if (version >= 2 && !decode_instance_settings(in, header_.instances))
+    fail(settings_at, "instance settings do not fit the header size");
   if (!in.ok() || in.pos() != header_bytes - 20)
     fail(16, "header fields do not fit the header size");
+  header_.instances.frames = header_.frame_count;
+  if (std::string problem = settings_problem(header_.instances, kNoHit); !problem.empty())
+    fail(settings_at, "instance settings: " + problem);
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
     fail(44, "chunk size " + std::to_string(header_.chunk_rays) + " is out of range");
   chunk_.resize(4 + size_t(header_.chunk_rays) * kRayRecordBytes + 4);

@@ -6,6 +6,7 @@
 
 #include "model/bvh/binned_sah.h"
 #include "traces/error.h"
+#include "traces/host_clock.h"
 
 namespace rtsim {
 namespace {
@@ -27,6 +28,7 @@ void encode_instance_record(const InstanceRecord& r, uint8_t* out) {
   std::memcpy(out, xfm, sizeof xfm);
   std::memcpy(out + 48, &r.blas, 4);
   std::memcpy(out + 52, &r.instance, 4);
+  out[56] = r.mask;
 }
 
 // Treelets a level numbers (the ids its nodes carry may exceed the count formed).
@@ -40,18 +42,27 @@ uint32_t local_treelets(const BvhImage& image) {
 
 std::vector<const BvhImage*> BvhView::levels() const {
   std::vector<const BvhImage*> out{top};
+  if (frame_tops)
+    for (const BvhImage& t : *frame_tops) out.push_back(&t);
   if (bottom)
     for (const BvhImage& b : *bottom) out.push_back(&b);
   return out;
 }
 
 uint32_t BvhView::treelet_count() const {
-  const BvhImage& last = bottom ? bottom->back() : *top;
+  const BvhImage& last = *levels().back();
   return last.treelet_base + local_treelets(last);
 }
 
-uint32_t BvhView::root_treelet() const {
-  return node_treelet(*top, 0);
+uint32_t BvhView::root_treelet(uint32_t frame) const {
+  return node_treelet(top_of(frame), 0);
+}
+
+std::vector<uint32_t> BvhView::root_treelets() const {
+  std::vector<uint32_t> roots{root_treelet(0)};
+  if (frame_tops)
+    for (uint32_t f = 1; f <= frame_tops->size(); ++f) roots.push_back(root_treelet(f));
+  return roots;
 }
 
 uint64_t BvhView::end_address() const {
@@ -60,17 +71,20 @@ uint64_t BvhView::end_address() const {
 }
 
 uint64_t BvhView::top_end_address() const {
-  return bottom ? top->triangle_base + top->triangles.size() : top->node_base;
+  const BvhImage& last_top = frame_tops ? frame_tops->back() : *top;
+  return bottom ? last_top.triangle_base + last_top.triangles.size() : top->node_base;
 }
 
 uint64_t TwoLevelBvh::total_bytes() const {
   uint64_t bytes = top.total_bytes();
+  for (const BvhImage& t : frame_tops) bytes += t.total_bytes();
   for (const BvhImage& b : bottom) bytes += b.total_bytes();
   return bytes;
 }
 
 uint64_t TwoLevelBvh::node_count() const {
   uint64_t nodes = top.node_count;
+  for (const BvhImage& t : frame_tops) nodes += t.node_count;
   for (const BvhImage& b : bottom) nodes += b.node_count;
   return nodes;
 }
@@ -92,6 +106,7 @@ InstanceRecord read_instance_record(const BvhImage& top, uint32_t position) {
   for (int row = 0; row < 3; ++row) r.to_object.offset[row] = xfm[9 + row];
   std::memcpy(&r.blas, in + 48, 4);
   std::memcpy(&r.instance, in + 52, 4);
+  r.mask = in[56];
   return r;
 }
 
@@ -104,7 +119,15 @@ bool wants_two_levels(const BvhConfig& config, const InstancedMesh& geometry) {
 }
 
 TwoLevelBvh build_scene_levels(const TriangleMesh& flat, InstancedMesh& instances,
-                               const BvhConfig& config, const BvhBuildStep& on_step) {
+                               const BvhConfig& config, const BvhBuildStep& on_step,
+                               const InstanceSettings& settings) {
+  if (!settings.empty()) {
+    if (config.instancing == Instancing::Flatten)
+      throw_input_error("bvh.instancing", "",
+                        "\"flatten\" cannot keep the workload's instance masks or motion (the "
+                        "stream's header sets them); use \"auto\" or \"two_level\"");
+    return build_two_level_bvh(instances, config, on_step, settings);
+  }
   if (!wants_two_levels(config, instances)) {
     TwoLevelBvh out;
     out.top = build_bvh_image(flat, config, on_step);
@@ -117,35 +140,61 @@ TwoLevelBvh build_scene_levels(const TriangleMesh& flat, InstancedMesh& instance
   return build_two_level_bvh(instances, config, on_step);
 }
 
-TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& config,
-                                const BvhBuildStep& on_step) {
-  std::string problem = validate(config);
-  if (!problem.empty()) throw_input_error("bvh config", "", problem);
-  problem = instancing_problem(geometry);
-  if (!problem.empty()) throw_input_error("instances", "", problem);
-  TwoLevelBvh out;
-  // Top level: one instance per leaf, so that each leaf is one transform.
-  BvhConfig top_config = config;
-  top_config.max_leaf_size = 1;
-  std::vector<Bounds> mesh_boxes;
-  for (const TriangleMesh& mesh : geometry.meshes) mesh_boxes.push_back(mesh_bounds(mesh));
+namespace {
+
+// One frame's top level at `base`: one instance per leaf, so that each leaf is one transform.
+BvhImage build_top_level(const std::vector<Instance>& instances,
+                         const std::vector<Bounds>& mesh_boxes, BvhConfig config, uint64_t base,
+                         const BvhBuildStep& on_step, TopLevelBuild& cost) {
+  double start = wall_seconds();
+  config.max_leaf_size = 1;
+  config.node_base = base;
   std::vector<Bounds> boxes;
   std::vector<InstanceRecord> records;
-  for (size_t i = 0; i < geometry.instances.size(); ++i) {
-    const Instance& inst = geometry.instances[i];
+  for (size_t i = 0; i < instances.size(); ++i) {
+    const Instance& inst = instances[i];
     boxes.push_back(world_box(mesh_boxes[inst.mesh], inst.to_world));
-    records.push_back({inverse(inst.to_world), inst.mesh, uint32_t(i)});
+    records.push_back({inverse(inst.to_world), inst.mesh, uint32_t(i), inst.mask});
   }
-  Bvh2 top2 = build_binned_sah(boxes, top_config);
+  Bvh2 top2 = build_binned_sah(boxes, config);
   LeafRecords instance_records{kInstanceRecordBytes, [&](uint32_t prim, uint8_t* out) {
                                  encode_instance_record(records[prim], out);
                                }};
-  out.top = encode_bvh_image(top2, top_config, instance_records, on_step);
+  BvhImage top = encode_bvh_image(top2, config, instance_records, on_step);
   Bounds world;
   for (const Bounds& b : boxes) world.grow(b);
-  set_scene_bounds(world, out.top);
-  // Bottom levels, one after another in the address space.
-  uint64_t next = image_end(out.top);
+  set_scene_bounds(world, top);
+  cost = {top.node_count, top.total_bytes(), wall_seconds() - start};
+  return top;
+}
+
+}  // namespace
+
+TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& config,
+                                const BvhBuildStep& on_step, const InstanceSettings& settings) {
+  std::string problem = validate(config);
+  if (!problem.empty()) throw_input_error("bvh config", "", problem);
+  problem = instancing_problem(geometry);
+  if (problem.empty()) problem = settings_problem(settings, geometry.instances.size());
+  if (!problem.empty()) throw_input_error("instances", "", problem);
+  TwoLevelBvh out;
+  out.ray_masks = settings.ray_masks;
+  std::vector<Bounds> mesh_boxes;
+  for (const TriangleMesh& mesh : geometry.meshes) mesh_boxes.push_back(mesh_bounds(mesh));
+  // Top levels, frame by frame, then the bottom levels, one after another in the address space.
+  uint32_t frames = settings.animated() ? settings.frames : 1;
+  uint64_t next = config.node_base;
+  for (uint32_t f = 0; f < frames; ++f) {
+    BvhImage top = build_top_level(instances_at(geometry.instances, settings, f), mesh_boxes,
+                                   config, next, on_step, out.top_builds.emplace_back());
+    next = image_end(top);
+    if (f == 0) {
+      out.top = std::move(top);
+    } else {
+      top.treelet_base = BvhView(out).treelet_count();
+      out.frame_tops.push_back(std::move(top));
+    }
+  }
   for (const TriangleMesh& mesh : geometry.meshes) {
     BvhConfig bottom_config = config;
     bottom_config.node_base = next;

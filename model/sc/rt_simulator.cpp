@@ -58,7 +58,7 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
   RaySupplyIf* supply = dispatch_.get();
   if (config.rt.mode == TraversalMode::Treelet) {
     treelets_ = std::make_unique<TreeletQueueModule>(
-        "treelet_queues", config.treelet_queues, bvh.treelet_count(), bvh.root_treelet(), pool_,
+        "treelet_queues", config.treelet_queues, bvh.treelet_count(), bvh.root_treelets(), pool_,
         ray_state_bytes(config.rt.stack, bvh.two_level()));
     treelets_->in.bind(dispatch_->out);
     supply = treelets_.get();

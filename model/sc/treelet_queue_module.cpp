@@ -30,14 +30,14 @@ class TreeletQueueModule::Notifying : public RaySupply {
 
 TreeletQueueModule::TreeletQueueModule(sc_core::sc_module_name name,
                                        const TreeletQueueConfig& config, uint32_t treelets,
-                                       uint32_t root_treelet, const RayContextPool& pool,
+                                       std::vector<uint32_t> root_treelets, const RayContextPool& pool,
                                        uint32_t state_bytes)
     : sc_module(name),
       in("in"),
       out("out"),
       config_(config),
       treelets_(treelets),
-      root_(root_treelet),
+      roots_(std::move(root_treelets)),
       pool_(pool),
       state_bytes_(state_bytes),
       work_("work") {
@@ -46,7 +46,7 @@ TreeletQueueModule::TreeletQueueModule(sc_core::sc_module_name name,
 
 void TreeletQueueModule::end_of_elaboration() {
   upstream_ = &in->supply();
-  scheduler_ = std::make_unique<TreeletScheduler>(config_, treelets_, root_, *upstream_, pool_,
+  scheduler_ = std::make_unique<TreeletScheduler>(config_, treelets_, roots_, *upstream_, pool_,
                                                   state_bytes_);
   notifying_ = std::make_unique<Notifying>(*scheduler_, work_);
 }

@@ -19,7 +19,7 @@ class TreeletQueueModule : public sc_core::sc_module, public RaySupplyIf {
   sc_core::sc_export<RaySupplyIf> out;
 
   TreeletQueueModule(sc_core::sc_module_name name, const TreeletQueueConfig& config,
-                     uint32_t treelets, uint32_t root_treelet, const RayContextPool& pool,
+                     uint32_t treelets, std::vector<uint32_t> root_treelets, const RayContextPool& pool,
                      uint32_t state_bytes);
 
   RaySupply& supply() override;
@@ -32,7 +32,8 @@ class TreeletQueueModule : public sc_core::sc_module, public RaySupplyIf {
   void end_of_elaboration() override;
 
   TreeletQueueConfig config_;
-  uint32_t treelets_, root_;
+  uint32_t treelets_;
+  std::vector<uint32_t> roots_;
   const RayContextPool& pool_;
   uint32_t state_bytes_;
   RaySupply* upstream_ = nullptr;

@@ -158,7 +158,7 @@ RtCore::Next RtCore::peek(const TraversalState& s) const {
   // test step() makes, passing back to world space as it does; check_kind() catches a
   // disagreement).
   float t_hit = s.t_hit;
-  bool top = s.level == traversal_.bvh().top;
+  bool top = s.level == s.top;
   for (size_t i = s.stack.size(); i-- > 0;) {
     const StackEntry& e = s.stack[i];
     if (e.count == kLeaveInstance) {
@@ -238,7 +238,7 @@ void RtCore::install(RayContext* ray, uint32_t slot, Cycle now) {
     traversal_.begin(ray->state, ray->ray);
     ray->state.accesses.clear();
     stack_.start(*ray);
-    ray->entry_treelet.assign(1, traversal_.bvh().root_treelet());
+    ray->entry_treelet.assign(1, traversal_.bvh().root_treelet(ray->ray.frame));
     ray->begun = true;
     ray->ready += config_.setup_latency;
     stats_.rays_started++;

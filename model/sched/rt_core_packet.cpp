@@ -78,7 +78,7 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     check_kind(step, lane_next_[lane]);
     ++count;
     count_step(step.kind, ray.state);
-    step_tests_[base + lane] = step.tests;
+    step_tests_[base + lane] = step.tests ? step.tests : kNoTests;
     if (step.access_count > 0) {
       uint64_t addr = ray.state.accesses[step.first_access].address;
       if (std::find(warp_reads_.begin(), warp_reads_.end(), addr) == warp_reads_.end()) {

@@ -32,7 +32,7 @@ void RtCore::count_step(StepKind kind, const TraversalState& after) {
   switch (kind) {
     case StepKind::Node:
       stats_.node_steps++;
-      if (after.level == traversal_.bvh().top && traversal_.bvh().two_level())
+      if (after.level == after.top && traversal_.bvh().two_level())
         stats_.top_node_steps++;
       break;
     case StepKind::Leaf: stats_.leaf_steps++; break;
@@ -219,7 +219,7 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   count_step(step.kind, ray.state);
   settle(ray, next.depth, visited_treelet, now);
   ray.state.accesses.clear();
-  step_tests_[slot] = step.tests;
+  step_tests_[slot] = step.tests ? step.tests : kNoTests;  // none: a masked instance
   step_kind_[slot] = step.kind;
   if (!wait_reads(slot, Wait::Data, now)) test_step(slot, data);
 }

@@ -15,10 +15,10 @@ std::string treelet_queue_config_problem(const TreeletQueueConfig& c) {
 }
 
 TreeletScheduler::TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets,
-                                   uint32_t root_treelet, RaySupply& upstream,
+                                   std::vector<uint32_t> root_treelets, RaySupply& upstream,
                                    const RayContextPool& pool, uint32_t state_bytes)
     : config_(config),
-      root_(root_treelet),
+      roots_(std::move(root_treelets)),
       upstream_(upstream),
       pool_(pool),
       policy_(make_treelet_policy(config.policy, treelets)),
@@ -49,7 +49,8 @@ size_t TreeletScheduler::take(uint32_t unit, Cycle now, size_t max, std::vector<
   if (room > 0 && !upstream_.exhausted() && buffer_.admits_fresh()) {
     size_t first = out.size();
     size_t given = upstream_.take(unit, now, std::min(max, room), out);
-    for (size_t i = first; i < out.size(); ++i) out[i]->treelet = root_;
+    for (size_t i = first; i < out.size(); ++i)
+      out[i]->treelet = roots_[std::min<size_t>(out[i]->ray.frame, roots_.size() - 1)];
     if (given > 0) {
       executing_ += given;
       stats_.visits++;

@@ -52,7 +52,7 @@ class TreeletScheduler : public RaySupply {
  public:
   // upstream: the dispatcher (fresh rays, retirement); pool: the contexts it hands out;
   // state_bytes: one ray's state in the ray buffer.
-  TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets, uint32_t root_treelet,
+  TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets, std::vector<uint32_t> root_treelets,
                    RaySupply& upstream, const RayContextPool& pool, uint32_t state_bytes);
 
   size_t take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) override;
@@ -72,7 +72,7 @@ class TreeletScheduler : public RaySupply {
   void set_length(uint32_t treelet, uint32_t length);
 
   TreeletQueueConfig config_;
-  uint32_t root_;
+  std::vector<uint32_t> roots_;  // per frame (animated top levels); the last for later ones
   RaySupply& upstream_;
   const RayContextPool& pool_;
   std::unique_ptr<TreeletPolicy> policy_;

@@ -30,15 +30,17 @@ void record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind
 }  // namespace
 
 TraversalUnit::TraversalUnit(BvhView bvh, TraversalConfig config)
-    : bvh_(bvh), image_(*bvh.top), config_(config) {}
+    : bvh_(bvh), config_(config) {}
 
 void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
-  s.ray = prepare_ray(ray, image_.scene_extent, config_.box_padding);
+  s.top = &bvh_.top_of(ray.frame);
+  s.mask = bvh_.ray_mask(ray.type);
+  s.ray = prepare_ray(ray, s.top->scene_extent, config_.box_padding);
   s.query = ray.query;
   s.t_hit = s.ray.tmax;
   s.prim = kNoHit;
   s.u = s.v = 0.0f;
-  s.level = &image_;
+  s.level = s.top;
   s.instance = s.hit_instance = kNoHit;
   s.stack.clear();
   s.stack.push_back({0, 0, s.ray.tmin});
@@ -59,7 +61,7 @@ StepResult TraversalUnit::step(TraversalState& s) const {
     }
     if (entry.tnear > s.t_hit * kSlabFarGrowth) continue;
     if (entry.count == 0) return visit_node(s, entry);
-    return bvh_.two_level() && s.level == &image_ ? visit_instance(s, entry) : visit_leaf(s, entry);
+    return bvh_.two_level() && s.level == s.top ? visit_instance(s, entry) : visit_leaf(s, entry);
   }
   s.done = true;
   return {};

@@ -10,7 +10,9 @@
 // Two levels (model/bvh/two_level.h): a top-level leaf is an instance step: one instance record
 // fetch and one pass of the transform unit, which moves the ray into the instance's object
 // space and enters its BLAS at the root; a marker below the BLAS's entries on the stack moves
-// the ray back when they are done. t keeps its meaning across levels (an affine map preserves
+// the ray back when they are done. An instance whose mask shares no bit with the ray type's
+// inclusion mask is skipped after its record is read, without a transform. Animated instances:
+// a ray starts in its frame's top level. t keeps its meaning across levels (an affine map preserves
 // the ray's parameter), so the closest hit so far bounds both.
 #pragma once
 
@@ -65,9 +67,11 @@ struct TraversalState {
   float t_hit = 0.0f;      // closest hit so far, or tmax (prepared-ray units)
   uint32_t prim = kNoHit;  // triangle hit (also for any-hit queries)
   float u = 0.0f, v = 0.0f;
-  // Two levels: the level walked now, the world-space ray while in a BLAS, the instance being
-  // walked and the one hit.
+  // Two levels: the level walked now and the ray's frame's top level, the world-space ray while
+  // in a BLAS, the instance being walked and the one hit, the ray type's inclusion mask.
   const BvhImage* level = nullptr;
+  const BvhImage* top = nullptr;
+  uint8_t mask = kAllInstances;
   PreparedRay world;
   float world_t_hit = 0.0f;  // the closest hit so far when the instance was entered
   uint32_t instance = kNoHit, hit_instance = kNoHit;
@@ -105,7 +109,6 @@ class TraversalUnit {
   // Two levels, in an instance: the closest hit so far in world units, as leaving it sets it.
   static float world_t_hit(const TraversalState& state);
 
-  const BvhImage& image() const { return image_; }  // the only level, or the top one
   const BvhView& bvh() const { return bvh_; }
   const TraversalConfig& config() const { return config_; }
 
@@ -116,7 +119,6 @@ class TraversalUnit {
   void leave_instance(TraversalState& state) const;
 
   BvhView bvh_;
-  const BvhImage& image_;  // *bvh_.top: the only level, or the top one
   TraversalConfig config_;
 };
 

@@ -9,13 +9,17 @@ namespace rtsim {
 StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& entry) const {
   StepResult out{StepKind::Instance, static_cast<uint32_t>(s.accesses.size()), 0, 1, 0};
   // Fetch the instance record.
-  s.counters.trav_instances++;
   if (config_.record_accesses) {
     s.accesses.push_back(
-        {image_.triangle_address(entry.index), kInstanceRecordBytes, AccessKind::Instance});
+        {s.top->triangle_address(entry.index), kInstanceRecordBytes, AccessKind::Instance});
     out.access_count = 1;
   }
-  InstanceRecord r = read_instance_record(image_, entry.index);
+  InstanceRecord r = read_instance_record(*s.top, entry.index);
+  if ((r.mask & s.mask) == 0) {
+    out.tests = 0;
+    return out;
+  }
+  s.counters.trav_instances++;
   const BvhImage& blas = (*bvh_.bottom)[r.blas];
   // Transform the ray into object space, in the world ray's t units, and enter the BLAS root;
   // the marker below its entries brings the ray back.
@@ -46,7 +50,7 @@ float TraversalUnit::world_t_hit(const TraversalState& s) {
 void TraversalUnit::leave_instance(TraversalState& s) const {
   s.t_hit = world_t_hit(s);
   s.ray = s.world;
-  s.level = &image_;
+  s.level = s.top;
   s.instance = kNoHit;
 }
 

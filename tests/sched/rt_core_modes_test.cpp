@@ -60,7 +60,7 @@ std::vector<test::Retired> run_mode(const Scene& scene, TraversalMode mode,
   TreeletQueueConfig tq;
   tq.max_rays = 64;
   tq.min_batch = 4;
-  TreeletScheduler queues(tq, scene.image.treelets.count, scene.image.node_treelet[0],
+  TreeletScheduler queues(tq, scene.image.treelets.count, {scene.image.node_treelet[0]},
                           supply.dispatcher, supply.pool, 100);
   RaySupply* feed = treelets ? static_cast<RaySupply*>(&queues) : &supply.dispatcher;
   RtCore core0(0, small_config(mode, policy, reorder), unit, memory0);
@@ -253,7 +253,7 @@ BufferRun run_buffer(const Scene& scene, const RayBufferConfig& buffer) {
   tq.buffer = buffer;
   RtCoreConfig config = small_config(TraversalMode::Treelet);
   uint32_t state_bytes = ray_state_bytes(config.stack);
-  TreeletScheduler queues(tq, scene.image.treelets.count, scene.image.node_treelet[0],
+  TreeletScheduler queues(tq, scene.image.treelets.count, {scene.image.node_treelet[0]},
                           supply.dispatcher, supply.pool, state_bytes);
   RtCore core0(0, config, unit, memory0), core1(1, config, unit, memory1);
   core0.set_supply(&queues);

@@ -91,7 +91,7 @@ PrefetchRun run_prefetching(const BvhImage& image, const std::vector<Ray>& rays,
   TreeletQueueConfig tq;
   tq.max_rays = 64;
   tq.min_batch = 4;
-  TreeletScheduler queues(tq, image.treelets.count, image.node_treelet[0], supply.dispatcher,
+  TreeletScheduler queues(tq, image.treelets.count, {image.node_treelet[0]}, supply.dispatcher,
                           supply.pool, 100);
   RtCoreConfig config;
   config.mode = mode;

@@ -14,7 +14,7 @@ struct Fixture {
         source(rays_),
         pool(config.max_rays),
         dispatcher({100.0, 0}, source, pool, nullptr),
-        queues(config, 16, 0, dispatcher, pool, 100) {}
+        queues(config, 16, {0}, dispatcher, pool, 100) {}
   std::vector<Ray> rays_;
   VectorRaySource source;
   RayContextPool pool;

@@ -37,7 +37,8 @@ TEST(StreamRoundTrip, EveryRayTypeBitForBit) {
 TEST(StreamRoundTrip, FileSizeIsExactlyHeaderChunksAndEndMarker) {
   std::string path = temp_path("size.rays");
   test::write_stream(path, sample_rays(100), 64);  // chunks of 64 and 36 rays
-  auto header_bytes = 112 + 3 * 4 + std::string("builtin:cornell").size() + 4 + 10 + 4;
+  // Fixed fields, three strings, empty instance settings (8 ray masks, three counts), CRC.
+  auto header_bytes = 112 + 3 * 4 + std::string("builtin:cornell").size() + 4 + 10 + 20 + 4;
   auto expected = header_bytes + (8 + 64 * kRayRecordBytes) + (8 + 36 * kRayRecordBytes) + 8;
   EXPECT_EQ(std::filesystem::file_size(path), expected);
   std::remove(path.c_str());
