@@ -5,6 +5,20 @@
 #include "traces/stream.h"
 
 namespace rtsim::app {
+namespace {
+
+void print_instance_settings(const InstanceSettings& s) {
+  fmt::print("instances    {} masked, {} moving ({} motions over the frames)\n", s.masks.size(),
+             s.moving.size(), s.motions.size());
+  std::string masks;
+  for (int t = 0; t < kRayTypeCount; ++t)
+    if (s.ray_masks[size_t(t)] != kAllInstances)
+      masks += fmt::format("{}{} 0x{:02x}", masks.empty() ? "" : ", ", ray_type_name(RayType(t)),
+                           s.ray_masks[size_t(t)]);
+  fmt::print("ray masks    {}\n", masks.empty() ? "every type sees every instance" : masks + " (the others 0xff)");
+}
+
+}  // namespace
 
 void add_trace_info_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("trace-info", "Print a ray stream's header and ray counts");
@@ -21,7 +35,7 @@ void add_trace_info_command(CLI::App& app, int& exit_code) {
       }
     }
     fmt::print("file         {}\n", *path);
-    fmt::print("version      {}\n", kStreamVersion);
+    fmt::print("version      {}\n", h.version);
     fmt::print("scene        {}\n", h.scene_source);
     fmt::print("fingerprint  {:016x}\n", h.scene_fingerprint);
     fmt::print("workload     {}\n", h.workload);
@@ -30,6 +44,7 @@ void add_trace_info_command(CLI::App& app, int& exit_code) {
     fmt::print("frames       {}\n", h.frame_count);
     fmt::print("resolution   {}x{}\n", h.width, h.height);
     fmt::print("chunk rays   {}\n", h.chunk_rays);
+    if (!h.instances.empty()) print_instance_settings(h.instances);
     fmt::print("rays         {}{}\n", h.total_rays(),
                *header_only ? " (not checked)" : " (all chunks checked)");
     for (int t = 0; t < kRayTypeCount; ++t)

@@ -69,8 +69,8 @@ EmbreeScene::EmbreeScene(const InstancedMesh& geometry, int threads)
     : EmbreeScene(geometry, InstanceSettings{}, threads) {}
 
 EmbreeScene::EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& settings,
-                         int threads, uint32_t still_frames)
-    : still_frames_(still_frames) {
+                         int threads)
+    : settings_(settings) {
   open_device(threads);
   for (int t = 0; t < kRayTypeCount; ++t) ray_masks_[size_t(t)] = settings.ray_masks[size_t(t)];
   for (const TriangleMesh& mesh : geometry.meshes)
@@ -118,9 +118,8 @@ RTCScene EmbreeScene::build_top(const std::vector<Instance>& instances,
 }
 
 RTCScene EmbreeScene::scene_of(const Ray& ray) const {
-  if (frame_scenes_.empty() || ray.frame <= still_frames_) return scene_;
-  size_t f = std::min<size_t>(ray.frame - still_frames_, frame_scenes_.size());
-  return frame_scenes_[f - 1];
+  uint32_t pose = frame_scenes_.empty() ? 0 : settings_.pose_frame(ray.frame);
+  return pose == 0 ? scene_ : frame_scenes_[pose - 1];
 }
 
 EmbreeScene::~EmbreeScene() {

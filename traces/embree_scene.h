@@ -26,10 +26,8 @@ class EmbreeScene {
   explicit EmbreeScene(const InstancedMesh& geometry, int threads = 0);
   // Two levels under a workload's instance settings: instance masks are Embree's geometry masks
   // and each ray carries its type's inclusion mask; with motion, one top level per frame (the
-  // unique meshes shared) and a ray is traced in its frame's. The first still_frames frames
-  // stand at frame 0's pose (a pipeline's warm-up frames); frames past the last use the last.
-  EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& settings, int threads = 0,
-              uint32_t still_frames = 0);
+  // unique meshes shared) and a ray is traced in its frame's (InstanceSettings::pose_frame).
+  EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& settings, int threads = 0);
   ~EmbreeScene();
   EmbreeScene(const EmbreeScene&) = delete;
   EmbreeScene& operator=(const EmbreeScene&) = delete;
@@ -56,7 +54,7 @@ class EmbreeScene {
   std::vector<RTCSceneTy*> frame_scenes_;  // with motion: frames 1.. (top levels)
   std::vector<RTCSceneTy*> mesh_scenes_;   // instanced: the bottom level
   std::array<uint32_t, kRayTypeCount> ray_masks_;
-  uint32_t still_frames_ = 0;
+  InstanceSettings settings_;
   std::vector<double> top_seconds_;
 };
 

@@ -4,6 +4,7 @@
 // scene as it was traced; the pipeline, the Embree reference and the model all apply it.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -37,10 +38,17 @@ struct InstanceSettings {
   std::vector<Motion> motions;
   std::vector<std::pair<uint32_t, uint32_t>> moving;  // (instance, motion), ascending
   uint32_t frames = 1;                                // what the keys spread over
+  // Frames before frame 0 that stand at frame 0's pose: a pipeline's warm-up frames, whose rays
+  // carry frame numbers counted from the first of them (0 in a stream, not recorded).
+  uint32_t still_frames = 0;
 
   // Nothing set: every ray sees every instance, nothing moves.
   bool empty() const;
   bool animated() const { return !moving.empty(); }
+  // The pose (0 .. frames - 1) a ray of `frame` sees.
+  uint32_t pose_frame(uint32_t frame) const {
+    return frame <= still_frames ? 0 : std::min(frame - still_frames, frames - 1);
+  }
   bool operator==(const InstanceSettings& o) const;
 };
 
@@ -55,7 +63,8 @@ Transform pose_at(const Transform& placed, const Motion& motion, uint32_t frame,
 // Sets the settings' masks on the instances (the others to 0xFF).
 void apply_masks(InstancedMesh& geometry, const InstanceSettings& settings);
 
-// The instances as they stand at `frame`: the moving ones posed, the others as placed.
+// The instances as they stand in pose `frame` (0 .. frames - 1): the moving ones posed, the
+// others as placed.
 std::vector<Instance> instances_at(const std::vector<Instance>& placed,
                                    const InstanceSettings& settings, uint32_t frame);
 

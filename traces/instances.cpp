@@ -9,6 +9,7 @@
 #include <glm/matrix.hpp>
 
 #include "traces/hash.h"
+#include "traces/instance_settings.h"
 
 namespace rtsim {
 
@@ -116,10 +117,15 @@ uint64_t instanced_fingerprint(const InstancedMesh& g) {
 FlatTriangles::FlatTriangles(const TriangleMesh& flat)
     : flat_(&flat), count_(flat.triangle_count()) {}
 
-FlatTriangles::FlatTriangles(const InstancedMesh& geometry)
+FlatTriangles::FlatTriangles(const InstancedMesh& geometry, const InstanceSettings* settings)
     : instances_(&geometry),
+      settings_(settings),
       offsets_(flat_offsets(geometry)),
-      count_(geometry.instanced_triangles()) {}
+      count_(geometry.instanced_triangles()) {
+  if (!settings || !settings->animated()) return;
+  motion_.assign(geometry.instances.size(), kNoHit);
+  for (const auto& [instance, motion] : settings->moving) motion_[instance] = motion;
+}
 
 FlatTriangles::Place FlatTriangles::locate(uint64_t tri) const {
   if (flat_) return {0, uint32_t(tri)};
@@ -127,14 +133,17 @@ FlatTriangles::Place FlatTriangles::locate(uint64_t tri) const {
   return {uint32_t(at - offsets_.begin()), uint32_t(tri - *at)};
 }
 
-std::array<glm::vec3, 3> FlatTriangles::corners(uint64_t tri) const {
+std::array<glm::vec3, 3> FlatTriangles::corners(uint64_t tri, uint32_t frame) const {
   if (flat_) return flat_->corners(tri);
   Place at = locate(tri);
   const Instance& inst = instances_->instances[at.instance];
   const TriangleMesh& mesh = instances_->meshes[inst.mesh];
-  return {inst.to_world.point(mesh.vertex(at.prim, 0)),
-          inst.to_world.point(mesh.vertex(at.prim, 1)),
-          inst.to_world.point(mesh.vertex(at.prim, 2))};
+  Transform to_world = inst.to_world;
+  if (!motion_.empty() && motion_[at.instance] != kNoHit)
+    to_world = pose_at(inst.to_world, settings_->motions[motion_[at.instance]],
+                       settings_->pose_frame(frame), settings_->frames);
+  return {to_world.point(mesh.vertex(at.prim, 0)), to_world.point(mesh.vertex(at.prim, 1)),
+          to_world.point(mesh.vertex(at.prim, 2))};
 }
 
 Bounds FlatTriangles::bounds() const {

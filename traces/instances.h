@@ -66,17 +66,21 @@ std::vector<uint64_t> flat_offsets(const InstancedMesh& geometry);
 // Fingerprint of instanced geometry: its unique meshes and its instances (mesh, transform).
 uint64_t instanced_fingerprint(const InstancedMesh& geometry);
 
+struct InstanceSettings;
+
 // World-space triangles by flat id (flatten()'s order), read from a flat mesh or transformed from
 // the instances on demand (bit for bit what flatten() writes), so that consumers of flat ids need
-// no flattened copy. Refers to the mesh or instances it is made from: they must outlive it.
+// no flattened copy; with settings that move instances, as they stand in a ray's frame. Refers
+// to the mesh, instances and settings it is made from: they must outlive it.
 class FlatTriangles {
  public:
   FlatTriangles() = default;                // no triangles
   FlatTriangles(const TriangleMesh& flat);  // NOLINT: a flat mesh is its own flat triangles
-  explicit FlatTriangles(const InstancedMesh& geometry);
+  explicit FlatTriangles(const InstancedMesh& geometry, const InstanceSettings* settings = nullptr);
 
   uint64_t count() const { return count_; }
-  std::array<glm::vec3, 3> corners(uint64_t tri) const;
+  // In frame `frame` (a ray's frame: InstanceSettings::pose_frame applies).
+  std::array<glm::vec3, 3> corners(uint64_t tri, uint32_t frame = 0) const;
   Bounds bounds() const;  // of every world-space vertex
 
   // Where a flat triangle is: its instance (0 for a flat mesh) and its triangle in that
@@ -98,6 +102,8 @@ class FlatTriangles {
  private:
   const TriangleMesh* flat_ = nullptr;
   const InstancedMesh* instances_ = nullptr;
+  const InstanceSettings* settings_ = nullptr;
+  std::vector<uint32_t> motion_;   // per instance: its motion, or kNoHit; empty if none move
   std::vector<uint64_t> offsets_;  // instances: flat_offsets()
   uint64_t count_ = 0;
 };

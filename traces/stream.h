@@ -20,6 +20,7 @@ constexpr uint32_t kMaxChunkRays = 1u << 20;
 constexpr size_t kRayRecordBytes = 44;
 
 struct StreamHeader {
+  uint32_t version = kStreamVersion;  // as read (writers write kStreamVersion)
   std::string scene_source;  // scene file path, or "builtin:NAME[:PARAMS]"
   uint64_t scene_fingerprint = 0;
   std::string workload;

@@ -40,6 +40,7 @@ void RayStreamReader::read_header() {
   if (crc32(head.data(), header_bytes - 4) != stored_crc)
     fail(0, "header checksum mismatch (header bytes 0 to " + std::to_string(header_bytes) + ")");
 
+  header_.version = version;
   ByteReader in(head.data() + 16, header_bytes - 20);
   header_.scene_fingerprint = in.get<uint64_t>();
   header_.seed = in.get<uint64_t>();

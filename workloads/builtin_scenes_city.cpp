@@ -28,7 +28,7 @@ constexpr float kLotOffset = 10.0f;    // four 20 m lots, centred at (+-10, +-10
 constexpr float kParkingLane = 25.5f;  // block centre to a parked car's centre
 constexpr int kStreetCells = 16;       // grid_quad: 512 triangles
 
-enum Object : uint32_t { kBuildings, kProps, kGround };
+enum Object : uint32_t { kBuildings, kLamps, kCars, kBenches, kTrees, kGround };
 enum MaterialId : uint32_t {
   kConcrete,
   kBrick,
@@ -147,7 +147,7 @@ UniqueMesh make_building(const BuildingVariant& variant) {
 // A lamp post whose arm reaches over the street at +z.
 UniqueMesh make_lamp() {
   UniqueMesh lamp;
-  lamp.object = kProps;
+  lamp.object = kLamps;
   lamp.add(unit_cube(), V(0, 0.3f, 0), V(0.15f, 0.3f, 0.15f), kSteel);
   lamp.add(unit_cube(), V(0, 3.0f, 0), V(0.08f, 3.0f, 0.08f), kSteel);
   lamp.add(unit_cube(), V(0, 5.95f, 0.6f), V(0.05f, 0.05f, 0.6f), kSteel);
@@ -158,7 +158,7 @@ UniqueMesh make_lamp() {
 // A car 4.4 m long along x: body, glazed cabin, roof and four wheels.
 UniqueMesh make_car() {
   UniqueMesh car;
-  car.object = kProps;
+  car.object = kCars;
   car.add(unit_cube(), V(0, 0.65f, 0), V(2.2f, 0.35f, 0.9f), kCarPaint);
   car.add(unit_cube(), V(-0.2f, 1.25f, 0), V(1.2f, 0.25f, 0.8f), kGlass);
   car.add(unit_cube(), V(-0.2f, 1.53f, 0), V(1.15f, 0.03f, 0.78f), kCarPaint);
@@ -171,7 +171,7 @@ UniqueMesh make_car() {
 // A bench facing +z: seat, back and two legs.
 UniqueMesh make_bench() {
   UniqueMesh bench;
-  bench.object = kProps;
+  bench.object = kBenches;
   bench.add(unit_cube(), V(0, 0.45f, 0), V(0.9f, 0.04f, 0.22f), kWood);
   bench.add(unit_cube(), V(0, 0.8f, -0.2f), V(0.9f, 0.2f, 0.03f), kWood);
   for (float x : {-0.8f, 0.8f})
@@ -181,7 +181,7 @@ UniqueMesh make_bench() {
 
 UniqueMesh make_tree() {
   UniqueMesh tree;
-  tree.object = kProps;
+  tree.object = kTrees;
   tree.add(unit_cube(), V(0, 1.5f, 0), V(0.15f, 1.5f, 0.15f), kWood);
   tree.add(octa_sphere(5), V(0, 4.0f, 0), V(1.6f, 1.5f, 1.6f), kFoliage);
   return tree;
@@ -287,7 +287,7 @@ Scene make_city(const std::string& source, uint64_t triangles) {
   Scene scene;
   scene.source = source;
   scene.materials = city_materials();
-  scene.object_names = {"buildings", "props", "ground"};
+  scene.object_names = {"buildings", "lamps", "cars", "benches", "trees", "ground"};
   scene.cameras = {corner_camera()};
   std::vector<UniqueMesh> meshes;
   for (UniqueMesh (*make)() : {make_lamp, make_car, make_bench, make_tree, make_street_tile})

@@ -173,7 +173,52 @@ const TriangleMesh& flat_mesh(Scene& scene) {
 
 std::unique_ptr<EmbreeScene> embree_scene(const Scene& scene, int threads) {
   if (scene.flattened()) return std::make_unique<EmbreeScene>(scene.mesh, threads);
-  return std::make_unique<EmbreeScene>(scene.instanced, threads);
+  return std::make_unique<EmbreeScene>(scene.instanced, scene.instance_settings, threads);
+}
+
+void keep_as_instances(Scene& scene) {
+  if (!scene.flattened()) return;
+  InstancedMesh& g = scene.instanced;
+  if (g.instances.empty())
+    throw_input_error(scene.source, "",
+                      "the scene is one mesh without instances: instance masks and motion need "
+                      "a scene of instances (glTF or OBJ nodes, forest:N, city:N)");
+  std::vector<uint64_t> offsets = flat_offsets(g);
+  scene.mesh_material_ids.assign(g.meshes.size(), {});
+  for (size_t m = 0; m < g.meshes.size(); ++m)
+    scene.mesh_material_ids[m].assign(g.meshes[m].triangle_count(), 0);
+  scene.instance_object_ids.assign(g.instances.size(), 0);
+  for (size_t i = 0; i < g.instances.size(); ++i) {
+    std::vector<uint32_t>& materials = scene.mesh_material_ids[g.instances[i].mesh];
+    std::copy_n(scene.material_ids.begin() + int64_t(offsets[i]), materials.size(),
+                materials.begin());
+    scene.instance_object_ids[i] = scene.object_ids[offsets[i]];
+  }
+  scene.mesh = {};
+  scene.material_ids.clear();
+  scene.object_ids.clear();
+}
+
+void set_instance_settings(Scene& scene, const InstanceSettings& settings,
+                           const std::string& where) {
+  if (settings.empty()) return;
+  keep_as_instances(scene);
+  InstancedMesh& g = scene.instanced;
+  if (std::string problem = settings_problem(settings, g.instances.size()); !problem.empty())
+    throw_input_error(where, "instance settings", problem);
+  scene.instance_settings = settings;
+  apply_masks(g, settings);
+  std::vector<Bounds> mesh_boxes;
+  for (const TriangleMesh& mesh : g.meshes) mesh_boxes.push_back(mesh_bounds(mesh));
+  for (uint32_t f = 0; settings.animated() && f < settings.frames; ++f)
+    for (const auto& [instance, motion] : settings.moving) {
+      const Instance& placed = g.instances[instance];
+      Bounds box = world_box(mesh_boxes[placed.mesh],
+                             pose_at(placed.to_world, settings.motions[motion], f, settings.frames));
+      if (std::string problem = vertex_problem(box.lo) + vertex_problem(box.hi); !problem.empty())
+        throw_input_error(where, fmt::format("instance {} in frame {}", instance, f),
+                          "its motion carries it out of range: " + problem);
+    }
 }
 
 Scene load_stream_scene(const std::string& stream, const StreamHeader& header,
@@ -198,6 +243,7 @@ Scene load_stream_scene(const std::string& stream, const StreamHeader& header,
     throw_input_error(stream, "header",
                       fmt::format("scene fingerprint {:016x} does not match scene {} ({:016x})",
                                   header.scene_fingerprint, spec, scene.fingerprint));
+  set_instance_settings(scene, header.instances, stream);
   return scene;
 }
 

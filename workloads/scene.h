@@ -70,6 +70,9 @@ struct Scene {
   InstancedMesh instanced;
   std::vector<std::vector<uint32_t>> mesh_material_ids;  // unflattened: per mesh, per triangle
   std::vector<uint32_t> instance_object_ids;             // unflattened: per instance
+  // What the workload sets on the instances (set_instance_settings): masks (also on the
+  // instances) and motion; empty for a scene as loaded.
+  InstanceSettings instance_settings;
   uint64_t fingerprint = 0;  // mesh_fingerprint(mesh), or instanced_fingerprint(instanced)
   Bounds bounds;
 
@@ -77,9 +80,10 @@ struct Scene {
   uint64_t triangle_count() const {
     return flattened() ? mesh.triangle_count() : instanced.instanced_triangles();
   }
-  // The world-space triangles by flat id; refers to this scene.
+  // The world-space triangles by flat id (in a ray's frame where instances move); refers to
+  // this scene.
   FlatTriangles triangles() const {
-    return flattened() ? FlatTriangles(mesh) : FlatTriangles(instanced);
+    return flattened() ? FlatTriangles(mesh) : FlatTriangles(instanced, &instance_settings);
   }
   // Material and object of flat triangle tri (triangles: this scene's).
   TriangleAttributes attributes(const FlatTriangles& triangles, uint64_t tri) const;
@@ -87,6 +91,16 @@ struct Scene {
 
 // The scene's flattened mesh, made (with its per-triangle ids) if the scene keeps none.
 const TriangleMesh& flat_mesh(Scene& scene);
+
+// Keeps a flattened scene as its instances (its triangles keep their flat ids); InputError
+// naming the scene if it has no instance structure (a built-in scene of one mesh).
+void keep_as_instances(Scene& scene);
+
+// Gives the scene a workload's instance settings (kept as instances first where needed):
+// InputError naming `where` (the spec or stream) for settings the scene cannot take, or motion
+// that carries an instance beyond the range rtsim traces.
+void set_instance_settings(Scene& scene, const InstanceSettings& settings,
+                           const std::string& where);
 
 // Embree over the scene as it is kept: its flattened mesh, or its instances (hits then name
 // the instance; Scene::triangles().flat() makes them flat ids).

@@ -124,8 +124,8 @@ TwoLevelBvh build_scene_levels(const TriangleMesh& flat, InstancedMesh& instance
   if (!settings.empty()) {
     if (config.instancing == Instancing::Flatten)
       throw_input_error("bvh.instancing", "",
-                        "\"flatten\" cannot keep the workload's instance masks or motion (the "
-                        "stream's header sets them); use \"auto\" or \"two_level\"");
+                        "\"flatten\" (or --flatten) cannot keep the workload's instance masks or "
+                        "motion (the stream's header sets them); use \"auto\" or \"two_level\"");
     return build_two_level_bvh(instances, config, on_step, settings);
   }
   if (!wants_two_levels(config, instances)) {

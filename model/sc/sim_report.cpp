@@ -215,6 +215,23 @@ Json bvh_json(const BvhView& bvh) {
             {"treelet_sizes", treelet_sizes_json(top.treelets)},
             {"bytes", top.total_bytes()},
             {"node_padding_bytes", top.node_padding_bytes()}};
+  // The top levels: frame 0's, and with moving instances each later frame's, which a builder
+  // writes anew every frame.
+  std::vector<const BvhImage*> tops{&top};
+  if (bvh.frame_tops)
+    for (const BvhImage& t : *bvh.frame_tops) tops.push_back(&t);
+  uint64_t top_nodes = 0, top_bytes = 0, top_padding = 0;
+  Json per_frame = Json::array();
+  for (const BvhImage* t : tops) {
+    top_nodes += t->node_count;
+    top_bytes += t->total_bytes();
+    top_padding += t->node_padding_bytes();
+    per_frame.push_back({{"nodes_written", t->node_count}, {"bytes_written", t->total_bytes()}});
+  }
+  Json top_json = {{"nodes", top_nodes},
+                   {"bytes", top_bytes},
+                   {"treelets", bvh.bottom->front().treelet_base}};
+  if (bvh.frame_tops) top_json["per_frame"] = per_frame;
   uint64_t nodes = 0, triangles = 0, bytes = 0, padding = 0;
   for (const BvhImage& b : *bvh.bottom) {
     nodes += b.node_count;
@@ -224,16 +241,13 @@ Json bvh_json(const BvhView& bvh) {
   }
   return {{"description", describe(top.config)},
           {"levels", 2},
-          {"nodes", nodes + top.node_count},
+          {"nodes", nodes + top_nodes},
           {"triangles", triangles},
           {"instances", top.triangle_count},
           {"treelets", bvh.treelet_count()},
-          {"bytes", bytes + top.total_bytes()},
-          {"node_padding_bytes", padding + top.node_padding_bytes()},
-          {"top",
-           {{"nodes", top.node_count},
-            {"bytes", top.total_bytes()},
-            {"treelets", bvh.bottom->front().treelet_base}}},
+          {"bytes", bytes + top_bytes},
+          {"node_padding_bytes", padding + top_padding},
+          {"top", top_json},
           {"bottom",
            {{"meshes", bvh.bottom->size()},
             {"nodes", nodes},

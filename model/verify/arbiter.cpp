@@ -46,7 +46,7 @@ const char* right_side_name(RightSide side) {
 ExactHit exact_intersect(const FlatTriangles& triangles, uint64_t prim, const Ray& ray) {
   ExactHit ex;
   glm::dvec3 o(ray.org), d(ray.dir);
-  std::array<glm::vec3, 3> corners = triangles.corners(prim);
+  std::array<glm::vec3, 3> corners = triangles.corners(prim, ray.frame);
   glm::dvec3 v[3];
   for (int c = 0; c < 3; ++c) v[c] = glm::dvec3(corners[c]) - o;
   // Shape: normal, cosine with the ray, area against the longest edge.

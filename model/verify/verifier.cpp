@@ -53,8 +53,8 @@ bool Verifier::judge(const Ray& ray, const TraversalState& state, uint64_t index
 }
 
 VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat,
-                            const InstancedMesh& instances, ArbiterConfig config,
-                            size_t max_examples) {
+                            const InstancedMesh& instances, const InstanceSettings& settings,
+                            ArbiterConfig config, size_t max_examples) {
   VerifierSetup out;
   if (!model.bvh().two_level()) {
     out.reference = std::make_unique<EmbreeScene>(flat);
@@ -63,9 +63,10 @@ VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat
   }
   if (instances.instanced_triangles() >= kAnyPrim)
     throw std::invalid_argument("Verifier: more instanced triangles than 32-bit ids can name");
-  out.reference = std::make_unique<EmbreeScene>(instances);
-  out.verifier = std::make_unique<Verifier>(FlatTriangles(instances), model, *out.reference, config,
-                                            max_examples);
+  out.settings = std::make_unique<InstanceSettings>(settings);
+  out.reference = std::make_unique<EmbreeScene>(instances, settings);
+  out.verifier = std::make_unique<Verifier>(FlatTriangles(instances, out.settings.get()), model,
+                                            *out.reference, config, max_examples);
   return out;
 }
 

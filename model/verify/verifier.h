@@ -65,13 +65,16 @@ class Verifier {
 
 // A verifier with the reference it checks against: Embree over the flat mesh, or for a
 // two-level model (model.bvh().two_level()) over `instances`, whose flattening `flat` is (flat
-// may be empty then: a scene that keeps no flattened copy).
+// may be empty then: a scene that keeps no flattened copy) under the workload's instance
+// settings (masks, motion), which it keeps a copy of.
 struct VerifierSetup {
+  std::unique_ptr<InstanceSettings> settings;
   std::unique_ptr<EmbreeScene> reference;
   std::unique_ptr<Verifier> verifier;
 };
 VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat,
-                            const InstancedMesh& instances, ArbiterConfig config = {},
+                            const InstancedMesh& instances,
+                            const InstanceSettings& settings = {}, ArbiterConfig config = {},
                             size_t max_examples = 10);
 
 }  // namespace rtsim

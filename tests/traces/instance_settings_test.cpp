@@ -143,7 +143,8 @@ TEST(InstanceSettings, EmbreeTracesEachFrameInItsOwnPose) {
   s.motions = {slide};
   s.moving = {{0, 0}};
   s.frames = 3;
-  EmbreeScene embree(g, s, 1, /*still_frames=*/2);
+  s.still_frames = 2;
+  EmbreeScene embree(g, s, 1);
   EXPECT_EQ(embree.top_build_seconds().size(), 3u);
   for (uint32_t warmup = 0; warmup <= 2; ++warmup)
     EXPECT_EQ(embree.intersect(ray_along_z(RayType::Camera, warmup)).instance, 0u);

@@ -211,7 +211,7 @@ TEST(BuiltinScenes, CityIsInstancesOfAFewUniqueMeshes) {
     EXPECT_EQ(s.mesh_material_ids[4].size(), 548u) << "materials per unique triangle";
   }
   Scene s = load_scene("city:1000000");
-  EXPECT_EQ(s.object_names, (std::vector<std::string>{"buildings", "props", "ground"}));
+  EXPECT_EQ(s.object_names, (std::vector<std::string>{"buildings", "lamps", "cars", "benches", "trees", "ground"}));
   ASSERT_EQ(s.cameras.size(), 1u) << "a view into the city, however wide it is";
   std::vector<size_t> placements(s.instanced.meshes.size());
   for (const Instance& inst : s.instanced.instances) {

@@ -10,7 +10,7 @@ Surface surface_at(const FlatTriangles& triangles, const Ray& ray, const Hit& hi
   Surface s;
   if (!hit.hit() || hit.prim == kAnyPrim) return s;
   s.prim = hit.prim;
-  std::array<glm::vec3, 3> corners = triangles.corners(hit.prim);
+  std::array<glm::vec3, 3> corners = triangles.corners(hit.prim, ray.frame);
   s.position = hit_point(corners, hit.u, hit.v);
   glm::vec3 n = face_normal(corners);
   if (n == glm::vec3(0.0f)) n = -glm::normalize(ray.dir);  // degenerate: face the ray

@@ -98,6 +98,50 @@ void read_material(SpecReader& r, MaterialRule& m) {
   m.emission = r.maybe_vec3("emission", "linear RGB radiance", "emitted radiance");
 }
 
+void read_instance_rule(SpecReader& r, InstanceRule& rule) {
+  rule.match = r.text("match", "", "glob (* ?) matched against each instance's object name");
+  if (rule.match.empty() && !r.documenting())
+    r.fail("match", "an instance rule needs a non-empty match pattern");
+  rule.where = r.where();
+  auto mask = r.maybe_real("mask", "bits",
+                           "visibility mask (1 to 255): rays whose type's inclusion mask shares "
+                           "no bit with it pass the instance by",
+                           1.0, 255.0, "255");
+  if (mask) {
+    if (std::floor(*mask) != *mask) r.fail("mask", "expected an integer");
+    rule.mask = uint8_t(*mask);
+  }
+  rule.motion.axis = r.vec3("axis", rule.motion.axis, "",
+                            "motion: the axis the keys' rotate turns about, through the "
+                            "instance's origin");
+  if (!r.documenting() && glm::length(rule.motion.axis) == 0.0f) r.fail("axis", "must not be zero");
+  rule.motion.axis = glm::normalize(rule.motion.axis);
+  for (SpecReader* k : r.sections("key",
+                                  "motion: keys spread evenly over the frames, linear in "
+                                  "between; the instance moves relative to where the scene "
+                                  "places it")) {
+    MotionKey key;
+    key.translate = k->vec3("translate", key.translate, "scene units", "moved by");
+    key.rotate = float(
+        k->real("rotate", 0.0, "degrees", "turned about the axis", -36000.0, 36000.0));
+    key.scale = float(k->real("scale", 1.0, "", "scaled uniformly about its origin", 1e-3, 1e3));
+    rule.motion.keys.push_back(key);
+  }
+  if (!r.documenting() && !rule.mask && rule.motion.keys.empty())
+    r.fail("", "an instance rule needs a mask or motion keys ([[instances.key]])");
+}
+
+void read_ray_masks(SpecReader& r, std::array<uint8_t, kRayTypeCount>& masks) {
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    std::string type = ray_type_name(RayType(t));
+    auto mask = r.integer(type, kAllInstances, "bits",
+                          "inclusion mask of this type's rays: the instances whose mask shares "
+                          "a bit with it are the ones they see",
+                          1, 255);
+    masks[size_t(t)] = uint8_t(mask);
+  }
+}
+
 void read_light(SpecReader& r, LightSpec& l) {
   auto type = r.text("type", "point", "kind of light", {"point", "spot", "directional", "sphere"});
   l.type = type == "spot"          ? LightType::Spot
@@ -212,6 +256,11 @@ void read_root(SpecReader& r, WorkloadSpec& s, const std::string& stem) {
     s.materials.emplace_back();
     read_material(*m, s.materials.back());
   }
+  for (SpecReader* i : r.sections("instances", "instance masks and motion by object name")) {
+    s.instances.emplace_back();
+    read_instance_rule(*i, s.instances.back());
+  }
+  read_ray_masks(r.section("ray_masks", "which instance masks each ray type sees"), s.ray_masks);
   for (SpecReader* l : r.sections("light", "lights")) {
     s.lights.emplace_back();
     read_light(*l, s.lights.back());

@@ -5,12 +5,21 @@
 #pragma once
 
 #include <cstdint>
+#include <array>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "traces/instance_settings.h"
+
 namespace rtsim::pipeline {
+
+inline std::array<uint8_t, kRayTypeCount> all_ray_masks() {
+  std::array<uint8_t, kRayTypeCount> masks;
+  masks.fill(kAllInstances);
+  return masks;
+}
 
 // A material override applied to every triangle whose object (group) name or material name
 // matches the glob pattern; unset fields keep the scene's value. Later rules win.
@@ -20,6 +29,16 @@ struct MaterialRule {
   std::optional<float> roughness, metalness, coat_roughness, transmission, ior, translucency;
   std::optional<int> layers;
   std::optional<glm::vec3> emission;
+};
+
+// Settings for the instances whose object name matches the glob pattern (scenes of instances:
+// glTF and OBJ nodes, forest:N, city:N): a visibility mask, and motion along keys over the
+// frames. Later rules win.
+struct InstanceRule {
+  std::string match;
+  std::string where;           // "line N" in the spec, for errors
+  std::optional<uint8_t> mask;  // visibility mask; nullopt: keep (0xFF)
+  Motion motion;               // no keys: stays where the scene places it
 };
 
 enum class LightType { Point, Spot, Directional, Sphere };
@@ -118,6 +137,8 @@ struct WorkloadSpec {
   CameraSpec camera;
   SampleSpec samples;
   std::vector<MaterialRule> materials;
+  std::vector<InstanceRule> instances;
+  std::array<uint8_t, kRayTypeCount> ray_masks = all_ray_masks();  // inclusion mask per RayType
   std::vector<LightSpec> lights;
   bool lights_from_emission = true;  // emissive objects become spherical lights
   glm::vec3 sky{0.0f};               // radiance of rays that miss (0: no sky)

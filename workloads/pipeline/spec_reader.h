@@ -60,6 +60,8 @@ public:
   bool documenting() const { return ctx_.documenting; }
   // Throws InputError naming this key (or the section, if key is empty) and its line.
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
+  // "line N" of this table in the file ("" if built in code).
+  std::string where() const { return line_of(table_); }
   std::string full_key(const std::string& key) const;
 
 private:

@@ -8,6 +8,7 @@
 #include "traces/host_clock.h"
 #include "traces/memory_plan.h"
 #include "traces/stream.h"
+#include "workloads/pipeline/instance_rules.h"
 #include "workloads/pipeline/preview.h"
 #include "workloads/pipeline/scene_defaults.h"
 #include "workloads/scene.h"
@@ -18,6 +19,12 @@ TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& op
   Scene scene = load_scene(requested.scene);
   WorkloadSpec spec = requested;
   std::vector<std::string> notes = adopt_scene_defaults(spec, scene);
+  if (!spec.instances.empty() || spec.ray_masks != all_ray_masks()) {
+    keep_as_instances(scene);
+    set_instance_settings(scene, resolve_instance_rules(spec, scene),
+                          spec.file.empty() ? spec.name : spec.file);
+  }
+  scene.instance_settings.still_frames = spec.warmup_frames;
   // Measured peaks of rtsim trace: 144 B a triangle kept (the scene, Embree's BVH, the
   // pipeline's scene data; an unflattened scene keeps its unique triangles and an instance
   // record and Embree instance per instance) and 87 B a pixel (G-buffer, lighting and denoiser
@@ -49,6 +56,7 @@ TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& op
     header.frame_count = spec.frames;
     header.width = spec.width;
     header.height = spec.height;
+    header.instances = scene.instance_settings;
     writer = std::make_unique<RayStreamWriter>(options.output, header);
   }
   RaySink sink(writer.get(), spec.width, spec.height, !options.preview.empty());
