@@ -136,7 +136,7 @@ int run_multi(const MultiOptions& o) {
   StreamHeader header = reader.header();
   Scene scene = load_stream_scene(stream, header);
   unsigned jobs = o.jobs ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-  multi::SystemCBackend backend(scene.mesh, scene.instanced, jobs);
+  multi::SystemCBackend backend(scene.mesh, scene.instanced, scene.instance_settings, jobs);
   multi::MultiRunOptions options;
   options.max_frames = stream_input ? o.frames : 0;
   bool tty = isatty(fileno(stderr)) != 0;

@@ -15,7 +15,8 @@ void print_instance_settings(const InstanceSettings& s) {
     if (s.ray_masks[size_t(t)] != kAllInstances)
       masks += fmt::format("{}{} 0x{:02x}", masks.empty() ? "" : ", ", ray_type_name(RayType(t)),
                            s.ray_masks[size_t(t)]);
-  fmt::print("ray masks    {}\n", masks.empty() ? "every type sees every instance" : masks + " (the others 0xff)");
+  fmt::print("ray masks    {}\n",
+             masks.empty() ? "every type sees every instance" : masks + " (the others 0xff)");
 }
 
 }  // namespace

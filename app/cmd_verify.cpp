@@ -150,8 +150,8 @@ int run_verify(const VerifyOptions& o) {
   else
     print_two_level(levels, scene.instanced);
   TraversalUnit model(levels);
-  VerifierSetup checks = make_verifier(model, scene.mesh, scene.instanced,
-                                       scene.instance_settings, arbiter, o.max_print);
+  VerifierSetup checks = make_verifier(model, scene.mesh, scene.instanced, scene.instance_settings,
+                                       arbiter, o.max_print);
   Verifier* verifier = checks.verifier.get();
   // Stream the rays in batches: constant memory for any stream length.
   std::vector<Ray> batch;

@@ -57,8 +57,7 @@ void print_top_builds(const std::vector<TopLevelBuild>& builds) {
 }  // namespace
 
 TwoLevelBvh build_scene_bvh(Scene& scene, const BvhConfig& config, bool quiet) {
-  bool two_levels =
-      wants_two_levels(config, scene.instanced) || !scene.instance_settings.empty();
+  bool two_levels = wants_two_levels(config, scene.instanced) || !scene.instance_settings.empty();
   uint64_t triangles = two_levels && !scene.instanced.instances.empty()
                            ? scene.instanced.unique_triangles()
                            : scene.triangle_count();

@@ -82,8 +82,8 @@ EmbreeScene::EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& 
   uint32_t frames = settings.animated() ? settings.frames : 1;
   for (uint32_t f = 0; f < frames; ++f) {
     double start = wall_seconds();
-    RTCScene top = build_top(instances_at(geometry.instances, settings, f), geometries,
-                             f == 0 ? all : moving);
+    RTCScene top =
+        build_top(instances_at(geometry.instances, settings, f), geometries, f == 0 ? all : moving);
     top_seconds_.push_back(wall_seconds() - start);
     (f == 0 ? scene_ : frame_scenes_.emplace_back()) = top;
   }

@@ -45,12 +45,11 @@ class EmbreeScene {
   void open_device(int threads);
   // A top level over instances; reuses `shared` geometries where non-null (static instances).
   RTCSceneTy* build_top(const std::vector<Instance>& instances,
-                        std::vector<RTCGeometryTy*>& geometries,
-                        const std::vector<bool>& rebuild);
+                        std::vector<RTCGeometryTy*>& geometries, const std::vector<bool>& rebuild);
   RTCSceneTy* scene_of(const Ray& ray) const;
 
   RTCDeviceTy* device_ = nullptr;
-  RTCSceneTy* scene_ = nullptr;           // one level, or frame 0's top level
+  RTCSceneTy* scene_ = nullptr;            // one level, or frame 0's top level
   std::vector<RTCSceneTy*> frame_scenes_;  // with motion: frames 1.. (top levels)
   std::vector<RTCSceneTy*> mesh_scenes_;   // instanced: the bottom level
   std::array<uint32_t, kRayTypeCount> ray_masks_;

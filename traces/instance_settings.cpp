@@ -56,8 +56,7 @@ bool InstanceSettings::operator==(const InstanceSettings& o) const {
     return a.axis == b.axis &&
            std::equal(a.keys.begin(), a.keys.end(), b.keys.begin(), b.keys.end(), same_key);
   };
-  return ray_masks == o.ray_masks && masks == o.masks && moving == o.moving &&
-         frames == o.frames &&
+  return ray_masks == o.ray_masks && masks == o.masks && moving == o.moving && frames == o.frames &&
          std::equal(motions.begin(), motions.end(), o.motions.begin(), o.motions.end(),
                     same_motion);
 }
@@ -80,8 +79,7 @@ std::string settings_problem(const InstanceSettings& s, size_t instances) {
   return "";
 }
 
-Transform pose_at(const Transform& placed, const Motion& motion, uint32_t frame,
-                  uint32_t frames) {
+Transform pose_at(const Transform& placed, const Motion& motion, uint32_t frame, uint32_t frames) {
   const std::vector<MotionKey>& keys = motion.keys;
   float t = frames > 1 ? float(std::min(frame, frames - 1)) / float(frames - 1) : 0.0f;
   float at = t * float(keys.size() - 1);

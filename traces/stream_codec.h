@@ -11,7 +11,7 @@
 namespace rtsim {
 
 constexpr char kStreamMagic[8] = {'R', 'T', 'S', 'I', 'M', 'R', 'A', 'Y'};
-constexpr size_t kHeaderFixedBytes = 112;  // magic .. counts, before the strings
+constexpr size_t kHeaderFixedBytes = 112;       // magic .. counts, before the strings
 constexpr uint32_t kMaxHeaderBytes = 1u << 26;  // instance settings make it grow
 
 // The whole header including its trailing CRC.

@@ -29,8 +29,8 @@ void RayStreamReader::read_header() {
   std::memcpy(&version, head.data() + 8, 4);
   std::memcpy(&header_bytes, head.data() + 12, 4);
   if (version != 1 && version != kStreamVersion)
-    fail(8, "stream version " + std::to_string(version) + " is not supported (this rtsim reads 1 to " +
-                std::to_string(kStreamVersion) + ")");
+    fail(8, "stream version " + std::to_string(version) +
+                " is not supported (this rtsim reads 1 to " + std::to_string(kStreamVersion) + ")");
   if (header_bytes < kHeaderFixedBytes + 16 || header_bytes > kMaxHeaderBytes)
     fail(12, "header size " + std::to_string(header_bytes) + " is out of range");
   head.resize(header_bytes);

@@ -213,8 +213,9 @@ void set_instance_settings(Scene& scene, const InstanceSettings& settings,
   for (uint32_t f = 0; settings.animated() && f < settings.frames; ++f)
     for (const auto& [instance, motion] : settings.moving) {
       const Instance& placed = g.instances[instance];
-      Bounds box = world_box(mesh_boxes[placed.mesh],
-                             pose_at(placed.to_world, settings.motions[motion], f, settings.frames));
+      Bounds box =
+          world_box(mesh_boxes[placed.mesh],
+                    pose_at(placed.to_world, settings.motions[motion], f, settings.frames));
       if (std::string problem = vertex_problem(box.lo) + vertex_problem(box.hi); !problem.empty())
         throw_input_error(where, fmt::format("instance {} in frame {}", instance, f),
                           "its motion carries it out of range: " + problem);

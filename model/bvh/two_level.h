@@ -39,15 +39,15 @@ struct InstanceRecord {
 
 // What building one frame's top level took: the figures a BVH-builder unit would need.
 struct TopLevelBuild {
-  uint32_t nodes = 0;       // nodes written
-  uint64_t bytes = 0;       // node and instance record bytes written
-  double seconds = 0.0;     // host time of this build
+  uint32_t nodes = 0;    // nodes written
+  uint64_t bytes = 0;    // node and instance record bytes written
+  double seconds = 0.0;  // host time of this build
 };
 
 struct TwoLevelBvh {
-  BvhImage top;                      // frame 0's; leaf records: instance records, one per leaf
-  std::vector<BvhImage> frame_tops;  // animated: frames 1.. (empty: every frame uses `top`)
-  std::vector<BvhImage> bottom;      // per unique mesh, in InstancedMesh::meshes order
+  BvhImage top;                           // frame 0's; leaf records: instance records, one per leaf
+  std::vector<BvhImage> frame_tops;       // animated: frames 1.. (empty: every frame uses `top`)
+  std::vector<BvhImage> bottom;           // per unique mesh, in InstancedMesh::meshes order
   std::vector<TopLevelBuild> top_builds;  // two levels: per frame (one without motion)
   std::array<uint8_t, kRayTypeCount> ray_masks = all_instances();  // the rays' inclusion masks
 

@@ -67,8 +67,8 @@ std::string simulate(const HwConfig& config, BvhView image, const DeviceTask& ta
 }  // namespace
 
 SystemCBackend::SystemCBackend(const TriangleMesh& mesh, const InstancedMesh& instances,
-                               unsigned jobs)
-    : mesh_(mesh), instances_(instances), jobs_(std::max(jobs, 1u)) {
+                               const InstanceSettings& settings, unsigned jobs)
+    : mesh_(mesh), instances_(instances), settings_(settings), jobs_(std::max(jobs, 1u)) {
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
 }
 
@@ -77,11 +77,12 @@ const TwoLevelBvh& SystemCBackend::bvh_for(const HwConfig& config) {
   auto it = bvhs_.find(key);
   if (it != bvhs_.end()) return it->second;
   // A scene kept without a flattened copy gets one when a device's config asks for one level.
-  bool one_level = !wants_two_levels(config.bvh, instances_);
+  bool one_level = settings_.empty() && !wants_two_levels(config.bvh, instances_);
   if (one_level && mesh_.triangle_count() == 0 && flattened_.triangle_count() == 0)
     flattened_ = flatten(instances_).mesh;
   const TriangleMesh& flat = mesh_.triangle_count() > 0 ? mesh_ : flattened_;
-  return bvhs_.emplace(key, build_scene_levels(flat, instances_, config.bvh)).first->second;
+  return bvhs_.emplace(key, build_scene_levels(flat, instances_, config.bvh, {}, settings_))
+      .first->second;
 }
 
 std::vector<DeviceResult> SystemCBackend::run(const std::vector<DeviceTask>& tasks,

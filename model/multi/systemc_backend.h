@@ -17,7 +17,9 @@ class SystemCBackend : public DeviceBackend {
  public:
   // mesh: the scene's world-space triangles (empty for a scene kept as instances only);
   // instances: its instance structure.
-  SystemCBackend(const TriangleMesh& mesh, const InstancedMesh& instances, unsigned jobs);
+  // settings: the stream's instance masks and motion (traces/instance_settings.h).
+  SystemCBackend(const TriangleMesh& mesh, const InstancedMesh& instances,
+                 const InstanceSettings& settings, unsigned jobs);
   std::vector<DeviceResult> run(const std::vector<DeviceTask>& tasks,
                                 const ScreenLayout& layout) override;
 
@@ -27,6 +29,7 @@ class SystemCBackend : public DeviceBackend {
   const TriangleMesh& mesh_;
   TriangleMesh flattened_;  // made from instances_ when mesh_ is empty and needed
   InstancedMesh instances_;
+  InstanceSettings settings_;
   unsigned jobs_;
   std::map<std::string, TwoLevelBvh> bvhs_;  // by resolved BVH config
 };

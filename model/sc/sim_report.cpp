@@ -228,9 +228,8 @@ Json bvh_json(const BvhView& bvh) {
     top_padding += t->node_padding_bytes();
     per_frame.push_back({{"nodes_written", t->node_count}, {"bytes_written", t->total_bytes()}});
   }
-  Json top_json = {{"nodes", top_nodes},
-                   {"bytes", top_bytes},
-                   {"treelets", bvh.bottom->front().treelet_base}};
+  Json top_json = {
+      {"nodes", top_nodes}, {"bytes", top_bytes}, {"treelets", bvh.bottom->front().treelet_base}};
   if (bvh.frame_tops) top_json["per_frame"] = per_frame;
   uint64_t nodes = 0, triangles = 0, bytes = 0, padding = 0;
   for (const BvhImage& b : *bvh.bottom) {

@@ -30,8 +30,8 @@ class TreeletQueueModule::Notifying : public RaySupply {
 
 TreeletQueueModule::TreeletQueueModule(sc_core::sc_module_name name,
                                        const TreeletQueueConfig& config, uint32_t treelets,
-                                       std::vector<uint32_t> root_treelets, const RayContextPool& pool,
-                                       uint32_t state_bytes)
+                                       std::vector<uint32_t> root_treelets,
+                                       const RayContextPool& pool, uint32_t state_bytes)
     : sc_module(name),
       in("in"),
       out("out"),

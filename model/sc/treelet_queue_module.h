@@ -19,8 +19,8 @@ class TreeletQueueModule : public sc_core::sc_module, public RaySupplyIf {
   sc_core::sc_export<RaySupplyIf> out;
 
   TreeletQueueModule(sc_core::sc_module_name name, const TreeletQueueConfig& config,
-                     uint32_t treelets, std::vector<uint32_t> root_treelets, const RayContextPool& pool,
-                     uint32_t state_bytes);
+                     uint32_t treelets, std::vector<uint32_t> root_treelets,
+                     const RayContextPool& pool, uint32_t state_bytes);
 
   RaySupply& supply() override;
   const sc_core::sc_event& work_event() const override { return work_; }

@@ -32,8 +32,7 @@ void RtCore::count_step(StepKind kind, const TraversalState& after) {
   switch (kind) {
     case StepKind::Node:
       stats_.node_steps++;
-      if (after.level == after.top && traversal_.bvh().two_level())
-        stats_.top_node_steps++;
+      if (after.level == after.top && traversal_.bvh().two_level()) stats_.top_node_steps++;
       break;
     case StepKind::Leaf: stats_.leaf_steps++; break;
     case StepKind::Instance: stats_.instance_steps++; break;

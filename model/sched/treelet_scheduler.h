@@ -52,8 +52,9 @@ class TreeletScheduler : public RaySupply {
  public:
   // upstream: the dispatcher (fresh rays, retirement); pool: the contexts it hands out;
   // state_bytes: one ray's state in the ray buffer.
-  TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets, std::vector<uint32_t> root_treelets,
-                   RaySupply& upstream, const RayContextPool& pool, uint32_t state_bytes);
+  TreeletScheduler(const TreeletQueueConfig& config, uint32_t treelets,
+                   std::vector<uint32_t> root_treelets, RaySupply& upstream,
+                   const RayContextPool& pool, uint32_t state_bytes);
 
   size_t take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) override;
   bool postpone(RayContext& ray, uint32_t treelet, Cycle now) override;

@@ -29,8 +29,7 @@ void record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind
 
 }  // namespace
 
-TraversalUnit::TraversalUnit(BvhView bvh, TraversalConfig config)
-    : bvh_(bvh), config_(config) {}
+TraversalUnit::TraversalUnit(BvhView bvh, TraversalConfig config) : bvh_(bvh), config_(config) {}
 
 void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
   s.top = &bvh_.top_of(ray.frame);

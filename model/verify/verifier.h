@@ -73,8 +73,7 @@ struct VerifierSetup {
   std::unique_ptr<Verifier> verifier;
 };
 VerifierSetup make_verifier(const TraversalUnit& model, const TriangleMesh& flat,
-                            const InstancedMesh& instances,
-                            const InstanceSettings& settings = {}, ArbiterConfig config = {},
-                            size_t max_examples = 10);
+                            const InstancedMesh& instances, const InstanceSettings& settings = {},
+                            ArbiterConfig config = {}, size_t max_examples = 10);
 
 }  // namespace rtsim

@@ -58,8 +58,8 @@ TEST(InstanceMotion, EachFrameHasItsOwnTopLevelBeforeTheSharedBottomLevels) {
     EXPECT_EQ(level->treelet_base, treelets);
     treelets = level->treelet_base + std::max<uint32_t>(level->treelets.count, 1);
   }
-  EXPECT_EQ(view.top_end_address(), bvh.frame_tops.back().triangle_base +
-                                        bvh.frame_tops.back().triangles.size());
+  EXPECT_EQ(view.top_end_address(),
+            bvh.frame_tops.back().triangle_base + bvh.frame_tops.back().triangles.size());
   EXPECT_EQ(&view.top_of(0), &bvh.top);
   EXPECT_EQ(&view.top_of(2), &bvh.frame_tops[1]);
   EXPECT_EQ(&view.top_of(9), &bvh.frame_tops[1]) << "later frames: the last pose";

@@ -22,7 +22,7 @@ MultiRunResult simulate(const test::SyntheticFrames& s, const DeviceSet& set, un
   std::string stream = test::write_synthetic_stream(name, s, "builtin:pica", scene.fingerprint);
   RayStreamReader reader(stream);
   DeviceConfigs configs(set);
-  SystemCBackend backend(scene.mesh, scene.instanced, jobs);
+  SystemCBackend backend(scene.mesh, scene.instanced, scene.instance_settings, jobs);
   return run_multi_device(reader, set, configs, backend);
 }
 

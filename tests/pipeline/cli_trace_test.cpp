@@ -43,6 +43,64 @@ TEST(CliTrace, WritesTheStreamWithOverridesAndASummary) {
   std::remove(out.c_str());
 }
 
+// Moving and masked instances (city-traffic.toml: cars drive, trees cast no shadows): the stream
+// records the settings, and the simulator rebuilds the top level per frame and agrees with
+// Embree on every ray.
+TEST(CliTrace, MovingAndMaskedInstancesTraceSimulateAndVerify) {
+  std::string out = tmp("traffic.rays"), json = tmp("traffic.json");
+  auto r = run_rtsim("trace " + spec("city-traffic") + " -q -o " + out +
+                     " --resolution 96x54 --frames 3");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  RayStreamReader reader(out);
+  const InstanceSettings& s = reader.header().instances;
+  EXPECT_EQ(s.frames, 3u);
+  EXPECT_EQ(s.motions.size(), 1u);
+  EXPECT_GT(s.moving.size(), 10u) << "the cars";
+  EXPECT_GT(s.masks.size(), 10u) << "the trees";
+  EXPECT_EQ(s.ray_masks[size_t(RayType::Shadow)], 1u);
+  auto info = run_rtsim("trace-info --header-only " + out);
+  EXPECT_NE(info.out.find("ray masks    shadow 0x01, reflected_shadow 0x01"), std::string::npos)
+      << info.out;
+  auto sim = run_rtsim("sim " + out + " -o " + json);
+  ASSERT_EQ(sim.exit_code, 0) << sim.err;
+  EXPECT_NE(sim.err.find("a top level per frame, 3 frames"), std::string::npos) << sim.err;
+  EXPECT_NE(sim.out.find(" 0 unexplained"), std::string::npos) << sim.out;
+  auto flat = run_rtsim("verify " + out + " --flatten");
+  EXPECT_EQ(flat.exit_code, 2);
+  EXPECT_NE(flat.err.find("cannot keep the workload's instance masks or motion"), std::string::npos)
+      << flat.err;
+  std::remove(out.c_str());
+  std::remove(json.c_str());
+}
+
+TEST(CliTrace, InstanceRulesTheSceneCannotTakeAreBadInput) {
+  std::string file = tmp("rules.toml"), out = tmp("rules.rays");
+  std::remove(out.c_str());
+  auto trace_with = [&](const std::string& text) {
+    std::FILE* f = std::fopen(file.c_str(), "w");
+    std::fputs(text.c_str(), f);
+    std::fclose(f);
+    return run_rtsim("trace " + file + " -q --resolution 16x9 -o " + out);
+  };
+  auto r = trace_with("scene = \"cornell\"\n[[instances]]\nmatch = \"*\"\nmask = 1\n");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("builtin:cornell: the scene is one mesh without instances"),
+            std::string::npos)
+      << r.err;
+  r = trace_with("scene = \"city:1000\"\n[[instances]]\nmatch = \"boats\"\nmask = 1\n");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find(file + ": line 2: instance rule 'boats' matches no instance's object name"),
+            std::string::npos)
+      << r.err;
+  r = trace_with(
+      "scene = \"city:1000\"\nframes = 2\n[[instances]]\nmatch = \"cars\"\n[[instances.key]]\n"
+      "[[instances.key]]\ntranslate = [1e16, 0, 0]\n");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("its motion carries it out of range"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  std::remove(file.c_str());
+}
+
 TEST(CliTrace, ADegenerateCameraIsBadInputNamingTheSpecAndKey) {
   std::string file = tmp("flat.toml"), out = tmp("flat.rays");
   std::FILE* f = std::fopen(file.c_str(), "w");

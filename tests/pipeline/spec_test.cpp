@@ -152,6 +152,36 @@ TEST(Spec, BadValuesNameKeyAndLine) {
   EXPECT_NE(error_of("scene = \"cornell\"\n[camera\n").find("w.toml: line 2:"), std::string::npos);
 }
 
+TEST(Spec, InstanceRulesAndRayMasks) {
+  WorkloadSpec s = parse_spec(
+      "scene = \"city:1000\"\nframes = 3\n[[instances]]\nmatch = \"cars\"\naxis = [0, 2, 0]\n"
+      "[[instances.key]]\n[[instances.key]]\ntranslate = [4, 0, 0]\nrotate = 30\nscale = 2\n"
+      "[[instances]]\nmatch = \"tree*\"\nmask = 2\n[ray_masks]\nshadow = 1\n",
+      "w.toml");
+  ASSERT_EQ(s.instances.size(), 2u);
+  EXPECT_EQ(s.instances[0].match, "cars");
+  EXPECT_FALSE(s.instances[0].mask);
+  EXPECT_EQ(s.instances[0].motion.axis, glm::vec3(0, 1, 0)) << "normalized";
+  ASSERT_EQ(s.instances[0].motion.keys.size(), 2u);
+  EXPECT_EQ(s.instances[0].motion.keys[1].translate, glm::vec3(4, 0, 0));
+  EXPECT_EQ(s.instances[0].motion.keys[1].rotate, 30.0f);
+  EXPECT_EQ(s.instances[0].motion.keys[1].scale, 2.0f);
+  EXPECT_EQ(s.instances[1].mask, uint8_t(2));
+  EXPECT_EQ(s.instances[1].where, "line 11");
+  EXPECT_EQ(s.ray_masks[size_t(RayType::Shadow)], 1u);
+  EXPECT_EQ(s.ray_masks[size_t(RayType::AO)], 255u);
+  EXPECT_EQ(error_of("scene = \"city:1000\"\n[[instances]]\nmatch = \"cars\"\n"),
+            "w.toml: line 2: key 'instances[]': an instance rule needs a mask or motion keys "
+            "([[instances.key]])");
+  EXPECT_EQ(error_of("scene = \"city:1000\"\n[[instances]]\nmatch = \"cars\"\nmask = 256\n"),
+            "w.toml: line 4: key 'instances[].mask': must be in [1, 255]");
+  EXPECT_EQ(error_of("scene = \"city:1000\"\n[ray_masks]\nao = 0\n"),
+            "w.toml: line 3: key 'ray_masks.ao': must be in [1, 255]");
+  EXPECT_EQ(error_of("scene = \"city:1000\"\n[[instances]]\nmatch = \"cars\"\naxis = [0, 0, 0]\n"
+                     "[[instances.key]]\n"),
+            "w.toml: line 4: key 'instances[].axis': must not be zero");
+}
+
 TEST(Spec, ADegenerateCameraNamesItsKey) {
   const std::string scene = "scene = \"cornell\"\n[camera]\n";
   EXPECT_EQ(error_of(scene + "position = [1, 2, 3]\nlook_at = [1, 2, 3]\n"),
@@ -255,7 +285,7 @@ TEST(Spec, ReadmeListsEveryKey) {
 
 TEST(Spec, EverySampleSpecParses) {
   for (const char* name : {"cornell", "pica", "grid", "foliage", "sponza", "sibenik", "conference",
-                           "bunny", "dragon", "cornell-box", "pica-orbit"}) {
+                           "bunny", "dragon", "cornell-box", "pica-orbit", "city-traffic"}) {
     std::string path = std::string(RTSIM_SOURCE_DIR) + "/workloads/specs/" + name + ".toml";
     WorkloadSpec s = read_spec(path);
     EXPECT_EQ(s.name, name);

@@ -69,7 +69,9 @@ TEST(InstanceSettings, ProblemsNameWhatIsWrong) {
   EXPECT_EQ(problem([](InstanceSettings&) {}), "");
   EXPECT_EQ(problem([](InstanceSettings& s) { s.ray_masks[size_t(RayType::AO)] = 0; }),
             "ao rays have inclusion mask 0 (they would see nothing)");
-  EXPECT_EQ(problem([](InstanceSettings& s) { s.masks.push_back({5, 1}); }),
+  EXPECT_EQ(problem([](InstanceSettings& s) {
+              s.masks.push_back({5, 1});
+            }),
             "a mask of instance 5, of 5 instances");
   EXPECT_EQ(problem([](InstanceSettings& s) { std::swap(s.moving[0], s.moving[1]); }),
             "a motion of instance 0 out of order");
@@ -77,7 +79,9 @@ TEST(InstanceSettings, ProblemsNameWhatIsWrong) {
             "instance 3 moves by motion 1 of 1");
   EXPECT_EQ(problem([](InstanceSettings& s) { s.motions[0].keys.clear(); }),
             "motion 0 has no keys");
-  EXPECT_EQ(problem([](InstanceSettings& s) { s.motions[0].axis = {1.0f, 1.0f, 0.0f}; }),
+  EXPECT_EQ(problem([](InstanceSettings& s) {
+              s.motions[0].axis = {1.0f, 1.0f, 0.0f};
+            }),
             "motion 0 has an axis that is not of unit length");
   EXPECT_EQ(problem([](InstanceSettings& s) { s.motions[0].keys[1].scale = 0.0f; }),
             "motion 0 key 1 has scale 0, not positive");

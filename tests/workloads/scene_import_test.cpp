@@ -57,6 +57,28 @@ TEST(SceneImport, ObjWithMtlGivesObjectsAndMaterials) {
   EXPECT_EQ(s.bounds.hi, glm::vec3(1.0f));
 }
 
+// A flattened scene kept as its instances (for instance masks and motion): every flat triangle,
+// material and object as before, the fingerprint of the file it came from.
+TEST(SceneImport, AFlattenedSceneKeptAsInstancesKeepsItsFlatIds) {
+  Scene flat = load_scene(std::string(RTSIM_SOURCE_DIR) +
+                          "/../shared/scenes/cornell-box/CornellBox-Original.obj");
+  ASSERT_TRUE(flat.flattened());
+  ASSERT_GT(flat.instanced.instances.size(), 1u);
+  Scene kept = flat;
+  keep_as_instances(kept);
+  EXPECT_FALSE(kept.flattened());
+  EXPECT_EQ(kept.fingerprint, flat.fingerprint);
+  FlatTriangles a = flat.triangles(), b = kept.triangles();
+  ASSERT_EQ(b.count(), a.count());
+  for (uint64_t t = 0; t < a.count(); ++t) {
+    ASSERT_EQ(b.corners(t), a.corners(t)) << "triangle " << t;
+    ASSERT_EQ(kept.attributes(b, t).material, flat.attributes(a, t).material);
+    ASSERT_EQ(kept.attributes(b, t).object, flat.attributes(a, t).object);
+  }
+  Scene one_mesh = load_scene("cornell");
+  EXPECT_THROW(keep_as_instances(one_mesh), InputError);
+}
+
 TEST(SceneImport, ObjPhongSpecularOnlyBecomesMetal) {
   TempDir dir;
   dir.write("m.mtl", "newmtl polished\nKd 0 0 0\nKs 0.7 0.7 0.7\nNs 200\n");

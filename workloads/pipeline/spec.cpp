@@ -122,8 +122,8 @@ void read_instance_rule(SpecReader& r, InstanceRule& rule) {
                                   "places it")) {
     MotionKey key;
     key.translate = k->vec3("translate", key.translate, "scene units", "moved by");
-    key.rotate = float(
-        k->real("rotate", 0.0, "degrees", "turned about the axis", -36000.0, 36000.0));
+    key.rotate =
+        float(k->real("rotate", 0.0, "degrees", "turned about the axis", -36000.0, 36000.0));
     key.scale = float(k->real("scale", 1.0, "", "scaled uniformly about its origin", 1e-3, 1e3));
     rule.motion.keys.push_back(key);
   }

@@ -36,9 +36,9 @@ struct MaterialRule {
 // frames. Later rules win.
 struct InstanceRule {
   std::string match;
-  std::string where;           // "line N" in the spec, for errors
+  std::string where;            // "line N" in the spec, for errors
   std::optional<uint8_t> mask;  // visibility mask; nullopt: keep (0xFF)
-  Motion motion;               // no keys: stays where the scene places it
+  Motion motion;                // no keys: stays where the scene places it
 };
 
 enum class LightType { Point, Spot, Directional, Sphere };

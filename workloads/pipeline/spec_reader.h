@@ -30,7 +30,7 @@ struct SpecReadContext {
 };
 
 class SpecReader {
-public:
+ public:
   // table may be null (an absent section: every read returns its default).
   SpecReader(const toml::table* table, std::string prefix, SpecReadContext& ctx);
 
@@ -64,7 +64,7 @@ public:
   std::string where() const { return line_of(table_); }
   std::string full_key(const std::string& key) const;
 
-private:
+ private:
   friend struct SpecReadContext;
   const toml::node* take(const std::string& key, const char* type, const std::string& def,
                          const char* unit, const char* desc);
