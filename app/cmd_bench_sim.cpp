@@ -61,9 +61,9 @@ struct Timing {
 // Embree on one thread over what the simulation traverses: the flat mesh, or the instances.
 Timing time_embree(const BenchSimOptions& o, const Scene& scene, bool instances,
                    const std::vector<Ray>& rays, uint64_t& count) {
-  std::unique_ptr<EmbreeScene> reference = instances
-                                               ? std::make_unique<EmbreeScene>(scene.instanced, 1)
-                                               : std::make_unique<EmbreeScene>(scene.mesh, 1);
+  std::unique_ptr<EmbreeScene> reference =
+      instances ? std::make_unique<EmbreeScene>(scene.instanced, scene.instance_settings, 1)
+                : std::make_unique<EmbreeScene>(scene.mesh, 1);
   const EmbreeScene& embree = *reference;
   Timing best;
   for (int run = 0; run < o.repeat; ++run) {
@@ -127,9 +127,9 @@ int run_bench_sim(const BenchSimOptions& o) {
     return 2;
   }
   HwConfig config = load_hw_config(o.config, o.sets);
-  std::string spec = o.scene;
-  if (!o.stream.empty()) spec = RayStreamReader(o.stream).header().scene_source;
-  Scene scene = load_scene(spec);
+  // A stream's scene as it was traced: its fingerprint checked, its instance settings applied.
+  Scene scene = o.stream.empty() ? load_scene(o.scene)
+                                 : load_stream_scene(o.stream, RayStreamReader(o.stream).header());
   TwoLevelBvh image = reports::build_scene_bvh(scene, config.bvh, true);
   bool two_levels = !image.bottom.empty();
   std::vector<Ray> rays;

@@ -138,12 +138,15 @@ std::array<glm::vec3, 3> FlatTriangles::corners(uint64_t tri, uint32_t frame) co
   Place at = locate(tri);
   const Instance& inst = instances_->instances[at.instance];
   const TriangleMesh& mesh = instances_->meshes[inst.mesh];
-  Transform to_world = inst.to_world;
-  if (!motion_.empty() && motion_[at.instance] != kNoHit)
-    to_world = pose_at(inst.to_world, settings_->motions[motion_[at.instance]],
-                       settings_->pose_frame(frame), settings_->frames);
-  return {to_world.point(mesh.vertex(at.prim, 0)), to_world.point(mesh.vertex(at.prim, 1)),
-          to_world.point(mesh.vertex(at.prim, 2))};
+  const Transform* to_world = &inst.to_world;
+  Transform posed;
+  if (!motion_.empty() && motion_[at.instance] != kNoHit) {
+    posed = pose_at(inst.to_world, settings_->motions[motion_[at.instance]],
+                    settings_->pose_frame(frame), settings_->frames);
+    to_world = &posed;
+  }
+  return {to_world->point(mesh.vertex(at.prim, 0)), to_world->point(mesh.vertex(at.prim, 1)),
+          to_world->point(mesh.vertex(at.prim, 2))};
 }
 
 Bounds FlatTriangles::bounds() const {
