@@ -14,6 +14,22 @@
 #include "workloads/scene.h"
 
 namespace rtsim::pipeline {
+namespace {
+
+// What the workload set on the instances, and what Embree's per-frame top levels cost.
+std::string settings_note(const Scene& scene, const EmbreeScene& embree) {
+  const InstanceSettings& s = scene.instance_settings;
+  std::string note = fmt::format("instances: {} of {} masked, {} moving", s.masks.size(),
+                                 scene.instanced.instances.size(), s.moving.size());
+  const std::vector<double>& seconds = embree.top_build_seconds();
+  if (seconds.size() < 2) return note;
+  double sum = 0.0;
+  for (double t : seconds) sum += t;
+  return note + fmt::format("; Embree built a top level for each of {} frames, {:.2f} ms a frame",
+                            seconds.size(), 1e3 * sum / double(seconds.size()));
+}
+
+}  // namespace
 TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& options) {
   double start = wall_seconds();
   Scene scene = load_scene(requested.scene);
@@ -42,6 +58,7 @@ TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& op
   start = wall_seconds();
   std::unique_ptr<EmbreeScene> embree = embree_scene(scene, options.embree_threads);
   double build_seconds = wall_seconds() - start;
+  if (!scene.instance_settings.empty()) notes.push_back(settings_note(scene, *embree));
   start = wall_seconds();
 
   Pipeline pipeline(spec, scene, *embree);
