@@ -30,10 +30,15 @@ struct Motion {
   std::vector<MotionKey> keys;
 };
 
-struct InstanceSettings {
-  InstanceSettings() { ray_masks.fill(kAllInstances); }
+// Every ray type sees every instance.
+inline std::array<uint8_t, kRayTypeCount> all_ray_masks() {
+  std::array<uint8_t, kRayTypeCount> masks;
+  masks.fill(kAllInstances);
+  return masks;
+}
 
-  std::array<uint8_t, kRayTypeCount> ray_masks;     // per RayType: the instance masks it sees
+struct InstanceSettings {
+  std::array<uint8_t, kRayTypeCount> ray_masks = all_ray_masks();  // per RayType: masks it sees
   std::vector<std::pair<uint32_t, uint8_t>> masks;  // (instance, mask), ascending; others 0xFF
   std::vector<Motion> motions;
   std::vector<std::pair<uint32_t, uint32_t>> moving;  // (instance, motion), ascending

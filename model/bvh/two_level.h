@@ -25,12 +25,6 @@ namespace rtsim {
 
 constexpr uint32_t kInstanceRecordBytes = 64;
 
-inline std::array<uint8_t, kRayTypeCount> all_instances() {
-  std::array<uint8_t, kRayTypeCount> masks;
-  masks.fill(kAllInstances);
-  return masks;
-}
-
 struct InstanceRecord {
   Transform to_object;
   uint32_t blas = 0, instance = 0;
@@ -49,7 +43,7 @@ struct TwoLevelBvh {
   std::vector<BvhImage> frame_tops;       // animated: frames 1.. (empty: every frame uses `top`)
   std::vector<BvhImage> bottom;           // per unique mesh, in InstancedMesh::meshes order
   std::vector<TopLevelBuild> top_builds;  // two levels: per frame (one without motion)
-  std::array<uint8_t, kRayTypeCount> ray_masks = all_instances();  // the rays' inclusion masks
+  std::array<uint8_t, kRayTypeCount> ray_masks = all_ray_masks();  // the rays' inclusion masks
 
   uint64_t total_bytes() const;
   uint64_t node_count() const;      // over the levels

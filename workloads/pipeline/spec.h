@@ -15,12 +15,6 @@
 
 namespace rtsim::pipeline {
 
-inline std::array<uint8_t, kRayTypeCount> all_ray_masks() {
-  std::array<uint8_t, kRayTypeCount> masks;
-  masks.fill(kAllInstances);
-  return masks;
-}
-
 // A material override applied to every triangle whose object (group) name or material name
 // matches the glob pattern; unset fields keep the scene's value. Later rules win.
 struct MaterialRule {
