@@ -61,7 +61,6 @@ void EmbreeScene::open_device(int threads) {
 
 EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads) {
   open_device(threads);
-  ray_masks_.fill(~0u);
   scene_ = mesh_scene(device_, mesh);
 }
 
@@ -72,18 +71,15 @@ EmbreeScene::EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& 
                          int threads)
     : settings_(settings) {
   open_device(threads);
-  for (int t = 0; t < kRayTypeCount; ++t) ray_masks_[size_t(t)] = settings.ray_masks[size_t(t)];
   for (const TriangleMesh& mesh : geometry.meshes)
     mesh_scenes_.push_back(mesh_scene(device_, mesh));
   std::vector<RTCGeometry> geometries(geometry.instances.size(), nullptr);
   std::vector<bool> moving(geometry.instances.size(), false);
   for (const auto& [instance, motion] : settings.moving) moving[instance] = true;
-  std::vector<bool> all(geometry.instances.size(), true);
   uint32_t frames = settings.animated() ? settings.frames : 1;
   for (uint32_t f = 0; f < frames; ++f) {
     double start = wall_seconds();
-    RTCScene top =
-        build_top(instances_at(geometry.instances, settings, f), geometries, f == 0 ? all : moving);
+    RTCScene top = build_top(instances_at(geometry.instances, settings, f), geometries, moving);
     top_seconds_.push_back(wall_seconds() - start);
     (f == 0 ? scene_ : frame_scenes_.emplace_back()) = top;
   }
@@ -92,13 +88,13 @@ EmbreeScene::EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& 
 
 RTCScene EmbreeScene::build_top(const std::vector<Instance>& instances,
                                 std::vector<RTCGeometry>& geometries,
-                                const std::vector<bool>& rebuild) {
+                                const std::vector<bool>& moving) {
   RTCScene top = rtcNewScene(device_);
   rtcSetSceneFlags(top, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(top, RTC_BUILD_QUALITY_HIGH);
   for (size_t i = 0; i < instances.size(); ++i) {
     const Instance& instance = instances[i];
-    if (rebuild[i]) {
+    if (!geometries[i] || moving[i]) {
       if (geometries[i]) rtcReleaseGeometry(geometries[i]);
       RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
       rtcSetGeometryInstancedScene(geom, mesh_scenes_[instance.mesh]);
@@ -133,7 +129,7 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit rh;
-  rh.ray = to_rtc(ray, ray_masks_[size_t(ray.type)]);
+  rh.ray = to_rtc(ray, settings_.ray_masks[size_t(ray.type)]);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -152,7 +148,7 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
 bool EmbreeScene::occluded(const Ray& ray) const {
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRay r = to_rtc(ray, ray_masks_[size_t(ray.type)]);
+  RTCRay r = to_rtc(ray, settings_.ray_masks[size_t(ray.type)]);
   rtcOccluded1(scene_of(ray), &context, &r);
   return r.tfar == -std::numeric_limits<float>::infinity();
 }

@@ -2,7 +2,6 @@
 // pipeline passes (workloads/) and checks every ray of the model (model/verify/).
 #pragma once
 
-#include <array>
 #include <cstdint>
 
 #include <vector>
@@ -43,17 +42,17 @@ class EmbreeScene {
 
  private:
   void open_device(int threads);
-  // A top level over instances; reuses `shared` geometries where non-null (static instances).
+  // A top level over instances: a new geometry for each moving instance and each one without
+  // one yet, the others' reused (a static instance is shared by every frame's top level).
   RTCSceneTy* build_top(const std::vector<Instance>& instances,
-                        std::vector<RTCGeometryTy*>& geometries, const std::vector<bool>& rebuild);
+                        std::vector<RTCGeometryTy*>& geometries, const std::vector<bool>& moving);
   RTCSceneTy* scene_of(const Ray& ray) const;
 
   RTCDeviceTy* device_ = nullptr;
   RTCSceneTy* scene_ = nullptr;            // one level, or frame 0's top level
   std::vector<RTCSceneTy*> frame_scenes_;  // with motion: frames 1.. (top levels)
   std::vector<RTCSceneTy*> mesh_scenes_;   // instanced: the bottom level
-  std::array<uint32_t, kRayTypeCount> ray_masks_;
-  InstanceSettings settings_;
+  InstanceSettings settings_;  // one level: the defaults (every ray sees the one geometry)
   std::vector<double> top_seconds_;
 };
 

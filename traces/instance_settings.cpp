@@ -79,12 +79,16 @@ std::string settings_problem(const InstanceSettings& s, size_t instances) {
   return "";
 }
 
+KeyBlend blend_keys(float t, size_t keys) {
+  float at = t * float(keys - 1);
+  size_t i = std::min(size_t(at), keys - 1);
+  return {i, std::min(i + 1, keys - 1), at - float(i)};
+}
+
 Transform pose_at(const Transform& placed, const Motion& motion, uint32_t frame, uint32_t frames) {
   const std::vector<MotionKey>& keys = motion.keys;
   float t = frames > 1 ? float(std::min(frame, frames - 1)) / float(frames - 1) : 0.0f;
-  float at = t * float(keys.size() - 1);
-  size_t i = std::min(size_t(at), keys.size() - 1), j = std::min(i + 1, keys.size() - 1);
-  float f = at - float(i);
+  auto [i, j, f] = blend_keys(t, keys.size());
   glm::vec3 translate = glm::mix(keys[i].translate, keys[j].translate, f);
   float degrees = glm::mix(keys[i].rotate, keys[j].rotate, f);
   float scale = glm::mix(keys[i].scale, keys[j].scale, f);

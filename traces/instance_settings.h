@@ -62,6 +62,14 @@ struct InstanceSettings {
 // an axis that is not of unit length, a scale that is not positive); empty if fine.
 std::string settings_problem(const InstanceSettings& settings, size_t instances);
 
+// Where a point t in [0, 1] of a run (frame / (frames - 1)) falls among `keys` keys spread evenly
+// over it: between keys i and j (i or i + 1) at fraction f. Camera keys and motion keys alike.
+struct KeyBlend {
+  size_t i = 0, j = 0;
+  float f = 0.0f;
+};
+KeyBlend blend_keys(float t, size_t keys);
+
 // The transform of an instance the scene places by `placed`, at `frame` under `motion`.
 Transform pose_at(const Transform& placed, const Motion& motion, uint32_t frame, uint32_t frames);
 

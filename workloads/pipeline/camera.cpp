@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include "traces/instance_settings.h"
 #include "workloads/pipeline/offset.h"
 #include "workloads/pipeline/sampling.h"
 
@@ -216,10 +217,7 @@ Camera camera_for_frame(const CameraSpec& spec, const View& auto_fit, uint32_t f
   glm::vec3 target = spec.look_at.value_or(auto_fit.look_at);
   float t = frames > 1 ? float(frame) / float(frames - 1) : 0.0f;
   if (!spec.keys.empty()) {
-    float at = t * float(spec.keys.size() - 1);
-    auto i = std::min(size_t(at), spec.keys.size() - 1);
-    size_t j = std::min(i + 1, spec.keys.size() - 1);
-    float f = at - float(i);
+    auto [i, j, f] = blend_keys(t, spec.keys.size());
     position = glm::mix(spec.keys[i].position, spec.keys[j].position, f);
     target = glm::mix(spec.keys[i].look_at, spec.keys[j].look_at, f);
   }
