@@ -74,8 +74,8 @@ std::vector<LevelRequest> requests(const SpeedErrorOptions& o) {
 
 std::string label(const FidelityResult& r) {
   if (r.level != FidelityLevel::Sampled) return fidelity_level_name(r.level);
-  bool windows = r.sample_method == sample_method_name(SampleMethod::Windows);
-  return fmt::format("{} 1/{}", windows ? "windows" : "sampled", r.sample_rate);
+  bool scale_model = r.sample_method == sample_method_name(SampleMethod::ScaleModel);
+  return fmt::format("{} 1/{}", scale_model ? "sampled" : r.sample_method, r.sample_rate);
 }
 
 int run_speed_error(const SpeedErrorOptions& o) {

@@ -76,10 +76,11 @@ inline void refuse_workload_with_trace(const CLI::App& cmd, const std::string& f
 inline void add_sampling_options(CLI::App& cmd, SamplingConfig& sampling,
                                  std::vector<std::string>& methods, bool several = false) {
   cmd.add_option("--sample-method", methods,
-                 several ? "Sampled level: scale-model, windows, or both (comma-separated)"
-                         : "Sampled level: scale-model (one run on a scaled machine) or windows")
+                 several ? "Sampled level: scale-model, warmed, windows (comma-separated)"
+                         : "Sampled level: scale-model (one run on a scaled machine), warmed "
+                           "(the same, the other units' reads warming its L2) or windows")
       ->delimiter(several ? ',' : '\0')
-      ->expected(1, several ? 2 : 1)
+      ->expected(1, several ? 3 : 1)
       ->capture_default_str();
   cmd.add_option("--window", sampling.window_rays,
                  "Windows method: rays measured per window (0: 4 x ray slots, >= 1024)")
@@ -102,7 +103,8 @@ inline std::vector<SampleMethod> sampling_methods(const CLI::App& cmd,
   for (const std::string& name : names) {
     auto method = sample_method_from_name(name);
     if (!method)
-      throw InputError("--sample-method: unknown method '" + name + "' (scale-model, windows)");
+      throw InputError("--sample-method: unknown method '" + name +
+                       "' (scale-model, warmed, windows)");
     methods.push_back(*method);
   }
   bool windows = std::count(methods.begin(), methods.end(), SampleMethod::Windows) > 0;

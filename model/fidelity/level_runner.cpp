@@ -17,9 +17,9 @@ FidelityResult run_level(const LevelRequest& request, const HwConfig& config, Bv
     case FidelityLevel::Cycle: return run_cycle_level(config, image, stream);
     case FidelityLevel::Sampled: break;
   }
-  if (request.sampling.method == SampleMethod::ScaleModel)
-    return run_scaled_level(config, image, stream, request.sampling);
-  return run_sampled_level(config, image, stream, request.sampling);
+  if (request.sampling.method == SampleMethod::Windows)
+    return run_sampled_level(config, image, stream, request.sampling);
+  return run_scaled_level(config, image, stream, request.sampling);
 }
 
 FidelityResult run_level_in_child(const LevelRequest& request, const HwConfig& config,

@@ -16,11 +16,16 @@ uint64_t SamplePlan::measured_rays() const {
 }
 
 const char* sample_method_name(SampleMethod method) {
-  return method == SampleMethod::Windows ? "windows" : "scale-model";
+  switch (method) {
+    case SampleMethod::ScaleModel: return "scale-model";
+    case SampleMethod::Windows: return "windows";
+    case SampleMethod::Warmed: return "warmed";
+  }
+  return "";
 }
 
 std::optional<SampleMethod> sample_method_from_name(const std::string& name) {
-  for (SampleMethod m : {SampleMethod::ScaleModel, SampleMethod::Windows})
+  for (SampleMethod m : {SampleMethod::ScaleModel, SampleMethod::Windows, SampleMethod::Warmed})
     if (name == sample_method_name(m)) return m;
   return std::nullopt;
 }

@@ -24,8 +24,9 @@ namespace rtsim {
 // How the sampled level picks and times its sample: a scale model of the machine running 1 in
 // `rate` warps (scaled_level.h, the default), or windows of consecutive rays on the full
 // machine (this file, sampled_level.h).
-enum class SampleMethod : uint8_t { ScaleModel, Windows };
-const char* sample_method_name(SampleMethod method);  // scale-model, windows
+// Warmed: the scale model with the other units' L2 traffic traced functionally (scaled_level.h).
+enum class SampleMethod : uint8_t { ScaleModel, Windows, Warmed };
+const char* sample_method_name(SampleMethod method);  // scale-model, windows, warmed
 std::optional<SampleMethod> sample_method_from_name(const std::string& name);
 
 struct SamplingConfig {

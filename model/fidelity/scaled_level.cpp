@@ -7,6 +7,7 @@
 #include <random>
 
 #include "model/fidelity/ray_charge.h"
+#include "model/fidelity/l2_warming.h"
 #include "model/fidelity/ray_range_reader.h"
 #include "model/fidelity/systematic.h"
 #include "model/sc/rt_simulator.h"
@@ -202,32 +203,38 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   uint64_t unit = std::min<uint64_t>(config.rt.warp_size, total / (2ull * rate));
   uint64_t warps = (total + unit - 1) / unit;
   std::vector<Ray> rays;
-  for (uint64_t w : scale_model_warps(warps, rate, config.rt_units, sampling.seed))
-    reader.read(w * unit, (w + 1) * unit, rays);
+  std::vector<uint64_t> drawn = scale_model_warps(warps, rate, config.rt_units, sampling.seed);
+  for (uint64_t w : drawn) reader.read(w * unit, (w + 1) * unit, rays);
 
   ScaleModel model = scale_model(config, rate);
   std::vector<Metric> metrics = make_metrics();
   WarpCollector collector(rays.size(), unit, metrics);
-  VectorRaySource source(rays);
+  bool warmed = sampling.method == SampleMethod::Warmed;
+  WarmingSource source(rays, drawn, unit, reader, image, config, model.config);
   RtSimulator sim(model.config, image, source, 0, 0, &collector);
-  sim.share_l2_first_references(model.machine_share);
+  if (warmed)
+    source.warm(sim);
+  else
+    sim.share_l2_first_references(model.machine_share);
   sim.run();
 
   FidelityResult r;
   r.level = FidelityLevel::Sampled;
   r.sample_rate = rate;
-  r.sample_method = sample_method_name(SampleMethod::ScaleModel);
+  r.sample_method = sample_method_name(sampling.method);
   r.rays = total;
   r.simulated_rays = r.measured_rays = rays.size();
   r.strata = uint32_t(metrics[kWorkTotal].series.units());
   r.clock_ghz = config.clock_ghz;
   r.time_model = "scale model: 1 in " + std::to_string(rate) + " warps (seed " +
                  std::to_string(sampling.seed) + ") on " + std::to_string(model.config.rt_units) +
-                 " of " + std::to_string(config.rt_units) + " RT units";
+                 " of " + std::to_string(config.rt_units) + " RT units" +
+                 (warmed ? ", the other units' reads warming the L2" : "");
   double k = double(total) / double(rays.size());
 
   // First references, shared out over the ray types: the fetched ones by their L2 misses,
-  // the absent units' ones by their L2 accesses.
+  // the absent units' ones by their L2 accesses. Warmed, every fetch is counted where it was
+  // made: the scaled units' misses once, the absent units' fetches by their rays' types.
   CacheStats l2 = sim.l2_stats();
   double line = double(block_bytes(config.l2));
   const auto& totals = collector.totals();
@@ -237,12 +244,17 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
     accesses += double(c.l2_accesses);
   }
   FirstReferences first_all{double(l2.cold_misses), double(l2.absent_fills)};
+  if (warmed) {
+    first_all = {misses, 0};
+    for (double f : source.fetched()) first_all.absent += f;
+  }
   for (int t = 0; t < kRayTypeCount; ++t) {
     uint64_t rays_of_type = reader.header().counts[t];
     const CostTotals& c = totals[t];
-    FirstReferences first{
-        misses > 0 ? first_all.fetched * double(c.l2_accesses - c.l2_hits) / misses : 0,
-        accesses > 0 ? first_all.absent * double(c.l2_accesses) / accesses : 0};
+    double type_misses = double(c.l2_accesses - c.l2_hits);
+    FirstReferences first{misses > 0 ? first_all.fetched * type_misses / misses : 0,
+                          accesses > 0 ? first_all.absent * double(c.l2_accesses) / accesses : 0};
+    if (warmed) first = {type_misses, source.fetched()[t]};
     if (c.rays > 0) r.types[t] = scope_estimates(metrics, t, k, first, line);
     r.types[t].rays = rays_of_type;
   }

@@ -194,6 +194,28 @@ void Cache::prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
   });
 }
 
+uint32_t Cache::warm(uint64_t addr, uint32_t bytes, Cycle at, bool write) {
+  uint32_t fetched = 0;
+  for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
+    uint32_t set = set_of(line);
+    uint32_t way = find(set, tag_of(line));
+    if (way == kNone)
+      way = allocate(set, tag_of(line), at);
+    else
+      policy_->touch(set, way);
+    bool dirty = write && config_.write_back;
+    for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block) {
+      Block& b = block_at(set, way, block);
+      b.dirty = b.dirty || dirty;
+      if (b.valid) continue;
+      b = Block{0, kNone, 0, true, dirty};
+      if (track_cold_) first_reference(block);
+      fetched += !write && (block << block_shift_) < kLocalMemoryBase;
+    }
+  });
+  return fetched;
+}
+
 bool Cache::contains(uint64_t addr) const {
   uint64_t block = addr >> block_shift_;
   uint64_t line = block >> sector_shift_;

@@ -108,6 +108,12 @@ class Cache : public MemoryTarget, private ReadClient {
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at);
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
   void prefetch(uint64_t addr, uint32_t bytes, Cycle at) override;
+  // An access by a client the simulation does not drive (a scale model's absent RT units,
+  // model/fidelity/l2_warming.h): its lines become most recently used and its absent blocks are
+  // filled at once without going below (a write makes them dirty); victims are evicted as by a
+  // miss (dirty ones written back at `at`). Counts no access, hit or miss. Returns the blocks a
+  // read filled outside local memory: the fetches the client would have made from below.
+  uint32_t warm(uint64_t addr, uint32_t bytes, Cycle at, bool write = false);
 
   // Whether the block holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;

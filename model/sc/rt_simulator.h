@@ -61,6 +61,11 @@ class RtSimulator {
   // Before run(): the L2 stands in for that of a machine of which this one has own_share of the
   // RT units (Cache::share_first_references).
   void share_l2_first_references(double own_share);
+  // During run(): an access of an RT unit this machine leaves out reaches its L2 (Cache::warm);
+  // returns the blocks it fetched.
+  uint32_t warm_l2(uint64_t addr, uint32_t bytes, bool write = false) {
+    return l2_->warm(addr, bytes, write);
+  }
   // Every counter under its dotted name, and the derived ratios; with a warm-up
   // (sim.warmup_rays, sim.warmup_frames) what accrued from the dispatch of the first measured
   // ray on ("cycles" too), the snapshot-and-subtract of ChampSim. Rays of the warm-up are left

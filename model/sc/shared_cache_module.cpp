@@ -51,6 +51,18 @@ uint32_t SharedCacheModule::slice_of(uint64_t addr) const {
   return uint32_t((h >> 32) % slices_.size());
 }
 
+uint32_t SharedCacheModule::warm(uint64_t addr, uint32_t bytes, bool write) {
+  Cycle now = clock_.cycles(sim_now());
+  uint64_t line_bytes = uint64_t(1) << line_shift_;
+  uint32_t fetched = 0;
+  for (uint64_t at = addr, end = addr + std::max<uint32_t>(bytes, 1); at < end;) {
+    uint64_t stop = std::min(end, (at | (line_bytes - 1)) + 1);
+    fetched += slices_[slice_of(at)]->warm(at, uint32_t(stop - at), now, write);
+    at = stop;
+  }
+  return fetched;
+}
+
 CacheStats SharedCacheModule::stats() const {
   CacheStats sum;
   for (const auto& slice : slices_) sum += slice->stats();

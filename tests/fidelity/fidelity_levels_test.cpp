@@ -155,6 +155,32 @@ TEST_F(FidelityLevels, ScaleModelLandsNearTheFullModel) {
   EXPECT_NE(moved.cycles.value, s.cycles.value) << "another seed samples other warps";
 }
 
+// With an L2 the stream's nodes overflow, most DRAM bytes are capacity misses that the other
+// units' traffic causes: the plain scale model, whose L2 sees only its own units, reads them far
+// too low; warmed, its L2 sees every unit's reads and its count of fetches lands near.
+TEST_F(FidelityLevels, WarmedScaleModelCountsTheCapacityMissesOfTheWholeMachine) {
+  HwConfig small = *config_;
+  small.l2.size_bytes = 192 * 1024;  // the stream's nodes overflow it: 94% of reads hit
+  ASSERT_EQ(hw_config_problem(small), "");
+  FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, small, *image_, *stream_);
+  LevelRequest plain{FidelityLevel::Sampled, {}}, warmed = plain;
+  plain.sampling.rate = warmed.sampling.rate = 8;
+  warmed.sampling.method = SampleMethod::Warmed;
+  FidelityResult p = run_level_in_child(plain, small, *image_, *stream_);
+  FidelityResult w = run_level_in_child(warmed, small, *image_, *stream_);
+  EXPECT_EQ(w.sample_method, "warmed");
+  EXPECT_NE(w.time_model.find("warming the L2"), std::string::npos) << w.time_model;
+  EXPECT_EQ(w.simulated_rays, p.simulated_rays) << "the same warps simulated";
+  double p_error = p.dram_bytes.value / full.dram_bytes.value - 1;
+  double w_error = w.dram_bytes.value / full.dram_bytes.value - 1;
+  EXPECT_LT(p_error, -0.08) << "the plain scale model misses capacity misses (measured -12%)";
+  EXPECT_NEAR(w_error, 0.0, 0.03) << "warmed: DRAM bytes within 3% (measured -1.0%)";
+  EXPECT_NEAR(w.l2_hit_rate.value, full.l2_hit_rate.value, 0.005) << "warmed: within 0.5 pp";
+  EXPECT_GT(std::abs(p.l2_hit_rate.value - full.l2_hit_rate.value),
+            std::abs(w.l2_hit_rate.value - full.l2_hit_rate.value));
+  EXPECT_NEAR(w.cycles.value / full.cycles.value, 1.0, 0.03) << "cycles within 3%";
+}
+
 TEST_F(FidelityLevels, ResultsSurviveAJsonRoundTrip) {
   FidelityResult r = run_cache_level(*config_, *image_, *stream_);
   FidelityResult back = FidelityResult::from_json(nlohmann::json::parse(r.to_json().dump()));

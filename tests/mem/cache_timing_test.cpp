@@ -153,6 +153,28 @@ TEST(CacheTiming, AbsentSharersServeTheirShareOfFirstReferences) {
   EXPECT_EQ(half.stats().cold_misses + half.stats().absent_fills, 1000u) << "only first ones";
 }
 
+TEST(CacheTiming, WarmingFillsWithoutCountingAndEvictsAsAMiss) {
+  test::MockMemory mem(10);
+  Cache cache(small_cache(), &mem);  // 8 sets of 2 ways: lines 512 bytes apart share a set
+  cache.track_cold_misses();
+  EXPECT_EQ(cache.warm(0x0, 64, 0), 1u) << "one block fetched for the absent client";
+  EXPECT_EQ(cache.warm(0x0, 64, 1), 0u) << "present: nothing fetched";
+  EXPECT_EQ(cache.stats().accesses + cache.stats().misses, 0u) << "warming counts no access";
+  EXPECT_TRUE(mem.requests.empty()) << "nothing went below";
+  EXPECT_EQ(cache.read(0x0, 64, 10), 14u) << "a warmed block hits";
+  cache.read(0x200, 64, 20);
+  EXPECT_EQ(cache.stats().cold_misses, 1u) << "0x0 was referenced by the warming";
+  cache.warm(0x400, 64, 30);  // evicts 0x0, the least recently used of the set
+  EXPECT_FALSE(cache.contains(0x0));
+  EXPECT_TRUE(cache.contains(0x200));
+  EXPECT_EQ(cache.warm(0x600, 64, 40, true), 0u) << "a write allocates, fetches nothing";
+  cache.warm(0x800, 64, 50);
+  cache.warm(0xa00, 64, 60);  // evicts the dirty 0x600
+  ASSERT_EQ(mem.writes.size(), 1u);
+  EXPECT_EQ(mem.writes[0].addr, 0x600u);
+  EXPECT_EQ(cache.warm(kLocalMemoryBase, 64, 70), 0u) << "local memory: a refill, not a fetch";
+}
+
 TEST(CacheConfigCheck, RejectsImpossibleConfigs) {
   CacheConfig c = small_cache();
   c.line_bytes = 48;
