@@ -52,7 +52,13 @@ WarmingSource::WarmingSource(const std::vector<Ray>& rays, const std::vector<uin
       warps_per_unit_(full.rt.warps),
       warp_size_(full.rt.warp_size),
       own_slots_(uint64_t(scaled.rt_units) * full.rt.warps * full.rt.warp_size),
-      l1s_(full.rt_units - scaled.rt_units, L1Filter(l1_as_built(full))) {}
+      l1_(l1_as_built(full)),
+      absent_units_(full.rt_units - scaled.rt_units) {}
+
+void WarmingSource::warm(RtSimulator& sim) {
+  sim_ = &sim;
+  l1s_.assign(absent_units_, L1Filter(l1_));
+}
 
 bool WarmingSource::next(Ray& ray) {
   if (position_ == rays_.size()) return false;

@@ -50,7 +50,7 @@ class WarmingSource : public RaySource {
                 RayRangeReader& reader, BvhView image, const HwConfig& full,
                 const HwConfig& scaled);
 
-  void warm(RtSimulator& sim) { sim_ = &sim; }
+  void warm(RtSimulator& sim);
   // Blocks the absent units fetched into the L2, by the type of the ray that read them.
   const std::array<double, kRayTypeCount>& fetched() const { return fetched_; }
 
@@ -68,7 +68,9 @@ class WarmingSource : public RaySource {
   TraversalUnit traversal_;
   StackConfig stack_;
   uint64_t warps_per_unit_, warp_size_, own_slots_;
-  std::vector<L1Filter> l1s_;
+  CacheConfig l1_;
+  uint32_t absent_units_;
+  std::vector<L1Filter> l1s_;  // the absent units', from warm()
   RtSimulator* sim_ = nullptr;
   size_t position_ = 0;
   uint64_t next_warp_ = 0;

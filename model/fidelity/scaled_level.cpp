@@ -234,7 +234,8 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
 
   // First references, shared out over the ray types: the fetched ones by their L2 misses,
   // the absent units' ones by their L2 accesses. Warmed, every fetch is counted where it was
-  // made: the scaled units' misses once, the absent units' fetches by their rays' types.
+  // made: the scaled units' (their DRAM bytes over the block) once, the absent units' by their
+  // rays' types.
   CacheStats l2 = sim.l2_stats();
   double line = double(block_bytes(config.l2));
   const auto& totals = collector.totals();
@@ -244,17 +245,17 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
     accesses += double(c.l2_accesses);
   }
   FirstReferences first_all{double(l2.cold_misses), double(l2.absent_fills)};
-  if (warmed) {
-    first_all = {misses, 0};
-    for (double f : source.fetched()) first_all.absent += f;
-  }
+  if (warmed) first_all = {0, 0};
+  for (int t = 0; t < kRayTypeCount && warmed; ++t)
+    first_all = {first_all.fetched + double(totals[t].dram_bytes) / line,
+                 first_all.absent + source.fetched()[t]};
   for (int t = 0; t < kRayTypeCount; ++t) {
     uint64_t rays_of_type = reader.header().counts[t];
     const CostTotals& c = totals[t];
-    double type_misses = double(c.l2_accesses - c.l2_hits);
-    FirstReferences first{misses > 0 ? first_all.fetched * type_misses / misses : 0,
+    FirstReferences first{
+        misses > 0 ? first_all.fetched * double(c.l2_accesses - c.l2_hits) / misses : 0,
                           accesses > 0 ? first_all.absent * double(c.l2_accesses) / accesses : 0};
-    if (warmed) first = {type_misses, source.fetched()[t]};
+    if (warmed) first = {double(c.dram_bytes) / line, source.fetched()[t]};
     if (c.rays > 0) r.types[t] = scope_estimates(metrics, t, k, first, line);
     r.types[t].rays = rays_of_type;
   }
