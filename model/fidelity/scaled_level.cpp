@@ -244,18 +244,24 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
     misses += double(c.l2_accesses - c.l2_hits);
     accesses += double(c.l2_accesses);
   }
-  FirstReferences first_all{double(l2.cold_misses), double(l2.absent_fills)};
-  if (warmed) first_all = {0, 0};
-  for (int t = 0; t < kRayTypeCount && warmed; ++t)
-    first_all = {first_all.fetched + double(totals[t].dram_bytes) / line,
-                 first_all.absent + source.fetched()[t]};
+  // A type's first references: warmed, its own fetches and its absent units'; otherwise the
+  // run's cold misses and absent fills shared out by the type's L2 misses and accesses.
+  auto first_of = [&](int t) {
+    const CostTotals& c = totals[t];
+    if (warmed) return FirstReferences{double(c.dram_bytes) / line, source.fetched()[t]};
+    return FirstReferences{
+        misses > 0 ? double(l2.cold_misses) * double(c.l2_accesses - c.l2_hits) / misses : 0,
+        accesses > 0 ? double(l2.absent_fills) * double(c.l2_accesses) / accesses : 0};
+  };
+  FirstReferences first_all;
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    FirstReferences f = first_of(t);
+    first_all = {first_all.fetched + f.fetched, first_all.absent + f.absent};
+  }
   for (int t = 0; t < kRayTypeCount; ++t) {
     uint64_t rays_of_type = reader.header().counts[t];
     const CostTotals& c = totals[t];
-    FirstReferences first{
-        misses > 0 ? first_all.fetched * double(c.l2_accesses - c.l2_hits) / misses : 0,
-                          accesses > 0 ? first_all.absent * double(c.l2_accesses) / accesses : 0};
-    if (warmed) first = {double(c.dram_bytes) / line, source.fetched()[t]};
+    FirstReferences first = first_of(t);
     if (c.rays > 0) r.types[t] = scope_estimates(metrics, t, k, first, line);
     r.types[t].rays = rays_of_type;
   }
