@@ -3,6 +3,14 @@
 // the front and the sky, shipping-container boxes, and one sphere per material family of the
 // talk (glossy, rough, mirror, glass, translucent, two-layer clear coat) lit by an emissive
 // sphere named "light". Metres, y up, 4144 triangles; a camera at (0, 2, 9) sees it all.
+//
+// Built as SEED's world is, from instances: 7 unique meshes (floor, wall, sphere, light bulb and
+// three boxes) placed 15 times, each placement with its own material. The scene also keeps the
+// flattened copy (4144 triangles are cheap), so the passes trace one world-space mesh and
+// bvh.instancing = "auto" walks the instances on two levels. Meshes whose instances turn by an
+// angle that is not a quarter turn are made at their size, so that each instance's transform is
+// a rotation and an offset and the flattened copy is bit for bit the room as it was first built
+// as one mesh (its fingerprint is pinned by the tests).
 #include "workloads/builtin_scenes.h"
 
 namespace rtsim::builtin {
@@ -13,26 +21,73 @@ using V = glm::vec3;
 constexpr int kSphereLevel = 8;  // 512 triangles per sphere
 constexpr float kRoomHalf = 6.0f, kWallHalfHeight = 2.0f;
 
-void add_room(SceneBuilder& b) {
+// The room's unique meshes, in the order of Scene::instanced.meshes.
+enum MeshId : uint32_t { kFloor, kWall, kSphere, kBulb, kContainer, kTurnedContainer, kCrate };
+
+class PicaBuilder {
+ public:
+  PicaBuilder() {
+    scene_.source = "builtin:pica";
+    add_mesh(grid_quad(16), V(1.0f));
+    add_mesh(grid_quad(8), V(1.0f));
+    add_mesh(octa_sphere(kSphereLevel), V(1.0f));
+    add_mesh(octa_sphere(4), V(1.0f));
+    add_mesh(unit_cube(), V(1.5f, 0.75f, 0.7f));
+    add_mesh(unit_cube(), V(0.7f, 0.75f, 1.5f));
+    add_mesh(unit_cube(), V(0.4f));
+  }
+
+  uint32_t material(const Material& m) {
+    scene_.materials.push_back(m);
+    return uint32_t(scene_.materials.size() - 1);
+  }
+
+  // Places mesh at p -> offset + rotation * (scale * p), an object of its own.
+  void place(MeshId mesh, uint32_t material, const char* object, V offset, V scale,
+             const glm::mat3& rotation = glm::mat3(1.0f)) {
+    scene_.object_names.push_back(object);
+    scene_.instanced.instances.push_back({mesh, placement(rotation, scale, offset)});
+    scene_.instance_material_ids.push_back(material);
+    scene_.instance_object_ids.push_back(uint32_t(scene_.object_names.size() - 1));
+  }
+
+  // The scene with its flattened copy made from the instances. Every instance names its
+  // material, so the meshes' own material ids (0) are never read.
+  Scene finish() {
+    flat_mesh(scene_);
+    return std::move(scene_);
+  }
+
+ private:
+  void add_mesh(const MeshTemplate& t, V size) {
+    UniqueMesh m;
+    m.add(t, V(0.0f), size, 0);
+    scene_.instanced.meshes.push_back(std::move(m.mesh));
+    scene_.mesh_material_ids.push_back(std::move(m.materials));
+  }
+
+  Scene scene_;
+};
+
+void add_room(PicaBuilder& b) {
   uint32_t floor = b.material(make_material("floor", V(0.55f, 0.75f, 0.9f), 0.8f));
   uint32_t wall = b.material(make_material("wall", V(0.93f, 0.87f, 0.76f), 0.9f));
   uint32_t accent = b.material(make_material("wall_accent", V(0.98f, 0.72f, 0.6f), 0.9f));
-  b.add(grid_quad(16), V(0.0f), V(kRoomHalf, 1.0f, kRoomHalf), floor, b.object("floor"));
+  b.place(kFloor, floor, "floor", V(0.0f), V(kRoomHalf, 1.0f, kRoomHalf));
   // Grid quads face +y; the matrices (columns: images of x, y, z) turn them into walls facing
   // into the room without mirroring, so the winding stays outward.
   const V wall_scale(kRoomHalf, 1.0f, kWallHalfHeight);
-  b.add(grid_quad(8), V(0.0f, kWallHalfHeight, -kRoomHalf), wall_scale, wall, b.object("wall_back"),
-        glm::mat3(V(1, 0, 0), V(0, 0, 1), V(0, -1, 0)));
-  b.add(grid_quad(8), V(-kRoomHalf, kWallHalfHeight, 0.0f), wall_scale, accent,
-        b.object("wall_left"), glm::mat3(V(0, 0, -1), V(1, 0, 0), V(0, -1, 0)));
-  b.add(grid_quad(8), V(kRoomHalf, kWallHalfHeight, 0.0f), wall_scale, accent,
-        b.object("wall_right"), glm::mat3(V(0, 0, 1), V(-1, 0, 0), V(0, -1, 0)));
+  b.place(kWall, wall, "wall_back", V(0.0f, kWallHalfHeight, -kRoomHalf), wall_scale,
+          glm::mat3(V(1, 0, 0), V(0, 0, 1), V(0, -1, 0)));
+  b.place(kWall, accent, "wall_left", V(-kRoomHalf, kWallHalfHeight, 0.0f), wall_scale,
+          glm::mat3(V(0, 0, -1), V(1, 0, 0), V(0, -1, 0)));
+  b.place(kWall, accent, "wall_right", V(kRoomHalf, kWallHalfHeight, 0.0f), wall_scale,
+          glm::mat3(V(0, 0, 1), V(-1, 0, 0), V(0, -1, 0)));
 }
 
-void add_spheres(SceneBuilder& b) {
-  const MeshTemplate sphere = octa_sphere(kSphereLevel);
+void add_spheres(PicaBuilder& b) {
   auto put = [&](const Material& m, const char* object, V center, float radius) {
-    b.add(sphere, center, V(radius), b.material(m), b.object(object));
+    b.place(kSphere, b.material(m), object, center, V(radius));
   };
   put(make_material("glossy_yellow", V(0.95f, 0.8f, 0.2f), 0.3f), "glossy_sphere",
       V(-3.5f, 0.8f, -1.5f), 0.8f);
@@ -53,34 +108,31 @@ void add_spheres(SceneBuilder& b) {
   put(layered, "layered_sphere", V(-0.5f, 0.5f, 3.0f), 0.5f);
 }
 
-void add_boxes(SceneBuilder& b) {
-  const MeshTemplate cube = unit_cube();
-  auto put = [&](const Material& m, const char* object, V center, V half, glm::mat3 rotation) {
-    b.add(cube, center, half, b.material(m), b.object(object), rotation);
-  };
+void add_boxes(PicaBuilder& b) {
   // Rotations by Pythagorean angles (3-4-5, 7-24-25) need no trigonometry. The blue container
   // sits 1 cm above the red one so no faces are coplanar.
-  put(make_material("container_red", V(0.75f, 0.2f, 0.15f), 0.7f), "container_red",
-      V(-4.0f, 0.75f, -4.2f), V(1.5f, 0.75f, 0.7f), glm::mat3(1.0f));
-  put(make_material("container_blue", V(0.2f, 0.35f, 0.7f), 0.7f), "container_blue",
-      V(-4.0f, 2.26f, -4.2f), V(1.5f, 0.75f, 0.7f), rotation_y(0.96f, 0.28f));
-  put(make_material("container_brown", V(0.5f, 0.33f, 0.2f), 0.8f), "container_brown",
-      V(4.2f, 0.75f, -4.0f), V(0.7f, 0.75f, 1.5f), rotation_y(0.8f, 0.6f));
-  put(make_material("glossy_white", V(0.9f), 0.2f), "glossy_box", V(2.5f, 0.4f, -2.0f), V(0.4f),
-      rotation_y(0.6f, 0.8f));
+  b.place(kContainer, b.material(make_material("container_red", V(0.75f, 0.2f, 0.15f), 0.7f)),
+          "container_red", V(-4.0f, 0.75f, -4.2f), V(1.0f));
+  b.place(kContainer, b.material(make_material("container_blue", V(0.2f, 0.35f, 0.7f), 0.7f)),
+          "container_blue", V(-4.0f, 2.26f, -4.2f), V(1.0f), rotation_y(0.96f, 0.28f));
+  b.place(kTurnedContainer,
+          b.material(make_material("container_brown", V(0.5f, 0.33f, 0.2f), 0.8f)),
+          "container_brown", V(4.2f, 0.75f, -4.0f), V(1.0f), rotation_y(0.8f, 0.6f));
+  b.place(kCrate, b.material(make_material("glossy_white", V(0.9f), 0.2f)), "glossy_box",
+          V(2.5f, 0.4f, -2.0f), V(1.0f), rotation_y(0.6f, 0.8f));
 }
 
 }  // namespace
 
 Scene make_pica() {
-  SceneBuilder b("builtin:pica");
+  PicaBuilder b;
   add_room(b);
   add_spheres(b);
   add_boxes(b);
   Material light = make_material("light", V(1.0f), 1.0f);
   light.emission = V(12.0f, 11.0f, 9.5f);
-  b.add(octa_sphere(4), V(0.0f, 3.6f, 0.5f), V(0.4f), b.material(light), b.object("light"));
-  return std::move(b.scene());
+  b.place(kBulb, b.material(light), "light", V(0.0f, 3.6f, 0.5f), V(0.4f));
+  return b.finish();
 }
 
 }  // namespace rtsim::builtin

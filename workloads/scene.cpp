@@ -146,8 +146,12 @@ TriangleAttributes Scene::attributes(const FlatTriangles& triangles, uint64_t tr
     return {tri < material_ids.size() ? material_ids[tri] : 0,
             tri < object_ids.size() ? object_ids[tri] : 0};
   FlatTriangles::Place at = triangles.locate(tri);
-  return {mesh_material_ids[instanced.instances[at.instance].mesh][at.prim],
-          instance_object_ids[at.instance]};
+  return {instance_material(at.instance, at.prim), instance_object_ids[at.instance]};
+}
+
+uint32_t Scene::instance_material(size_t i, uint32_t prim) const {
+  uint32_t own = own_material(i);
+  return own != kMeshMaterials ? own : mesh_material_ids[instanced.instances[i].mesh][prim];
 }
 
 const TriangleMesh& flat_mesh(Scene& scene) {
@@ -163,10 +167,10 @@ const TriangleMesh& flat_mesh(Scene& scene) {
                  "keep its instances (bvh.instancing = \"auto\" or \"two_level\", no --flatten)");
   scene.mesh = flatten(scene.instanced).mesh;
   for (size_t i = 0; i < scene.instanced.instances.size(); ++i) {
-    const std::vector<uint32_t>& materials =
-        scene.mesh_material_ids[scene.instanced.instances[i].mesh];
-    scene.material_ids.insert(scene.material_ids.end(), materials.begin(), materials.end());
-    scene.object_ids.insert(scene.object_ids.end(), materials.size(), scene.instance_object_ids[i]);
+    auto triangles = uint32_t(scene.mesh_material_ids[scene.instanced.instances[i].mesh].size());
+    for (uint32_t prim = 0; prim < triangles; ++prim)
+      scene.material_ids.push_back(scene.instance_material(i, prim));
+    scene.object_ids.insert(scene.object_ids.end(), triangles, scene.instance_object_ids[i]);
   }
   return scene.mesh;
 }
@@ -182,17 +186,21 @@ void keep_as_instances(Scene& scene) {
   if (g.instances.empty())
     throw_input_error(scene.source, "",
                       "the scene is one mesh without instances: instance masks and motion need "
-                      "a scene of instances (glTF or OBJ nodes, forest:N, city:N)");
-  std::vector<uint64_t> offsets = flat_offsets(g);
-  scene.mesh_material_ids.assign(g.meshes.size(), {});
-  for (size_t m = 0; m < g.meshes.size(); ++m)
-    scene.mesh_material_ids[m].assign(g.meshes[m].triangle_count(), 0);
-  scene.instance_object_ids.assign(g.instances.size(), 0);
-  for (size_t i = 0; i < g.instances.size(); ++i) {
-    std::vector<uint32_t>& materials = scene.mesh_material_ids[g.instances[i].mesh];
-    std::copy_n(scene.material_ids.begin() + int64_t(offsets[i]), materials.size(),
-                materials.begin());
-    scene.instance_object_ids[i] = scene.object_ids[offsets[i]];
+                      "a scene of instances (glTF or OBJ nodes, pica, forest:N, city:N)");
+  // A file's instances take their materials and objects from the flattened copy; pica keeps
+  // both views from the start.
+  if (scene.mesh_material_ids.size() != g.meshes.size()) {
+    std::vector<uint64_t> offsets = flat_offsets(g);
+    scene.mesh_material_ids.assign(g.meshes.size(), {});
+    for (size_t m = 0; m < g.meshes.size(); ++m)
+      scene.mesh_material_ids[m].assign(g.meshes[m].triangle_count(), 0);
+    scene.instance_object_ids.assign(g.instances.size(), 0);
+    for (size_t i = 0; i < g.instances.size(); ++i) {
+      std::vector<uint32_t>& materials = scene.mesh_material_ids[g.instances[i].mesh];
+      std::copy_n(scene.material_ids.begin() + int64_t(offsets[i]), materials.size(),
+                  materials.begin());
+      scene.instance_object_ids[i] = scene.object_ids[offsets[i]];
+    }
   }
   scene.mesh = {};
   scene.material_ids.clear();

@@ -54,8 +54,9 @@ struct TriangleAttributes {
 // instance. A scene whose instances place each mesh once (or that has no instances) keeps the
 // flattened copy in `mesh`, with per-triangle material and object ids. One that places a mesh
 // more than once (forest:N, glTF files that reuse a mesh) keeps only its unique geometry: `mesh`
-// and the per-triangle ids stay empty, and materials are named per unique mesh's triangle and
-// objects per instance; flat_mesh() makes the copy for consumers that need one.
+// and the per-triangle ids stay empty, and materials are named per unique mesh's triangle (or
+// per instance) and objects per instance; flat_mesh() makes the copy for consumers that need
+// one. pica, small, places meshes more than once and keeps both.
 struct Scene {
   std::string source;  // file path, or "builtin:NAME[:PARAMS]" as written in stream headers
   TriangleMesh mesh;
@@ -65,11 +66,16 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<SceneCamera> cameras;  // in file order; the first is the one a spec can adopt
   std::vector<SceneLight> lights;
-  // The instance structure (scene files: each node's mesh reference an instance; forest:N).
-  // Empty for the other built-in scenes, which are one flat mesh.
+  // The instance structure (scene files: each node's mesh reference an instance; pica,
+  // forest:N, city:N). Empty for the other built-in scenes, which are one flat mesh.
   InstancedMesh instanced;
   std::vector<std::vector<uint32_t>> mesh_material_ids;  // unflattened: per mesh, per triangle
   std::vector<uint32_t> instance_object_ids;             // unflattened: per instance
+  // Unflattened, per instance: the material of all its triangles, or kMeshMaterials where its
+  // mesh's per-triangle ids apply; empty where every instance takes its mesh's (scene files,
+  // forest:N, city:N). pica's instances each name one.
+  std::vector<uint32_t> instance_material_ids;
+  static constexpr uint32_t kMeshMaterials = UINT32_MAX;
   // What the workload sets on the instances (set_instance_settings): masks (also on the
   // instances) and motion; empty for a scene as loaded.
   InstanceSettings instance_settings;
@@ -87,6 +93,12 @@ struct Scene {
   }
   // Material and object of flat triangle tri (triangles: this scene's).
   TriangleAttributes attributes(const FlatTriangles& triangles, uint64_t tri) const;
+  // Material of triangle prim of instance i's mesh, unflattened.
+  uint32_t instance_material(size_t i, uint32_t prim) const;
+  // Instance i's own material, or kMeshMaterials.
+  uint32_t own_material(size_t i) const {
+    return i < instance_material_ids.size() ? instance_material_ids[i] : kMeshMaterials;
+  }
 };
 
 // The scene's flattened mesh, made (with its per-triangle ids) if the scene keeps none.

@@ -1,6 +1,8 @@
 // `rtsim regress`: against its own baseline it passes (exit 0, JUnit XML without failures);
 // after a config change that slows the design beyond the tolerance it fails (exit 1, the delta
-// table and the JUnit XML say which metric); a faster design passes as "improved".
+// table and the JUnit XML say which metric); a faster design passes as "improved". At 32x18 some
+// ray types have a few rays, whose DRAM bytes move by whole 64-byte lines when more MSHRs
+// reorder the misses (which ray fetches a shared line first), hence 4 lines' tolerance.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -28,7 +30,7 @@ class Regress : public ::testing::Test {
                                            "cycles = 0.02\n"
                                            "l1_hit_rate = { absolute = 0.01 }\n"
                                            "\"type.*.dram_bytes_per_ray\" = "
-                                           "{ relative = 0.05, absolute = 64 }\n";
+                                           "{ relative = 0.05, absolute = 256 }\n";
     test::RunResult r = regress("--update-baseline");
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   }

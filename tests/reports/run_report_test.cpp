@@ -220,9 +220,13 @@ TEST(RunCommand, TheTraceAndBvhPhasesPrintProgress) {
   for (const char* pass : {"camera", "shadow", "diffuse_gi", "translucency"})
     EXPECT_NE(r.err.find(std::string("trace: frame 1/1: ") + pass + "\n"), std::string::npos)
         << r.err;
-  EXPECT_NE(r.err.find("bvh: building bvh8 aabb32 raw treelet"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(" over 4144 triangles\nbvh: "), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find(" B a triangle), built in "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("bvh: building two levels, bvh8 aabb32 raw treelet"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(" over 15 instances of 7 meshes (1316 unique, 4144 instanced "
+                       "triangles)\nbvh: "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find(" B a unique triangle), built in "), std::string::npos) << r.err;
   EXPECT_LT(r.err.find("bvh: building"), r.err.find("sim: ")) << r.err;
   std::filesystem::remove_all(dir);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <set>
 
 #include <glm/geometric.hpp>
@@ -98,6 +99,45 @@ TEST(BuiltinScenes, PicaHasEveryMaterialFamilyAndOneLight) {
   for (size_t t = 0; t < s.triangle_count(); ++t)
     emissive_triangles += s.materials[s.material_ids[t]].emission.x > 0.0f;
   EXPECT_EQ(emissive_triangles, 128u) << "only the light emits";
+}
+
+// pica is made as SEED's world is, from instances (one sphere mesh placed six times with six
+// materials, one wall mesh three times), and keeps its flattened copy: exactly what its
+// instances make (the fingerprint pinned below is the one-mesh room's), every triangle keeping
+// its material and object when the scene is kept as instances for masks and motion.
+TEST(BuiltinScenes, PicaIsInstancesWithAFlattenedCopy) {
+  Scene s = load_scene("pica");
+  ASSERT_TRUE(s.flattened());
+  const InstancedMesh& g = s.instanced;
+  EXPECT_EQ(g.meshes.size(), 7u);
+  EXPECT_EQ(g.instances.size(), 15u);
+  EXPECT_EQ(g.unique_triangles(), 512u + 128u + 512u + 128u + 3 * 12u);
+  EXPECT_EQ(g.instanced_triangles(), s.triangle_count());
+  std::vector<uint32_t> placed(g.meshes.size(), 0);
+  for (const Instance& inst : g.instances) ++placed[inst.mesh];
+  EXPECT_EQ(*std::max_element(placed.begin(), placed.end()), 6u) << "the sphere";
+  TriangleMesh copy = flatten(g).mesh;
+  ASSERT_EQ(copy.positions.size(), s.mesh.positions.size());
+  EXPECT_EQ(std::memcmp(copy.positions.data(), s.mesh.positions.data(),
+                        copy.positions.size() * sizeof(glm::vec3)),
+            0)
+      << "bit for bit";
+  EXPECT_EQ(copy.triangles, s.mesh.triangles);
+
+  Scene kept = s;
+  keep_as_instances(kept);
+  ASSERT_FALSE(kept.flattened());
+  FlatTriangles a = s.triangles(), b = kept.triangles();
+  std::set<uint32_t> sphere_materials;
+  for (uint64_t t = 0; t < s.triangle_count(); ++t) {
+    ASSERT_EQ(b.corners(t), a.corners(t)) << "triangle " << t;
+    TriangleAttributes before = s.attributes(a, t), after = kept.attributes(b, t);
+    ASSERT_EQ(after.material, before.material) << "triangle " << t;
+    ASSERT_EQ(after.object, before.object) << "triangle " << t;
+    if (g.instances[b.locate(t).instance].mesh == g.instances[4].mesh)
+      sphere_materials.insert(after.material);
+  }
+  EXPECT_EQ(sphere_materials.size(), 6u);
 }
 
 TEST(BuiltinScenes, GridHasExactlyNTriangles) {
@@ -211,7 +251,8 @@ TEST(BuiltinScenes, CityIsInstancesOfAFewUniqueMeshes) {
     EXPECT_EQ(s.mesh_material_ids[4].size(), 548u) << "materials per unique triangle";
   }
   Scene s = load_scene("city:1000000");
-  EXPECT_EQ(s.object_names, (std::vector<std::string>{"buildings", "lamps", "cars", "benches", "trees", "ground"}));
+  EXPECT_EQ(s.object_names,
+            (std::vector<std::string>{"buildings", "lamps", "cars", "benches", "trees", "ground"}));
   ASSERT_EQ(s.cameras.size(), 1u) << "a view into the city, however wide it is";
   std::vector<size_t> placements(s.instanced.meshes.size());
   for (const Instance& inst : s.instanced.instances) {

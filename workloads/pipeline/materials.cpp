@@ -79,13 +79,17 @@ MaterialTable assign_materials(const Scene& scene, const std::vector<MaterialRul
     for (uint64_t tri = 0; tri < scene.triangle_count(); ++tri)
       table.of_triangle[tri] = resolve(scene.attributes(table.triangles, tri));
   } else {
-    // Each instance's object with each material its mesh uses.
+    // Each instance's object with its material, or each material its mesh uses.
     std::vector<std::set<uint32_t>> used(scene.mesh_material_ids.size());
     for (size_t m = 0; m < used.size(); ++m)
       used[m].insert(scene.mesh_material_ids[m].begin(), scene.mesh_material_ids[m].end());
-    for (size_t i = 0; i < scene.instanced.instances.size(); ++i)
-      for (uint32_t material : used[scene.instanced.instances[i].mesh])
-        resolve({material, scene.instance_object_ids[i]});
+    for (size_t i = 0; i < scene.instanced.instances.size(); ++i) {
+      if (uint32_t own = scene.own_material(i); own != Scene::kMeshMaterials)
+        resolve({own, scene.instance_object_ids[i]});
+      else
+        for (uint32_t material : used[scene.instanced.instances[i].mesh])
+          resolve({material, scene.instance_object_ids[i]});
+    }
   }
   if (table.materials.empty()) table.materials.emplace_back();
   return table;
