@@ -167,7 +167,8 @@ const TriangleMesh& flat_mesh(Scene& scene) {
                  "keep its instances (bvh.instancing = \"auto\" or \"two_level\", no --flatten)");
   scene.mesh = flatten(scene.instanced).mesh;
   for (size_t i = 0; i < scene.instanced.instances.size(); ++i) {
-    auto triangles = uint32_t(scene.mesh_material_ids[scene.instanced.instances[i].mesh].size());
+    auto triangles =
+        uint32_t(scene.instanced.meshes[scene.instanced.instances[i].mesh].triangle_count());
     for (uint32_t prim = 0; prim < triangles; ++prim)
       scene.material_ids.push_back(scene.instance_material(i, prim));
     scene.object_ids.insert(scene.object_ids.end(), triangles, scene.instance_object_ids[i]);

@@ -238,7 +238,7 @@ Json bvh_json(const BvhView& bvh) {
     bytes += b.total_bytes();
     padding += b.node_padding_bytes();
   }
-  return {{"description", describe(top.config)},
+  return {{"description", describe(bvh.bottom->front().config)},
           {"levels", 2},
           {"nodes", nodes + top_nodes},
           {"triangles", triangles},

@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 
 #include "model/fidelity/level_runner.h"
+#include "reports/phase_progress.h"
 #include "reports/trace_step.h"
 #include "reports/validate/checks.h"
 #include "workloads/scene.h"
@@ -182,8 +183,8 @@ std::vector<Check> sample_workload(const Target& target, const Workload& w) {
   reports::TraceOutcome trace = reports::trace_into(request, folder.path, true);
   HwConfig config = target.as_run(target.config);
   Scene scene = load_scene(trace.summary["scene"].get<std::string>());
-  BvhImage image = build_bvh_image(scene.mesh, config.bvh);
-  FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, config, image, trace.stream);
+  TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, true);
+  FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, config, bvh, trace.stream);
   for (size_t i = 0; i < by_method.size(); ++i) {
     std::vector<FidelityResult> sampled;
     for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
@@ -191,7 +192,7 @@ std::vector<Check> sample_workload(const Target& target, const Workload& w) {
       level.sampling.method = kMethods[i].method;
       level.sampling.rate = kRate;
       level.sampling.seed = seed;
-      sampled.push_back(run_level_in_child(level, config, image, trace.stream));
+      sampled.push_back(run_level_in_child(level, config, bvh, trace.stream));
     }
     judge(by_method[i], w, full, sampled);
   }

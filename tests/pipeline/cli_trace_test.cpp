@@ -73,6 +73,24 @@ TEST(CliTrace, MovingAndMaskedInstancesTraceSimulateAndVerify) {
   std::remove(json.c_str());
 }
 
+// pica is built from instances, so a rule can hide its light bulb from shadow rays: the trace
+// keeps it as instances (each with its own material), and every ray verifies on two levels.
+TEST(CliTrace, PicaInstancesTakeMasks) {
+  std::string file = tmp("pica-masks.toml"), out = tmp("pica-masks.rays");
+  std::FILE* f = std::fopen(file.c_str(), "w");
+  std::fputs(
+      "scene = \"pica\"\n[[instances]]\nmatch = \"light\"\nmask = 2\n[ray_masks]\nshadow = 1\n", f);
+  std::fclose(f);
+  auto r = run_rtsim("trace " + file + " -q --resolution 32x18 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto info = run_rtsim("trace-info --header-only " + out);
+  EXPECT_NE(info.out.find("ray masks    shadow 0x01"), std::string::npos) << info.out;
+  auto verify = run_rtsim("verify " + out);
+  ASSERT_EQ(verify.exit_code, 0) << verify.err;
+  EXPECT_NE(verify.out.find(" 0 mismatches"), std::string::npos) << verify.out;
+  std::remove(out.c_str());
+}
+
 TEST(CliTrace, InstanceRulesTheSceneCannotTakeAreBadInput) {
   std::string file = tmp("rules.toml"), out = tmp("rules.rays");
   std::remove(out.c_str());
