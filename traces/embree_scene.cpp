@@ -29,8 +29,20 @@ RTCRay to_rtc(const Ray& r, uint32_t mask) {
   return out;
 }
 
-// A robust, high-quality scene of one triangle geometry.
-RTCScene mesh_scene(RTCDevice device, const TriangleMesh& mesh) {
+// Embree's intersection filter for alpha-tested triangles: a candidate whose mask has a hole
+// at the hit is no hit, for closest-hit and any-hit queries alike.
+void alpha_filter(const RTCFilterFunctionNArguments* args) {
+  const auto* alpha = static_cast<const TriangleAlpha*>(args->geometryUserPtr);
+  for (unsigned i = 0; i < args->N; ++i)
+    if (args->valid[i] == -1 &&
+        !alpha->passes(RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i),
+                       RTCHitN_v(args->hit, args->N, i)))
+      args->valid[i] = 0;
+}
+
+// A robust, high-quality scene of one triangle geometry; keeps the mesh's alpha alive in `keep`.
+RTCScene mesh_scene(RTCDevice device, const TriangleMesh& mesh,
+                    std::vector<std::shared_ptr<const TriangleAlpha>>& keep) {
   RTCScene scene = rtcNewScene(device);
   rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
   rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
@@ -44,6 +56,12 @@ RTCScene mesh_scene(RTCDevice device, const TriangleMesh& mesh) {
       rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                               3 * sizeof(uint32_t), mesh.triangles.size()));
   std::memcpy(indices, mesh.triangles.data(), mesh.triangles.size() * 3 * sizeof(uint32_t));
+  if (mesh.alpha) {
+    keep.push_back(mesh.alpha);
+    rtcSetGeometryUserData(geom, const_cast<TriangleAlpha*>(mesh.alpha.get()));
+    rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
+    rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
+  }
   rtcCommitGeometry(geom);
   rtcAttachGeometry(scene, geom);
   rtcReleaseGeometry(geom);
@@ -61,7 +79,7 @@ void EmbreeScene::open_device(int threads) {
 
 EmbreeScene::EmbreeScene(const TriangleMesh& mesh, int threads) {
   open_device(threads);
-  scene_ = mesh_scene(device_, mesh);
+  scene_ = mesh_scene(device_, mesh, alphas_);
 }
 
 EmbreeScene::EmbreeScene(const InstancedMesh& geometry, int threads)
@@ -72,7 +90,7 @@ EmbreeScene::EmbreeScene(const InstancedMesh& geometry, const InstanceSettings& 
     : settings_(settings) {
   open_device(threads);
   for (const TriangleMesh& mesh : geometry.meshes)
-    mesh_scenes_.push_back(mesh_scene(device_, mesh));
+    mesh_scenes_.push_back(mesh_scene(device_, mesh, alphas_));
   std::vector<RTCGeometry> geometries(geometry.instances.size(), nullptr);
   std::vector<bool> moving(geometry.instances.size(), false);
   for (const auto& [instance, motion] : settings.moving) moving[instance] = true;

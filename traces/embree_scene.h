@@ -3,7 +3,7 @@
 #pragma once
 
 #include <cstdint>
-
+#include <memory>
 #include <vector>
 
 #include "traces/instance_settings.h"
@@ -54,6 +54,7 @@ class EmbreeScene {
   std::vector<RTCSceneTy*> mesh_scenes_;   // instanced: the bottom level
   InstanceSettings settings_;  // one level: the defaults (every ray sees the one geometry)
   std::vector<double> top_seconds_;
+  std::vector<std::shared_ptr<const TriangleAlpha>> alphas_;  // the filters' user data
 };
 
 }  // namespace rtsim

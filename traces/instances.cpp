@@ -96,6 +96,14 @@ FlatMesh flatten(const InstancedMesh& g) {
     for (const auto& tri : m.triangles)
       out.mesh.triangles.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
   }
+  bool any_alpha = false;
+  for (const TriangleMesh& m : g.meshes) any_alpha |= m.alpha != nullptr;
+  if (any_alpha) {
+    auto alpha = std::make_shared<TriangleAlpha>();
+    for (const Instance& i : g.instances)
+      append_alpha(*alpha, g.meshes[i.mesh].alpha.get(), g.meshes[i.mesh].triangle_count());
+    out.mesh.alpha = std::move(alpha);
+  }
   return out;
 }
 
@@ -131,6 +139,13 @@ FlatTriangles::Place FlatTriangles::locate(uint64_t tri) const {
   if (flat_) return {0, uint32_t(tri)};
   auto at = std::upper_bound(offsets_.begin(), offsets_.end(), tri) - 1;
   return {uint32_t(at - offsets_.begin()), uint32_t(tri - *at)};
+}
+
+const TriangleAlpha* FlatTriangles::alpha(uint64_t tri, uint32_t& prim) const {
+  Place at = locate(tri);
+  prim = at.prim;
+  if (flat_) return flat_->alpha.get();
+  return instances_->meshes[instances_->instances[at.instance].mesh].alpha.get();
 }
 
 std::array<glm::vec3, 3> FlatTriangles::corners(uint64_t tri, uint32_t frame) const {

@@ -89,6 +89,9 @@ class FlatTriangles {
     uint32_t instance = 0, prim = 0;
   };
   Place locate(uint64_t tri) const;
+  // The alpha of the mesh a flat triangle lies in (null if that mesh is opaque), and the
+  // triangle's index in it.
+  const TriangleAlpha* alpha(uint64_t tri, uint32_t& prim) const;
   // The flat id of triangle prim of an instance's mesh (prim itself for a flat mesh, for kNoHit,
   // kAnyPrim or no instance).
   uint32_t flat_id(uint32_t instance, uint32_t prim) const;

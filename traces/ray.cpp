@@ -68,7 +68,19 @@ uint64_t mesh_fingerprint(const TriangleMesh& mesh) {
   uint64_t n[2] = {mesh.positions.size(), mesh.triangles.size()};
   uint64_t h = fnv1a64(n, sizeof n);
   h = fnv1a64(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3), h);
-  return fnv1a64(mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]), h);
+  h = fnv1a64(mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]), h);
+  if (!mesh.alpha) return h;
+  // Alpha-tested triangles decide hits too: their masks, cutoffs and coordinates.
+  const TriangleAlpha& a = *mesh.alpha;
+  h = fnv1a64(a.mask_of.data(), a.mask_of.size() * sizeof(uint32_t), h);
+  h = fnv1a64(a.uv.data(), a.uv.size() * sizeof(a.uv[0]), h);
+  for (const auto& m : a.masks) {
+    h = fnv1a64(&m->cutoff, sizeof m->cutoff, h);
+    uint32_t size[2] = {m->width, m->height};
+    h = fnv1a64(size, sizeof size, h);
+    h = fnv1a64(m->alpha.data(), m->alpha.size(), h);
+  }
+  return h;
 }
 
 void Bounds::grow(const glm::vec3& p) {

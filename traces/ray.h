@@ -5,11 +5,14 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "traces/alpha.h"
 
 namespace rtsim {
 
@@ -71,10 +74,12 @@ struct Hit {
   bool hit() const { return prim != kNoHit; }
 };
 
-// Triangle geometry: what the BVH and traversal need, nothing about materials.
+// Triangle geometry: what the BVH and traversal need, nothing about materials but which
+// triangles are alpha-tested.
 struct TriangleMesh {
   std::vector<glm::vec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
+  std::shared_ptr<const TriangleAlpha> alpha;  // null: every triangle is opaque
 
   size_t triangle_count() const { return triangles.size(); }
   glm::vec3 vertex(size_t tri, int corner) const { return positions[triangles[tri][corner]]; }

@@ -66,6 +66,7 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
                         }};
   BvhImage image = encode_bvh_image(bvh2, config, triangles, on_step);
   set_scene_bounds(mesh_bounds(mesh), image);
+  image.alpha = mesh.alpha;
   return image;
 }
 

@@ -38,6 +38,9 @@ struct BvhImage {
   BvhBuildStats stats;
   float scene_extent = 0.0f;                 // largest |coordinate| of any vertex
   glm::vec3 scene_lo{0.0f}, scene_hi{0.0f};  // the vertices' bounding box
+  // The mesh's alpha-tested triangles (traces/alpha.h), by the prim ids of the triangle
+  // records; null: all opaque. The traversal asks it about each candidate hit.
+  std::shared_ptr<const TriangleAlpha> alpha;
 
   uint64_t node_address(uint32_t position) const {
     return node_base + uint64_t(position) * node_stride;

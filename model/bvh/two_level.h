@@ -67,6 +67,13 @@ struct BvhView {
   const std::array<uint8_t, kRayTypeCount>* ray_masks = nullptr;  // null: every ray sees all
 
   bool two_level() const { return bottom != nullptr; }
+  // True if any triangle is alpha-tested (traces/alpha.h).
+  bool alpha_tested() const {
+    if (!bottom) return top->alpha != nullptr;
+    for (const BvhImage& b : *bottom)
+      if (b.alpha) return true;
+    return false;
+  }
   // The top level a ray of this frame starts in (frames past the last: the last's).
   const BvhImage& top_of(uint32_t frame) const {
     if (!frame_tops || frame == 0) return *top;

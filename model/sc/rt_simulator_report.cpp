@@ -300,6 +300,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
   }
 
   bool two_level = traversal_.bvh().two_level();
+  bool alpha_tested = traversal_.bvh().alpha_tested();
   UnitTotals total;
   uint32_t slots = config_.rt.warps * config_.rt.warp_size;
   for (const auto& unit : units_) {
@@ -391,6 +392,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     r.counter(p + ".trav_leaves", s.counters.trav_leaves);
     r.counter(p + ".trav_prims", s.counters.trav_prims);
     r.counter(p + ".trav_prim_hits", s.counters.trav_prim_hits);
+    if (alpha_tested) r.counter(p + ".trav_alpha_tests", s.counters.trav_alpha_tests);
     if (two_level) {
       r.counter(p + ".trav_instances", s.counters.trav_instances);
       r.ratio(p + ".instances_per_ray", p + ".trav_instances", p + ".rays");

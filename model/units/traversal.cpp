@@ -13,6 +13,7 @@ TraversalCounters& TraversalCounters::operator+=(const TraversalCounters& o) {
   trav_leaves += o.trav_leaves;
   trav_prims += o.trav_prims;
   trav_prim_hits += o.trav_prim_hits;
+  trav_alpha_tests += o.trav_alpha_tests;
   trav_instances += o.trav_instances;
   return *this;
 }
@@ -124,6 +125,10 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     if (!intersect_triangle(level.config.triangle_format, s.ray, level.triangle_bytes(position),
                             s.ray.tmin, s.t_hit, hit, prim))
       continue;
+    if (level.alpha && level.alpha->tested(prim)) {
+      s.counters.trav_alpha_tests++;
+      if (!level.alpha->passes(prim, hit.u, hit.v)) continue;
+    }
     // Keep the hit; the range now ends there.
     s.counters.trav_prim_hits++;
     out.hits++;

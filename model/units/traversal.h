@@ -38,6 +38,7 @@ struct TraversalCounters {
   uint64_t trav_prims = 0;      // ray-triangle tests
   uint64_t trav_prim_hits = 0;  // tests that hit (in range, before later ones shortened it)
   uint64_t trav_instances = 0;  // instance transforms (two levels: BLAS entries)
+  uint64_t trav_alpha_tests = 0;  // candidate hits on alpha-tested triangles (traces/alpha.h)
 
   TraversalCounters& operator+=(const TraversalCounters& o);
 };

@@ -31,6 +31,7 @@ const char* mismatch_class_name(MismatchClass c) {
     case MismatchClass::Degenerate: return "degenerate";
     case MismatchClass::EqualTTie: return "equal_t_tie";
     case MismatchClass::RangeBoundary: return "range_boundary";
+    case MismatchClass::AlphaEdge: return "alpha_edge";
     default: return "unexplained";
   }
 }
@@ -81,6 +82,8 @@ ExactHit exact_intersect(const FlatTriangles& triangles, uint64_t prim, const Ra
   if (det == 0.0 || !std::isfinite(det)) return ex;
   double b[3] = {e[0] / det, e[1] / det, e[2] / det};
   ex.min_barycentric = std::min({b[0], b[1], b[2]});
+  ex.u = b[1];
+  ex.v = b[2];
   ex.inside = ex.min_barycentric >= 0.0;
   ex.t = b[0] * pz[0] + b[1] * pz[1] + b[2] * pz[2];
   ex.in_range = ex.t >= ray.tmin && ex.t <= ray.tmax;
@@ -97,10 +100,23 @@ bool same_t(double a, double b, const Ray& ray, double t_tolerance) {
 Arbiter::Arbiter(FlatTriangles triangles, const EmbreeScene& embree, ArbiterConfig config)
     : triangles_(std::move(triangles)), embree_(embree), config_(config) {}
 
+ExactHit Arbiter::exact(uint32_t prim, const Ray& ray) const {
+  ExactHit ex = exact_intersect(triangles_, prim, ray);
+  uint32_t local = 0;
+  const TriangleAlpha* alpha = triangles_.alpha(prim, local);
+  if (!alpha || !alpha->tested(local)) return ex;
+  auto passes = [&](double u, double v) { return alpha->passes(local, float(u), float(v)); };
+  ex.opaque = passes(ex.u, ex.v);
+  double step = std::max(config_.edge_epsilon, ex.edge_error);
+  for (double du : {-step, step})
+    ex.alpha_edge |= passes(ex.u + du, ex.v) != ex.opaque || passes(ex.u, ex.v + du) != ex.opaque;
+  return ex;
+}
+
 Verdict Arbiter::classify(const Ray& ray, uint32_t prim, bool model_reported,
                           double other_t) const {
   Verdict out{false, MismatchClass::Unexplained, RightSide::Both, prim};
-  ExactHit ex = exact_intersect(triangles_, prim, ray);
+  ExactHit ex = exact(prim, ray);
   double slack = t_slack(ray, ex.t);
   bool near_edge = ex.near_edge(config_.edge_epsilon);
   bool at_tmin = std::fabs(ex.t - ray.tmin) <= config_.range_epsilon * std::fabs(ex.t) + slack;
@@ -114,9 +130,11 @@ Verdict Arbiter::classify(const Ray& ray, uint32_t prim, bool model_reported,
     out.cls = MismatchClass::EdgeOrVertex;
   else if (at_tmin || at_tmax)
     out.cls = MismatchClass::RangeBoundary;
+  else if (ex.alpha_edge && ex.inside)
+    out.cls = MismatchClass::AlphaEdge;
   // The side whose claim exact arithmetic supports is right; on the boundary, either is.
   bool claim_holds = std::isnan(other_t) ? ex.hit() : ex.hit() && ex.t < other_t;
-  bool on_boundary = std::fabs(ex.min_barycentric) < 1e-9 ||
+  bool on_boundary = std::fabs(ex.min_barycentric) < 1e-9 || out.cls == MismatchClass::AlphaEdge ||
                      (at_tmin && std::fabs(ex.t - ray.tmin) <= 1e-9 * std::fabs(ex.t)) ||
                      (at_tmax && std::fabs(ex.t - ray.tmax) <= 1e-9 * std::fabs(ex.t));
   if (on_boundary)
@@ -131,10 +149,10 @@ uint32_t Arbiter::find_candidate(const Ray& ray) const {
   if (closest.hit()) return closest.prim;
   // Embree's occlusion query saw something its closest-hit query did not: search all.
   for (uint32_t p = 0; p < triangles_.count(); ++p) {
-    ExactHit ex = exact_intersect(triangles_, p, ray);
+    ExactHit ex = exact(p, ray);
     double slack = t_slack(ray, ex.t) + config_.range_epsilon * std::fabs(ex.t);
-    if ((ex.inside || ex.near_edge(config_.edge_epsilon)) && ex.t >= ray.tmin - slack &&
-        ex.t <= ray.tmax + slack)
+    if ((ex.inside || ex.near_edge(config_.edge_epsilon)) && (ex.opaque || ex.alpha_edge) &&
+        ex.t >= ray.tmin - slack && ex.t <= ray.tmax + slack)
       return p;
   }
   return kNoHit;
@@ -157,8 +175,8 @@ Verdict Arbiter::judge(const Ray& ray, const Hit& embree, uint32_t model_prim,
     if (same_distance && model_prim == embree.prim) return {};
     if (same_distance) {
       // Two triangles at one distance: through their shared edge, a tie, or one is not hit.
-      ExactHit a = exact_intersect(triangles_, model_prim, ray);
-      ExactHit b = exact_intersect(triangles_, embree.prim, ray);
+      ExactHit a = exact(model_prim, ray);
+      ExactHit b = exact(embree.prim, ray);
       bool a_edge = a.near_edge(config_.edge_epsilon);
       bool b_edge = b.near_edge(config_.edge_epsilon);
       if (a_edge && b_edge)
@@ -172,7 +190,7 @@ Verdict Arbiter::judge(const Ray& ray, const Hit& embree, uint32_t model_prim,
       // One triangle, two distances: only ill-conditioning excuses that. fp32 t errs by about
       // the coordinates' ulps over the cosine of the angle to the plane.
       Verdict v = classify(ray, model_prim, true, kNone);
-      ExactHit ex = exact_intersect(triangles_, model_prim, ray);
+      ExactHit ex = exact(model_prim, ray);
       double conditioned = t_slack(ray, ex.t) / std::max(ex.cosine, 1e-12);
       bool ill_conditioned = std::fabs(double(model_t) - embree.t) <= conditioned;
       if (v.cls != MismatchClass::Degenerate && v.cls != MismatchClass::Grazing)

@@ -2,7 +2,8 @@
 // triangle in double precision and says why they may disagree and which side is right.
 // Classes: the ray passes through an edge or vertex (shared or not), grazes the triangle's
 // plane, the triangle is degenerate (zero area or a needle), two triangles are hit at the same
-// t, or the hit lies at the end of the ray's [tmin, tmax]. Anything else is unexplained: a bug.
+// t, the hit lies at the end of the ray's [tmin, tmax], or it lies on a texel edge of an
+// alpha-tested triangle's mask. Anything else is unexplained: a bug.
 // Not a hardware unit: a checking tool with no timing.
 #pragma once
 
@@ -23,9 +24,11 @@ enum class MismatchClass : uint8_t {
   Degenerate,     // disputed triangle of (nearly) zero area
   EqualTTie,      // both hit, different triangles, same t within tolerance
   RangeBoundary,  // the disputed hit lies at tmin or tmax within range_epsilon
+  AlphaEdge,      // the hit's texture coordinates lie on a texel edge of an alpha mask, where
+                  // fp32 and exact barycentrics may pick texels of different opacity
   Unexplained,
 };
-constexpr int kMismatchClassCount = 6;
+constexpr int kMismatchClassCount = 7;
 const char* mismatch_class_name(MismatchClass c);
 
 enum class RightSide : uint8_t {
@@ -51,13 +54,19 @@ struct ExactHit {
   bool in_range = false;  // and tmin <= t <= tmax
   double t = 0.0;
   double min_barycentric = 0.0;  // signed, normalized: < 0 outside, ~0 on an edge
+  double u = 0.0, v = 0.0;       // barycentrics of corners 1 and 2
   double cosine = 0.0;           // |cos| between the ray and the plane normal
   double area_ratio = 0.0;       // 2 * area / longest edge^2
   // How far from an edge, in normalized barycentrics, an fp32 test can err: rounding of the
   // vertices translated to the ray origin (ulps of the largest coordinate over the triangle's
   // height) and of the edge functions (ulps over area_ratio).
   double edge_error = 0.0;
-  bool hit() const { return inside && in_range; }
+  // Alpha-tested triangles (set by the arbiter): whether the mask is opaque at the exact
+  // barycentrics, and whether a step of edge_epsilon (or edge_error) in them reaches a texel of
+  // the other opacity.
+  bool opaque = true;
+  bool alpha_edge = false;
+  bool hit() const { return inside && in_range && opaque; }
   bool near_edge(double edge_epsilon) const {
     return std::fabs(min_barycentric) < std::max(edge_epsilon, edge_error);
   }
@@ -89,6 +98,8 @@ class Arbiter {
 
  private:
   Verdict classify(const Ray& ray, uint32_t prim, bool model_reported, double other_t) const;
+  // exact_intersect, with the alpha mask of an alpha-tested triangle applied.
+  ExactHit exact(uint32_t prim, const Ray& ray) const;
   uint32_t find_candidate(const Ray& ray) const;
 
   FlatTriangles triangles_;

@@ -1,0 +1,161 @@
+// Alpha-tested triangles (traces/alpha.h): the model's traversal and Embree's intersection
+// filter let rays through a mask's holes, for closest-hit and any-hit queries, through many
+// masked layers to an opaque one, on one level and on two; flattening keeps the masks.
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include "model/bvh/two_level.h"
+#include "model/verify/arbiter.h"
+#include "model_test_util.h"
+#include "traces/embree_scene.h"
+
+namespace rtsim {
+namespace {
+
+// A 2x2 checker whose texels (0, 0) and (1, 1) are opaque.
+std::shared_ptr<const AlphaMask> checker() {
+  auto m = std::make_shared<AlphaMask>();
+  m->name = "checker";
+  m->width = m->height = 2;
+  m->alpha = {255, 0, 0, 255};
+  return m;
+}
+
+// `layers` checker-masked quads [0, 2]^2 at z = 0, -1, ... (texture coordinates x/2, y/2), then
+// an opaque quad at z = -layers.
+TriangleMesh layered(int layers) {
+  TriangleMesh mesh;
+  auto alpha = std::make_shared<TriangleAlpha>();
+  alpha->masks = {checker()};
+  for (int l = 0; l <= layers; ++l) {
+    auto z = float(-l);
+    test::add_triangle(mesh, {0, 0, z}, {2, 0, z}, {2, 2, z});
+    test::add_triangle(mesh, {0, 0, z}, {2, 2, z}, {0, 2, z});
+    alpha->mask_of.insert(alpha->mask_of.end(), 2, l < layers ? 0 : TriangleAlpha::kOpaque);
+    alpha->uv.push_back({glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1)});
+    alpha->uv.push_back({glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)});
+  }
+  mesh.alpha = std::move(alpha);
+  return mesh;
+}
+
+struct Aim {
+  glm::vec2 at;
+  bool opaque;
+};
+// Quarter centres: two on the checker's opaque texels, two on its holes.
+const Aim kAims[] = {
+    {{0.75f, 0.25f}, true}, {{1.75f, 1.25f}, true}, {{1.5f, 0.5f}, false}, {{0.5f, 1.5f}, false}};
+
+TEST(Alpha, RaysPassThroughTheHolesOfEveryLayerToTheOpaqueOne) {
+  constexpr int kLayers = 6;
+  TriangleMesh mesh = layered(kLayers);
+  EmbreeScene embree(mesh, 1);
+  for (const BvhConfig& config : test::all_configs()) {
+    SCOPED_TRACE(describe(config));
+    BvhImage image = build_bvh_image(mesh, config);
+    TraversalUnit unit(image);
+    TraversalState s;
+    for (const Aim& aim : kAims) {
+      Ray ray = test::ray_to({aim.at, 1.0f}, {aim.at, 0.0f});
+      Hit ours = unit.trace(s, ray), reference = embree.intersect(ray);
+      float expected_t = aim.opaque ? 1.0f : 1.0f + kLayers;
+      EXPECT_EQ(ours.t, expected_t);
+      EXPECT_NEAR(reference.t, expected_t, 1e-5f * expected_t);
+      EXPECT_EQ(ours.prim, reference.prim);
+      EXPECT_EQ(s.counters.trav_alpha_tests, aim.opaque ? 1u : uint64_t(kLayers));
+      // Any-hit short of the opaque layer: occluded only on an opaque texel.
+      ray.query = Query::AnyHit;
+      ray.tmax = kLayers;
+      EXPECT_EQ(unit.trace(s, ray).hit(), aim.opaque);
+      EXPECT_EQ(embree.occluded(ray), aim.opaque);
+    }
+  }
+}
+
+// The masked mesh placed twice, the second turned half a turn about y: Embree's instances, the
+// two-level traversal and the flattened copy agree, and flattening keeps each triangle's mask.
+TEST(Alpha, InstancesAndTheFlattenedCopyKeepTheMasks) {
+  InstancedMesh g;
+  g.meshes.push_back(layered(3));
+  g.instances.push_back({0, Transform{}});
+  Transform turned;
+  turned.linear = glm::mat3(glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, -1));
+  turned.offset = glm::vec3(2.0f, 0.0f, -10.0f);
+  g.instances.push_back({0, turned});
+  FlatMesh flat = flatten(g);
+  ASSERT_TRUE(flat.mesh.alpha);
+  EXPECT_TRUE(flat.mesh.alpha->problem(flat.mesh.triangle_count()).empty());
+  EmbreeScene instanced(g, 1), flattened(flat.mesh, 1);
+  TwoLevelBvh bvh = build_two_level_bvh(g, BvhConfig{});
+  TraversalUnit unit(bvh);
+  TraversalState s;
+  for (const Aim& aim : kAims)
+    for (float dz : {1.0f, -1.0f}) {
+      // From in front of the first instance, and from behind the second (it faces -z).
+      Ray ray = test::ray_to({aim.at, dz > 0 ? 1.0f : -20.0f}, {aim.at, dz > 0 ? 0.0f : -19.0f});
+      Hit ours = unit.trace(s, ray), reference = instanced.intersect(ray);
+      Hit flat_hit = flattened.intersect(ray);
+      ASSERT_TRUE(ours.hit());
+      EXPECT_NEAR(ours.t, reference.t, 1e-5f * ours.t);
+      EXPECT_NEAR(ours.t, flat_hit.t, 1e-5f * ours.t);
+      EXPECT_EQ(ours.instance, reference.instance);
+      // From behind, the turned instance puts the holes' aims on its quads' diagonals.
+      if (dz > 0) EXPECT_EQ(flat.flat_offsets[ours.instance] + ours.prim, flat_hit.prim);
+    }
+}
+
+Hit hit_of(uint32_t prim, float t) {
+  Hit h;
+  h.prim = prim;
+  h.t = t;
+  return h;
+}
+
+// The arbiter applies the mask: a model hit in a hole is wrong, one on a texel edge is either
+// side's, one on an opaque texel is right.
+TEST(Alpha, TheArbiterJudgesByTheMask) {
+  TriangleMesh mesh = layered(1);
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  auto down = [](float x, float y) { return test::ray_to({x, y, 1.0f}, {x, y, 0.0f}); };
+  // x = 1 is the edge between an opaque texel and a hole.
+  Verdict edge = arbiter.judge(down(1.0f, 0.5f), hit_of(2, 2.0f), 0, 1.0f);
+  EXPECT_EQ(edge.cls, MismatchClass::AlphaEdge);
+  EXPECT_EQ(edge.right, RightSide::Both);
+  Verdict hole = arbiter.judge(down(1.5f, 0.5f), hit_of(2, 2.0f), 0, 1.0f);
+  EXPECT_EQ(hole.cls, MismatchClass::Unexplained);
+  EXPECT_EQ(hole.right, RightSide::Embree);
+  Verdict opaque = arbiter.judge(down(0.75f, 0.25f), hit_of(2, 2.0f), 0, 1.0f);
+  EXPECT_EQ(opaque.right, RightSide::Model);
+  EXPECT_TRUE(arbiter.judge(down(1.5f, 0.5f), hit_of(2, 2.0f), 2, 2.0f).agree);
+}
+
+TEST(Alpha, TheFingerprintSeesTheMask) {
+  TriangleMesh a = layered(1), b = layered(1);
+  auto holes = std::make_shared<TriangleAlpha>(*b.alpha);
+  auto other = std::make_shared<AlphaMask>(*checker());
+  other->alpha = {0, 255, 255, 0};
+  holes->masks = {other};
+  b.alpha = holes;
+  TriangleMesh opaque = layered(1);
+  opaque.alpha = nullptr;
+  EXPECT_NE(mesh_fingerprint(a), mesh_fingerprint(b));
+  EXPECT_NE(mesh_fingerprint(a), mesh_fingerprint(opaque));
+  EXPECT_EQ(mesh_fingerprint(a), mesh_fingerprint(layered(1)));
+}
+
+TEST(Alpha, CoordinatesWrapAndTheCutoffDecides) {
+  AlphaMask m = *checker();
+  m.alpha = {128, 0, 0, 255};
+  EXPECT_TRUE(m.opaque_at({0.25f, 0.25f})) << "128 / 255 >= 0.5";
+  EXPECT_TRUE(m.opaque_at({1.25f, -0.75f})) << "repeat";
+  EXPECT_FALSE(m.opaque_at({0.75f, 0.25f}));
+  m.cutoff = 0.51f;
+  EXPECT_FALSE(m.opaque_at({0.25f, 0.25f}));
+  EXPECT_TRUE(m.opaque_at({0.75f, 0.75f}));
+}
+
+}  // namespace
+}  // namespace rtsim

@@ -1,0 +1,58 @@
+#include "traces/alpha.h"
+
+#include <cmath>
+
+#include <fmt/core.h>
+
+namespace rtsim {
+namespace {
+
+uint32_t texel(float coordinate, uint32_t size) {
+  float wrapped = coordinate - std::floor(coordinate);
+  return std::min(uint32_t(wrapped * float(size)), size - 1);
+}
+
+}  // namespace
+
+bool AlphaMask::opaque_at(glm::vec2 uv) const {
+  uint8_t a = alpha[size_t(texel(uv.y, height)) * width + texel(uv.x, width)];
+  return float(a) >= cutoff * 255.0f;
+}
+
+bool TriangleAlpha::passes(uint32_t tri, float u, float v) const {
+  uint32_t mask = mask_of[tri];
+  if (mask == kOpaque) return true;
+  const std::array<glm::vec2, 3>& c = uv[tri];
+  return masks[mask]->opaque_at((1.0f - u - v) * c[0] + u * c[1] + v * c[2]);
+}
+
+std::string TriangleAlpha::problem(size_t triangles) const {
+  if (mask_of.size() != triangles || uv.size() != triangles)
+    return fmt::format("alpha for {} and texture coordinates for {} of {} triangles",
+                       mask_of.size(), uv.size(), triangles);
+  for (size_t t = 0; t < triangles; ++t) {
+    if (mask_of[t] != kOpaque && mask_of[t] >= masks.size())
+      return fmt::format("triangle {}: alpha mask {} of {}", t, mask_of[t], masks.size());
+    for (const glm::vec2& c : uv[t])
+      if (!std::isfinite(c.x) || !std::isfinite(c.y))
+        return fmt::format("triangle {}: texture coordinate is NaN or Inf", t);
+  }
+  for (const auto& m : masks)
+    if (!m || m->width == 0 || m->height == 0 || m->alpha.size() != size_t(m->width) * m->height)
+      return fmt::format("alpha mask '{}' has no texels or the wrong count", m ? m->name : "");
+  return {};
+}
+
+void append_alpha(TriangleAlpha& out, const TriangleAlpha* in, size_t triangles) {
+  if (!in) {
+    out.mask_of.insert(out.mask_of.end(), triangles, TriangleAlpha::kOpaque);
+    out.uv.resize(out.uv.size() + triangles);
+    return;
+  }
+  auto base = uint32_t(out.masks.size());
+  out.masks.insert(out.masks.end(), in->masks.begin(), in->masks.end());
+  for (uint32_t m : in->mask_of) out.mask_of.push_back(m == TriangleAlpha::kOpaque ? m : base + m);
+  out.uv.insert(out.uv.end(), in->uv.begin(), in->uv.end());
+}
+
+}  // namespace rtsim
