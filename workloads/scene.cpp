@@ -60,6 +60,12 @@ void check_indices(const Scene& scene, const TriangleMesh& mesh, const std::stri
                           "vertex index " + std::to_string(index) + " out of range");
 }
 
+void check_alpha(const Scene& scene, const TriangleMesh& mesh, const std::string& place) {
+  if (!mesh.alpha) return;
+  if (std::string problem = mesh.alpha->problem(mesh.triangle_count()); !problem.empty())
+    throw_input_error(scene.source, place, problem);
+}
+
 // A scene that keeps only its instances: checked and bounded in world space without a
 // flattened copy.
 void finalize_instanced(Scene& scene) {
@@ -71,8 +77,10 @@ void finalize_instanced(Scene& scene) {
                       fmt::format("{} instanced triangles; rtsim names triangles with 32-bit ids "
                                   "(at most {})",
                                   g.instanced_triangles(), kAnyPrim - 1));
-  for (size_t m = 0; m < g.meshes.size(); ++m)
+  for (size_t m = 0; m < g.meshes.size(); ++m) {
     check_indices(scene, g.meshes[m], fmt::format("mesh {} ", m));
+    check_alpha(scene, g.meshes[m], fmt::format("mesh {}", m));
+  }
   if (scene.mesh_material_ids.size() != g.meshes.size())
     throw_input_error(scene.source, "",
                       fmt::format("{} meshes with material ids for {} meshes",
@@ -133,6 +141,7 @@ void finalize_scene(Scene& scene) {
     if (std::string problem = vertex_problem(mesh.positions[v]); !problem.empty())
       throw_input_error(scene.source, "vertex " + std::to_string(v), problem);
   check_indices(scene, mesh, "");
+  check_alpha(scene, mesh, "");
   check_ids(scene, scene.material_ids, mesh.triangle_count(), scene.materials.size(), "material",
             "triangles");
   check_ids(scene, scene.object_ids, mesh.triangle_count(), scene.object_names.size(), "object",

@@ -106,13 +106,6 @@ TEST(Alpha, InstancesAndTheFlattenedCopyKeepTheMasks) {
     }
 }
 
-Hit hit_of(uint32_t prim, float t) {
-  Hit h;
-  h.prim = prim;
-  h.t = t;
-  return h;
-}
-
 // The arbiter applies the mask: a model hit in a hole is wrong, one on a texel edge is either
 // side's, one on an opaque texel is right.
 TEST(Alpha, TheArbiterJudgesByTheMask) {
@@ -121,15 +114,15 @@ TEST(Alpha, TheArbiterJudgesByTheMask) {
   Arbiter arbiter(mesh, embree);
   auto down = [](float x, float y) { return test::ray_to({x, y, 1.0f}, {x, y, 0.0f}); };
   // x = 1 is the edge between an opaque texel and a hole.
-  Verdict edge = arbiter.judge(down(1.0f, 0.5f), hit_of(2, 2.0f), 0, 1.0f);
+  Verdict edge = arbiter.judge(down(1.0f, 0.5f), test::hit_of(2, 2.0f), 0, 1.0f);
   EXPECT_EQ(edge.cls, MismatchClass::AlphaEdge);
   EXPECT_EQ(edge.right, RightSide::Both);
-  Verdict hole = arbiter.judge(down(1.5f, 0.5f), hit_of(2, 2.0f), 0, 1.0f);
+  Verdict hole = arbiter.judge(down(1.5f, 0.5f), test::hit_of(2, 2.0f), 0, 1.0f);
   EXPECT_EQ(hole.cls, MismatchClass::Unexplained);
   EXPECT_EQ(hole.right, RightSide::Embree);
-  Verdict opaque = arbiter.judge(down(0.75f, 0.25f), hit_of(2, 2.0f), 0, 1.0f);
+  Verdict opaque = arbiter.judge(down(0.75f, 0.25f), test::hit_of(2, 2.0f), 0, 1.0f);
   EXPECT_EQ(opaque.right, RightSide::Model);
-  EXPECT_TRUE(arbiter.judge(down(1.5f, 0.5f), hit_of(2, 2.0f), 2, 2.0f).agree);
+  EXPECT_TRUE(arbiter.judge(down(1.5f, 0.5f), test::hit_of(2, 2.0f), 2, 2.0f).agree);
 }
 
 TEST(Alpha, TheFingerprintSeesTheMask) {

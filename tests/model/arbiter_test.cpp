@@ -20,13 +20,6 @@ TriangleMesh scene() {
   return mesh;
 }
 
-Hit hit_of(uint32_t prim, float t) {
-  Hit h;
-  h.prim = prim;
-  h.t = t;
-  return h;
-}
-
 TEST(Arbiter, ExactIntersectionInDouble) {
   TriangleMesh mesh = scene();
   Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
@@ -43,9 +36,10 @@ TEST(Arbiter, AgreementIsNotAMismatch) {
   EmbreeScene embree(mesh, 1);
   Arbiter arbiter(mesh, embree);
   Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
-  EXPECT_TRUE(arbiter.judge(ray, hit_of(0, 2.0f), 0, 2.0f).agree);
+  EXPECT_TRUE(arbiter.judge(ray, test::hit_of(0, 2.0f), 0, 2.0f).agree);
   EXPECT_TRUE(arbiter.judge(ray, Hit{}, kNoHit, 0.0f).agree);
-  EXPECT_TRUE(arbiter.judge(ray, hit_of(0, 2.0f), 0, 2.0f + 1e-6f).agree) << "within tolerance";
+  EXPECT_TRUE(arbiter.judge(ray, test::hit_of(0, 2.0f), 0, 2.0f + 1e-6f).agree)
+      << "within tolerance";
 }
 
 TEST(Arbiter, SharedEdgeHitsAreExplained) {
@@ -53,7 +47,7 @@ TEST(Arbiter, SharedEdgeHitsAreExplained) {
   EmbreeScene embree(mesh, 1);
   Arbiter arbiter(mesh, embree);
   Ray ray = test::ray_to({0.5f, 0.5f, 3.0f}, {0.5f, 0.5f, 0.0f});
-  Verdict v = arbiter.judge(ray, hit_of(0, 3.0f), 1, 3.0f);
+  Verdict v = arbiter.judge(ray, test::hit_of(0, 3.0f), 1, 3.0f);
   EXPECT_FALSE(v.agree);
   EXPECT_EQ(v.cls, MismatchClass::EdgeOrVertex);
   EXPECT_EQ(v.right, RightSide::Both);
@@ -75,14 +69,14 @@ TEST(Arbiter, EdgeToleranceFollowsTheCoordinatesPrecision) {
     float x = base + 0.5f + 0x1p-13f, y = base + 0.5f;  // 0x1p-13: one ulp at 2000
     Ray ray = test::ray_to({x, y, 3.0f}, {x, y, 0.0f});
     EXPECT_NEAR(exact_intersect(mesh, 0, ray).min_barycentric, 0x1p-13, 1e-9);
-    Verdict v = arbiter.judge(ray, hit_of(1, 3.0f), 0, 3.0f);  // Embree claims the neighbour
+    Verdict v = arbiter.judge(ray, test::hit_of(1, 3.0f), 0, 3.0f);  // Embree claims the neighbour
     EXPECT_FALSE(v.agree);
     if (base == 0.0f) {
       EXPECT_EQ(v.cls, MismatchClass::Unexplained);
       EXPECT_EQ(v.right, RightSide::Model);
     } else {
-      EXPECT_EQ(v.cls, MismatchClass::EdgeOrVertex) << "edge_error "
-                                                    << exact_intersect(mesh, 0, ray).edge_error;
+      EXPECT_EQ(v.cls, MismatchClass::EdgeOrVertex)
+          << "edge_error " << exact_intersect(mesh, 0, ray).edge_error;
     }
   }
 }
@@ -92,7 +86,7 @@ TEST(Arbiter, DuplicateTrianglesAreATie) {
   EmbreeScene embree(mesh, 1);
   Arbiter arbiter(mesh, embree);
   Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
-  Verdict v = arbiter.judge(ray, hit_of(0, 2.0f), 2, 2.0f);
+  Verdict v = arbiter.judge(ray, test::hit_of(0, 2.0f), 2, 2.0f);
   EXPECT_EQ(v.cls, MismatchClass::EqualTTie);
   EXPECT_EQ(v.right, RightSide::Both);
 }
@@ -113,18 +107,18 @@ TEST(Arbiter, ClearDisagreementIsUnexplainedAndNamesTheRightSide) {
   Arbiter arbiter(mesh, embree);
   Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
   // The model misses a triangle hit squarely in its middle: Embree is right.
-  Verdict missed = arbiter.judge(ray, hit_of(0, 2.0f), kNoHit, 0.0f);
+  Verdict missed = arbiter.judge(ray, test::hit_of(0, 2.0f), kNoHit, 0.0f);
   EXPECT_EQ(missed.cls, MismatchClass::Unexplained);
   EXPECT_EQ(missed.right, RightSide::Embree);
   // The model reports a triangle the ray does not cross, at the right t: Embree is right.
-  Verdict wrong = arbiter.judge(ray, hit_of(0, 2.0f), 1, 2.0f);
+  Verdict wrong = arbiter.judge(ray, test::hit_of(0, 2.0f), 1, 2.0f);
   EXPECT_EQ(wrong.cls, MismatchClass::Unexplained);
   EXPECT_EQ(wrong.right, RightSide::Embree);
   Verdict far = arbiter.judge(ray, Hit{}, 1, 2.0f);
   EXPECT_EQ(far.cls, MismatchClass::Unexplained);
   EXPECT_EQ(far.right, RightSide::Embree);
   // Same triangle, clearly different t.
-  EXPECT_EQ(arbiter.judge(ray, hit_of(0, 2.0f), 0, 2.5f).cls, MismatchClass::Unexplained);
+  EXPECT_EQ(arbiter.judge(ray, test::hit_of(0, 2.0f), 0, 2.5f).cls, MismatchClass::Unexplained);
 }
 
 TEST(Arbiter, AnyHitDisagreementFindsACandidate) {
@@ -133,7 +127,7 @@ TEST(Arbiter, AnyHitDisagreementFindsACandidate) {
   Arbiter arbiter(mesh, embree);
   Ray ray = test::ray_to({0.75f, 0.25f, 2.0f}, {0.75f, 0.25f, 0.0f});
   ray.query = Query::AnyHit;
-  Hit occluded = hit_of(kAnyPrim, ray.tmax);
+  Hit occluded = test::hit_of(kAnyPrim, ray.tmax);
   Verdict v = arbiter.judge(ray, occluded, kNoHit, 0.0f);
   EXPECT_EQ(v.cls, MismatchClass::Unexplained);
   EXPECT_EQ(v.right, RightSide::Embree);

@@ -28,7 +28,7 @@ std::string describe_examples(const VerifyReport& r) {
 }
 
 class HardCases : public ::testing::TestWithParam<BvhConfig> {
-protected:
+ protected:
   static const std::vector<hardcases::HardCase>& cases() {
     static const auto all = hardcases::make_hard_cases(1000, 17);
     return all;

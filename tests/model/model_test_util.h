@@ -50,6 +50,14 @@ inline std::vector<BvhConfig> all_configs() {
   return out;
 }
 
+// A closest hit on prim at t, as EmbreeScene::trace reports it.
+inline Hit hit_of(uint32_t prim, float t) {
+  Hit h;
+  h.prim = prim;
+  h.t = t;
+  return h;
+}
+
 inline Ray ray_to(glm::vec3 org, glm::vec3 target) {
   Ray r;
   r.org = org;

@@ -28,9 +28,15 @@ void verify_scene(const std::string& relative, size_t rays) {
   }
 }
 
-TEST(SharedScenes, CornellBox) { verify_scene("cornell-box/CornellBox-Original.obj", 20000); }
-TEST(SharedScenes, Bunny) { verify_scene("bunny/bun_zipper.ply", 20000); }
-TEST(SharedScenes, Sibenik) { verify_scene("sibenik/sibenik.obj", 20000); }
+TEST(SharedScenes, CornellBox) {
+  verify_scene("cornell-box/CornellBox-Original.obj", 20000);
+}
+TEST(SharedScenes, Bunny) {
+  verify_scene("bunny/bun_zipper.ply", 20000);
+}
+TEST(SharedScenes, Sibenik) {
+  verify_scene("sibenik/sibenik.obj", 20000);
+}
 
 }  // namespace
 }  // namespace rtsim
