@@ -12,18 +12,34 @@ uint32_t texel(float coordinate, uint32_t size) {
   return std::min(uint32_t(wrapped * float(size)), size - 1);
 }
 
+glm::vec2 at(const std::array<glm::vec2, 3>& c, float u, float v) {
+  return (1.0f - u - v) * c[0] + u * c[1] + v * c[2];
+}
+
 }  // namespace
 
-bool AlphaMask::opaque_at(glm::vec2 uv) const {
-  uint8_t a = alpha[size_t(texel(uv.y, height)) * width + texel(uv.x, width)];
-  return float(a) >= cutoff * 255.0f;
+uint32_t AlphaMask::texel_at(glm::vec2 uv) const {
+  return texel(uv.y, height) * width + texel(uv.x, width);
 }
 
 bool TriangleAlpha::passes(uint32_t tri, float u, float v) const {
   uint32_t mask = mask_of[tri];
-  if (mask == kOpaque) return true;
-  const std::array<glm::vec2, 3>& c = uv[tri];
-  return masks[mask]->opaque_at((1.0f - u - v) * c[0] + u * c[1] + v * c[2]);
+  return mask == kOpaque || masks[mask]->opaque_at(at(uv[tri], u, v));
+}
+
+uint64_t TriangleAlpha::texel_offset(uint32_t tri, float u, float v) const {
+  const AlphaMask& mask = *masks[mask_of[tri]];
+  return mask.texture_offset + uint64_t(mask.texel_at(at(uv[tri], u, v))) * kTexelBytes;
+}
+
+uint64_t place_textures(const std::vector<std::shared_ptr<AlphaMask>>& masks, uint64_t offset) {
+  constexpr uint64_t kAlign = 4096;
+  for (const auto& m : masks) {
+    offset = (offset + kAlign - 1) / kAlign * kAlign;
+    m->texture_offset = offset;
+    offset += uint64_t(m->width) * m->height * kTexelBytes;
+  }
+  return offset;
 }
 
 std::string TriangleAlpha::problem(size_t triangles) const {

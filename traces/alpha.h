@@ -23,9 +23,16 @@ struct AlphaMask {
   uint32_t width = 0, height = 0;
   std::vector<uint8_t> alpha;  // width x height, row after row
   float cutoff = 0.5f;         // glTF alphaCutoff: alpha / 255 below it is a hole
+  // Where the timing model keeps the mask's texture (RGBA8, kTexelBytes a texel, row after
+  // row): bytes from the start of the texture region (model/mem/memory_level.h kTextureBase).
+  uint64_t texture_offset = 0;
 
-  bool opaque_at(glm::vec2 uv) const;
+  // The texel a texture coordinate reads: row * width + column.
+  uint32_t texel_at(glm::vec2 uv) const;
+  bool opaque_at(glm::vec2 uv) const { return float(alpha[texel_at(uv)]) >= cutoff * 255.0f; }
 };
+
+constexpr uint32_t kTexelBytes = 4;  // a texel of the base colour texture the mask comes from
 
 // The alpha-tested triangles of one TriangleMesh.
 struct TriangleAlpha {
@@ -37,9 +44,15 @@ struct TriangleAlpha {
   bool tested(uint32_t tri) const { return mask_of[tri] != kOpaque; }
   // True if a hit at barycentrics (u, v) of vertices 1 and 2 of triangle tri counts.
   bool passes(uint32_t tri, float u, float v) const;
+  // The texel that decides, as a byte offset into the texture region (an alpha-tested tri).
+  uint64_t texel_offset(uint32_t tri, float u, float v) const;
   // Why the arrays cannot serve a mesh of `triangles` triangles; empty if they can.
   std::string problem(size_t triangles) const;
 };
+
+// Places masks' textures one after another from byte `offset` of the texture region, each
+// 4 KiB aligned; returns the offset after the last (a scene lays out its masks once).
+uint64_t place_textures(const std::vector<std::shared_ptr<AlphaMask>>& masks, uint64_t offset = 0);
 
 // Appends the alpha of a mesh of `triangles` triangles (null: all opaque) after out's, as
 // flatten() appends instances; the masks are shared.

@@ -287,6 +287,19 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                            0, kMaxU32));
   read_cache(rt.section("l1"), c.l1, "each RT unit's L1");
 
+  ConfigReader shader = r.section("shader");
+  AnyHitConfig& anyhit = c.rt.anyhit;
+  anyhit.shader.latency = uint32_t(shader.integer(
+      "anyhit_latency", anyhit.shader.latency, "cycles",
+      "an any-hit call's round trip from the RT unit to the shader core and back (alpha-tested "
+      "triangles; the texel read is timed through the L1)",
+      1, 100000));
+  anyhit.shader.count = uint32_t(
+      shader.integer("anyhit_per_cycle", anyhit.shader.count, "calls",
+                     "any-hit calls the shader core starts per cycle for one RT unit", 1, 64));
+  anyhit.read_bytes = uint32_t(shader.integer("anyhit_read_bytes", anyhit.read_bytes, "bytes",
+                                              "texture bytes one any-hit call reads", 1, 4096));
+
   ConfigReader tq = r.section("treelet_queues");
   c.treelet_queues.policy = tq.text("policy", c.treelet_queues.policy,
                                     "which queue a unit serves next", treelet_policy_names());

@@ -21,6 +21,9 @@ constexpr Cycle kPending = ~Cycle(0);  // a read whose ready cycle is not known 
 // Local memory (the RT units' stack spills) lives at and above this address; caches count its
 // traffic apart (model/sched/hardware_stack.h places the spills).
 constexpr uint64_t kLocalMemoryBase = 0x7000'0000'0000ull;
+// Textures the shader core reads (any-hit alpha tests, traces/alpha.h) live at and above this
+// address, below local memory.
+constexpr uint64_t kTextureBase = 0x6000'0000'0000ull;
 
 // What one read cost the levels of the hierarchy, charged to the ray that made it. A level
 // counts its own line accesses and hits; the last cache level counts the bytes it fetched.

@@ -189,6 +189,23 @@ void report_levels(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitMod
   }
 }
 
+// Alpha-tested scenes: the any-hit calls, the cycles rays waited for them, and what the
+// shader's texel reads cost.
+void report_anyhit(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units) {
+  uint64_t calls = 0, cycles = 0;
+  for (const auto& unit : units) {
+    calls += unit->core().stats().anyhit_calls;
+    cycles += unit->core().stats().anyhit_cycles;
+  }
+  r.counter("anyhit.calls", calls);
+  r.counter("anyhit.wait_cycles", cycles);
+  report_reads(r, "anyhit.texture", units, &RtCoreStats::texture);
+  r.ratio("anyhit.calls_per_ray", "anyhit.calls", "rays");
+  r.ratio("anyhit.mean_wait", "anyhit.wait_cycles", "anyhit.calls");
+  r.ratio("anyhit.texture.l1_miss_rate", "anyhit.texture.l1_misses", "anyhit.texture.l1_accesses");
+  r.ratio("anyhit.texture.dram_bytes_per_ray", "anyhit.texture.dram_read_bytes", "rays");
+}
+
 // The ray buffer's SRAM, and the states kept in memory: what the units read and wrote through
 // their L1s, and what those reads cost below.
 void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
@@ -332,6 +349,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
       r.counter(p + ".instance_steps", s.instance_steps);
       report_test_units(r, p + ".transform", core.transform());
     }
+    if (alpha_tested) report_test_units(r, p + ".anyhit", core.anyhit_shader());
     report_cache(r, p + ".l1", unit->l1.cache().stats(), true,
                  unit->l1.cache().config().bytes_per_cycle);
     total.steps += steps;
@@ -365,6 +383,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
           1.0 / (double(slots) * config_.rt_units));
 
   if (two_level) report_levels(r, units_);
+  if (alpha_tested) report_anyhit(r, units_);
   if (config_.rt.prefetch.trigger != PrefetchTrigger::None) report_prefetch(r, units_);
   report_l2(r, *l2_);
   if (banked_dram_) report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);
@@ -392,7 +411,11 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     r.counter(p + ".trav_leaves", s.counters.trav_leaves);
     r.counter(p + ".trav_prims", s.counters.trav_prims);
     r.counter(p + ".trav_prim_hits", s.counters.trav_prim_hits);
-    if (alpha_tested) r.counter(p + ".trav_alpha_tests", s.counters.trav_alpha_tests);
+    if (alpha_tested) {
+      r.counter(p + ".trav_alpha_tests", s.counters.trav_alpha_tests);
+      r.counter(p + ".anyhit_cycles", s.anyhit_cycles);
+      r.ratio(p + ".anyhit_calls_per_ray", p + ".trav_alpha_tests", p + ".rays");
+    }
     if (two_level) {
       r.counter(p + ".trav_instances", s.counters.trav_instances);
       r.ratio(p + ".instances_per_ray", p + ".trav_instances", p + ".rays");

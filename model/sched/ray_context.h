@@ -22,6 +22,7 @@ struct RayCost {
   uint32_t stack_spills = 0;              // entries written out of the hardware stack
   uint32_t stack_refills = 0;             // entries read back
   uint32_t postponed = 0;                 // times it waited in a treelet queue
+  uint64_t anyhit_cycles = 0;             // cycles waiting for any-hit calls (rt_core.h)
 };
 
 struct RayContext {

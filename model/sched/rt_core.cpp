@@ -40,6 +40,8 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
   if (!problem.empty()) return "triangle: " + problem;
   problem = test_unit_config_problem(c.transform);
   if (!problem.empty()) return "transform: " + problem;
+  problem = test_unit_config_problem(c.anyhit.shader);
+  if (!problem.empty()) return "any-hit shader: " + problem;
   const PrefetchConfig& p = c.prefetch;
   if (p.trigger != PrefetchTrigger::None && c.mode == TraversalMode::Packet)
     return "prefetch: needs per-ray traversal (depth_first or treelet), not packet mode";
@@ -76,6 +78,7 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
       box_(config.box),
       triangle_(config.triangle),
       transform_(config.transform),
+      shader_(config.anyhit.shader),
       prefetcher_(config.prefetch, footprints) {
   std::string problem = rt_core_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
@@ -90,6 +93,7 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
   pending_reads_.assign(slots_.size(), 0);
   data_ready_.assign(slots_.size(), 0);
   step_tests_.assign(slots_.size(), kNoTests);
+  step_calls_.assign(slots_.size(), 0);
   step_kind_.assign(slots_.size(), StepKind::Done);
   lane_next_.resize(config.warp_size);
   if (config.mode == TraversalMode::Packet) {

@@ -60,6 +60,21 @@ struct PacketReorderConfig {
   uint32_t latency = 2;    // cycles: the regrouping
 };
 
+// Any-hit shader calls (alpha-tested triangles, traces/alpha.h). After a leaf's tests, each
+// candidate on an alpha-tested triangle goes to the shader core and back, one call after another
+// in the order the tests found them (a ray's any-hit calls are ordered, as in DXR), for closest-
+// and any-hit queries alike. A call takes an issue slot of the shader pool (`shader.count` calls
+// start a cycle) and answers `shader.latency` cycles later: the hand-off, the shader and the
+// answer. The shader reads the mask's texel, `read_bytes` at its address in the texture region
+// (model/mem/memory_level.h), through the unit's L1: the RT unit sits beside its shader core and
+// shares its L1, as on NVIDIA's SMs. The model issues those reads with the leaf's own read (a
+// unit's reads go out in its local time order), so their latency overlaps the leaf's fetch
+// rather than following the tests.
+struct AnyHitConfig {
+  TestUnitConfig shader{1, 1, 60};
+  uint32_t read_bytes = 4;  // bytes: an RGBA8 texel, nearest sampling
+};
+
 struct RtCoreConfig {
   TraversalMode mode = TraversalMode::DepthFirst;
   uint32_t warps = 4;            // warps: warp slots of the unit
@@ -77,6 +92,7 @@ struct RtCoreConfig {
   PacketReorderConfig reorder;
   Refill refill = Refill::Warp;
   PrefetchConfig prefetch;  // treelet prefetching into the unit's L1 (off by default)
+  AnyHitConfig anyhit;
 };
 
 std::string rt_core_config_problem(const RtCoreConfig& config);
@@ -101,6 +117,10 @@ struct RtCoreStats {
   ReadCounts state;
   // Two levels: what reading the TLAS (nodes, instance records) and the BLASes cost.
   ReadCounts top, bottom;
+  // Any-hit calls, the cycles rays waited for them (from their leaf's tests to the last
+  // answer), and what the shader's texel reads cost.
+  uint64_t anyhit_calls = 0, anyhit_cycles = 0;
+  ReadCounts texture;
   uint64_t warp_steps = 0, active_lanes = 0;  // packet mode
   uint64_t node_warp_steps = 0, distinct_nodes = 0;
   uint64_t packet_lanes = 0;   // lanes of the packets stepped (SIMD efficiency's denominator)
@@ -143,6 +163,7 @@ class RtCore : private ReadClient {
   const TestUnitPool& box() const { return box_; }
   const TestUnitPool& triangle() const { return triangle_; }
   const TestUnitPool& transform() const { return transform_; }
+  const TestUnitPool& anyhit_shader() const { return shader_; }
   const PrefetchStats& prefetch_stats() const { return prefetcher_.stats(); }
   const RtCoreConfig& config() const { return config_; }
   uint32_t id() const { return id_; }
@@ -194,9 +215,13 @@ class RtCore : private ReadClient {
   void load_state(RayContext& ray, Cycle now);
   uint32_t treelet_of(const RayContext& ray, const Next& next) const;
   void settle(RayContext& ray, uint32_t kept, uint32_t visited_treelet, Cycle now);
-  // Two levels: which level an address is in (1 top, 2 bottom; 0 neither, or one level), and
-  // counting a read's cost against it.
+  // What an address holds, for counting a read's cost against it: 1 the top level, 2 the
+  // bottom levels (two levels), 3 a texture; 0 anything else.
   uint32_t level_of(uint64_t addr) const;
+  // After a leaf's tests done at `tested`: the slot's any-hit calls; returns their last answer.
+  Cycle call_anyhit(uint32_t slot, Cycle tested);
+  // Issues the step's texel reads; `known` becomes the latest ready cycle known at once.
+  void read_texels(RayContext& ray, const StepResult& step, Cycle now, Cycle& known);
   // Counts a step by kind (and level: `after` is the ray's state after it).
   void count_step(StepKind kind, const TraversalState& after);
   void charge_level(uint32_t level, const ReadCharge& charge);
@@ -214,7 +239,7 @@ class RtCore : private ReadClient {
   RaySupply* supply_ = nullptr;
   HardwareStack stack_;
   uint32_t state_bytes_;  // treelet mode: one ray's state in the ray buffer
-  TestUnitPool box_, triangle_, transform_;
+  TestUnitPool box_, triangle_, transform_, shader_;
   TreeletPrefetcher prefetcher_;
   EventQueue events_;
   std::vector<RayContext*> slots_;    // warps * warp_size
@@ -227,7 +252,7 @@ class RtCore : private ReadClient {
   // Per slot: the tests of the step waiting for its data (kNoTests: no step); per item: that
   // step's kind.
   static constexpr uint32_t kNoTests = ~0u;
-  std::vector<uint32_t> step_tests_;
+  std::vector<uint32_t> step_tests_, step_calls_;
   std::vector<StepKind> step_kind_;
   uint32_t waiting_reads_ = 0;
   Cycle data_event_ = kPending;

@@ -87,6 +87,7 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
         if (ready != kPending) data = std::max(data, ready);
       }
     }
+    read_texels(ray, step, now, data);
     settle(ray, lane_next_[lane].depth, 0, now);
     ray.state.accesses.clear();
   }

@@ -20,12 +20,14 @@ void add_charge(Cost& cost, const ReadCharge& c) {
 }  // namespace
 
 uint32_t RtCore::level_of(uint64_t addr) const {
+  if (addr >= kTextureBase && addr < kLocalMemoryBase) return 3;
   if (addr < bvh_begin_ || addr >= bvh_end_ || top_end_ == bvh_begin_) return 0;
   return addr < top_end_ ? 1 : 2;
 }
 
 void RtCore::charge_level(uint32_t level, const ReadCharge& charge) {
-  if (level != 0) add_charge(level == 1 ? stats_.top : stats_.bottom, charge);
+  if (level != 0)
+    add_charge(level == 1 ? stats_.top : level == 2 ? stats_.bottom : stats_.texture, charge);
 }
 
 void RtCore::count_step(StepKind kind, const TraversalState& after) {
@@ -101,13 +103,34 @@ Cycle RtCore::test_step(uint32_t item, Cycle data) {
   Cycle done = data;
   for (uint32_t slot = first; slot < first + count; ++slot) {
     if (step_tests_[slot] == kNoTests) continue;
-    done = std::max(done, unit.reserve(data, step_tests_[slot]));
+    done = std::max(done, call_anyhit(slot, unit.reserve(data, step_tests_[slot])));
     step_tests_[slot] = kNoTests;
   }
   Cycle next = done + config_.control_latency;
   if (config_.mode != TraversalMode::Packet) slots_[item]->ready = next;
   events_.push(next, item);
   return next;
+}
+
+Cycle RtCore::call_anyhit(uint32_t slot, Cycle tested) {
+  uint32_t calls = step_calls_[slot];
+  if (calls == 0) return tested;
+  step_calls_[slot] = 0;
+  Cycle answered = tested;
+  for (uint32_t i = 0; i < calls; ++i) answered = shader_.reserve(answered, 1);
+  stats_.anyhit_calls += calls;
+  stats_.anyhit_cycles += answered - tested;
+  slots_[slot]->cost.anyhit_cycles += answered - tested;
+  return answered;
+}
+
+void RtCore::read_texels(RayContext& ray, const StepResult& step, Cycle now, Cycle& known) {
+  step_calls_[ray.slot] = step.anyhit_calls;
+  for (uint64_t addr : ray.state.texels) {
+    Cycle ready = read(ray, addr, config_.anyhit.read_bytes, now);
+    if (ready != kPending) known = std::max(known, ready);
+  }
+  ray.state.texels.clear();
 }
 
 Cycle RtCore::fetch(RayContext& ray, const StepResult& step, Cycle now) {
@@ -214,13 +237,15 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   }
   progress_++;
   Cycle data = fetch(ray, step, now);
+  Cycle known = data == kPending ? now : data;
+  read_texels(ray, step, now, known);
   if (prefetch_node) prefetch(prefetcher_.on_node(visited_treelet), now);
   count_step(step.kind, ray.state);
   settle(ray, next.depth, visited_treelet, now);
   ray.state.accesses.clear();
   step_tests_[slot] = step.tests ? step.tests : kNoTests;  // none: a masked instance
   step_kind_[slot] = step.kind;
-  if (!wait_reads(slot, Wait::Data, now)) test_step(slot, data);
+  if (!wait_reads(slot, Wait::Data, known)) test_step(slot, known);
 }
 
 }  // namespace rtsim

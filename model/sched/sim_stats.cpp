@@ -32,6 +32,7 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
   s.stack_spills += cost.stack_spills;
   s.stack_refills += cost.stack_refills;
   s.postponed += cost.postponed;
+  s.anyhit_cycles += cost.anyhit_cycles;
   s.latency.add(latency);
   rays_++;
   Warp& warp = warps_[ray.sequence / warp_size_];

@@ -22,7 +22,8 @@ struct RayTypeStats {
   uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0;
   uint64_t dram_bytes = 0;
   uint64_t stack_spills = 0, stack_refills = 0, postponed = 0;
-  LatencyHistogram latency;  // cycles from dispatch to retirement
+  uint64_t anyhit_cycles = 0;  // cycles waiting for any-hit calls
+  LatencyHistogram latency;    // cycles from dispatch to retirement
   // Warps: warp_size consecutive rays of the stream, as a shader core issues them; a warp waits
   // from its first ray's dispatch to its last ray's retirement. A warp counts for the type of
   // its first ray.

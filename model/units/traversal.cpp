@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "model/bvh/node_format.h"
+#include "model/mem/memory_level.h"
 #include "model/units/ray_box.h"
 #include "model/units/ray_triangle.h"
 
@@ -47,6 +48,7 @@ void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
   s.max_stack = 1;
   s.counters = {};
   s.accesses.clear();
+  s.texels.clear();
   s.done = false;
 }
 
@@ -127,6 +129,9 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
       continue;
     if (level.alpha && level.alpha->tested(prim)) {
       s.counters.trav_alpha_tests++;
+      out.anyhit_calls++;
+      if (config_.record_accesses)
+        s.texels.push_back(kTextureBase + level.alpha->texel_offset(prim, hit.u, hit.v));
       if (!level.alpha->passes(prim, hit.u, hit.v)) continue;
     }
     // Keep the hit; the range now ends there.

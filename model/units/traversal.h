@@ -14,6 +14,9 @@
 // inclusion mask is skipped after its record is read, without a transform. Animated instances:
 // a ray starts in its frame's top level. t keeps its meaning across levels (an affine map preserves
 // the ray's parameter), so the closest hit so far bounds both.
+// Alpha-tested triangles (traces/alpha.h): a candidate hit on one is an any-hit call (counted,
+// its texel's address kept in state.texels for the timing model), dropped where the mask has a
+// hole; the ray goes on as if the triangle were not there.
 #pragma once
 
 #include <cstdint>
@@ -33,11 +36,11 @@ struct TraversalConfig {
 
 // Per-ray counters under Embree's names.
 struct TraversalCounters {
-  uint64_t trav_nodes = 0;      // node visits (node fetches)
-  uint64_t trav_leaves = 0;     // leaf visits
-  uint64_t trav_prims = 0;      // ray-triangle tests
-  uint64_t trav_prim_hits = 0;  // tests that hit (in range, before later ones shortened it)
-  uint64_t trav_instances = 0;  // instance transforms (two levels: BLAS entries)
+  uint64_t trav_nodes = 0;        // node visits (node fetches)
+  uint64_t trav_leaves = 0;       // leaf visits
+  uint64_t trav_prims = 0;        // ray-triangle tests
+  uint64_t trav_prim_hits = 0;    // tests that hit (in range, before later ones shortened it)
+  uint64_t trav_instances = 0;    // instance transforms (two levels: BLAS entries)
   uint64_t trav_alpha_tests = 0;  // candidate hits on alpha-tested triangles (traces/alpha.h)
 
   TraversalCounters& operator+=(const TraversalCounters& o);
@@ -80,6 +83,9 @@ struct TraversalState {
   uint32_t max_stack = 0;  // deepest the stack got, in entries
   TraversalCounters counters;
   std::vector<MemoryAccess> accesses;  // this ray's fetches, in order
+  // The texel addresses of its any-hit calls (alpha-tested candidates), in order; the shader
+  // core reads them, not the traversal, so they are kept apart from `accesses`.
+  std::vector<uint64_t> texels;
   bool done = true;
 };
 
@@ -89,8 +95,9 @@ struct StepResult {
   StepKind kind = StepKind::Done;
   uint32_t first_access = 0;  // this step's fetches: state.accesses[first, first + count)
   uint32_t access_count = 0;
-  uint32_t tests = 0;  // boxes (node) or triangles (leaf) tested; 1 transform (instance)
-  uint32_t hits = 0;   // boxes entered, or triangles hit
+  uint32_t tests = 0;         // boxes (node) or triangles (leaf) tested; 1 transform (instance)
+  uint32_t hits = 0;          // boxes entered, or triangles hit
+  uint32_t anyhit_calls = 0;  // leaf: candidates on alpha-tested triangles (state.texels' last)
 };
 
 class TraversalUnit {

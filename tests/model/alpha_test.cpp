@@ -8,37 +8,11 @@
 #include "model/bvh/two_level.h"
 #include "model/verify/arbiter.h"
 #include "model_test_util.h"
+#include "tests/alpha_layers.h"
 #include "traces/embree_scene.h"
 
 namespace rtsim {
 namespace {
-
-// A 2x2 checker whose texels (0, 0) and (1, 1) are opaque.
-std::shared_ptr<const AlphaMask> checker() {
-  auto m = std::make_shared<AlphaMask>();
-  m->name = "checker";
-  m->width = m->height = 2;
-  m->alpha = {255, 0, 0, 255};
-  return m;
-}
-
-// `layers` checker-masked quads [0, 2]^2 at z = 0, -1, ... (texture coordinates x/2, y/2), then
-// an opaque quad at z = -layers.
-TriangleMesh layered(int layers) {
-  TriangleMesh mesh;
-  auto alpha = std::make_shared<TriangleAlpha>();
-  alpha->masks = {checker()};
-  for (int l = 0; l <= layers; ++l) {
-    auto z = float(-l);
-    test::add_triangle(mesh, {0, 0, z}, {2, 0, z}, {2, 2, z});
-    test::add_triangle(mesh, {0, 0, z}, {2, 2, z}, {0, 2, z});
-    alpha->mask_of.insert(alpha->mask_of.end(), 2, l < layers ? 0 : TriangleAlpha::kOpaque);
-    alpha->uv.push_back({glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1)});
-    alpha->uv.push_back({glm::vec2(0, 0), glm::vec2(1, 1), glm::vec2(0, 1)});
-  }
-  mesh.alpha = std::move(alpha);
-  return mesh;
-}
 
 struct Aim {
   glm::vec2 at;
@@ -50,7 +24,7 @@ const Aim kAims[] = {
 
 TEST(Alpha, RaysPassThroughTheHolesOfEveryLayerToTheOpaqueOne) {
   constexpr int kLayers = 6;
-  TriangleMesh mesh = layered(kLayers);
+  TriangleMesh mesh = test::layered(kLayers);
   EmbreeScene embree(mesh, 1);
   for (const BvhConfig& config : test::all_configs()) {
     SCOPED_TRACE(describe(config));
@@ -78,7 +52,7 @@ TEST(Alpha, RaysPassThroughTheHolesOfEveryLayerToTheOpaqueOne) {
 // two-level traversal and the flattened copy agree, and flattening keeps each triangle's mask.
 TEST(Alpha, InstancesAndTheFlattenedCopyKeepTheMasks) {
   InstancedMesh g;
-  g.meshes.push_back(layered(3));
+  g.meshes.push_back(test::layered(3));
   g.instances.push_back({0, Transform{}});
   Transform turned;
   turned.linear = glm::mat3(glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, -1));
@@ -102,14 +76,16 @@ TEST(Alpha, InstancesAndTheFlattenedCopyKeepTheMasks) {
       EXPECT_NEAR(ours.t, flat_hit.t, 1e-5f * ours.t);
       EXPECT_EQ(ours.instance, reference.instance);
       // From behind, the turned instance puts the holes' aims on its quads' diagonals.
-      if (dz > 0) EXPECT_EQ(flat.flat_offsets[ours.instance] + ours.prim, flat_hit.prim);
+      if (dz > 0) {
+        EXPECT_EQ(flat.flat_offsets[ours.instance] + ours.prim, flat_hit.prim);
+      }
     }
 }
 
 // The arbiter applies the mask: a model hit in a hole is wrong, one on a texel edge is either
 // side's, one on an opaque texel is right.
 TEST(Alpha, TheArbiterJudgesByTheMask) {
-  TriangleMesh mesh = layered(1);
+  TriangleMesh mesh = test::layered(1);
   EmbreeScene embree(mesh, 1);
   Arbiter arbiter(mesh, embree);
   auto down = [](float x, float y) { return test::ray_to({x, y, 1.0f}, {x, y, 0.0f}); };
@@ -126,21 +102,21 @@ TEST(Alpha, TheArbiterJudgesByTheMask) {
 }
 
 TEST(Alpha, TheFingerprintSeesTheMask) {
-  TriangleMesh a = layered(1), b = layered(1);
+  TriangleMesh a = test::layered(1), b = test::layered(1);
   auto holes = std::make_shared<TriangleAlpha>(*b.alpha);
-  auto other = std::make_shared<AlphaMask>(*checker());
+  auto other = std::make_shared<AlphaMask>(*test::checker());
   other->alpha = {0, 255, 255, 0};
   holes->masks = {other};
   b.alpha = holes;
-  TriangleMesh opaque = layered(1);
+  TriangleMesh opaque = test::layered(1);
   opaque.alpha = nullptr;
   EXPECT_NE(mesh_fingerprint(a), mesh_fingerprint(b));
   EXPECT_NE(mesh_fingerprint(a), mesh_fingerprint(opaque));
-  EXPECT_EQ(mesh_fingerprint(a), mesh_fingerprint(layered(1)));
+  EXPECT_EQ(mesh_fingerprint(a), mesh_fingerprint(test::layered(1)));
 }
 
 TEST(Alpha, CoordinatesWrapAndTheCutoffDecides) {
-  AlphaMask m = *checker();
+  AlphaMask m = *test::checker();
   m.alpha = {128, 0, 0, 255};
   EXPECT_TRUE(m.opaque_at({0.25f, 0.25f})) << "128 / 255 >= 0.5";
   EXPECT_TRUE(m.opaque_at({1.25f, -0.75f})) << "repeat";

@@ -101,6 +101,48 @@ TEST(RtCoreTiming, AnInstanceStepTakesItsRecordFetchAndTheTransformLatency) {
   EXPECT_EQ(core.transform().stats().tests, 1u);
 }
 
+// The triangle alpha-tested with a 2x2 mask: texel 3 (u, v >= 0.5) decides for a ray through
+// the triangle's middle; its alpha is `alpha`.
+BvhImage alpha_image(OneTriangle& scene, uint8_t alpha) {
+  auto mask = std::make_shared<AlphaMask>();
+  mask->width = mask->height = 2;
+  mask->alpha = {255, 255, 255, alpha};
+  mask->texture_offset = 8192;
+  auto a = std::make_shared<TriangleAlpha>();
+  a->masks = {mask};
+  a->mask_of = {0};
+  a->uv = {{glm::vec2(0.5f, 0.5f), glm::vec2(0.9f, 0.9f), glm::vec2(0.6f, 0.9f)}};
+  scene.mesh.alpha = a;
+  return build_bvh_image(scene.mesh, BvhConfig{});
+}
+
+TEST(RtCoreTiming, OneAnyHitCallCostsExactlyItsLatencyAndReadsItsTexel) {
+  for (uint8_t alpha : {uint8_t(255), uint8_t(0)}) {
+    OneTriangle scene;
+    BvhImage image = alpha_image(scene, alpha);
+    TraversalUnit unit(image);
+    test::MockRayMemory memory(50);
+    test::MockSupply supply({scene.ray}, unit, 1, {1.0, 10});
+    RtCoreConfig c = timing_config();
+    c.anyhit.shader = {1, 1, 37};
+    RtCore core(0, c, unit, memory);
+    core.set_supply(&supply.dispatcher);
+    test::drive({&core});
+    ASSERT_EQ(supply.listener.done.size(), 1u);
+    const test::Retired& r = supply.listener.done[0];
+    EXPECT_EQ(r.hit.hit(), alpha == 255) << "a hole lets the ray through";
+    // The texel read goes out with the leaf's; the call follows the triangle test.
+    ASSERT_EQ(memory.reads.size(), 3u);
+    EXPECT_EQ(memory.reads[2].at, 73u);
+    EXPECT_EQ(memory.reads[2].addr, kTextureBase + 8192 + 3 * kTexelBytes);
+    EXPECT_EQ(memory.reads[2].bytes, c.anyhit.read_bytes);
+    EXPECT_EQ(r.cycle, 136u + 37u) << "the opaque triangle's 136 cycles and one round trip";
+    EXPECT_EQ(core.stats().anyhit_calls, 1u);
+    EXPECT_EQ(core.stats().anyhit_cycles, 37u);
+    EXPECT_EQ(core.anyhit_shader().stats().requests, 1u);
+  }
+}
+
 TEST(RtCoreTiming, DataReportedLaterStepsExactlyAsDataKnownAtOnce) {
   OneTriangle scene;
   TraversalUnit unit(scene.image);
