@@ -24,7 +24,8 @@ struct AlphaMask {
   std::vector<uint8_t> alpha;  // width x height, row after row
   float cutoff = 0.5f;         // glTF alphaCutoff: alpha / 255 below it is a hole
   // Where the timing model keeps the mask's texture (RGBA8, kTexelBytes a texel, row after
-  // row): bytes from the start of the texture region (model/mem/memory_level.h kTextureBase).
+  // row): bytes from the start of the texture region (model/mem/memory_level.h kTextureBase),
+  // set by the scene that makes the mask (textures of one scene must not overlap).
   uint64_t texture_offset = 0;
 
   // The texel a texture coordinate reads: row * width + column.
@@ -49,10 +50,6 @@ struct TriangleAlpha {
   // Why the arrays cannot serve a mesh of `triangles` triangles; empty if they can.
   std::string problem(size_t triangles) const;
 };
-
-// Places masks' textures one after another from byte `offset` of the texture region, each
-// 4 KiB aligned; returns the offset after the last (a scene lays out its masks once).
-uint64_t place_textures(const std::vector<std::shared_ptr<AlphaMask>>& masks, uint64_t offset = 0);
 
 // Appends the alpha of a mesh of `triangles` triangles (null: all opaque) after out's, as
 // flatten() appends instances; the masks are shared.
