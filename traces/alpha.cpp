@@ -32,6 +32,23 @@ uint64_t TriangleAlpha::texel_offset(uint32_t tri, float u, float v) const {
   return mask.texture_offset + uint64_t(mask.texel_at(at(uv[tri], u, v))) * kTexelBytes;
 }
 
+std::string TriangleAlpha::problem(size_t triangles) const {
+  if (mask_of.size() != triangles || uv.size() != triangles)
+    return fmt::format("alpha for {} and texture coordinates for {} of {} triangles",
+                       mask_of.size(), uv.size(), triangles);
+  for (size_t t = 0; t < triangles; ++t) {
+    if (mask_of[t] != kOpaque && mask_of[t] >= masks.size())
+      return fmt::format("triangle {}: alpha mask {} of {}", t, mask_of[t], masks.size());
+    for (const glm::vec2& c : uv[t])
+      if (!std::isfinite(c.x) || !std::isfinite(c.y))
+        return fmt::format("triangle {}: texture coordinate is NaN or Inf", t);
+  }
+  for (const auto& m : masks)
+    if (!m || m->width == 0 || m->height == 0 || m->alpha.size() != size_t(m->width) * m->height)
+      return fmt::format("alpha mask '{}' has no texels or the wrong count", m ? m->name : "");
+  return {};
+}
+
 void append_alpha(TriangleAlpha& out, const TriangleAlpha* in, size_t triangles) {
   if (!in) {
     out.mask_of.insert(out.mask_of.end(), triangles, TriangleAlpha::kOpaque);
