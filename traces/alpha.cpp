@@ -23,13 +23,13 @@ uint32_t AlphaMask::texel_at(glm::vec2 uv) const {
 }
 
 bool TriangleAlpha::passes(uint32_t tri, float u, float v) const {
-  uint32_t mask = mask_of[tri];
-  return mask == kOpaque || masks[mask]->opaque_at(at(uv[tri], u, v));
+  return !tested(tri) || look_up(tri, u, v).opaque;
 }
 
-uint64_t TriangleAlpha::texel_offset(uint32_t tri, float u, float v) const {
+TriangleAlpha::Lookup TriangleAlpha::look_up(uint32_t tri, float u, float v) const {
   const AlphaMask& mask = *masks[mask_of[tri]];
-  return mask.texture_offset + uint64_t(mask.texel_at(at(uv[tri], u, v))) * kTexelBytes;
+  uint32_t texel = mask.texel_at(at(uv[tri], u, v));
+  return {mask.opaque(texel), mask.texture_offset + uint64_t(texel) * kTexelBytes};
 }
 
 std::string TriangleAlpha::problem(size_t triangles) const {

@@ -30,7 +30,8 @@ struct AlphaMask {
 
   // The texel a texture coordinate reads: row * width + column.
   uint32_t texel_at(glm::vec2 uv) const;
-  bool opaque_at(glm::vec2 uv) const { return float(alpha[texel_at(uv)]) >= cutoff * 255.0f; }
+  bool opaque(uint32_t texel) const { return float(alpha[texel]) >= cutoff * 255.0f; }
+  bool opaque_at(glm::vec2 uv) const { return opaque(texel_at(uv)); }
 };
 
 constexpr uint32_t kTexelBytes = 4;  // a texel of the base colour texture the mask comes from
@@ -45,8 +46,13 @@ struct TriangleAlpha {
   bool tested(uint32_t tri) const { return mask_of[tri] != kOpaque; }
   // True if a hit at barycentrics (u, v) of vertices 1 and 2 of triangle tri counts.
   bool passes(uint32_t tri, float u, float v) const;
-  // The texel that decides, as a byte offset into the texture region (an alpha-tested tri).
-  uint64_t texel_offset(uint32_t tri, float u, float v) const;
+  // An alpha-tested triangle's lookup at (u, v): whether it counts, and the texel that decides
+  // as a byte offset into the texture region (what the any-hit shader reads).
+  struct Lookup {
+    bool opaque;
+    uint64_t texel_offset;
+  };
+  Lookup look_up(uint32_t tri, float u, float v) const;
   // Why the arrays cannot serve a mesh of `triangles` triangles; empty if they can.
   std::string problem(size_t triangles) const;
 };

@@ -20,9 +20,9 @@ void add_charge(Cost& cost, const ReadCharge& c) {
 }  // namespace
 
 uint32_t RtCore::level_of(uint64_t addr) const {
-  if (addr >= kTextureBase && addr < kLocalMemoryBase) return 3;
-  if (addr < bvh_begin_ || addr >= bvh_end_ || top_end_ == bvh_begin_) return 0;
-  return addr < top_end_ ? 1 : 2;
+  if (addr >= bvh_begin_ && addr < bvh_end_)
+    return top_end_ == bvh_begin_ ? 0 : addr < top_end_ ? 1 : 2;
+  return addr >= kTextureBase && addr < kLocalMemoryBase ? 3 : 0;
 }
 
 void RtCore::charge_level(uint32_t level, const ReadCharge& charge) {

@@ -130,9 +130,9 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     if (level.alpha && level.alpha->tested(prim)) {
       s.counters.trav_alpha_tests++;
       out.anyhit_calls++;
-      if (config_.record_accesses)
-        s.texels.push_back(kTextureBase + level.alpha->texel_offset(prim, hit.u, hit.v));
-      if (!level.alpha->passes(prim, hit.u, hit.v)) continue;
+      TriangleAlpha::Lookup texel = level.alpha->look_up(prim, hit.u, hit.v);
+      if (config_.record_accesses) s.texels.push_back(kTextureBase + texel.texel_offset);
+      if (!texel.opaque) continue;
     }
     // Keep the hit; the range now ends there.
     s.counters.trav_prim_hits++;
