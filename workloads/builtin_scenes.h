@@ -5,13 +5,16 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "traces/alpha.h"
 #include "workloads/pipeline/rng.h"
 #include "workloads/scene.h"
 
@@ -21,6 +24,7 @@ namespace rtsim::builtin {
 struct MeshTemplate {
   std::vector<glm::vec3> positions;
   std::vector<std::array<uint32_t, 3>> triangles;
+  std::vector<glm::vec2> uvs;  // per position; only alpha-tested templates need them
 };
 
 // Unit sphere from an octahedron whose faces are split into level^2 triangles each (8 level^2 in
@@ -63,16 +67,16 @@ struct UniqueMesh {
   std::vector<uint32_t> materials;
   uint32_t object = 0;
 
-  // Appends the template transformed as p -> offset + rotation * (scale * p).
+  // Appends the template transformed as p -> offset + rotation * (scale * p), alpha-tested
+  // with mask (an index from add_mask, at the template's uvs) unless it is kOpaque.
   void add(const MeshTemplate& t, const glm::vec3& offset, const glm::vec3& scale,
-           uint32_t material, const glm::mat3& rotation = glm::mat3(1.0f)) {
-    auto base = uint32_t(mesh.positions.size());
-    for (const glm::vec3& p : t.positions)
-      mesh.positions.push_back(offset + rotation * (scale * p));
-    for (const auto& tri : t.triangles)
-      mesh.triangles.push_back({base + tri[0], base + tri[1], base + tri[2]});
-    materials.insert(materials.end(), t.triangles.size(), material);
-  }
+           uint32_t material, const glm::mat3& rotation = glm::mat3(1.0f),
+           uint32_t mask = TriangleAlpha::kOpaque);
+  // Adds an alpha mask for add(); the first makes the mesh alpha-tested.
+  uint32_t add_mask(std::shared_ptr<const AlphaMask> mask);
+
+ private:
+  std::shared_ptr<TriangleAlpha> alpha_;  // mesh.alpha, while the mesh is built
 };
 
 // The instance transform p -> offset + rotation * (scale * p).
@@ -95,6 +99,20 @@ inline void keep_unique_meshes(std::vector<UniqueMesh> meshes, Scene& scene) {
     scene.mesh_material_ids.push_back(std::move(m.materials));
   }
 }
+
+// A leaf-shaped alpha mask of size x size texels for a triangle whose texture coordinates are
+// kLeafUvs: a leaf from the tip at (0.5, 0) to a stem at the base, `width` its widest point
+// across as a fraction of the triangle's width there (about 1), antialiased at the edges; its
+// texture at texture_offset (RGBA8: 4 size^2 bytes).
+std::shared_ptr<const AlphaMask> leaf_mask(const std::string& name, uint32_t size, float width,
+                                           uint64_t texture_offset);
+// A leaf triangle's corners (tip, base left, base right) in texture coordinates.
+inline const std::array<glm::vec2, 3> kLeafUvs = {glm::vec2(0.5f, 0.0f), glm::vec2(0.0f, 1.0f),
+                                                  glm::vec2(1.0f, 1.0f)};
+// Adds `leaves` leaf triangles `size` tall, alpha-tested with mask (a leaf_mask), centred
+// uniformly in the ellipsoid at centre with radii, each turned at random.
+void add_leaves(UniqueMesh& mesh, uint32_t leaves, float size, glm::vec3 centre, glm::vec3 radii,
+                uint32_t material, uint32_t mask, Pcg32& rng);
 
 // A dielectric with the given colour and roughness; callers set the other fields.
 Material make_material(const std::string& name, const glm::vec3& color, float roughness);

@@ -1,5 +1,6 @@
 // "forest:N": a forest built as games build worlds, from instances. Unique meshes: three tree
-// variants (a trunk and a crown of separate small leaf triangles), a rock and a terrain mound;
+// variants (a trunk and a crown of separate small alpha-tested leaf triangles, each variant's
+// leaf texture 64 KiB, one after another), a rock and a terrain mound;
 // instances place them with their own rotation about +y and scale (the terrain non-uniformly).
 // N is the instanced triangles asked for: trees (with a rock beside every fourth) are added on
 // a jittered grid until N is reached. The scene keeps only its unique geometry and instances
@@ -7,6 +8,8 @@
 // the workload passes trace Embree's instances). Seeded, bit-identical on every machine (+, *,
 // / and sqrt only).
 #include <cmath>
+#include <memory>
+#include <string>
 
 #include "workloads/builtin_scenes.h"
 
@@ -17,6 +20,8 @@ using V = glm::vec3;
 
 constexpr uint64_t kForestSeed = 0xf0e57ull;
 constexpr uint32_t kLeaves[3] = {6000, 8000, 10000};  // leaf triangles of each tree variant
+constexpr float kLeafWidths[3] = {1.0f, 0.8f, 1.1f};  // each variant's leaf_mask width
+constexpr uint32_t kLeafTexels = 128;                 // a side of each variant's leaf texture
 constexpr float kTreeSpacing = 8.0f;
 constexpr int kRockLevel = 6;      // octa_sphere: 288 triangles
 constexpr int kTerrainCells = 64;  // grid_quad: 8192 triangles
@@ -24,21 +29,14 @@ constexpr float kTerrainHeight = 6.0f;
 
 enum Kind : uint32_t { kTrees, kRocks, kTerrain };
 
-// A trunk and a crown: leaf triangles centred uniformly in an ellipsoid above the trunk.
-UniqueMesh make_tree(uint32_t leaves, float width, Pcg32& rng, uint32_t bark, uint32_t leaf) {
+// A trunk and a crown: leaf triangles centred uniformly in an ellipsoid above the trunk, each
+// alpha-tested with the variant's leaf mask (about half of a leaf triangle is a hole).
+UniqueMesh make_tree(uint32_t leaves, float width, Pcg32& rng, uint32_t bark, uint32_t leaf,
+                     std::shared_ptr<const AlphaMask> leaf_shape) {
   UniqueMesh tree;
   tree.add(unit_cube(), V(0, 2.0f, 0), V(0.25f, 2.0f, 0.25f), bark);
-  const float size = 0.35f;
-  const MeshTemplate triangle{
-      {V(0, size, 0), V(-0.5f * size, -0.4f * size, 0), V(0.5f * size, -0.4f * size, 0)},
-      {{0, 1, 2}}};
-  for (uint32_t i = 0; i < leaves; ++i) {
-    V u;
-    do u = rng.symmetric_vector();
-    while (u.x * u.x + u.y * u.y + u.z * u.z > 1.0f);
-    tree.add(triangle, V(0, 5.5f, 0) + u * V(width, 2.5f, width), V(1.0f), leaf,
-             random_rotation(rng));
-  }
+  const uint32_t mask = tree.add_mask(std::move(leaf_shape));
+  add_leaves(tree, leaves, 0.35f, V(0, 5.5f, 0), V(width, 2.5f, width), leaf, mask, rng);
   return tree;
 }
 
@@ -78,8 +76,11 @@ Scene make_forest(const std::string& source, uint64_t triangles) {
   scene.object_names = {"trees", "rocks", "terrain"};
   Pcg32 rng(kForestSeed);
   std::vector<UniqueMesh> parts;
-  for (uint32_t v = 0; v < 3; ++v)
-    parts.push_back(make_tree(kLeaves[v], 1.6f + 0.3f * float(v), rng, 1, 0));
+  for (uint32_t v = 0; v < 3; ++v) {
+    auto shape = leaf_mask("leaf_" + std::to_string(v), kLeafTexels, kLeafWidths[v],
+                           v * kTexelBytes * kLeafTexels * kLeafTexels);
+    parts.push_back(make_tree(kLeaves[v], 1.6f + 0.3f * float(v), rng, 1, 0, std::move(shape)));
+  }
   UniqueMesh rock;
   rock.object = kRocks;
   rock.add(octa_sphere(kRockLevel), V(0), V(1.2f, 0.7f, 1.0f), 2);

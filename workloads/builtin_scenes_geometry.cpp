@@ -109,7 +109,7 @@ void SceneBuilder::add(const MeshTemplate& t, const glm::vec3& offset, const glm
 
 void SceneBuilder::quad(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c,
                         const glm::vec3& d, uint32_t material_id, uint32_t object_id) {
-  MeshTemplate t{{a, b, c, d}, {{0, 1, 2}, {0, 2, 3}}};
+  MeshTemplate t{{a, b, c, d}, {{0, 1, 2}, {0, 2, 3}}, {}};
   add(t, glm::vec3(0.0f), glm::vec3(1.0f), material_id, object_id);
 }
 

@@ -1,16 +1,16 @@
 // A small room in the spirit of SEED's Pica Pica world (Barré-Brisebois et al., "Hybrid
 // Rendering for Real-Time Ray Tracing", 2018): a light-blue floor, three pastel walls open to
 // the front and the sky, shipping-container boxes, and one sphere per material family of the
-// talk (glossy, rough, mirror, glass, translucent, two-layer clear coat) lit by an emissive
-// sphere named "light". Metres, y up, 4144 triangles; a camera at (0, 2, 9) sees it all.
+// talk (glossy, rough, mirror, glass, translucent, two-layer clear coat), a house plant whose
+// leaves are alpha-tested, lit by an emissive sphere named "light". Metres, y up, 4328
+// triangles; a camera at (0, 2, 9) sees it all.
 //
-// Built as SEED's world is, from instances: 7 unique meshes (floor, wall, sphere, light bulb and
-// three boxes) placed 15 times, each placement with its own material. The scene also keeps the
-// flattened copy (4144 triangles are cheap), so the passes trace one world-space mesh and
-// bvh.instancing = "auto" walks the instances on two levels. Meshes whose instances turn by an
-// angle that is not a quarter turn are made at their size, so that each instance's transform is
-// a rotation and an offset and the flattened copy is bit for bit the room as it was first built
-// as one mesh (its fingerprint is pinned by the tests).
+// Built as SEED's world is, from instances: 8 unique meshes (floor, wall, sphere, light bulb,
+// three boxes and the plant) placed 17 times, each placement with its own material. The scene
+// also keeps the flattened copy (4328 triangles are cheap), so the passes trace one world-space
+// mesh and bvh.instancing = "auto" walks the instances on two levels. Meshes whose instances turn
+// by an angle that is not a quarter turn are made at their size, so that each instance's
+// transform is a rotation and an offset (its fingerprint is pinned by the tests).
 #include "workloads/builtin_scenes.h"
 
 namespace rtsim::builtin {
@@ -22,7 +22,31 @@ constexpr int kSphereLevel = 8;  // 512 triangles per sphere
 constexpr float kRoomHalf = 6.0f, kWallHalfHeight = 2.0f;
 
 // The room's unique meshes, in the order of Scene::instanced.meshes.
-enum MeshId : uint32_t { kFloor, kWall, kSphere, kBulb, kContainer, kTurnedContainer, kCrate };
+enum MeshId : uint32_t {
+  kFloor,
+  kWall,
+  kSphere,
+  kBulb,
+  kContainer,
+  kTurnedContainer,
+  kCrate,
+  kPlant
+};
+
+constexpr uint64_t kPlantSeed = 0x91a47ull;
+constexpr uint32_t kPlantLeaves = 160;
+constexpr uint32_t kLeafTexels = 128;
+
+// A house plant: a stem and a crown of alpha-tested leaf triangles (traces/alpha.h); its leaf
+// texture is the scene's only one, at texture offset 0.
+UniqueMesh make_plant() {
+  UniqueMesh plant;
+  plant.add(unit_cube(), V(0.0f, 0.5f, 0.0f), V(0.03f, 0.5f, 0.03f), 0);
+  uint32_t mask = plant.add_mask(leaf_mask("pica_leaf", kLeafTexels, 1.0f, 0));
+  Pcg32 rng(kPlantSeed);
+  add_leaves(plant, kPlantLeaves, 0.3f, V(0.0f, 1.1f, 0.0f), V(0.5f, 0.45f, 0.5f), 0, mask, rng);
+  return plant;
+}
 
 class PicaBuilder {
  public:
@@ -35,6 +59,7 @@ class PicaBuilder {
     add_mesh(unit_cube(), V(1.5f, 0.75f, 0.7f));
     add_mesh(unit_cube(), V(0.7f, 0.75f, 1.5f));
     add_mesh(unit_cube(), V(0.4f));
+    add_unique(make_plant());
   }
 
   uint32_t material(const Material& m) {
@@ -62,6 +87,10 @@ class PicaBuilder {
   void add_mesh(const MeshTemplate& t, V size) {
     UniqueMesh m;
     m.add(t, V(0.0f), size, 0);
+    add_unique(std::move(m));
+  }
+
+  void add_unique(UniqueMesh m) {
     scene_.instanced.meshes.push_back(std::move(m.mesh));
     scene_.mesh_material_ids.push_back(std::move(m.materials));
   }
@@ -122,6 +151,15 @@ void add_boxes(PicaBuilder& b) {
           V(2.5f, 0.4f, -2.0f), V(1.0f), rotation_y(0.6f, 0.8f));
 }
 
+void add_house_plant(PicaBuilder& b) {
+  const V at(-4.6f, 0.0f, 1.8f);
+  b.place(kCrate, b.material(make_material("terracotta", V(0.7f, 0.35f, 0.2f), 0.8f)), "pot",
+          at + V(0.0f, 0.3f, 0.0f), V(0.75f));
+  Material leaf = make_material("leaf", V(0.25f, 0.55f, 0.15f), 0.6f);
+  leaf.translucency = 0.5f;
+  b.place(kPlant, b.material(leaf), "house_plant", at + V(0.0f, 0.5f, 0.0f), V(1.0f));
+}
+
 }  // namespace
 
 Scene make_pica() {
@@ -129,6 +167,7 @@ Scene make_pica() {
   add_room(b);
   add_spheres(b);
   add_boxes(b);
+  add_house_plant(b);
   Material light = make_material("light", V(1.0f), 1.0f);
   light.emission = V(12.0f, 11.0f, 9.5f);
   b.place(kBulb, b.material(light), "light", V(0.0f, 3.6f, 0.5f), V(0.4f));

@@ -63,7 +63,7 @@ Scene make_grid(const std::string& source, uint64_t triangles) {
       continue;
     }
     // The last copy is cut to exactly N triangles; it keeps only the vertices they use.
-    MeshTemplate cut{{}, {sphere.triangles.begin(), sphere.triangles.begin() + left}};
+    MeshTemplate cut{{}, {sphere.triangles.begin(), sphere.triangles.begin() + left}, {}};
     uint32_t used = 0;
     for (const auto& tri : cut.triangles)
       used = std::max({used, tri[0] + 1, tri[1] + 1, tri[2] + 1});

@@ -68,7 +68,7 @@ TEST_F(RunReport, HasEverySection) {
                               "## Coherence", "## Verification", "## Pictures and charts"})
     EXPECT_NE(markdown_.find(heading), std::string::npos) << heading;
   EXPECT_EQ(report_["workload"]["scene"], "builtin:pica");
-  EXPECT_EQ(report_["workload"]["triangles"], 4144);
+  EXPECT_EQ(report_["workload"]["triangles"], 4328);
   EXPECT_GT(report_["workload"]["rays_per_type"]["camera"].get<int>(), 0);
   EXPECT_EQ(report_["workload"]["passes"].size(), 9u) << "every pass, skipped or not";
   for (const Json& pass : report_["workload"]["passes"])
@@ -222,7 +222,7 @@ TEST(RunCommand, TheTraceAndBvhPhasesPrintProgress) {
         << r.err;
   EXPECT_NE(r.err.find("bvh: building two levels, bvh8 aabb32 raw treelet"), std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find(" over 15 instances of 7 meshes (1316 unique, 4144 instanced "
+  EXPECT_NE(r.err.find(" over 17 instances of 8 meshes (1488 unique, 4328 instanced "
                        "triangles)\nbvh: "),
             std::string::npos)
       << r.err;
