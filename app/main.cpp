@@ -10,6 +10,7 @@
 #include "app/commands.h"
 #include "traces/error.h"
 #include "traces/output_file.h"
+#include "workloads/pipeline/image_io.h"
 
 namespace {
 
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   // SystemC's banner would precede every simulation's output; children inherit this.
   setenv("SYSC_DISABLE_COPYRIGHT_MESSAGE", "1", 1);
   rtsim::remove_temporaries_on_signals();
+  rtsim::set_alpha_image_reader(rtsim::pipeline::read_texture_alpha);
   CLI::App app{"rtsim " RTSIM_VERSION ": cycle-approximate simulator of ray-tracing hardware"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "rtsim " RTSIM_VERSION);

@@ -29,9 +29,25 @@ RTCRay to_rtc(const Ray& r, uint32_t mask) {
   return out;
 }
 
+// Embree's context, extended (as Embree's documentation shows) with what the filter needs of
+// the ray.
+struct RayContext {
+  RTCIntersectContext embree;  // first, so that Embree's pointer to it is one to RayContext
+  bool force_opaque;
+};
+
+RayContext context_of(const Ray& ray) {
+  RayContext context;
+  rtcInitIntersectContext(&context.embree);
+  context.force_opaque = ray.force_opaque;
+  return context;
+}
+
 // Embree's intersection filter for alpha-tested triangles: a candidate whose mask has a hole
-// at the hit is no hit, for closest-hit and any-hit queries alike.
+// at the hit is no hit, for closest-hit and any-hit queries alike, unless the ray forces
+// every triangle opaque.
 void alpha_filter(const RTCFilterFunctionNArguments* args) {
+  if (reinterpret_cast<const RayContext*>(args->context)->force_opaque) return;
   const auto* alpha = static_cast<const TriangleAlpha*>(args->geometryUserPtr);
   for (unsigned i = 0; i < args->N; ++i)
     if (args->valid[i] == -1 &&
@@ -144,14 +160,13 @@ EmbreeScene::~EmbreeScene() {
 }
 
 Hit EmbreeScene::intersect(const Ray& ray) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context = context_of(ray);
   RTCRayHit rh;
   rh.ray = to_rtc(ray, settings_.ray_masks[size_t(ray.type)]);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-  rtcIntersect1(scene_of(ray), &context, &rh);
+  rtcIntersect1(scene_of(ray), &context.embree, &rh);
   Hit hit;
   if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
     hit.t = rh.ray.tfar;
@@ -164,10 +179,9 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  RayContext context = context_of(ray);
   RTCRay r = to_rtc(ray, settings_.ray_masks[size_t(ray.type)]);
-  rtcOccluded1(scene_of(ray), &context, &r);
+  rtcOccluded1(scene_of(ray), &context.embree, &r);
   return r.tfar == -std::numeric_limits<float>::infinity();
 }
 

@@ -45,7 +45,8 @@ bool Ray::operator==(const Ray& o) const {
   auto same = [](const void* a, const void* b, size_t n) { return std::memcmp(a, b, n) == 0; };
   return same(&org, &o.org, sizeof org) && same(&dir, &o.dir, sizeof dir) &&
          same(&tmin, &o.tmin, sizeof tmin) && same(&tmax, &o.tmax, sizeof tmax) && type == o.type &&
-         query == o.query && sample == o.sample && pixel == o.pixel && frame == o.frame;
+         query == o.query && force_opaque == o.force_opaque && sample == o.sample &&
+         pixel == o.pixel && frame == o.frame;
 }
 
 std::string ray_problem(const Ray& ray) {

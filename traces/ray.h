@@ -46,6 +46,9 @@ struct Ray {
   float tmax = std::numeric_limits<float>::infinity();
   RayType type = RayType::Camera;
   Query query = Query::ClosestHit;
+  // DXR's RAY_FLAG_FORCE_OPAQUE: alpha-tested triangles (traces/alpha.h) count as opaque, with no
+  // any-hit alpha test; set per ray type by a workload's [alpha_test].
+  bool force_opaque = false;
   uint16_t sample = 0;  // sample index within the pixel
   uint32_t pixel = 0;   // y * width + x of the pixel this ray contributes to
   uint32_t frame = 0;

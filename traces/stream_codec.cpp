@@ -6,6 +6,11 @@
 #include "traces/hash.h"
 
 namespace rtsim {
+namespace {
+
+constexpr uint8_t kForceOpaqueBit = 2;  // of a ray record's query byte (traces/FORMAT.md)
+
+}  // namespace
 
 uint64_t StreamHeader::total_rays() const {
   uint64_t total = 0;
@@ -109,7 +114,7 @@ void encode_ray(const Ray& r, std::vector<uint8_t>& out) {
   w.put(r.frame);
   w.put(r.sample);
   w.put(static_cast<uint8_t>(r.type));
-  w.put(static_cast<uint8_t>(r.query));
+  w.put(uint8_t(uint8_t(r.query) | (r.force_opaque ? kForceOpaqueBit : 0)));
 }
 
 Ray decode_ray(const uint8_t* record) {
@@ -123,7 +128,9 @@ Ray decode_ray(const uint8_t* record) {
   r.frame = in.get<uint32_t>();
   r.sample = in.get<uint16_t>();
   r.type = static_cast<RayType>(in.get<uint8_t>());
-  r.query = static_cast<Query>(in.get<uint8_t>());
+  auto query = in.get<uint8_t>();
+  r.force_opaque = (query & kForceOpaqueBit) != 0;
+  r.query = static_cast<Query>(query & ~kForceOpaqueBit);  // other bits: ray_problem names them
   return r;
 }
 

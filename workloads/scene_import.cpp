@@ -158,15 +158,19 @@ GpuInstances match_gpu_instances(const aiScene& scene, const GltfNodeTree& tree,
 class SceneWalk {
  public:
   SceneWalk(const aiScene& scene, Scene& out, const GpuInstances& gpu_instances, bool use_materials,
-            std::string fallback_name)
+            const std::vector<std::shared_ptr<const AlphaMask>>& masks, std::string path)
       : scene_(scene),
         out_(out),
         gpu_instances_(gpu_instances),
         use_materials_(use_materials),
-        fallback_name_(std::move(fallback_name)) {
+        masks_(masks),
+        path_(std::move(path)),
+        fallback_name_(fs::path(path_).stem().string()) {
     std::vector<size_t> placed(scene.mNumMeshes, 0);
     count_placements(*scene.mRootNode, placed);
     flatten_ = std::all_of(placed.begin(), placed.end(), [](size_t n) { return n <= 1; });
+    if (flatten_ && std::any_of(masks.begin(), masks.end(), [](const auto& m) { return m; }))
+      out_.mesh.alpha = flat_alpha_ = std::make_shared<TriangleAlpha>();
   }
 
   void walk(const aiNode& node, const aiMatrix4x4& parent) {
@@ -207,9 +211,10 @@ class SceneWalk {
     if (!has_triangles(mesh)) return;  // points and lines only
     uint32_t material = use_materials_ ? mesh.mMaterialIndex : 0;
     uint32_t object = object_id(object_name(node, i));
-    add_instance(node.mMeshes[i], transform, material, object);
+    const TriangleMesh& unique = add_instance(node.mMeshes[i], transform, material, object);
     if (!flatten_) return;
     size_t added = append_triangles(mesh, transform, out_.mesh);
+    if (flat_alpha_) append_alpha(*flat_alpha_, unique.alpha.get(), added);
     out_.material_ids.insert(out_.material_ids.end(), added, material);
     out_.object_ids.insert(out_.object_ids.end(), added, object);
   }
@@ -253,13 +258,18 @@ class SceneWalk {
     return added;
   }
 
-  // The file's mesh reference as an instance: its mesh kept once, in object space.
-  void add_instance(unsigned mesh_index, const aiMatrix4x4& m, uint32_t material, uint32_t object) {
+  // The file's mesh reference as an instance: its mesh kept once, in object space (with its
+  // material's alpha mask); the mesh.
+  const TriangleMesh& add_instance(unsigned mesh_index, const aiMatrix4x4& m, uint32_t material,
+                                   uint32_t object) {
     auto [it, inserted] =
         unique_mesh_.try_emplace(mesh_index, uint32_t(out_.instanced.meshes.size()));
     if (inserted) {
-      size_t added = append_triangles(*scene_.mMeshes[mesh_index], aiMatrix4x4(),
-                                      out_.instanced.meshes.emplace_back());
+      const aiMesh& mesh = *scene_.mMeshes[mesh_index];
+      TriangleMesh& unique = out_.instanced.meshes.emplace_back();
+      size_t added = append_triangles(mesh, aiMatrix4x4(), unique);
+      if (use_materials_ && masks_[material])
+        unique.alpha = mesh_alpha(mesh, masks_[material], path_);
       if (!flatten_) out_.mesh_material_ids.emplace_back(added, material);
     }
     Instance instance;
@@ -268,14 +278,18 @@ class SceneWalk {
     instance.to_world.offset = {m.a4, m.b4, m.c4};
     out_.instanced.instances.push_back(instance);
     if (!flatten_) out_.instance_object_ids.push_back(object);
+    return out_.instanced.meshes[it->second];
   }
 
   const aiScene& scene_;
   Scene& out_;
   const GpuInstances& gpu_instances_;
   bool use_materials_;
-  bool flatten_ = true;
+  const std::vector<std::shared_ptr<const AlphaMask>>& masks_;  // per material
+  std::string path_;
   std::string fallback_name_;
+  bool flatten_ = true;
+  std::shared_ptr<TriangleAlpha> flat_alpha_;  // the flattened mesh's, if a material has a mask
   std::unordered_map<std::string, uint32_t> object_ids_;
   std::unordered_map<unsigned, uint32_t> unique_mesh_;  // assimp mesh -> instanced.meshes
 };
@@ -345,12 +359,6 @@ Scene import_scene_file(const std::string& path) {
   GltfNodeTree gltf_nodes;
   if (ext == ".gltf" || ext == ".glb") gltf_nodes = check_gltf(path, ext == ".glb");
   Assimp::Importer importer;
-  // Only positions matter; dropping the rest lets the weld merge vertices by position alone.
-  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS,
-                              aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS |
-                                  aiComponent_COLORS | aiComponent_TEXCOORDS |
-                                  aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
-                                  aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_TEXTURES);
   AssimpErrorLog log;
   const aiScene* raw = importer.ReadFile(path, 0);
   if (!raw) throw_input_error(path, "", std::string("cannot import: ") + importer.GetErrorString());
@@ -358,6 +366,17 @@ Scene import_scene_file(const std::string& path) {
   check_raw_meshes(path, *raw);
   Scene out;
   read_cameras_and_lights(*raw, out);
+  const bool use_materials = has_materials(ext) && raw->mNumMaterials > 0;
+  std::vector<std::shared_ptr<const AlphaMask>> masks;
+  if (use_materials) masks = alpha_masks(*raw, path);
+  // Only positions matter, and texture coordinates where a material has an alpha mask; dropping
+  // the rest lets the weld merge vertices by position (and texture coordinates) alone.
+  int dropped = aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
+                aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
+                aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_TEXTURES;
+  if (std::any_of(masks.begin(), masks.end(), [](const auto& m) { return m; }))
+    dropped &= ~aiComponent_TEXCOORDS;
+  importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, dropped);
   const aiScene* scene =
       importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |
                                    aiProcess_RemoveComponent | aiProcess_JoinIdenticalVertices);
@@ -366,7 +385,6 @@ Scene import_scene_file(const std::string& path) {
   check_log(path, ext, log);
 
   out.source = path;
-  const bool use_materials = has_materials(ext) && scene->mNumMaterials > 0;
   if (use_materials) {
     for (unsigned m = 0; m < scene->mNumMaterials; ++m)
       out.materials.push_back(material_from_assimp(*scene->mMaterials[m]));
@@ -374,7 +392,7 @@ Scene import_scene_file(const std::string& path) {
     out.materials.push_back(Material{"default"});
   }
   GpuInstances gpu_instances = match_gpu_instances(*scene, gltf_nodes, path);
-  SceneWalk(*scene, out, gpu_instances, use_materials, fs::path(path).stem().string())
+  SceneWalk(*scene, out, gpu_instances, use_materials, masks, path)
       .walk(*scene->mRootNode, aiMatrix4x4());
   if (out.instanced.instances.empty()) throw_input_error(path, "", "the file has no triangles");
   return out;

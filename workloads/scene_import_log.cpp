@@ -10,20 +10,20 @@ namespace {
 std::mutex import_mutex;
 
 class ErrorCollector : public Assimp::Logger {
-public:
+ public:
   explicit ErrorCollector(std::shared_ptr<std::vector<std::string>> errors)
       : errors_(std::move(errors)) {}
   bool attachStream(Assimp::LogStream*, unsigned) override { return false; }
   bool detachStream(Assimp::LogStream*, unsigned) override { return false; }
 
-protected:
+ protected:
   void OnDebug(const char*) override {}
   void OnVerboseDebug(const char*) override {}
   void OnInfo(const char*) override {}
   void OnWarn(const char*) override {}
   void OnError(const char* message) override { errors_->emplace_back(message); }
 
-private:
+ private:
   std::shared_ptr<std::vector<std::string>> errors_;
 };
 
@@ -34,6 +34,8 @@ AssimpErrorLog::AssimpErrorLog()
   Assimp::DefaultLogger::set(new ErrorCollector(errors_));  // owned by assimp until kill()
 }
 
-AssimpErrorLog::~AssimpErrorLog() { Assimp::DefaultLogger::kill(); }
+AssimpErrorLog::~AssimpErrorLog() {
+  Assimp::DefaultLogger::kill();
+}
 
 }  // namespace rtsim

@@ -27,7 +27,9 @@ bool get_float(const aiMaterial& m, const char* key, unsigned type, unsigned ind
   return true;
 }
 
-bool is_black(const glm::vec3& c) { return c.x <= 0.0f && c.y <= 0.0f && c.z <= 0.0f; }
+bool is_black(const glm::vec3& c) {
+  return c.x <= 0.0f && c.y <= 0.0f && c.z <= 0.0f;
+}
 
 }  // namespace
 

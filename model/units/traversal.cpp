@@ -38,6 +38,7 @@ void TraversalUnit::begin(TraversalState& s, const Ray& ray) const {
   s.mask = bvh_.ray_mask(ray.type);
   s.ray = prepare_ray(ray, s.top->scene_extent, config_.box_padding);
   s.query = ray.query;
+  s.force_opaque = ray.force_opaque;
   s.t_hit = s.ray.tmax;
   s.prim = kNoHit;
   s.u = s.v = 0.0f;
@@ -127,7 +128,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     if (!intersect_triangle(level.config.triangle_format, s.ray, level.triangle_bytes(position),
                             s.ray.tmin, s.t_hit, hit, prim))
       continue;
-    if (level.alpha && level.alpha->tested(prim)) {
+    if (level.alpha && !s.force_opaque && level.alpha->tested(prim)) {
       s.counters.trav_alpha_tests++;
       out.anyhit_calls++;
       TriangleAlpha::Lookup texel = level.alpha->look_up(prim, hit.u, hit.v);

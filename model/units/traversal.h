@@ -68,8 +68,9 @@ struct StackEntry {
 struct TraversalState {
   PreparedRay ray;
   Query query = Query::ClosestHit;
-  float t_hit = 0.0f;      // closest hit so far, or tmax (prepared-ray units)
-  uint32_t prim = kNoHit;  // triangle hit (also for any-hit queries)
+  bool force_opaque = false;  // the ray's: no any-hit alpha tests
+  float t_hit = 0.0f;         // closest hit so far, or tmax (prepared-ray units)
+  uint32_t prim = kNoHit;     // triangle hit (also for any-hit queries)
   float u = 0.0f, v = 0.0f;
   // Two levels: the level walked now and the ray's frame's top level, the world-space ray while
   // in a BLAS, the instance being walked and the one hit, the ray type's inclusion mask.

@@ -104,7 +104,7 @@ ExactHit Arbiter::exact(uint32_t prim, const Ray& ray) const {
   ExactHit ex = exact_intersect(triangles_, prim, ray);
   uint32_t local = 0;
   const TriangleAlpha* alpha = triangles_.alpha(prim, local);
-  if (!alpha || !alpha->tested(local)) return ex;
+  if (!alpha || ray.force_opaque || !alpha->tested(local)) return ex;
   auto passes = [&](double u, double v) { return alpha->passes(local, float(u), float(v)); };
   ex.opaque = passes(ex.u, ex.v);
   double step = std::max(config_.edge_epsilon, ex.edge_error);

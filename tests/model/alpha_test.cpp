@@ -48,6 +48,33 @@ TEST(Alpha, RaysPassThroughTheHolesOfEveryLayerToTheOpaqueOne) {
   }
 }
 
+// A ray forced opaque (DXR's RAY_FLAG_FORCE_OPAQUE) stops at the first masked layer, hole or
+// not, with no any-hit call, in the model and in Embree; the arbiter judges it so.
+TEST(Alpha, AForcedOpaqueRayStopsAtTheFirstLayerWithoutAnyHitCalls) {
+  TriangleMesh mesh = test::layered(3);
+  EmbreeScene embree(mesh, 1);
+  Arbiter arbiter(mesh, embree);
+  BvhImage image = build_bvh_image(mesh, BvhConfig{});
+  TraversalUnit unit(image);
+  TraversalState s;
+  for (const Aim& aim : kAims) {
+    Ray ray = test::ray_to({aim.at, 1.0f}, {aim.at, 0.0f});
+    ray.force_opaque = true;
+    Hit ours = unit.trace(s, ray), reference = embree.intersect(ray);
+    EXPECT_EQ(ours.t, 1.0f);
+    EXPECT_NEAR(reference.t, 1.0f, 1e-5f);
+    EXPECT_EQ(s.counters.trav_alpha_tests, 0u);
+    ray.query = Query::AnyHit;
+    EXPECT_TRUE(unit.trace(s, ray).hit());
+    EXPECT_TRUE(embree.occluded(ray));
+  }
+  // A model hit in the first layer's hole against a reference behind it: the model is right.
+  Ray hole = test::ray_to({1.5f, 0.5f, 1.0f}, {1.5f, 0.5f, 0.0f});
+  hole.force_opaque = true;
+  Verdict v = arbiter.judge(hole, test::hit_of(6, 4.0f), 0, 1.0f);
+  EXPECT_EQ(v.right, RightSide::Model);
+}
+
 // The masked mesh placed twice, the second turned half a turn about y: Embree's instances, the
 // two-level traversal and the flattened copy agree, and flattening keeps each triangle's mask.
 TEST(Alpha, InstancesAndTheFlattenedCopyKeepTheMasks) {

@@ -112,6 +112,26 @@ TEST(Pipeline, PicaHasWorkForEveryPass) {
   EXPECT_LE(pass(s, PassId::Translucency).rays, 64u * 36u);
 }
 
+// [alpha_test] shadow = false forces the shadow rays opaque (and only them): the house plant's
+// leaves then block shadow rays that pass through their holes when the alpha test runs.
+TEST(Pipeline, AlphaTestOffForcesATypesRaysOpaque) {
+  WorkloadSpec spec = small("pica", 128, 72);
+  spec.passes.alpha_test[size_t(RayType::Shadow)] = false;
+  Scene scene = load_scene(spec.scene);
+  EmbreeScene embree(scene.mesh, 1);
+  uint64_t forced = 0, blocked_forced = 0, blocked_tested = 0;
+  for (auto [ray, origin] : shoot(spec, scene, embree)) {
+    EXPECT_EQ(ray.force_opaque, ray.type == RayType::Shadow) << ray_type_name(ray.type);
+    if (!ray.force_opaque) continue;
+    ++forced;
+    blocked_forced += embree.occluded(ray);
+    ray.force_opaque = false;
+    blocked_tested += embree.occluded(ray);
+  }
+  EXPECT_GT(forced, 0u);
+  EXPECT_GT(blocked_forced, blocked_tested) << "some shadow rays pass through leaf holes";
+}
+
 TEST(Pipeline, NoLightsNoShadowRays) {
   WorkloadSpec spec = small("pica");
   spec.lights.clear();

@@ -182,6 +182,15 @@ TEST(Spec, InstanceRulesAndRayMasks) {
             "w.toml: line 4: key 'instances[].axis': must not be zero");
 }
 
+TEST(Spec, AlphaTestPerRayType) {
+  WorkloadSpec s = parse_spec("scene = \"pica\"\n[alpha_test]\ndiffuse_gi = false\n", "w.toml");
+  for (int t = 0; t < kRayTypeCount; ++t)
+    EXPECT_EQ(s.passes.alpha_test[size_t(t)], RayType(t) != RayType::DiffuseGI)
+        << ray_type_name(RayType(t));
+  EXPECT_EQ(error_of("scene = \"pica\"\n[alpha_test]\nao = 1\n"),
+            "w.toml: line 3: key 'alpha_test.ao': expected true or false");
+}
+
 TEST(Spec, ADegenerateCameraNamesItsKey) {
   const std::string scene = "scene = \"cornell\"\n[camera]\n";
   EXPECT_EQ(error_of(scene + "position = [1, 2, 3]\nlook_at = [1, 2, 3]\n"),

@@ -17,7 +17,8 @@ inline std::string temp_path(const std::string& name) {
   return "/tmp/rtsim-test-" + std::to_string(getpid()) + "-" + name;
 }
 
-// n rays cycling through every ray type and query, with awkward values (-0, +inf, denormals).
+// n rays cycling through every ray type and query, a third forced opaque, with awkward values
+// (-0, +inf, denormals).
 inline std::vector<Ray> sample_rays(size_t n) {
   std::vector<Ray> rays(n);
   for (size_t i = 0; i < n; ++i) {
@@ -28,6 +29,7 @@ inline std::vector<Ray> sample_rays(size_t n) {
     r.tmax = i % 2 ? std::numeric_limits<float>::infinity() : 100.0f + float(i);
     r.type = static_cast<RayType>(i % kRayTypeCount);
     r.query = static_cast<Query>((i / kRayTypeCount) % 2);
+    r.force_opaque = i % 3 == 1;
     r.sample = uint16_t(i * 7);
     r.pixel = uint32_t(i * 13);
     r.frame = uint32_t(i / 100);

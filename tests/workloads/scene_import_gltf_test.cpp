@@ -15,24 +15,9 @@
 namespace rtsim {
 namespace {
 
+using test::base64;
 using test::expect_input_error;
 using test::TempDir;
-
-std::string base64(const std::string& in) {
-  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  for (size_t i = 0; i < in.size(); i += 3) {
-    size_t left = in.size() - i;
-    uint32_t n = uint32_t(uint8_t(in[i])) << 16;
-    if (left > 1) n |= uint32_t(uint8_t(in[i + 1])) << 8;
-    if (left > 2) n |= uint32_t(uint8_t(in[i + 2]));
-    out += table[(n >> 18) & 63];
-    out += table[(n >> 12) & 63];
-    out += left > 1 ? table[(n >> 6) & 63] : '=';
-    out += left > 2 ? table[n & 63] : '=';
-  }
-  return out;
-}
 
 // One triangle (0,0,0) (1,0,0) (0,1,0) as float positions and uint16 indices: 42 bytes.
 std::string triangle_buffer() {

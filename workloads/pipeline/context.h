@@ -42,6 +42,17 @@ struct FrameContext {
   uint32_t frame = 0;
   uint64_t seed = 0;
   uint32_t width = 1, height = 1;
+
+  // A ray of this frame of the given type and query, forced opaque where the spec's
+  // [alpha_test] turns its type's alpha test off.
+  Ray ray(RayType type, Query query) const {
+    Ray r;
+    r.type = type;
+    r.query = query;
+    r.force_opaque = !passes.alpha_test[size_t(type)];
+    r.frame = frame;
+    return r;
+  }
 };
 
 // A surface point found by a ray: the hit point from the triangle's barycentrics and the unit

@@ -1,11 +1,15 @@
 #include "workloads/pipeline/image_io.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <cstdio>
 
+#include <fmt/format.h>
+
 #include "traces/error.h"
+#include "traces/memory_plan.h"
 #include "traces/output_file.h"
 
 namespace rtsim::pipeline {
@@ -24,6 +28,25 @@ void write_png(const std::string& path, uint32_t width, uint32_t height,
     output.discard();
     throw_input_error(path, "", "cannot write image: " + (error.empty() ? "rename failed" : error));
   }
+}
+
+AlphaImage read_texture_alpha(const std::string& name, const std::vector<uint8_t>& bytes) {
+  OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
+  auto in = OIIO::ImageInput::open(name, nullptr, bytes.empty() ? nullptr : &memory);
+  if (!in) throw_input_error(name, "", "cannot read the texture image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  AlphaImage image;
+  image.width = uint32_t(spec.width);
+  image.height = uint32_t(spec.height);
+  uint64_t texels = uint64_t(image.width) * image.height;
+  if (texels == 0) throw_input_error(name, "", "the texture image has no pixels");
+  require_memory(texels, name, fmt::format("a {}x{} texture's alpha", spec.width, spec.height),
+                 "use a smaller texture");
+  image.alpha.assign(texels, 255);
+  int a = spec.alpha_channel;
+  if (a >= 0 && !in->read_image(0, 0, a, a + 1, OIIO::TypeDesc::UINT8, image.alpha.data()))
+    throw_input_error(name, "", "cannot read the texture image: " + in->geterror());
+  return image;
 }
 
 }  // namespace rtsim::pipeline

@@ -26,16 +26,13 @@ PassOutcome run_ao_pass(const FrameContext& ctx, const GBuffer& g, RaySink& sink
     Pcg32 rng = make_rng(ctx.seed, RngStream::AO, ctx.frame, i);
     uint32_t open = 0;
     for (uint32_t k = 0; k < spec.rays_per_pixel; ++k) {
-      Ray ray;
+      Ray ray = ctx.ray(RayType::AO, Query::AnyHit);
       ray.org = offset_ray_origin(s.surface.position, s.surface.normal);
       ray.dir = glm::normalize(
           basis.to_world(sample_cosine_hemisphere(glm::vec2(rng.uniform(), rng.uniform()))));
       ray.tmax = radius;
-      ray.type = RayType::AO;
-      ray.query = Query::AnyHit;
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, k);
-      ray.frame = ctx.frame;
       sink.emit(ray, s.surface.prim);
       open += ctx.scene.embree.occluded(ray) ? 0 : 1;
     }

@@ -11,14 +11,11 @@ GBuffer run_camera_pass(const FrameContext& ctx, const std::vector<SamplePositio
   if (sink) sink->set_pass(PassId::Camera);
   for (size_t i = 0; i < positions.size(); ++i) {
     const SamplePosition& p = positions[i];
-    Ray ray;
+    Ray ray = ctx.ray(RayType::Camera, Query::ClosestHit);
     ray.org = ctx.camera.position;
     ray.dir = ctx.camera.direction(p.sx, p.sy);
-    ray.type = RayType::Camera;
-    ray.query = Query::ClosestHit;
     ray.pixel = p.pixel;
     ray.sample = p.index;
-    ray.frame = ctx.frame;
     if (sink) sink->emit(ray);
     Hit hit = ctx.scene.intersect(ray);
     GSample& s = g.samples[i];

@@ -27,15 +27,12 @@ void shoot_gi_rays(const FrameContext& ctx, SurfelCache& cache, RaySink& sink,
     Basis basis(surfel.normal);
     Pcg32 rng = make_rng(ctx.seed, RngStream::DiffuseGI, ctx.frame, s);
     for (uint32_t k = 0; k < counts[s]; ++k) {
-      Ray ray;
+      Ray ray = ctx.ray(RayType::DiffuseGI, Query::ClosestHit);
       ray.org = offset_ray_origin(surfel.position, surfel.normal);
       ray.dir = glm::normalize(
           basis.to_world(sample_cosine_hemisphere(glm::vec2(rng.uniform(), rng.uniform()))));
-      ray.type = RayType::DiffuseGI;
-      ray.query = Query::ClosestHit;
       ray.pixel = surfel.pixel;
       ray.sample = uint16_t(k);
-      ray.frame = ctx.frame;
       sink.emit(ray, surfel.prim);
       Surface hit = ctx.scene.surface(ray);
       if (hit.hit()) {
@@ -60,14 +57,12 @@ bool connect_lights(const FrameContext& ctx, const SurfelCache& cache, RaySink& 
     Pcg32 rng = make_rng(ctx.seed, RngStream::GiLight, ctx.frame, h);
     hit.light = rng.below(uint32_t(lights.size()));
     glm::vec2 u(rng.uniform(), rng.uniform());
-    Ray ray;
+    Ray ray = ctx.ray(RayType::Shadow, Query::AnyHit);
     if (!make_shadow_ray(lights[hit.light], hit.surface.position, hit.surface.normal, u, ray))
       continue;
     const Surfel& surfel = cache.surfels()[hit.surfel];
-    ray.type = RayType::Shadow;
     ray.pixel = surfel.pixel;
     ray.sample = uint16_t(h);
-    ray.frame = ctx.frame;
     sink.emit(ray, hit.surface.prim);
     hit.visibility = ctx.scene.embree.occluded(ray) ? 0.0f : 1.0f;
   }

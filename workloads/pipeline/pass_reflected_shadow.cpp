@@ -25,12 +25,10 @@ PassOutcome run_reflected_shadow_pass(const FrameContext& ctx, const GBuffer& g,
     Pcg32 rng = make_rng(ctx.seed, RngStream::ReflectedShadow, ctx.frame, r);
     for (uint32_t l = 0; l < lights.size(); ++l) {
       glm::vec2 u(rng.uniform(), rng.uniform());
-      Ray ray;
+      Ray ray = ctx.ray(RayType::ReflectedShadow, Query::AnyHit);
       if (!make_shadow_ray(lights[l], rec.hit.position, rec.hit.normal, u, ray)) continue;
-      ray.type = RayType::ReflectedShadow;
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, per_sample, l);
-      ray.frame = ctx.frame;
       sink.emit(ray, rec.hit.prim);
       out.visibility[r * lights.size() + l] = ctx.scene.embree.occluded(ray) ? 0.0f : 1.0f;
     }

@@ -57,14 +57,11 @@ PassOutcome run_reflection_pass(const FrameContext& ctx, const GBuffer& g, RaySi
       rec.rerolls = uint8_t(rerolls);
       Basis basis(s.surface.normal);
       rec.pdf = stack_pdf(stack, basis.to_local(v), basis.to_local(rec.dir));
-      Ray ray;
+      Ray ray = ctx.ray(RayType::Reflection, Query::ClosestHit);
       ray.org = offset_ray_origin(s.surface.position, s.surface.normal);
       ray.dir = rec.dir;
-      ray.type = RayType::Reflection;
-      ray.query = Query::ClosestHit;
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, j);
-      ray.frame = ctx.frame;
       sink.emit(ray, s.surface.prim);
       rec.hit = ctx.scene.surface(ray);
       out.rays.push_back(rec);

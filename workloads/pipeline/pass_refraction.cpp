@@ -10,12 +10,13 @@ namespace rtsim::pipeline {
 namespace {
 
 // The ray leaving interface `at` for a ray arriving along `incident`.
-Ray next_ray(const Surface& at, const ShadingMaterial& m, const glm::vec3& incident, glm::vec2 u) {
+Ray next_ray(const FrameContext& ctx, const Surface& at, const ShadingMaterial& m,
+             const glm::vec3& incident, glm::vec2 u) {
   float alpha = std::max(m.roughness * m.roughness, 1e-4f);
   glm::vec3 h = Basis(at.normal).to_world(sample_ggx_half_vector(u, alpha));
   if (glm::dot(h, -incident) <= 0.0f) h = at.normal;
   float eta = at.front ? 1.0f / m.ior : m.ior;
-  Ray ray;
+  Ray ray = ctx.ray(RayType::Refraction, Query::ClosestHit);
   glm::vec3 dir;
   if (refract_dir(incident, h, eta, dir) && glm::dot(dir, at.normal) < 0.0f) {
     ray.org = offset_ray_origin(at.position, -at.normal);
@@ -25,8 +26,6 @@ Ray next_ray(const Surface& at, const ShadingMaterial& m, const glm::vec3& incid
     ray.org = offset_ray_origin(at.position, at.normal);
   }
   ray.dir = glm::normalize(dir);
-  ray.type = RayType::Refraction;
-  ray.query = Query::ClosestHit;
   return ray;
 }
 
@@ -49,10 +48,9 @@ PassOutcome run_refraction_pass(const FrameContext& ctx, const GBuffer& g, RaySi
       glm::vec3 incident = s.view;
       for (uint32_t depth = 0; depth < spec.max_depth; ++depth) {
         glm::vec2 u(rng.uniform(), rng.uniform());
-        Ray ray = next_ray(at, ctx.scene.material_of(at.prim), incident, u);
+        Ray ray = next_ray(ctx, at, ctx.scene.material_of(at.prim), incident, u);
         ray.pixel = s.pixel;
         ray.sample = ray_sample_id(s.index, per_sample, j * spec.max_depth + depth);
-        ray.frame = ctx.frame;
         sink.emit(ray, at.prim);
         Surface next = ctx.scene.surface(ray);
         bool more = next.hit() && ctx.scene.material_of(next.prim).transmission > 0.0f;

@@ -25,12 +25,10 @@ PassOutcome run_shadow_pass(const FrameContext& ctx, const GBuffer& g, RaySink& 
       uint32_t shot = 0, visible = 0;
       for (uint32_t k = 0; k < rate.rays_per_pixel; ++k) {
         glm::vec2 u(rng.uniform(), rng.uniform());
-        Ray ray;
+        Ray ray = ctx.ray(RayType::Shadow, Query::AnyHit);
         if (!make_shadow_ray(lights[l], s.surface.position, s.surface.normal, u, ray)) continue;
-        ray.type = RayType::Shadow;
         ray.pixel = s.pixel;
         ray.sample = ray_sample_id(s.index, per_sample, l * rate.rays_per_pixel + k);
-        ray.frame = ctx.frame;
         sink.emit(ray, s.surface.prim);
         ++shot;
         visible += ctx.scene.embree.occluded(ray) ? 0 : 1;

@@ -25,14 +25,11 @@ PassOutcome run_translucency_pass(const FrameContext& ctx, const GBuffer& g, Ray
     for (uint32_t k = 0; k < spec.rays_per_pixel; ++k) {
       glm::vec3 d = sample_uniform_sphere(glm::vec2(rng.uniform(), rng.uniform()));
       if (glm::dot(d, inward) < 0.0f) d = reflect_dir(d, inward);
-      Ray ray;
+      Ray ray = ctx.ray(RayType::Translucency, Query::ClosestHit);
       ray.org = offset_ray_origin(s.surface.position, inward);
       ray.dir = glm::normalize(d);
-      ray.type = RayType::Translucency;
-      ray.query = Query::ClosestHit;
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, k);
-      ray.frame = ctx.frame;
       sink.emit(ray, s.surface.prim);
       Surface hit = ctx.scene.surface(ray);
       if (!hit.hit()) {

@@ -30,6 +30,8 @@ PassSpecs preset_passes(const std::string& name) {
   throw std::invalid_argument("unknown preset '" + name + "'");
 }
 
-std::vector<std::string> preset_names() { return {"pica-pica", "full-rate"}; }
+std::vector<std::string> preset_names() {
+  return {"pica-pica", "full-rate"};
+}
 
 }  // namespace rtsim::pipeline

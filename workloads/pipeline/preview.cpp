@@ -26,7 +26,7 @@ std::vector<int64_t> records_by_cell(const GBuffer& g, float scale, size_t count
 }
 
 class FrameShader {
-public:
+ public:
   FrameShader(const Pipeline& p, const FrameResults& f)
       : p_(p), f_(f), s_(p.scene()), surfels_(p.surfels()), coarse_(3.0f * surfels_.radius()) {
     surfels_.smooth_irradiance(3.0f);
@@ -105,7 +105,7 @@ public:
     return color * (glm::vec3(1.0f) - fresnel) + fresnel * incoming;
   }
 
-private:
+ private:
   int64_t lookup(const std::vector<int64_t>& cells, uint32_t pixel, float scale) const {
     return cells[GBuffer::cell_of(pixel, f_.gbuffer.width, f_.gbuffer.height, scale)];
   }
@@ -174,7 +174,9 @@ glm::vec3 heat(float t) {
   return glm::mix(kStops[i], kStops[i + 1], x - float(i));
 }
 
-uint8_t to_byte(float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); }
+uint8_t to_byte(float v) {
+  return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+}
 
 }  // namespace
 

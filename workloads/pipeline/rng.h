@@ -16,7 +16,9 @@ inline uint64_t mix64(uint64_t x) {
   return x ^ (x >> 31);
 }
 
-inline uint64_t hash_combine(uint64_t a, uint64_t b) { return mix64(a ^ mix64(b)); }
+inline uint64_t hash_combine(uint64_t a, uint64_t b) {
+  return mix64(a ^ mix64(b));
+}
 
 // Identifies what a random stream is for, so two passes never share one.
 enum class RngStream : uint32_t {
@@ -36,7 +38,7 @@ enum class RngStream : uint32_t {
 };
 
 class Pcg32 {
-public:
+ public:
   explicit Pcg32(uint64_t seed, uint64_t stream = 0) {
     inc_ = (stream << 1u) | 1u;
     next();
@@ -64,7 +66,7 @@ public:
     }
   }
 
-private:
+ private:
   uint64_t state_ = 0, inc_ = 0;
 };
 

@@ -142,6 +142,14 @@ void read_ray_masks(SpecReader& r, std::array<uint8_t, kRayTypeCount>& masks) {
   }
 }
 
+void read_alpha_test(SpecReader& r, std::array<bool, kRayTypeCount>& alpha_test) {
+  for (int t = 0; t < kRayTypeCount; ++t)
+    alpha_test[size_t(t)] =
+        r.boolean(ray_type_name(RayType(t)), alpha_test[size_t(t)],
+                  "this type's rays run the any-hit alpha test on alpha-tested triangles; "
+                  "false: RAY_FLAG_FORCE_OPAQUE, masked triangles are solid");
+}
+
 void read_light(SpecReader& r, LightSpec& l) {
   auto type = r.text("type", "point", "kind of light", {"point", "spot", "directional", "sphere"});
   l.type = type == "spot"          ? LightType::Spot
@@ -261,6 +269,8 @@ void read_root(SpecReader& r, WorkloadSpec& s, const std::string& stem) {
     read_instance_rule(*i, s.instances.back());
   }
   read_ray_masks(r.section("ray_masks", "which instance masks each ray type sees"), s.ray_masks);
+  read_alpha_test(r.section("alpha_test", "which ray types run the any-hit alpha test"),
+                  s.passes.alpha_test);
   for (SpecReader* l : r.sections("light", "lights")) {
     s.lights.emplace_back();
     read_light(*l, s.lights.back());

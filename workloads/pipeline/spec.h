@@ -115,6 +115,9 @@ struct PassSpecs {
   AoSpec ao;
   RefractionSpec refraction;
   PassRate translucency;
+  // Per RayType: its rays run the any-hit alpha test on alpha-tested triangles; false sets
+  // their RAY_FLAG_FORCE_OPAQUE (traces/ray.h).
+  std::array<bool, kRayTypeCount> alpha_test = {true, true, true, true, true, true, true, true};
 };
 
 struct WorkloadSpec {

@@ -10,7 +10,9 @@
 namespace rtsim::pipeline {
 namespace {
 
-std::string format_vec3(glm::vec3 v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+std::string format_vec3(glm::vec3 v) {
+  return fmt::format("[{}, {}, {}]", v.x, v.y, v.z);
+}
 
 std::string range_text(double lo, double hi) {
   if (hi == INFINITY) return fmt::format("at least {}", lo);
@@ -60,7 +62,9 @@ std::string SpecReader::line_of(const toml::node* node) const {
   return fmt::format("line {}", node->source().begin.line);
 }
 
-bool SpecReader::has(const std::string& key) const { return table_ && table_->contains(key); }
+bool SpecReader::has(const std::string& key) const {
+  return table_ && table_->contains(key);
+}
 
 void SpecReader::fail(const std::string& key, const std::string& what) const {
   const toml::node* node = table_ && !key.empty() ? table_->get(key) : nullptr;
