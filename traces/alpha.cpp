@@ -1,5 +1,6 @@
 #include "traces/alpha.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -55,9 +56,14 @@ void append_alpha(TriangleAlpha& out, const TriangleAlpha* in, size_t triangles)
     out.uv.resize(out.uv.size() + triangles);
     return;
   }
-  auto base = uint32_t(out.masks.size());
-  out.masks.insert(out.masks.end(), in->masks.begin(), in->masks.end());
-  for (uint32_t m : in->mask_of) out.mask_of.push_back(m == TriangleAlpha::kOpaque ? m : base + m);
+  // A mask out already holds (another instance of the same mesh) keeps its one index.
+  std::vector<uint32_t> index;
+  for (const auto& mask : in->masks) {
+    auto found = std::find(out.masks.begin(), out.masks.end(), mask);
+    index.push_back(uint32_t(found - out.masks.begin()));
+    if (found == out.masks.end()) out.masks.push_back(mask);
+  }
+  for (uint32_t m : in->mask_of) out.mask_of.push_back(m == TriangleAlpha::kOpaque ? m : index[m]);
   out.uv.insert(out.uv.end(), in->uv.begin(), in->uv.end());
 }
 

@@ -58,7 +58,7 @@ struct TriangleAlpha {
 };
 
 // Appends the alpha of a mesh of `triangles` triangles (null: all opaque) after out's, as
-// flatten() appends instances; the masks are shared.
+// flatten() appends instances; the masks are shared, each held once.
 void append_alpha(TriangleAlpha& out, const TriangleAlpha* in, size_t triangles);
 
 }  // namespace rtsim

@@ -88,6 +88,7 @@ TEST(Alpha, InstancesAndTheFlattenedCopyKeepTheMasks) {
   FlatMesh flat = flatten(g);
   ASSERT_TRUE(flat.mesh.alpha);
   EXPECT_TRUE(flat.mesh.alpha->problem(flat.mesh.triangle_count()).empty());
+  EXPECT_EQ(flat.mesh.alpha->masks.size(), 1u) << "the two instances share their mask";
   EmbreeScene instanced(g, 1), flattened(flat.mesh, 1);
   TwoLevelBvh bvh = build_two_level_bvh(g, BvhConfig{});
   TraversalUnit unit(bvh);
