@@ -79,6 +79,8 @@ class FlatTriangles {
   explicit FlatTriangles(const InstancedMesh& geometry, const InstanceSettings* settings = nullptr);
 
   uint64_t count() const { return count_; }
+  // True when the triangles are instances' (world-space corners transformed from object space).
+  bool instanced() const { return instances_ != nullptr; }
   // In frame `frame` (a ray's frame: InstanceSettings::pose_frame applies).
   std::array<glm::vec3, 3> corners(uint64_t tri, uint32_t frame = 0) const;
   Bounds bounds() const;  // of every world-space vertex

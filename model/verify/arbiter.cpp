@@ -58,7 +58,9 @@ ExactHit exact_intersect(const FlatTriangles& triangles, uint64_t prim, const Ra
   ex.area_ratio = longest > 0.0 ? n_len / (longest * longest) : 0.0;
   ex.cosine = n_len > 0.0 ? std::fabs(glm::dot(n, d)) / (n_len * glm::length(d)) : 0.0;
   if (ex.area_ratio > 0.0) {
-    constexpr double kUlps = 4.0;
+    // An instance's triangle is tested in its object space on both sides, against a ray moved
+    // there, while these corners were moved to the world: twice the rounding.
+    const double kUlps = triangles.instanced() ? 8.0 : 4.0;
     double magnitude = max_abs(o);
     for (int c = 0; c < 3; ++c) magnitude = std::max(magnitude, max_abs(v[c] + o));
     ex.edge_error =

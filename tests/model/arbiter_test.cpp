@@ -81,6 +81,29 @@ TEST(Arbiter, EdgeToleranceFollowsTheCoordinatesPrecision) {
   }
 }
 
+// An instance's triangle is tested in object space, the arbiter's corners are moved to the world:
+// a hit 8 ulps outside an edge at 2000 is beyond a flat triangle's tolerance (about 5.5 ulps)
+// but within an instance's (twice that).
+TEST(Arbiter, AnInstancesEdgeToleranceCountsTheTransform) {
+  InstancedMesh g;
+  g.meshes.emplace_back();
+  test::add_triangle(g.meshes[0], {0, 0, 0}, {1, 0, 0}, {1, 1, 0});
+  test::add_triangle(g.meshes[0], {0, 0, 0}, {1, 1, 0}, {0, 1, 0});
+  Transform placed;
+  placed.offset = {2000.0f, 2000.0f, 0.0f};
+  g.instances.push_back({0, placed});
+  TriangleMesh flat = flatten(g).mesh;
+  float x = 2000.5f - 8 * 0x1p-13f, y = 2000.5f;
+  Ray ray = test::ray_to({x, y, 3.0f}, {x, y, 0.0f});
+  EmbreeScene flat_embree(flat, 1), instanced_embree(g, 1);
+  Arbiter flat_arbiter(flat, flat_embree), instanced_arbiter(FlatTriangles(g), instanced_embree);
+  // The model claims triangle 0, Embree its neighbour.
+  EXPECT_EQ(flat_arbiter.judge(ray, test::hit_of(1, 3.0f), 0, 3.0f).cls,
+            MismatchClass::Unexplained);
+  EXPECT_EQ(instanced_arbiter.judge(ray, test::hit_of(1, 3.0f), 0, 3.0f).cls,
+            MismatchClass::EdgeOrVertex);
+}
+
 TEST(Arbiter, DuplicateTrianglesAreATie) {
   TriangleMesh mesh = scene();
   EmbreeScene embree(mesh, 1);
