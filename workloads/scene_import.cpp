@@ -169,7 +169,7 @@ class SceneWalk {
     std::vector<size_t> placed(scene.mNumMeshes, 0);
     count_placements(*scene.mRootNode, placed);
     flatten_ = std::all_of(placed.begin(), placed.end(), [](size_t n) { return n <= 1; });
-    if (flatten_ && std::any_of(masks.begin(), masks.end(), [](const auto& m) { return m; }))
+    if (flatten_ && !masks.empty())
       out_.mesh.alpha = flat_alpha_ = std::make_shared<TriangleAlpha>();
   }
 
@@ -268,7 +268,7 @@ class SceneWalk {
       const aiMesh& mesh = *scene_.mMeshes[mesh_index];
       TriangleMesh& unique = out_.instanced.meshes.emplace_back();
       size_t added = append_triangles(mesh, aiMatrix4x4(), unique);
-      if (use_materials_ && masks_[material])
+      if (!masks_.empty() && masks_[material])
         unique.alpha = mesh_alpha(mesh, masks_[material], path_);
       if (!flatten_) out_.mesh_material_ids.emplace_back(added, material);
     }
@@ -285,7 +285,7 @@ class SceneWalk {
   Scene& out_;
   const GpuInstances& gpu_instances_;
   bool use_materials_;
-  const std::vector<std::shared_ptr<const AlphaMask>>& masks_;  // per material
+  const std::vector<std::shared_ptr<const AlphaMask>>& masks_;  // per material, or none
   std::string path_;
   std::string fallback_name_;
   bool flatten_ = true;
@@ -374,8 +374,7 @@ Scene import_scene_file(const std::string& path) {
   int dropped = aiComponent_NORMALS | aiComponent_TANGENTS_AND_BITANGENTS | aiComponent_COLORS |
                 aiComponent_TEXCOORDS | aiComponent_BONEWEIGHTS | aiComponent_ANIMATIONS |
                 aiComponent_LIGHTS | aiComponent_CAMERAS | aiComponent_TEXTURES;
-  if (std::any_of(masks.begin(), masks.end(), [](const auto& m) { return m; }))
-    dropped &= ~aiComponent_TEXCOORDS;
+  if (!masks.empty()) dropped &= ~aiComponent_TEXCOORDS;
   importer.SetPropertyInteger(AI_CONFIG_PP_RVC_FLAGS, dropped);
   const aiScene* scene =
       importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |

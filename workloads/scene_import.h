@@ -25,7 +25,8 @@ Scene import_scene_file(const std::string& path);
 Material material_from_assimp(const aiMaterial& material);
 
 // The alpha masks of a file's materials, null where a material is not alpha-tested (glTF
-// alphaMode MASK); their textures laid out one after another, 4 KiB aligned. Throws InputError
+// alphaMode MASK), or none at all when no material is; their textures laid out one after
+// another, 4 KiB aligned. Throws InputError
 // naming path for a texture that cannot be read.
 std::vector<std::shared_ptr<const AlphaMask>> alpha_masks(const aiScene& scene,
                                                           const std::string& path);

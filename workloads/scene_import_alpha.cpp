@@ -59,6 +59,7 @@ AlphaImage base_colour_alpha(const aiScene& scene, const aiMaterial& m, const st
 std::vector<std::shared_ptr<const AlphaMask>> alpha_masks(const aiScene& scene,
                                                           const std::string& path) {
   std::vector<std::shared_ptr<const AlphaMask>> masks(scene.mNumMaterials);
+  bool any = false;
   uint64_t texture_end = 0;
   for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
     const aiMaterial& m = *scene.mMaterials[i];
@@ -82,7 +83,9 @@ std::vector<std::shared_ptr<const AlphaMask>> alpha_masks(const aiScene& scene,
     uint64_t bytes = uint64_t(kTexelBytes) * image.width * image.height;
     texture_end += (bytes + kTextureAlign - 1) / kTextureAlign * kTextureAlign;
     masks[i] = std::move(mask);
+    any = true;
   }
+  if (!any) masks.clear();
   return masks;
 }
 

@@ -125,6 +125,7 @@ Cycle RtCore::call_anyhit(uint32_t slot, Cycle tested) {
 }
 
 void RtCore::read_texels(RayContext& ray, const StepResult& step, Cycle now, Cycle& known) {
+  if (step.anyhit_calls == 0) return;  // call_anyhit left the slot's count at 0
   step_calls_[ray.slot] = step.anyhit_calls;
   for (uint64_t addr : ray.state.texels) {
     Cycle ready = read(ray, addr, config_.anyhit.read_bytes, now);
