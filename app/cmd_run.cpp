@@ -65,6 +65,8 @@ void print_summary(const nlohmann::ordered_json& r) {
                t["mrays_per_second"].get<double>(), t["clock_ghz"].get<double>());
   if (t["bottleneck"]["text"].is_string())
     fmt::print("limit      {}\n", t["bottleneck"]["text"].get<std::string>());
+  if (r["time"].contains("shader") && r["time"]["shader"].is_object())
+    fmt::print("{}\n", shader_summary_line(r["time"]["shader"]));
   const auto& b = r["bandwidth"];
   fmt::print("memory     L1 {}  L2 {}  DRAM {} B/ray\n",
              reports::show(b["l1_hit_rate"], Style::Percent),

@@ -2,6 +2,7 @@
 // cycle-approximate model of the RT hardware over a ray stream and writes DIR/stats.json,
 // DIR/config.toml (the resolved config) and per-pixel buffers. Every ray's answer is checked
 // against Embree unless --no-verify; exit 1 if a mismatch is unexplained or the model stalls.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -110,6 +111,7 @@ void print_summary(const nlohmann::ordered_json& doc) {
       100 * u["box"].get<double>(), 100 * u["triangle"].get<double>(),
       100 * u["control"].get<double>(), 100 * u["ray_slots"].get<double>(),
       100 * doc["utilisation"]["dram"].get<double>());
+  if (!doc["shader"].is_null()) fmt::print("{}\n", shader_summary_line(doc["shader"]));
   const auto& c = doc["coherence"];
   std::string coherence;
   if (!c["simd_efficiency"].is_null())
@@ -124,6 +126,23 @@ void print_summary(const nlohmann::ordered_json& doc) {
   fmt::print("coherence  {}stack spills per ray {:.2f}\n", coherence,
              doc["stack"]["spills_per_ray"].get<double>());
 }
+
+}  // namespace
+
+std::string shader_summary_line(const nlohmann::ordered_json& sh) {
+  double busy = std::max(sh["busy_cycles"].get<double>(), 1.0);
+  auto share = [&](const char* key) { return 100 * sh[key].get<double>() / busy; };
+  return fmt::format(
+      "shader     SM schedulers {:.1f}% busy ({:.1f} cycles a ray: raygen {:.0f}%, hit {:.0f}%, "
+      "miss {:.0f}%)  rays reach their unit {:.1f} cycles later  waited for warp slots {:.0f} "
+      "cycles  shading reads {:.2f} DRAM B/ray",
+      100 * sh["utilisation"].get<double>(), sh["busy_cycles_per_ray"].get<double>(),
+      share("raygen_cycles"), share("hit_cycles"), share("miss_cycles"),
+      sh["mean_trace_delay"].get<double>(), sh["slot_wait_cycles"].get<double>(),
+      sh["reads_dram_bytes_per_ray"].get<double>());
+}
+
+namespace {
 
 int run_sim(const SimOptions& o) {
   if (o.list_keys) {

@@ -3,7 +3,10 @@
 // Errors from bad input are thrown as rtsim::InputError; main() prints them as one line.
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "model/bvh/bvh_config.h"
 
@@ -28,5 +31,8 @@ void add_regress_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);
 // BVH build options shared by verify and bench (defined in cmd_verify.cpp).
 void add_bvh_options(CLI::App& cmd, BvhConfig& config);
+// The console line of a shader model's figures (the stats JSON's `shader`), shared by sim and
+// run (defined in cmd_sim.cpp).
+std::string shader_summary_line(const nlohmann::ordered_json& shader);
 
 }  // namespace rtsim::app

@@ -231,6 +231,7 @@ Json time_json(const FidelityResult& f, const Json& stats, const Json& collected
   u["dispatch"] = stats["utilisation"]["dispatch"];
   out["utilisation"] = u;
   out["timeline"] = collected["timeline"];
+  if (stats.contains("shader")) out["shader"] = stats["shader"];
   return out;
 }
 

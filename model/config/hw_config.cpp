@@ -44,6 +44,43 @@ void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
                              "data port bandwidth (reads and writes); 0 = no limit", 0, 1e6);
 }
 
+void read_shader(ConfigReader r, ShaderConfig& c) {
+  std::string model = r.text("model", shader_model_name(c.model),
+                             "the SM around each RT unit: none (the unit takes rays straight from "
+                             "the dispatcher) or simt (ray generation, hit and miss shading, warp "
+                             "slots and shading reads; model/SIM.md, \"The shader side\")",
+                             {"none", "simt"});
+  c.model = model == "simt" ? ShaderModel::Simt : ShaderModel::None;
+  c.warps = uint32_t(r.integer("warps", c.warps, "warps",
+                               "simt: warp slots of the SM: warps generating, tracing or shading",
+                               1, 4096));
+  c.schedulers = uint32_t(r.integer("schedulers", c.schedulers, "schedulers",
+                                    "simt: warp schedulers of the SM, one warp instruction a "
+                                    "cycle each",
+                                    1, 64));
+  c.trace_latency = uint32_t(r.integer("trace_latency", c.trace_latency, "cycles",
+                                       "simt: a trace call's hand-off each way between the SM "
+                                       "and its RT unit",
+                                       0, 100000));
+  c.bytes_per_hit = uint32_t(r.integer("bytes_per_hit", c.bytes_per_hit, "bytes",
+                                       "simt: what hit shading reads per hit (G-buffer, "
+                                       "textures, payload) through the unit's L1",
+                                       0, 65536));
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    const char* type = ray_type_name(RayType(t));
+    ConfigReader section = r.section(type);
+    ShaderCycles& cycles = c.cycles[t];
+    auto read = [&](const char* key, uint32_t& value, const char* what) {
+      value = uint32_t(section.integer(
+          key, value, "cycles", fmt::format("simt: {} of a warp of {} rays", what, type).c_str(), 0,
+          1000000));
+    };
+    read("raygen", cycles.raygen, "ray generation");
+    read("hit", cycles.hit, "hit shading");
+    read("miss", cycles.miss, "miss shading");
+  }
+}
+
 void read_banked_dram(ConfigReader dram, BankedDramConfig& c) {
   auto count = [&](const char* key, uint32_t& value, const char* unit, const char* desc,
                    uint64_t lo,
@@ -299,6 +336,7 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                      "any-hit calls the shader core starts per cycle for one RT unit", 1, 64));
   anyhit.read_bytes = uint32_t(shader.integer("anyhit_read_bytes", anyhit.read_bytes, "bytes",
                                               "texture bytes one any-hit call reads", 1, 4096));
+  read_shader(shader, c.shader);
 
   ConfigReader tq = r.section("treelet_queues");
   c.treelet_queues.policy = tq.text("policy", c.treelet_queues.policy,
@@ -496,6 +534,11 @@ std::string hw_config_problem(const HwConfig& c) {
     p = fmt::format("[sort] buffer_rays ({}) must hold at least a warp (rt.warp_size = {})",
                     c.sort.buffer_rays, c.rt.warp_size);
   if (p.empty()) p = section("bvh", validate(c.bvh));
+  if (p.empty()) p = section("shader", shader_config_problem(c.shader));
+  if (p.empty() && c.shader.model != ShaderModel::None &&
+      (c.rt.mode == TraversalMode::Treelet || c.rt.refill == Refill::Slot))
+    p = "[shader] model = \"simt\" needs whole warps: rt.mode = \"depth_first\" with rt.refill "
+        "= \"warp\", or \"packet\" (treelet queues and slot refill split a warp's rays)";
   const RayBufferConfig& buffer = c.treelet_queues.buffer;
   uint32_t state = ray_state_bytes(c.rt.stack);
   if (p.empty() && buffer.place == RayBufferPlace::Sram &&

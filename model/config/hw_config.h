@@ -18,6 +18,7 @@
 #include "model/sched/dispatcher.h"
 #include "model/sched/ray_sorter.h"
 #include "model/sched/rt_core.h"
+#include "model/sched/shader_core.h"
 #include "model/sched/treelet_scheduler.h"
 
 namespace rtsim {
@@ -45,7 +46,7 @@ struct HwConfig {
   double clock_ghz = 1.5;  // GHz: the clock of every unit (MRays/s = rays/cycle * clock)
   SimulationConfig sim;
   DispatchConfig dispatch;
-  SortConfig sort;  // the ray sorting unit between dispatch and the units (off by default)
+  SortConfig sort;        // the ray sorting unit between dispatch and the units (off by default)
   uint32_t rt_units = 4;  // units: RT units, each with its own L1
   RtCoreConfig rt;
   CacheConfig l1{32 * 1024, 64, 4, "lru", 20, 16};
@@ -56,6 +57,7 @@ struct HwConfig {
   DramConfig dram{64.0, 200, 128};                       // the simple model
   BankedDramConfig banked_dram = default_banked_dram();  // the banked model
   BvhConfig bvh;
+  ShaderConfig shader;  // the SM around each RT unit (off by default)
 };
 
 // The L1 as the simulator builds it: write-back, but write-through in treelet mode, where a

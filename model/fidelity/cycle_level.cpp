@@ -9,17 +9,19 @@ namespace rtsim {
 
 FidelityResult cycle_level_result(const RtSimulator& sim) {
   std::array<CostTotals, kRayTypeCount> by_type{};
+  // A shader model's shading reads count with the traffic of the rays whose hits they shade.
+  std::array<ReadCounts, kRayTypeCount> shading = sim.shading_reads();
   for (int t = 0; t < kRayTypeCount; ++t) {
     const RayTypeStats& s = sim.collected().by_type()[t];
     CostTotals& c = by_type[t];
     c.rays = s.rays;
     c.nodes = s.counters.trav_nodes;
     c.triangles = s.counters.trav_prims;
-    c.l1_accesses = s.l1_accesses;
-    c.l1_hits = s.l1_hits;
-    c.l2_accesses = s.l2_accesses;
-    c.l2_hits = s.l2_hits;
-    c.dram_bytes = s.dram_bytes;
+    c.l1_accesses = s.l1_accesses + shading[t].l1_accesses;
+    c.l1_hits = s.l1_hits + shading[t].l1_hits;
+    c.l2_accesses = s.l2_accesses + shading[t].l2_accesses;
+    c.l2_hits = s.l2_hits + shading[t].l2_hits;
+    c.dram_bytes = s.dram_bytes + shading[t].dram_bytes;
     c.latency = s.latency.mean() * double(s.latency.count());
   }
   FidelityResult result;

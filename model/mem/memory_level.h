@@ -24,6 +24,9 @@ constexpr uint64_t kLocalMemoryBase = 0x7000'0000'0000ull;
 // Textures the shader core reads (any-hit alpha tests, traces/alpha.h) live at and above this
 // address, below local memory.
 constexpr uint64_t kTextureBase = 0x6000'0000'0000ull;
+// What hit shading reads (G-buffer, textures, payload; model/sched/shader_core.h) lives at and
+// above this address, below textures.
+constexpr uint64_t kShadingBase = 0x5000'0000'0000ull;
 
 // What one read cost the levels of the hierarchy, charged to the ray that made it. A level
 // counts its own line accesses and hits; the last cache level counts the bytes it fetched.
@@ -39,6 +42,37 @@ struct ReadCharge {
     return *this;
   }
 };
+
+// What reads cost at each level of the memory hierarchy, summed.
+struct ReadCounts {
+  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
+  ReadCounts& operator+=(const ReadCounts& o) {
+    l1_accesses += o.l1_accesses;
+    l1_hits += o.l1_hits;
+    l2_accesses += o.l2_accesses;
+    l2_hits += o.l2_hits;
+    dram_bytes += o.dram_bytes;
+    return *this;
+  }
+  ReadCounts& operator-=(const ReadCounts& o) {
+    l1_accesses -= o.l1_accesses;
+    l1_hits -= o.l1_hits;
+    l2_accesses -= o.l2_accesses;
+    l2_hits -= o.l2_hits;
+    dram_bytes -= o.dram_bytes;
+    return *this;
+  }
+};
+
+// Adds a read's charge to a sum of costs (ReadCounts, or a ray's cost).
+template <typename Cost>
+void add_charge(Cost& cost, const ReadCharge& c) {
+  cost.l1_accesses += c.l1_accesses;
+  cost.l1_hits += c.l1_hits;
+  cost.l2_accesses += c.l2_accesses;
+  cost.l2_hits += c.l2_hits;
+  cost.dram_bytes += c.dram_bytes;
+}
 
 // Who waits for a read that did not complete at once.
 class ReadClient {

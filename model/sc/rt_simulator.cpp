@@ -79,7 +79,7 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
     std::string name = "rt" + std::to_string(i);
     units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, l1_as_built(config),
                                                     traversal_, clock_, config.sim.quantum_cycles,
-                                                    control_, &footprints_));
+                                                    control_, &footprints_, config.shader));
     units_.back()->l1.cache().track_cold_misses(bvh_begin, bvh_end);
     units_.back()->supply.bind(*supply);
     units_.back()->l1.out.bind(l2_->in);
@@ -114,7 +114,10 @@ void RtSimulator::on_handed(const RayContext& ray) {
   if (!measuring_) {
     measuring_ = true;
     measure_start_ = ray.handed;
-    if (warmup()) report_all(before_measuring_, ray.handed);
+    if (warmup()) {
+      report_all(before_measuring_, ray.handed);
+      shading_before_ = shading_reads();
+    }
   }
   // A frame starts with its first ray (a sorting unit may still hand out the last frame's).
   if (!frame_marks_.empty() && frame_marks_.back().frame >= ray.ray.frame) return;
@@ -144,21 +147,36 @@ CacheStats RtSimulator::l2_stats() const {
   return l2_->stats();
 }
 
+std::array<ReadCounts, kRayTypeCount> RtSimulator::shading_reads() const {
+  std::array<ReadCounts, kRayTypeCount> sum{};
+  for (const auto& unit : units_) {
+    if (!unit->shader()) continue;
+    for (int t = 0; t < kRayTypeCount; ++t) sum[t] += unit->shader()->stats().reads[t];
+  }
+  for (int t = 0; t < kRayTypeCount; ++t) sum[t] -= shading_before_[t];
+  return sum;
+}
+
 void RtSimulator::share_l2_first_references(double own_share) {
   l2_->share_first_references(own_share);
 }
 
 Cycle RtSimulator::cycles() const {
   Cycle last = collector_.last_retire();
-  for (const auto& unit : units_) last = std::max(last, unit->core().stats().last_cycle);
+  for (const auto& unit : units_) {
+    last = std::max(last, unit->core().stats().last_cycle);
+    if (unit->shader()) last = std::max(last, unit->shader()->stats().last_cycle);
+  }
   return last;
 }
 
 Cycle RtSimulator::next_delivery() const {
   Cycle next = l2_->next_job();
   if (banked_dram_) next = std::min(next, banked_dram_->next_event());
-  for (const auto& unit : units_)
+  for (const auto& unit : units_) {
     if (unit->core().has_event()) next = std::min(next, unit->core().next_event());
+    if (unit->shader()) next = std::min(next, unit->shader()->next_wake());
+  }
   return next;
 }
 
@@ -169,7 +187,10 @@ std::string RtSimulator::dump() const {
       << " in flight, stream " << (d.exhausted() ? "exhausted" : "has rays") << "\n";
   if (treelets_) out << treelets_->dump();
   if (sorter_) out << sorter_->dump();
-  for (const auto& unit : units_) out << unit->core().dump();
+  for (const auto& unit : units_) {
+    out << unit->core().dump();
+    if (unit->shader()) out << unit->shader()->dump();
+  }
   out << "l2: " << l2_->queued() << " requests and DRAM reads queued\n";
   if (banked_dram_)
     out << "dram: " << banked_dram_->controller().queued() << " bursts queued, next decision "

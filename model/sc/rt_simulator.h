@@ -8,6 +8,7 @@
 // benchmarks that compare runs use run_in_child(), model/sc/fork_run.h).
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <stdexcept>
@@ -58,6 +59,9 @@ class RtSimulator {
   const SimStatsCollector& collected() const { return collector_; }
   const HwConfig& config() const { return config_; }
   CacheStats l2_stats() const;  // summed over the slices
+  // A shader model: what the SMs' shading reads cost, by the hit ray's type, over the units,
+  // from the first measured ray on.
+  std::array<ReadCounts, kRayTypeCount> shading_reads() const;
   // Before run(): the L2 stands in for that of a machine of which this one has own_share of the
   // RT units (Cache::share_first_references).
   void share_l2_first_references(double own_share);
@@ -109,7 +113,8 @@ class RtSimulator {
   std::unique_ptr<StallWatchdog> watchdog_;
   bool measuring_ = false;  // the first measured ray has been handed toward a unit
   Cycle measure_start_ = 0;
-  StatsRegistry before_measuring_;       // the snapshot at measure_start_
+  StatsRegistry before_measuring_;                          // the snapshot at measure_start_
+  std::array<ReadCounts, kRayTypeCount> shading_before_{};  // and the shading reads' then
   std::vector<FrameStats> frame_marks_;  // per measured frame: the snapshot at its start
 };
 

@@ -147,23 +147,68 @@ void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPoo
 
 // What one kind of read cost, summed over the units: accesses and misses at the L1 and L2,
 // DRAM bytes read.
-void report_reads(StatsRegistry& r, const std::string& p,
-                  const std::vector<std::unique_ptr<RtUnitModule>>& units,
-                  ReadCounts RtCoreStats::*kind) {
-  ReadCounts sum;
-  for (const auto& unit : units) {
-    const ReadCounts& c = unit->core().stats().*kind;
-    sum.l1_accesses += c.l1_accesses;
-    sum.l1_hits += c.l1_hits;
-    sum.l2_accesses += c.l2_accesses;
-    sum.l2_hits += c.l2_hits;
-    sum.dram_bytes += c.dram_bytes;
-  }
+void report_read_counts(StatsRegistry& r, const std::string& p, const ReadCounts& sum) {
   r.counter(p + ".l1_accesses", sum.l1_accesses);
   r.counter(p + ".l1_misses", sum.l1_accesses - sum.l1_hits);
   r.counter(p + ".l2_accesses", sum.l2_accesses);
   r.counter(p + ".l2_misses", sum.l2_accesses - sum.l2_hits);
   r.counter(p + ".dram_read_bytes", sum.dram_bytes);
+}
+
+void report_reads(StatsRegistry& r, const std::string& p,
+                  const std::vector<std::unique_ptr<RtUnitModule>>& units,
+                  ReadCounts RtCoreStats::*kind) {
+  ReadCounts sum;
+  for (const auto& unit : units) sum += unit->core().stats().*kind;
+  report_read_counts(r, p, sum);
+}
+
+// The shader side (model/sched/shader_core.h): each SM's scheduler time by shader, and the
+// totals; warp slots the units waited for; what the shading reads cost.
+void report_shader(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units,
+                   uint32_t schedulers) {
+  ShaderStats sum;
+  ReadCounts reads;
+  for (const auto& unit : units) {
+    const ShaderStats& s = unit->shader()->stats();
+    const std::string p = "rt" + std::to_string(unit->core().id()) + ".shader";
+    r.counter(p + ".busy_cycles", s.busy_cycles());
+    r.ratio(p + ".utilisation", p + ".busy_cycles", "cycles", 1.0 / schedulers);
+    sum.warps += s.warps;
+    sum.rays += s.rays;
+    sum.hits += s.hits;
+    sum.raygen_cycles += s.raygen_cycles;
+    sum.hit_cycles += s.hit_cycles;
+    sum.miss_cycles += s.miss_cycles;
+    for (int t = 0; t < kRayTypeCount; ++t) sum.type_cycles[t] += s.type_cycles[t];
+    sum.trace_delay_cycles += s.trace_delay_cycles;
+    sum.slot_waits += s.slot_waits;
+    sum.slot_wait_cycles += s.slot_wait_cycles;
+    sum.read_bytes += s.read_bytes;
+    for (const ReadCounts& c : s.reads) reads += c;
+  }
+  r.counter("shader.warps", sum.warps);
+  r.counter("shader.rays", sum.rays);
+  r.counter("shader.hits", sum.hits);
+  r.counter("shader.raygen_cycles", sum.raygen_cycles);
+  r.counter("shader.hit_cycles", sum.hit_cycles);
+  r.counter("shader.miss_cycles", sum.miss_cycles);
+  r.counter("shader.busy_cycles", sum.busy_cycles());
+  for (int t = 0; t < kRayTypeCount; ++t)
+    if (sum.type_cycles[t] > 0)
+      r.counter(std::string("shader.type.") + ray_type_name(RayType(t)) + ".busy_cycles",
+                sum.type_cycles[t]);
+  r.counter("shader.trace_delay_cycles", sum.trace_delay_cycles);
+  r.counter("shader.slot_waits", sum.slot_waits);
+  r.counter("shader.slot_wait_cycles", sum.slot_wait_cycles);
+  r.counter("shader.read_bytes", sum.read_bytes);
+  report_read_counts(r, "shader.reads", reads);
+  r.ratio("shader.utilisation", "shader.busy_cycles", "cycles",
+          1.0 / (double(schedulers) * double(units.size())));
+  r.ratio("shader.busy_cycles_per_ray", "shader.busy_cycles", "rays");
+  r.ratio("shader.mean_trace_delay", "shader.trace_delay_cycles", "shader.rays");
+  r.ratio("shader.reads.l1_miss_rate", "shader.reads.l1_misses", "shader.reads.l1_accesses");
+  r.ratio("shader.reads.dram_bytes_per_ray", "shader.reads.dram_read_bytes", "rays");
 }
 
 // Two levels: steps and reads of each level, over the units, and per ray.
@@ -384,6 +429,8 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
 
   if (two_level) report_levels(r, units_);
   if (alpha_tested) report_anyhit(r, units_);
+  if (config_.shader.model != ShaderModel::None)
+    report_shader(r, units_, config_.shader.schedulers);
   if (config_.rt.prefetch.trigger != PrefetchTrigger::None) report_prefetch(r, units_);
   report_l2(r, *l2_);
   if (banked_dram_) report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);

@@ -6,13 +6,18 @@
 // supply announces work, or when the L2 reports data for a waiting ray; it handles every event
 // before now + quantum (TLM temporal decoupling: requests carry the unit's local time as their
 // delay), and sleeps again. A unit whose rays all wait on memory sleeps until data arrives.
+// With a shader model the unit's SM (model/sched/shader_core.h) stands between the unit and the
+// supply; it wakes the unit when a warp slot frees.
 #pragma once
+
+#include <memory>
 
 #include <systemc>
 
 #include "model/sc/ray_supply_if.h"
 #include "model/sc/tlm_memory.h"
 #include "model/sched/rt_core.h"
+#include "model/sched/shader_core.h"
 
 namespace rtsim {
 
@@ -25,10 +30,11 @@ class RtUnitModule : public sc_core::sc_module {
   RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
                const CacheConfig& l1_config, const TraversalUnit& traversal, const Clock& clock,
                uint32_t quantum_cycles, SimControl& control,
-               const TreeletFootprints* footprints = nullptr);
+               const TreeletFootprints* footprints = nullptr, const ShaderConfig& shader = {});
 
   const RtCore& core() const { return core_; }
   RtCore& core() { return core_; }
+  const ShaderCore* shader() const { return shader_.get(); }  // null without a shader model
 
  private:
   void start_of_simulation() override;
@@ -40,7 +46,9 @@ class RtUnitModule : public sc_core::sc_module {
   uint32_t quantum_;
   SimControl& control_;
   RtCore core_;
-  sc_core::sc_event wake_;
+  ShaderConfig shader_config_;
+  std::unique_ptr<ShaderCore> shader_;
+  sc_core::sc_event wake_, shader_wake_;
   Cycle armed_ = kPending;  // the cycle wake_ is notified for (kPending: none)
   sc_core::sc_event_or_list wake_or_work_;
 };

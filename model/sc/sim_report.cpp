@@ -111,6 +111,11 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
       unit["transform"] = r.value(name + ".transform.utilisation");
     means["transform"] = mean(".transform.utilisation");
   }
+  // A shader model: the SMs' warp schedulers beside the RT units.
+  if (r.has("shader.utilisation")) {
+    for (auto& [name, unit] : units.items()) unit["shader"] = r.value(name + ".shader.utilisation");
+    means["shader"] = r.value("shader.utilisation");
+  }
   return {{"mean", means},
           {"units", units},
           {"dispatch", r.value("dispatch.utilisation")},
@@ -127,6 +132,7 @@ Json bottleneck_json(const Json& u) {
       {"triangle", "triangle-test units"},
       {"transform", "instance transform units"},
       {"control", "traversal issue"},
+      {"shader", "SM warp schedulers (shading)"},
       {"l1_port", "L1 data ports"},
       {"l2_port", "L2 data ports"},
       {"xbar_busiest_link", "busiest crossbar link"},
@@ -154,6 +160,31 @@ Json bottleneck_json(const Json& u) {
                 "occupied)",
                 busy[0].second, pct(busy[0].first), pct(std::max(0.0, value("ray_slots"))));
   return {{"text", text}, {"resource", busy[0].second}, {"utilisation", busy[0].first}};
+}
+
+// The shader side: where the SMs' scheduler time went, what waiting for it cost the RT units,
+// and what shading read; null without a shader model.
+Json shader_json(const HwConfig& c, const StatsRegistry& r) {
+  if (c.shader.model == ShaderModel::None) return Json();
+  Json by_type = Json::object();
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    std::string name = ray_type_name(RayType(t));
+    std::string key = "shader.type." + name + ".busy_cycles";
+    if (r.has(key)) by_type[name] = r.value(key);
+  }
+  return {{"model", shader_model_name(c.shader.model)},
+          {"busy_cycles", r.value("shader.busy_cycles")},
+          {"raygen_cycles", r.value("shader.raygen_cycles")},
+          {"hit_cycles", r.value("shader.hit_cycles")},
+          {"miss_cycles", r.value("shader.miss_cycles")},
+          {"busy_cycles_by_type", by_type},
+          {"utilisation", r.value("shader.utilisation")},
+          {"busy_cycles_per_ray", r.value("shader.busy_cycles_per_ray")},
+          {"mean_trace_delay", r.value("shader.mean_trace_delay")},
+          {"slot_wait_cycles", r.value("shader.slot_wait_cycles")},
+          {"read_bytes", r.value("shader.read_bytes")},
+          {"reads_l1_miss_rate", r.value("shader.reads.l1_miss_rate")},
+          {"reads_dram_bytes_per_ray", r.value("shader.reads.dram_bytes_per_ray")}};
 }
 
 Json memory_json(const HwConfig& c, const StatsRegistry& r) {
@@ -289,6 +320,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   doc["frames"] = frames_json(sim);
   doc["utilisation"] = utilisation_json(c, r);
   doc["bottleneck"] = bottleneck_json(doc["utilisation"]);
+  doc["shader"] = shader_json(c, r);
   // Coherence figures exist only in the mode that produces them; elsewhere they are null.
   bool packet = c.rt.mode == TraversalMode::Packet, treelet = c.rt.mode == TraversalMode::Treelet;
   auto when = [&](bool applies, const char* name) {

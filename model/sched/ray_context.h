@@ -35,6 +35,7 @@ struct RayContext {
   Cycle handed = 0;      // cycle it was handed toward a unit: dispatch, or leaving the sorter
   Cycle ready = 0;       // earliest cycle of its next step (arrival, queue exit)
   uint32_t unit = 0, slot = 0;  // where it runs now
+  uint32_t shader_warp = 0;     // the SM's warp slot that traced it (shader_core.h)
   // Hardware stack: entries on chip (the top of the traversal stack) and spilled below them.
   uint32_t resident = 0, spilled = 0;
   uint32_t stack_region = 0;  // whose spill region holds its spilled entries (hardware_stack.h)

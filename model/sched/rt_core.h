@@ -97,11 +97,6 @@ struct RtCoreConfig {
 
 std::string rt_core_config_problem(const RtCoreConfig& config);
 
-// What reads cost at each level of the memory hierarchy.
-struct ReadCounts {
-  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
-};
-
 struct RtCoreStats {
   uint64_t rays_started = 0, rays_retired = 0;
   uint64_t node_steps = 0, leaf_steps = 0;

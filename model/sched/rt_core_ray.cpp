@@ -6,18 +6,6 @@
 #include "model/sched/rt_core.h"
 
 namespace rtsim {
-namespace {
-
-template <typename Cost>
-void add_charge(Cost& cost, const ReadCharge& c) {
-  cost.l1_accesses += c.l1_accesses;
-  cost.l1_hits += c.l1_hits;
-  cost.l2_accesses += c.l2_accesses;
-  cost.l2_hits += c.l2_hits;
-  cost.dram_bytes += c.dram_bytes;
-}
-
-}  // namespace
 
 uint32_t RtCore::level_of(uint64_t addr) const {
   if (addr >= bvh_begin_ && addr < bvh_end_)

@@ -114,6 +114,22 @@ TEST(HwConfig, ImpossibleCombinationIsAnError) {
   e = error_of("", {"rt.mode=treelet", "treelet_queues.buffer_bytes=100"});
   EXPECT_NE(e.find("buffer_bytes (100) holds no ray state: one takes 120 bytes"), std::string::npos)
       << e;
+  e = error_of("", {"rt.mode=treelet", "shader.model=simt"});
+  EXPECT_NE(e.find("[shader] model = \"simt\" needs whole warps"), std::string::npos) << e;
+  e = error_of("", {"rt.refill=slot", "shader.model=simt"});
+  EXPECT_NE(e.find("needs whole warps"), std::string::npos) << e;
+  EXPECT_EQ(error_of("", {"rt.mode=packet", "shader.model=simt"}), "(no error)");
+}
+
+TEST(HwConfig, ShaderCyclesPerRayType) {
+  HwConfig c = load_hw_config("", {"shader.model=simt", "shader.shadow.miss=7"});
+  EXPECT_EQ(c.shader.model, ShaderModel::Simt);
+  EXPECT_EQ(c.shader.cycles[int(RayType::Shadow)].miss, 7u);
+  EXPECT_EQ(c.shader.cycles[int(RayType::Camera)].hit,
+            ShaderConfig::default_shader_cycles()[int(RayType::Camera)].hit);
+  EXPECT_EQ(load_hw_config("").shader.model, ShaderModel::None) << "off unless asked for";
+  std::string e = error_of("", {"shader.sky.miss=1"});
+  EXPECT_NE(e.find("unknown key 'shader.sky"), std::string::npos) << e;
 }
 
 }  // namespace
