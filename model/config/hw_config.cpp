@@ -48,7 +48,8 @@ void read_shader(ConfigReader r, ShaderConfig& c) {
   std::string model = r.text("model", shader_model_name(c.model),
                              "the SM around each RT unit: none (the unit takes rays straight from "
                              "the dispatcher) or simt (ray generation, hit and miss shading, warp "
-                             "slots and shading reads; model/SIM.md, \"The shader side\")",
+                             "slots and shading reads; model/SIM.md, \"The shader side\"); "
+                             "any-hit calls (shader.anyhit_*) are timed either way",
                              {"none", "simt"});
   c.model = model == "simt" ? ShaderModel::Simt : ShaderModel::None;
   c.warps = uint32_t(r.integer("warps", c.warps, "warps",

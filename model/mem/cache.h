@@ -26,12 +26,13 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <memory>
 #include <queue>
 #include <string>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "model/mem/memory_level.h"
@@ -119,7 +120,8 @@ class Cache : public MemoryTarget, private ReadClient {
   bool contains(uint64_t addr) const;
   // Keeps a set of every block referenced, to count cold (compulsory) misses; without it
   // cold_misses stays 0. Blocks in [dense_begin, dense_end) (the BVH) are kept in a bitmap, a
-  // bit test per miss; others (local memory) in a hash set.
+  // bit test per miss; others (local memory, textures, shading reads) in bitmap pages found by
+  // a hash.
   void track_cold_misses(uint64_t dense_begin = 0, uint64_t dense_end = 0);
   bool tracks_cold_misses() const { return track_cold_; }
   // For a scale model (model/fidelity/scaled_level.h): this cache stands in for a shared cache
@@ -264,17 +266,23 @@ class Cache : public MemoryTarget, private ReadClient {
   std::vector<uint32_t> free_requests_;
   Join join_{*this};
   // Marks a block referenced; true the first time.
+  static bool mark(uint64_t* bits, uint64_t i) {
+    uint64_t bit = uint64_t(1) << (i & 63);
+    bool first = !(bits[i >> 6] & bit);
+    bits[i >> 6] |= bit;
+    return first;
+  }
   bool first_reference(uint64_t block) {
     uint64_t i = block - dense_first_;
-    if (i >= dense_blocks_) return held_blocks_.insert(block).second;
-    uint64_t bit = uint64_t(1) << (i & 63);
-    bool first = !(dense_held_[i >> 6] & bit);
-    dense_held_[i >> 6] |= bit;
-    return first;
+    if (i < dense_blocks_) return mark(dense_held_.data(), i);
+    return mark(held_pages_[block >> kPageShift].data(), block & ((1u << kPageShift) - 1));
   }
   std::vector<uint64_t> dense_held_;  // a bit per block of the dense range
   uint64_t dense_first_ = 0, dense_blocks_ = 0;
-  std::unordered_set<uint64_t> held_blocks_;  // the other blocks ever referenced
+  // The other blocks ever referenced, a bit each in pages of 4096 blocks (streams of shading
+  // reads and stack spills touch whole pages, so a page costs one allocation, not 4096).
+  static constexpr uint32_t kPageShift = 12;
+  std::unordered_map<uint64_t, std::array<uint64_t, (1u << kPageShift) / 64>> held_pages_;
   bool track_cold_ = false;
   double own_share_ = 1.0;
   CacheStats stats_;

@@ -28,17 +28,23 @@ constexpr uint64_t kTextureBase = 0x6000'0000'0000ull;
 // above this address, below textures.
 constexpr uint64_t kShadingBase = 0x5000'0000'0000ull;
 
+// Adds one cost to another, field by field (a read's charge, a sum of them, a ray's cost).
+template <typename Cost, typename Charge>
+void add_charge(Cost& cost, const Charge& c) {
+  cost.l1_accesses += c.l1_accesses;
+  cost.l1_hits += c.l1_hits;
+  cost.l2_accesses += c.l2_accesses;
+  cost.l2_hits += c.l2_hits;
+  cost.dram_bytes += c.dram_bytes;
+}
+
 // What one read cost the levels of the hierarchy, charged to the ray that made it. A level
 // counts its own line accesses and hits; the last cache level counts the bytes it fetched.
 struct ReadCharge {
   uint32_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0;
   uint64_t dram_bytes = 0;
   ReadCharge& operator+=(const ReadCharge& o) {
-    l1_accesses += o.l1_accesses;
-    l1_hits += o.l1_hits;
-    l2_accesses += o.l2_accesses;
-    l2_hits += o.l2_hits;
-    dram_bytes += o.dram_bytes;
+    add_charge(*this, o);
     return *this;
   }
 };
@@ -47,11 +53,7 @@ struct ReadCharge {
 struct ReadCounts {
   uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
   ReadCounts& operator+=(const ReadCounts& o) {
-    l1_accesses += o.l1_accesses;
-    l1_hits += o.l1_hits;
-    l2_accesses += o.l2_accesses;
-    l2_hits += o.l2_hits;
-    dram_bytes += o.dram_bytes;
+    add_charge(*this, o);
     return *this;
   }
   ReadCounts& operator-=(const ReadCounts& o) {
@@ -63,16 +65,6 @@ struct ReadCounts {
     return *this;
   }
 };
-
-// Adds a read's charge to a sum of costs (ReadCounts, or a ray's cost).
-template <typename Cost>
-void add_charge(Cost& cost, const ReadCharge& c) {
-  cost.l1_accesses += c.l1_accesses;
-  cost.l1_hits += c.l1_hits;
-  cost.l2_accesses += c.l2_accesses;
-  cost.l2_hits += c.l2_hits;
-  cost.dram_bytes += c.dram_bytes;
-}
 
 // Who waits for a read that did not complete at once.
 class ReadClient {

@@ -148,13 +148,11 @@ CacheStats RtSimulator::l2_stats() const {
 }
 
 std::array<ReadCounts, kRayTypeCount> RtSimulator::shading_reads() const {
-  std::array<ReadCounts, kRayTypeCount> sum{};
-  for (const auto& unit : units_) {
-    if (!unit->shader()) continue;
-    for (int t = 0; t < kRayTypeCount; ++t) sum[t] += unit->shader()->stats().reads[t];
-  }
-  for (int t = 0; t < kRayTypeCount; ++t) sum[t] -= shading_before_[t];
-  return sum;
+  ShaderStats sum;
+  for (const auto& unit : units_)
+    if (unit->shader()) sum += unit->shader()->stats();
+  for (int t = 0; t < kRayTypeCount; ++t) sum.reads[t] -= shading_before_[t];
+  return sum.reads;
 }
 
 void RtSimulator::share_l2_first_references(double own_share) {

@@ -145,8 +145,7 @@ void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPoo
   r.ratio(p + ".utilisation", p + ".issues", "cycles", 1.0 / pool.config().count);
 }
 
-// What one kind of read cost, summed over the units: accesses and misses at the L1 and L2,
-// DRAM bytes read.
+// What one kind of read cost: accesses and misses at the L1 and L2, DRAM bytes read.
 void report_read_counts(StatsRegistry& r, const std::string& p, const ReadCounts& sum) {
   r.counter(p + ".l1_accesses", sum.l1_accesses);
   r.counter(p + ".l1_misses", sum.l1_accesses - sum.l1_hits);
@@ -155,6 +154,7 @@ void report_read_counts(StatsRegistry& r, const std::string& p, const ReadCounts
   r.counter(p + ".dram_read_bytes", sum.dram_bytes);
 }
 
+// report_read_counts of one kind of the units' reads, summed over the units.
 void report_reads(StatsRegistry& r, const std::string& p,
                   const std::vector<std::unique_ptr<RtUnitModule>>& units,
                   ReadCounts RtCoreStats::*kind) {
@@ -168,25 +168,16 @@ void report_reads(StatsRegistry& r, const std::string& p,
 void report_shader(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units,
                    uint32_t schedulers) {
   ShaderStats sum;
-  ReadCounts reads;
   for (const auto& unit : units) {
+    if (!unit->shader()) continue;  // before the simulation starts
     const ShaderStats& s = unit->shader()->stats();
     const std::string p = "rt" + std::to_string(unit->core().id()) + ".shader";
     r.counter(p + ".busy_cycles", s.busy_cycles());
     r.ratio(p + ".utilisation", p + ".busy_cycles", "cycles", 1.0 / schedulers);
-    sum.warps += s.warps;
-    sum.rays += s.rays;
-    sum.hits += s.hits;
-    sum.raygen_cycles += s.raygen_cycles;
-    sum.hit_cycles += s.hit_cycles;
-    sum.miss_cycles += s.miss_cycles;
-    for (int t = 0; t < kRayTypeCount; ++t) sum.type_cycles[t] += s.type_cycles[t];
-    sum.trace_delay_cycles += s.trace_delay_cycles;
-    sum.slot_waits += s.slot_waits;
-    sum.slot_wait_cycles += s.slot_wait_cycles;
-    sum.read_bytes += s.read_bytes;
-    for (const ReadCounts& c : s.reads) reads += c;
+    sum += s;
   }
+  ReadCounts reads;
+  for (const ReadCounts& c : sum.reads) reads += c;
   r.counter("shader.warps", sum.warps);
   r.counter("shader.rays", sum.rays);
   r.counter("shader.hits", sum.hits);

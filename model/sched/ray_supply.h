@@ -30,7 +30,8 @@ class RaySupply {
   }
   // A finished ray, with its final state; the supply owns the context again.
   virtual void retire(RayContext& ray, Cycle now) = 0;
-  // True when take() will never return a ray again.
+  // True when take() will never return a ray again and nothing behind the supply still works
+  // for the unit (a shader core's last shading reads): the unit may then finish.
   virtual bool exhausted() const = 0;
 };
 

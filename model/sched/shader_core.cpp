@@ -50,10 +50,10 @@ ShaderCore::ShaderCore(const ShaderConfig& config, RaySupply& upstream, MemoryTa
       scheduler_free_(config.schedulers, 0) {}
 
 Cycle ShaderCore::occupy(Cycle at, uint64_t cycles) {
+  if (cycles == 0) return at;
   auto first = std::min_element(scheduler_free_.begin(), scheduler_free_.end());
-  Cycle end = std::max(at, *first) + cycles;
-  if (cycles > 0) *first = end;
-  return end;
+  *first = std::max(at, *first) + cycles;
+  return *first;
 }
 
 uint64_t ShaderCore::cycles_of(uint32_t types, uint32_t ShaderCycles::*phase,
@@ -70,6 +70,7 @@ uint64_t ShaderCore::cycles_of(uint32_t types, uint32_t ShaderCycles::*phase,
 }
 
 size_t ShaderCore::take(uint32_t unit, Cycle now, size_t max, std::vector<RayContext*>& out) {
+  if (upstream_.exhausted()) return 0;
   auto slot =
       std::find_if(warps_.begin(), warps_.end(), [&](const Warp& w) { return w.free_at <= now; });
   if (slot == warps_.end()) {
@@ -77,17 +78,17 @@ size_t ShaderCore::take(uint32_t unit, Cycle now, size_t max, std::vector<RayCon
       starved_since_ = now;
       stats_.slot_waits++;
     }
-    Cycle next = next_free();
+    Cycle next = next_wake();
     if (next != kPending) wake_(next);
     return 0;
   }
-  size_t first = out.size();
-  size_t n = upstream_.take(unit, now, max, out);
-  if (n == 0) return 0;
   if (starved_since_ != kPending) {
     stats_.slot_wait_cycles += now - starved_since_;
     starved_since_ = kPending;
   }
+  size_t first = out.size();
+  size_t n = upstream_.take(unit, now, max, out);
+  if (n == 0) return 0;
   auto index = uint32_t(slot - warps_.begin());
   Warp& w = *slot;
   w.free_at = kPending;
@@ -156,23 +157,41 @@ void ShaderCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge
   if (--w.pending_reads > 0) return;
   shading_reads_--;
   free_slot(index);
+  if (exhausted()) wake_(w.free_at);  // the unit may wait for the last reads to finish
 }
 
 void ShaderCore::free_slot(uint32_t index) {
   Warp& w = warps_[index];
   w.free_at = w.shaded;
   stats_.last_cycle = std::max(stats_.last_cycle, w.free_at);
-  if (starved_since_ != kPending || exhausted()) wake_(w.free_at);
-}
-
-Cycle ShaderCore::next_free() const {
-  Cycle next = kPending;
-  for (const Warp& w : warps_) next = std::min(next, w.free_at);
-  return next;
+  if (starved_since_ != kPending) wake_(w.free_at);
 }
 
 Cycle ShaderCore::next_wake() const {
-  return starved_since_ == kPending ? kPending : next_free();
+  Cycle next = kPending;
+  if (starved_since_ == kPending) return next;
+  for (const Warp& w : warps_)
+    if (w.free_at > starved_since_) next = std::min(next, w.free_at);
+  return next;
+}
+
+ShaderStats& ShaderStats::operator+=(const ShaderStats& o) {
+  warps += o.warps;
+  rays += o.rays;
+  hits += o.hits;
+  raygen_cycles += o.raygen_cycles;
+  hit_cycles += o.hit_cycles;
+  miss_cycles += o.miss_cycles;
+  trace_delay_cycles += o.trace_delay_cycles;
+  slot_waits += o.slot_waits;
+  slot_wait_cycles += o.slot_wait_cycles;
+  read_bytes += o.read_bytes;
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    type_cycles[t] += o.type_cycles[t];
+    reads[t] += o.reads[t];
+  }
+  last_cycle = std::max(last_cycle, o.last_cycle);
+  return *this;
 }
 
 std::string ShaderCore::dump() const {

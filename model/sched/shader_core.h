@@ -12,9 +12,12 @@
 //  - shading reads `bytes_per_hit` for each hit (G-buffer, textures, payload) at the ray's
 //    pixel's address in the shading region (shading_address) through the unit's L1, so they
 //    compete with BVH traffic in the L1, L2 and DRAM. They are issued when the warp's last ray
-//    retires (a unit's reads go out in its local time order) and overlap the shading cycles;
+//    retires (a unit's reads go out in its local time order), so the hand-off back to the SM
+//    hides up to trace_latency of their latency, and the shading cycles overlap the rest;
 //  - the warp's slot frees when its shading cycles are done and its reads are back.
-// Schedulers are booked in the order the unit asks (its local time order). Needs whole warps:
+// Schedulers are booked in the order the unit asks (its local time order): ray generation
+// asked for later than a shading booked ahead of it queues behind it (an approximation; the
+// idle gap before that shading is lost). Needs whole warps:
 // depth-first traversal refilled by warp, or packet traversal (treelet queues move rays
 // between units, so a warp's rays would not come back to its SM).
 #pragma once
@@ -61,12 +64,13 @@ struct ShaderStats {
   uint64_t raygen_cycles = 0, hit_cycles = 0, miss_cycles = 0;  // scheduler cycles booked
   std::array<uint64_t, kRayTypeCount> type_cycles{};            // scheduler cycles per ray type
   uint64_t trace_delay_cycles = 0;  // sum over rays: how much later ray generation made them
-  uint64_t slot_waits = 0;          // requests for rays refused: no warp slot free
-  uint64_t slot_wait_cycles = 0;    // cycles the unit waited for a warp slot
+  uint64_t slot_waits = 0;          // times the unit found no warp slot free
+  uint64_t slot_wait_cycles = 0;    // cycles it then waited for one
   std::array<ReadCounts, kRayTypeCount> reads{};  // the shading reads, by the hit ray's type
   uint64_t read_bytes = 0;
   Cycle last_cycle = 0;  // the last warp slot freed
   uint64_t busy_cycles() const { return raygen_cycles + hit_cycles + miss_cycles; }
+  ShaderStats& operator+=(const ShaderStats& o);  // sums; last_cycle: the later
 };
 
 class ShaderCore : public RaySupply, private ReadClient {
@@ -106,7 +110,6 @@ class ShaderCore : public RaySupply, private ReadClient {
   void shade(uint32_t warp, Cycle now);
   void read_done(uint64_t warp, Cycle ready, const ReadCharge& charge) override;
   void free_slot(uint32_t warp);
-  Cycle next_free() const;
 
   ShaderConfig config_;
   RaySupply& upstream_;

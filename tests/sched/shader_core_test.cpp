@@ -61,8 +61,9 @@ ShaderConfig one_warp() {
 }
 
 TEST(ShaderCore, RaysReachTheUnitAfterRayGenerationAndTheHandOff) {
-  Rig rig(rays_of({RayType::Camera, RayType::Camera, RayType::Camera}), one_warp());
-  std::vector<RayContext*> warp = rig.take(100, 4);
+  Rig rig(rays_of({RayType::Camera, RayType::Camera, RayType::Camera, RayType::Camera}),
+          one_warp());
+  std::vector<RayContext*> warp = rig.take(100, 3);
   ASSERT_EQ(warp.size(), 3u);
   for (RayContext* ray : warp) EXPECT_EQ(ray->ready, 100u + 30 + 20);
   EXPECT_EQ(rig.shader.stats().raygen_cycles, 30u) << "one warp, one ray type: one raygen";
@@ -98,11 +99,22 @@ TEST(ShaderCore, AWarpShadesAfterItsSlowestRayAndFreesItsSlotAfterwards) {
   EXPECT_EQ(rig.memory.reads[0].at, 260u);
   EXPECT_EQ(rig.shader.stats().hit_cycles, 150u);
   EXPECT_EQ(rig.shader.stats().miss_cycles, 25u);
+  EXPECT_EQ(rig.shader.next_wake(), kPending) << "nobody waits";
   EXPECT_TRUE(rig.take(shaded - 1, 3).empty());
   ASSERT_FALSE(rig.wakes.empty());
   EXPECT_EQ(rig.wakes.back(), shaded) << "the waiting unit is woken when the slot frees";
+  EXPECT_EQ(rig.shader.next_wake(), shaded) << "what the stall watchdog waits for";
   EXPECT_EQ(rig.take(shaded, 3).size(), 1u);
   EXPECT_EQ(rig.shader.stats().slot_wait_cycles, 1u);
+  EXPECT_EQ(rig.shader.next_wake(), kPending);
+}
+
+TEST(ShaderCore, AWarpWithNoShaderWorkDoesNotWaitForAScheduler) {
+  Rig rig(rays_of({RayType::Shadow}), one_warp());
+  std::vector<RayContext*> warp = rig.take(0, 1);
+  EXPECT_EQ(warp[0]->ready, 40u + 20) << "raygen holds the only scheduler until 40";
+  rig.retire(warp[0], 5, true);  // a shadow hit: no hit shader (0 cycles)
+  EXPECT_EQ(rig.shader.stats().last_cycle, 5u + 20) << "freed after the hand-off, not at 40";
 }
 
 TEST(ShaderCore, ShadingReadsHoldTheSlotUntilTheirDataIsBack) {
