@@ -17,11 +17,8 @@ FidelityResult cycle_level_result(const RtSimulator& sim) {
     c.rays = s.rays;
     c.nodes = s.counters.trav_nodes;
     c.triangles = s.counters.trav_prims;
-    c.l1_accesses = s.l1_accesses + shading[t].l1_accesses;
-    c.l1_hits = s.l1_hits + shading[t].l1_hits;
-    c.l2_accesses = s.l2_accesses + shading[t].l2_accesses;
-    c.l2_hits = s.l2_hits + shading[t].l2_hits;
-    c.dram_bytes = s.dram_bytes + shading[t].dram_bytes;
+    add_charge(c, s);
+    add_charge(c, shading[t]);
     c.latency = s.latency.mean() * double(s.latency.count());
   }
   FidelityResult result;

@@ -93,7 +93,7 @@ size_t ShaderCore::take(uint32_t unit, Cycle now, size_t max, std::vector<RayCon
   Warp& w = *slot;
   w.free_at = kPending;
   w.tracing = uint32_t(n);
-  w.hit_types = w.miss_types = 0;
+  w.miss_types = 0;
   w.hits.clear();
   uint32_t types = 0;
   for (size_t i = first; i < out.size(); ++i) types |= 1u << int(out[i]->ray.type);
@@ -115,16 +115,19 @@ size_t ShaderCore::take(uint32_t unit, Cycle now, size_t max, std::vector<RayCon
 void ShaderCore::retire(RayContext& ray, Cycle now) {
   uint32_t index = ray.shader_warp;
   Warp& w = warps_[index];
-  bool hit = ray.state.prim != kNoHit;
-  (hit ? w.hit_types : w.miss_types) |= 1u << int(ray.ray.type);
-  if (hit) w.hits.push_back({ray.ray.pixel, ray.ray.frame, ray.ray.type});
+  if (ray.state.prim != kNoHit)
+    w.hits.push_back({ray.ray.pixel, ray.ray.frame, ray.ray.type});
+  else
+    w.miss_types |= 1u << int(ray.ray.type);
   upstream_.retire(ray, now);
   if (--w.tracing == 0) shade(index, now);
 }
 
 void ShaderCore::shade(uint32_t index, Cycle now) {
   Warp& w = warps_[index];
-  uint64_t cycles = cycles_of(w.hit_types, &ShaderCycles::hit, stats_.hit_cycles) +
+  uint32_t hit_types = 0;
+  for (const Warp::HitRay& hit : w.hits) hit_types |= 1u << int(hit.type);
+  uint64_t cycles = cycles_of(hit_types, &ShaderCycles::hit, stats_.hit_cycles) +
                     cycles_of(w.miss_types, &ShaderCycles::miss, stats_.miss_cycles);
   w.shaded = occupy(now + config_.trace_latency, cycles);
   stats_.hits += w.hits.size();

@@ -96,8 +96,8 @@ class ShaderCore : public RaySupply, private ReadClient {
   struct Warp {
     Cycle free_at = 0;  // kPending while tracing or waiting for reads
     uint32_t tracing = 0, pending_reads = 0;
-    uint32_t hit_types = 0, miss_types = 0;  // bit per ray type
-    Cycle shaded = 0;  // end of its shading cycles, and of its reads once back
+    uint32_t miss_types = 0;  // bit per ray type with a miss (hits: the types in `hits`)
+    Cycle shaded = 0;         // end of its shading cycles, and of its reads once back
     struct HitRay {
       uint32_t pixel, frame;
       RayType type;
