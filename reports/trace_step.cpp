@@ -45,6 +45,7 @@ Json summary_json(const pipeline::RunSummary& s) {
     passes.push_back({{"pass", pipeline::pass_name(id)},
                       {"ray_type", ray_type_name(pipeline::pass_ray_type(id))},
                       {"rays", ps.rays},
+                      {"alpha_rays", ps.alpha_rays},
                       {"budget_per_frame", ps.budget},
                       {"frames_skipped", ps.frames_skipped},
                       {"skipped", ps.rays == 0},

@@ -30,10 +30,11 @@ RTCRay to_rtc(const Ray& r, uint32_t mask) {
 }
 
 // Embree's context, extended (as Embree's documentation shows) with what the filter needs of
-// the ray.
+// the ray and what it reports back about the query.
 struct RayContext {
   RTCIntersectContext embree;  // first, so that Embree's pointer to it is one to RayContext
   bool force_opaque;
+  bool met_alpha = false;  // set by the filter
 };
 
 RayContext context_of(const Ray& ray) {
@@ -43,16 +44,27 @@ RayContext context_of(const Ray& ray) {
   return context;
 }
 
+// Whether a candidate on a triangle of an alpha geometry counts as a hit: an opaque triangle's
+// does (the filter is set per geometry, so they come here too); an alpha-tested one's where its
+// mask is opaque at the hit, and the context notes that the query met one.
+bool candidate_counts(RayContext& context, const TriangleAlpha& alpha, uint32_t prim, float u,
+                      float v) {
+  if (!alpha.tested(prim)) return true;
+  context.met_alpha = true;
+  return alpha.look_up(prim, u, v).opaque;
+}
+
 // Embree's intersection filter for alpha-tested triangles: a candidate whose mask has a hole
 // at the hit is no hit, for closest-hit and any-hit queries alike, unless the ray forces
 // every triangle opaque.
 void alpha_filter(const RTCFilterFunctionNArguments* args) {
-  if (reinterpret_cast<const RayContext*>(args->context)->force_opaque) return;
-  const auto* alpha = static_cast<const TriangleAlpha*>(args->geometryUserPtr);
+  auto& context = *reinterpret_cast<RayContext*>(args->context);
+  if (context.force_opaque) return;
+  const auto& alpha = *static_cast<const TriangleAlpha*>(args->geometryUserPtr);
   for (unsigned i = 0; i < args->N; ++i)
     if (args->valid[i] == -1 &&
-        !alpha->passes(RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i),
-                       RTCHitN_v(args->hit, args->N, i)))
+        !candidate_counts(context, alpha, RTCHitN_primID(args->hit, args->N, i),
+                          RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i)))
       args->valid[i] = 0;
 }
 
@@ -159,7 +171,7 @@ EmbreeScene::~EmbreeScene() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-Hit EmbreeScene::intersect(const Ray& ray) const {
+Hit EmbreeScene::intersect(const Ray& ray, bool* met_alpha) const {
   RayContext context = context_of(ray);
   RTCRayHit rh;
   rh.ray = to_rtc(ray, settings_.ray_masks[size_t(ray.type)]);
@@ -175,13 +187,15 @@ Hit EmbreeScene::intersect(const Ray& ray) const {
     hit.prim = rh.hit.primID;
     if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) hit.instance = rh.hit.instID[0];
   }
+  if (met_alpha) *met_alpha = context.met_alpha;
   return hit;
 }
 
-bool EmbreeScene::occluded(const Ray& ray) const {
+bool EmbreeScene::occluded(const Ray& ray, bool* met_alpha) const {
   RayContext context = context_of(ray);
   RTCRay r = to_rtc(ray, settings_.ray_masks[size_t(ray.type)]);
   rtcOccluded1(scene_of(ray), &context.embree, &r);
+  if (met_alpha) *met_alpha = context.met_alpha;
   return r.tfar == -std::numeric_limits<float>::infinity();
 }
 

@@ -34,8 +34,11 @@ class EmbreeScene {
   // Closest hit in [tmin, tmax] for a closest-hit query; for an any-hit query, some hit
   // reported as prim = kAnyPrim, t = tmax (Embree does not say which triangle).
   Hit trace(const Ray& ray) const;
-  Hit intersect(const Ray& ray) const;  // closest hit regardless of ray.query
-  bool occluded(const Ray& ray) const;  // any hit in [tmin, tmax]
+  // met_alpha, where given, is set to whether the query met an alpha-tested candidate: the
+  // alpha test ran for it at least once, whatever it decided (never for a forced-opaque ray).
+  // Which candidates a query meets beyond its result follows Embree's traversal order.
+  Hit intersect(const Ray& ray, bool* met_alpha = nullptr) const;  // closest, whatever ray.query
+  bool occluded(const Ray& ray, bool* met_alpha = nullptr) const;  // any hit in [tmin, tmax]
 
   // Host seconds Embree took to build each frame's top level (one entry without motion).
   const std::vector<double>& top_build_seconds() const { return top_seconds_; }

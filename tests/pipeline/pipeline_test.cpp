@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <fstream>
 #include <sstream>
 
@@ -98,6 +99,7 @@ TEST(Pipeline, CornellBudgetsAndSkippedPasses) {
   EXPECT_EQ(pass(s, PassId::Refraction).rays, 0u);
   EXPECT_EQ(pass(s, PassId::Translucency).rays, 0u);
   EXPECT_EQ(pass(s, PassId::Refraction).reason, "no transmissive surface in view");
+  EXPECT_EQ(s.total_alpha_rays(), 0u) << "no alpha-tested triangle";
   std::string text = format_summary(s);
   EXPECT_NE(text.find("skipped: no transmissive surface in view"), std::string::npos) << text;
   EXPECT_NE(text.find("skipped: no glossy surface in view"), std::string::npos) << text;
@@ -130,6 +132,79 @@ TEST(Pipeline, AlphaTestOffForcesATypesRaysOpaque) {
   }
   EXPECT_GT(forced, 0u);
   EXPECT_GT(blocked_forced, blocked_tested) << "some shadow rays pass through leaf holes";
+}
+
+// Whether Embree's query for the ray met an alpha-tested candidate.
+bool meets_alpha(const EmbreeScene& embree, const Ray& ray) {
+  bool met = false;
+  if (ray.query == Query::ClosestHit)
+    embree.intersect(ray, &met);
+  else
+    embree.occluded(ray, &met);
+  return met;
+}
+
+// The line of the summary's table that starts with this pass's name.
+std::string summary_row(const std::string& text, PassId p) {
+  size_t at = text.find("\n  " + std::string(pass_name(p)) + " ");
+  return at == std::string::npos ? "" : text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+}
+
+// Each pass counts its rays that met an alpha-tested candidate (the house plant's leaves) as
+// Embree reports them for its recorded rays, the warm-up's left out as their rays are. A shadow
+// ray that the leaves' holes let through, or not, met one: a lower bound.
+TEST(Pipeline, PassesCountTheirRaysThatMetAlphaTestedCandidates) {
+  WorkloadSpec spec = small("pica", 128, 72);
+  spec.warmup_frames = 1;
+  Scene scene = load_scene(spec.scene);
+  EmbreeScene embree(scene.mesh, 1);
+  Pipeline p(spec, scene, embree);
+  RaySink sink(nullptr, spec.width, spec.height, false);
+  std::array<uint64_t, kPassCount> met{};
+  uint64_t shadows_the_holes_change = 0;
+  sink.observer = [&](const Ray& r, PassId pass, uint32_t) {
+    met[size_t(pass)] += meets_alpha(embree, r);
+    if (pass != PassId::Shadow) return;
+    Ray forced = r;
+    forced.force_opaque = true;
+    shadows_the_holes_change += embree.occluded(r) != embree.occluded(forced);
+  };
+  FrameResults frame;
+  for (uint32_t f = 0; f < p.frames_to_run(); ++f) p.run_frame(f, sink, frame);
+  const RunSummary& s = p.summary();
+  for (int i = 0; i < kPassCount; ++i) {
+    EXPECT_EQ(s.passes[size_t(i)].alpha_rays, met[size_t(i)]) << pass_name(PassId(i));
+    EXPECT_LE(s.passes[size_t(i)].alpha_rays, s.passes[size_t(i)].rays) << pass_name(PassId(i));
+  }
+  const PassSummary& shadow = pass(s, PassId::Shadow);
+  EXPECT_GT(shadows_the_holes_change, 0u);
+  EXPECT_GE(shadow.alpha_rays, shadows_the_holes_change);
+  EXPECT_LT(shadow.alpha_rays, shadow.rays / 2) << "most shadow rays pass far from the plant";
+  std::string text = format_summary(s);
+  EXPECT_NE(text.find("alpha-tested rays"), std::string::npos) << text;
+  EXPECT_NE(summary_row(text, PassId::Shadow).find(" " + std::to_string(shadow.alpha_rays) + " ("),
+            std::string::npos)
+      << text;
+}
+
+// With the alpha test off for shadow rays, the shadow and GI light-connection passes (both
+// shoot shadow rays) meet no alpha-tested candidate; the camera pass meets as many as before.
+// Runs are repeatable to the ray.
+TEST(Pipeline, ShadowRaysForcedOpaqueMeetNoAlphaTestedCandidates) {
+  WorkloadSpec spec = small("pica", 128, 72);
+  RunSummary tested = run(spec), again = run(spec);
+  spec.passes.alpha_test[size_t(RayType::Shadow)] = false;
+  RunSummary forced = run(spec);
+  for (PassId p : {PassId::Shadow, PassId::GiLight}) {
+    EXPECT_GT(pass(tested, p).alpha_rays, 0u) << pass_name(p);
+    EXPECT_GT(pass(forced, p).rays, 0u) << pass_name(p);
+    EXPECT_EQ(pass(forced, p).alpha_rays, 0u) << pass_name(p);
+  }
+  EXPECT_GT(pass(tested, PassId::Camera).alpha_rays, 0u);
+  EXPECT_EQ(pass(forced, PassId::Camera).alpha_rays, pass(tested, PassId::Camera).alpha_rays);
+  for (int i = 0; i < kPassCount; ++i)
+    EXPECT_EQ(again.passes[size_t(i)].alpha_rays, tested.passes[size_t(i)].alpha_rays)
+        << pass_name(PassId(i));
 }
 
 TEST(Pipeline, NoLightsNoShadowRays) {

@@ -71,10 +71,12 @@ TEST_F(RunReport, HasEverySection) {
   EXPECT_EQ(report_["workload"]["triangles"], 4328);
   EXPECT_GT(report_["workload"]["rays_per_type"]["camera"].get<int>(), 0);
   EXPECT_EQ(report_["workload"]["passes"].size(), 9u) << "every pass, skipped or not";
-  for (const Json& pass : report_["workload"]["passes"])
+  for (const Json& pass : report_["workload"]["passes"]) {
     if (pass["skipped"].get<bool>()) {
       EXPECT_FALSE(pass["reason"].get<std::string>().empty()) << "a skipped pass says why";
     }
+    EXPECT_LE(pass["alpha_rays"].get<uint64_t>(), pass["rays"].get<uint64_t>()) << pass["pass"];
+  }
   EXPECT_EQ(report_["hardware"]["name"], "mobile");
   EXPECT_GT(report_["timing"]["cycles"].get<double>(), 0);
   EXPECT_NEAR(report_["timing"]["mrays_per_second"].get<double>(),

@@ -67,28 +67,69 @@ TEST(BuiltinAlpha, ForestLeavesAreAlphaTestedWithOneTexturePerTreeVariant) {
   }
 }
 
+// A short ray along triangle tri's normal through its point at barycentrics (b1, b2).
+Ray ray_through(const TriangleMesh& mesh, uint32_t tri, float b1, float b2) {
+  glm::vec3 p[3];
+  for (int k = 0; k < 3; ++k) p[k] = mesh.positions[mesh.triangles[tri][k]];
+  glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+  Ray ray;
+  ray.org = (1.0f - b1 - b2) * p[0] + b1 * p[1] + b2 * p[2] + 0.01f * n;
+  ray.dir = -n;
+  ray.tmax = 0.02f;
+  return ray;
+}
+
+const uint32_t kFirstLeaf = 12;  // of forest's first tree: the first triangle after the trunk
+// A leaf's texture coordinates (0.5, 0.45), the blade's widest point, and (0.3, 0.9), beside
+// the stem, as barycentrics.
+const float kBlade[2] = {0.225f, 0.225f}, kHole[2] = {0.65f, 0.25f};
+
 // A ray along a leaf's normal through its blade hits it; one through the hole beside its stem
 // goes on (Embree's intersection filter asks the mask).
 TEST(BuiltinAlpha, EmbreeSeesTheLeafBladeButNotItsHole) {
   Scene s = load_scene("forest:1000");
   const TriangleMesh& tree = s.instanced.meshes[0];
-  const uint32_t leaf = 12;  // the first triangle after the trunk
-  ASSERT_TRUE(tree.alpha->tested(leaf));
-  glm::vec3 p[3];
-  for (int k = 0; k < 3; ++k) p[k] = tree.positions[tree.triangles[leaf][k]];
-  glm::vec3 n = glm::normalize(glm::cross(p[1] - p[0], p[2] - p[0]));
+  ASSERT_TRUE(tree.alpha->tested(kFirstLeaf));
   EmbreeScene embree(tree);
-  auto shoot = [&](float b1, float b2) {
-    Ray ray;
-    glm::vec3 at = (1.0f - b1 - b2) * p[0] + b1 * p[1] + b2 * p[2];
-    ray.org = at + 0.01f * n;
-    ray.dir = -n;
-    ray.tmax = 0.02f;
-    return embree.trace(ray).prim;
+  auto shoot = [&](const float* b) {
+    return embree.trace(ray_through(tree, kFirstLeaf, b[0], b[1])).prim;
   };
-  // Texture coordinates (0.5, 0.45), the blade's widest point, and (0.3, 0.9), beside the stem.
-  EXPECT_EQ(shoot(0.225f, 0.225f), leaf);
-  EXPECT_EQ(shoot(0.65f, 0.25f), kNoHit);
+  EXPECT_EQ(shoot(kBlade), kFirstLeaf);
+  EXPECT_EQ(shoot(kHole), kNoHit);
+}
+
+// Embree says whether a query met an alpha-tested candidate, whatever its mask decided: the
+// leaf's blade and its hole do, a forced-opaque ray and the opaque trunk (of the same Embree
+// geometry, so also through the filter) do not, nor does a ray that meets nothing.
+TEST(BuiltinAlpha, EmbreeSaysWhetherAQueryMetAnAlphaTestedCandidate) {
+  Scene s = load_scene("forest:1000");
+  const TriangleMesh& tree = s.instanced.meshes[0];
+  ASSERT_FALSE(tree.alpha->tested(0));
+  EmbreeScene embree(tree);
+  auto met = [&](Ray ray, bool any_hit, bool force_opaque) {
+    ray.force_opaque = force_opaque;
+    bool answers[2] = {false, true};  // the query overwrites either
+    for (bool& met_alpha : answers)
+      if (any_hit)
+        embree.occluded(ray, &met_alpha);
+      else
+        embree.intersect(ray, &met_alpha);
+    EXPECT_EQ(answers[0], answers[1]);
+    return answers[0];
+  };
+  Ray blade = ray_through(tree, kFirstLeaf, kBlade[0], kBlade[1]);
+  Ray hole = ray_through(tree, kFirstLeaf, kHole[0], kHole[1]);
+  Ray trunk = ray_through(tree, 0, 0.3f, 0.3f);
+  Ray away = hole;
+  away.dir = -hole.dir;
+  for (bool any_hit : {false, true}) {
+    EXPECT_TRUE(met(blade, any_hit, false)) << any_hit;
+    EXPECT_TRUE(met(hole, any_hit, false)) << any_hit;
+    EXPECT_FALSE(met(hole, any_hit, true)) << any_hit;
+    EXPECT_FALSE(met(trunk, any_hit, false)) << any_hit;
+    EXPECT_FALSE(met(away, any_hit, false)) << any_hit;
+  }
+  EXPECT_EQ(embree.intersect(trunk).prim, 0u) << "the trunk ray does reach the filter";
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "workloads/pipeline/offset.h"
+#include "workloads/pipeline/ray_sink.h"
 
 namespace rtsim::pipeline {
 
@@ -19,8 +20,22 @@ Surface surface_at(const FlatTriangles& triangles, const Ray& ray, const Hit& hi
   return s;
 }
 
-Surface SceneContext::surface(const Ray& ray) const {
-  return surface_at(materials.triangles, ray, intersect(ray));
+Hit SceneContext::shoot_closest(RaySink& sink, const Ray& ray, uint32_t origin_prim) const {
+  bool met_alpha = false;
+  Hit hit = materials.triangles.flat(embree.intersect(ray, &met_alpha));
+  sink.emit(ray, origin_prim, met_alpha);
+  return hit;
+}
+
+Surface SceneContext::shoot_surface(RaySink& sink, const Ray& ray, uint32_t origin_prim) const {
+  return surface_at(materials.triangles, ray, shoot_closest(sink, ray, origin_prim));
+}
+
+bool SceneContext::shoot_occluded(RaySink& sink, const Ray& ray, uint32_t origin_prim) const {
+  bool met_alpha = false;
+  bool occluded = embree.occluded(ray, &met_alpha);
+  sink.emit(ray, origin_prim, met_alpha);
+  return occluded;
 }
 
 }  // namespace rtsim::pipeline

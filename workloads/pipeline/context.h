@@ -18,6 +18,7 @@
 namespace rtsim::pipeline {
 
 struct Surface;
+class RaySink;
 
 struct SceneContext {
   const Scene& scene;
@@ -31,8 +32,12 @@ struct SceneContext {
   const ShadingMaterial& material_of(uint32_t prim) const { return materials.of(prim); }
   // Embree's closest hit, its triangle named by flat id.
   Hit intersect(const Ray& ray) const { return materials.triangles.flat(embree.intersect(ray)); }
-  // The surface of the closest hit.
-  Surface surface(const Ray& ray) const;
+
+  // A pass's ray, traced and put into the sink (under its current pass) with whether it met an
+  // alpha-tested candidate; origin_prim as RaySink::emit takes it.
+  Hit shoot_closest(RaySink& sink, const Ray& ray, uint32_t origin_prim = kNoHit) const;
+  Surface shoot_surface(RaySink& sink, const Ray& ray, uint32_t origin_prim) const;
+  bool shoot_occluded(RaySink& sink, const Ray& ray, uint32_t origin_prim) const;
 };
 
 struct FrameContext {

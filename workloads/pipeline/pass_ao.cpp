@@ -33,8 +33,7 @@ PassOutcome run_ao_pass(const FrameContext& ctx, const GBuffer& g, RaySink& sink
       ray.tmax = radius;
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, k);
-      sink.emit(ray, s.surface.prim);
-      open += ctx.scene.embree.occluded(ray) ? 0 : 1;
+      open += ctx.scene.shoot_occluded(sink, ray, s.surface.prim) ? 0 : 1;
     }
     out.samples.push_back(i);
     out.visibility.push_back(float(open) / float(spec.rays_per_pixel));

@@ -16,8 +16,7 @@ GBuffer run_camera_pass(const FrameContext& ctx, const std::vector<SamplePositio
     ray.dir = ctx.camera.direction(p.sx, p.sy);
     ray.pixel = p.pixel;
     ray.sample = p.index;
-    if (sink) sink->emit(ray);
-    Hit hit = ctx.scene.intersect(ray);
+    Hit hit = sink ? ctx.scene.shoot_closest(*sink, ray) : ctx.scene.intersect(ray);
     GSample& s = g.samples[i];
     s.sx = p.sx;
     s.sy = p.sy;

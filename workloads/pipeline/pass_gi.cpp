@@ -33,8 +33,7 @@ void shoot_gi_rays(const FrameContext& ctx, SurfelCache& cache, RaySink& sink,
           basis.to_world(sample_cosine_hemisphere(glm::vec2(rng.uniform(), rng.uniform()))));
       ray.pixel = surfel.pixel;
       ray.sample = uint16_t(k);
-      sink.emit(ray, surfel.prim);
-      Surface hit = ctx.scene.surface(ray);
+      Surface hit = ctx.scene.shoot_surface(sink, ray, surfel.prim);
       if (hit.hit()) {
         hits.push_back({s, hit, -1.0f, 0});
       } else {
@@ -63,8 +62,7 @@ bool connect_lights(const FrameContext& ctx, const SurfelCache& cache, RaySink& 
     const Surfel& surfel = cache.surfels()[hit.surfel];
     ray.pixel = surfel.pixel;
     ray.sample = uint16_t(h);
-    sink.emit(ray, hit.surface.prim);
-    hit.visibility = ctx.scene.embree.occluded(ray) ? 0.0f : 1.0f;
+    hit.visibility = ctx.scene.shoot_occluded(sink, ray, hit.surface.prim) ? 0.0f : 1.0f;
   }
   return sink.count(PassId::GiLight) > before;
 }

@@ -29,8 +29,8 @@ PassOutcome run_reflected_shadow_pass(const FrameContext& ctx, const GBuffer& g,
       if (!make_shadow_ray(lights[l], rec.hit.position, rec.hit.normal, u, ray)) continue;
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, per_sample, l);
-      sink.emit(ray, rec.hit.prim);
-      out.visibility[r * lights.size() + l] = ctx.scene.embree.occluded(ray) ? 0.0f : 1.0f;
+      bool occluded = ctx.scene.shoot_occluded(sink, ray, rec.hit.prim);
+      out.visibility[r * lights.size() + l] = occluded ? 0.0f : 1.0f;
     }
   }
   if (sink.count(PassId::ReflectedShadow) > before) return {};

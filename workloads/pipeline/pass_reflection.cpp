@@ -62,8 +62,7 @@ PassOutcome run_reflection_pass(const FrameContext& ctx, const GBuffer& g, RaySi
       ray.dir = rec.dir;
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, j);
-      sink.emit(ray, s.surface.prim);
-      rec.hit = ctx.scene.surface(ray);
+      rec.hit = ctx.scene.shoot_surface(sink, ray, s.surface.prim);
       out.rays.push_back(rec);
     }
   }

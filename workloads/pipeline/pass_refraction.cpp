@@ -51,8 +51,7 @@ PassOutcome run_refraction_pass(const FrameContext& ctx, const GBuffer& g, RaySi
         Ray ray = next_ray(ctx, at, ctx.scene.material_of(at.prim), incident, u);
         ray.pixel = s.pixel;
         ray.sample = ray_sample_id(s.index, per_sample, j * spec.max_depth + depth);
-        sink.emit(ray, at.prim);
-        Surface next = ctx.scene.surface(ray);
+        Surface next = ctx.scene.shoot_surface(sink, ray, at.prim);
         bool more = next.hit() && ctx.scene.material_of(next.prim).transmission > 0.0f;
         at = next;
         incident = ray.dir;

@@ -29,9 +29,8 @@ PassOutcome run_shadow_pass(const FrameContext& ctx, const GBuffer& g, RaySink& 
         if (!make_shadow_ray(lights[l], s.surface.position, s.surface.normal, u, ray)) continue;
         ray.pixel = s.pixel;
         ray.sample = ray_sample_id(s.index, per_sample, l * rate.rays_per_pixel + k);
-        sink.emit(ray, s.surface.prim);
         ++shot;
-        visible += ctx.scene.embree.occluded(ray) ? 0 : 1;
+        visible += ctx.scene.shoot_occluded(sink, ray, s.surface.prim) ? 0 : 1;
       }
       if (shot > 0) out.visibility[size_t(i) * lights.size() + l] = float(visible) / float(shot);
     }

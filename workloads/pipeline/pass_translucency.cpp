@@ -30,8 +30,7 @@ PassOutcome run_translucency_pass(const FrameContext& ctx, const GBuffer& g, Ray
       ray.dir = glm::normalize(d);
       ray.pixel = s.pixel;
       ray.sample = ray_sample_id(s.index, spec.rays_per_pixel, k);
-      sink.emit(ray, s.surface.prim);
-      Surface hit = ctx.scene.surface(ray);
+      Surface hit = ctx.scene.shoot_surface(sink, ray, s.surface.prim);
       if (!hit.hit()) {
         sum += ctx.scene.sky;
         continue;

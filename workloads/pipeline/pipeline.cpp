@@ -30,12 +30,21 @@ std::vector<float> upsample(const std::vector<float>& small, uint32_t sw, uint32
   return out;
 }
 
+uint64_t sum_over_passes(const std::array<PassSummary, kPassCount>& passes,
+                         uint64_t PassSummary::*count) {
+  uint64_t sum = 0;
+  for (const PassSummary& p : passes) sum += p.*count;
+  return sum;
+}
+
 }  // namespace
 
 uint64_t RunSummary::total_rays() const {
-  uint64_t sum = 0;
-  for (const PassSummary& p : passes) sum += p.rays;
-  return sum;
+  return sum_over_passes(passes, &PassSummary::rays);
+}
+
+uint64_t RunSummary::total_alpha_rays() const {
+  return sum_over_passes(passes, &PassSummary::alpha_rays);
 }
 
 uint64_t pass_budget(const WorkloadSpec& spec, PassId pass, size_t lights) {
@@ -146,7 +155,10 @@ void Pipeline::run_frame(uint32_t frame, RaySink& sink, FrameResults& r) {
   record(PassId::Refraction, run_refraction_pass(ctx, r.gbuffer, sink, r.refraction));
   enter(frame, PassId::Translucency);
   record(PassId::Translucency, run_translucency_pass(ctx, r.gbuffer, sink, r.translucency));
-  for (int p = 0; p < kPassCount; ++p) summary_.passes[size_t(p)].rays = sink.count(PassId(p));
+  for (int p = 0; p < kPassCount; ++p) {
+    summary_.passes[size_t(p)].rays = sink.count(PassId(p));
+    summary_.passes[size_t(p)].alpha_rays = sink.alpha_count(PassId(p));
+  }
   summary_.surfels = surfels_.surfels().size();
   if (spec_.samples.placement == Placement::Importance) {
     previous_ = r.gbuffer;

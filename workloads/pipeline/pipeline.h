@@ -37,6 +37,7 @@ struct FrameResults {
 
 struct PassSummary {
   uint64_t rays = 0;
+  uint64_t alpha_rays = 0;      // of them, those that met an alpha-tested candidate
   uint64_t budget = 0;          // most rays the settings allow per frame
   uint32_t frames_skipped = 0;  // frames in which it shot nothing
   std::string reason;           // why (from the first such frame)
@@ -52,6 +53,7 @@ struct RunSummary {
   double load_seconds = 0.0, build_seconds = 0.0, trace_seconds = 0.0;
 
   uint64_t total_rays() const;
+  uint64_t total_alpha_rays() const;
 };
 
 // The most rays a pass may shoot in one frame under these settings.

@@ -30,7 +30,7 @@ RaySink::RaySink(RayStreamWriter* writer, uint32_t width, uint32_t height, bool 
     for (auto& d : density_) d.assign(size_t(width) * height, 0);
 }
 
-void RaySink::emit(const Ray& ray, uint32_t origin_prim) {
+void RaySink::emit(const Ray& ray, uint32_t origin_prim, bool met_alpha) {
   bool on_screen = ray.pixel < frame_cost_.size();
   if (on_screen) frame_cost_[ray.pixel]++;
   if (ray.frame < warmup_frames_) return;
@@ -38,6 +38,7 @@ void RaySink::emit(const Ray& ray, uint32_t origin_prim) {
   recorded.frame -= warmup_frames_;
   if (writer_) writer_->write(recorded);
   counts_[size_t(pass_)]++;
+  alpha_counts_[size_t(pass_)] += met_alpha;
   auto& density = density_[size_t(pass_)];
   if (on_screen && !density.empty()) density[ray.pixel]++;
   if (observer) observer(recorded, pass_, origin_prim);

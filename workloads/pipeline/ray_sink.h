@@ -1,7 +1,8 @@
 // Where passes put their rays: each ray is checked, written to the stream (if any), counted
-// under its pass, and added to per-pass ray-density counts. Passes emit rays in the order the
-// stream keeps them. Rays of the first warmup_frames frames only feed the frame's cost map;
-// later frames are written renumbered from 0.
+// under its pass (and apart if tracing it met an alpha-tested candidate), and added to per-pass
+// ray-density counts. Passes emit rays in the order the stream keeps them. Rays of the first
+// warmup_frames frames only feed the frame's cost map; later frames are written renumbered
+// from 0.
 #pragma once
 
 #include <array>
@@ -45,9 +46,12 @@ class RaySink {
 
   void set_pass(PassId pass) { pass_ = pass; }
   PassId pass() const { return pass_; }
-  void emit(const Ray& ray, uint32_t origin_prim = kNoHit);
+  // met_alpha: tracing the ray met an alpha-tested candidate (EmbreeScene::intersect, occluded).
+  void emit(const Ray& ray, uint32_t origin_prim = kNoHit, bool met_alpha = false);
 
   uint64_t count(PassId pass) const { return counts_[size_t(pass)]; }
+  // Of a pass's rays, those that met an alpha-tested candidate.
+  uint64_t alpha_count(PassId pass) const { return alpha_counts_[size_t(pass)]; }
   uint64_t total() const;
   // Rays per pixel of one pass over the whole run (empty unless keep_density).
   const std::vector<uint32_t>& density(PassId pass) const { return density_[size_t(pass)]; }
@@ -61,6 +65,7 @@ class RaySink {
   uint32_t warmup_frames_ = 0;
   PassId pass_ = PassId::Camera;
   std::array<uint64_t, kPassCount> counts_{};
+  std::array<uint64_t, kPassCount> alpha_counts_{};
   std::array<std::vector<uint32_t>, kPassCount> density_;
   std::vector<uint32_t> frame_cost_;
 };

@@ -3,6 +3,15 @@
 #include <fmt/format.h>
 
 namespace rtsim::pipeline {
+namespace {
+
+// Rays that met an alpha-tested candidate, and their share of all the rays.
+std::string alpha_cell(uint64_t alpha_rays, uint64_t rays) {
+  if (rays == 0) return "0";
+  return fmt::format("{} ({:.1f}%)", alpha_rays, 100.0 * double(alpha_rays) / double(rays));
+}
+
+}  // namespace
 
 std::string format_summary(const RunSummary& s) {
   double pixels = double(s.width) * s.height * std::max(1u, s.frames);
@@ -13,8 +22,8 @@ std::string format_summary(const RunSummary& s) {
   const glm::vec3 &p = s.camera_position, &l = s.camera_look_at;
   out += fmt::format("camera at [{:g}, {:g}, {:g}] looking at [{:g}, {:g}, {:g}] (frame 0)\n", p.x,
                      p.y, p.z, l.x, l.y, l.z);
-  out += fmt::format("  {:<17}{:>12}{:>12}{:>14}  {}\n", "pass", "rays", "rays/pixel",
-                     "budget/pixel", "note");
+  out += fmt::format("  {:<17}{:>12}{:>12}{:>14}{:>20}  {}\n", "pass", "rays", "rays/pixel",
+                     "budget/pixel", "alpha-tested rays", "note");
   for (int p = 0; p < kPassCount; ++p) {
     const PassSummary& ps = s.passes[size_t(p)];
     std::string note;
@@ -23,11 +32,13 @@ std::string format_summary(const RunSummary& s) {
     else if (ps.frames_skipped > 0)
       note = fmt::format("skipped in {} of {} frames: {}", ps.frames_skipped, s.frames, ps.reason);
     double budget = double(ps.budget) * std::max(1u, s.frames) / pixels;
-    out += fmt::format("  {:<17}{:>12}{:>12.4f}{:>14.4f}  {}\n", pass_name(PassId(p)), ps.rays,
-                       double(ps.rays) / pixels, budget, note);
+    out +=
+        fmt::format("  {:<17}{:>12}{:>12.4f}{:>14.4f}{:>20}  {}\n", pass_name(PassId(p)), ps.rays,
+                    double(ps.rays) / pixels, budget, alpha_cell(ps.alpha_rays, ps.rays), note);
   }
-  out += fmt::format("  {:<17}{:>12}{:>12.4f}\n", "total", s.total_rays(),
-                     double(s.total_rays()) / pixels);
+  out += fmt::format("  {:<17}{:>12}{:>12.4f}{:>14}{:>20}\n", "total", s.total_rays(),
+                     double(s.total_rays()) / pixels, "",
+                     alpha_cell(s.total_alpha_rays(), s.total_rays()));
   return out;
 }
 

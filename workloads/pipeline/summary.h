@@ -1,5 +1,5 @@
-// The run summary printed by `rtsim trace`: rays per pass against the settings' budget, and
-// which passes were skipped and why.
+// The run summary printed by `rtsim trace`: rays per pass against the settings' budget, how
+// many of them met alpha-tested candidates, and which passes were skipped and why.
 #pragma once
 
 #include <string>
