@@ -1,0 +1,24 @@
+// Process nodes the energy and area model is set at (issue 20): a node's supply voltage and its
+// high-density 6T SRAM bitcell, and how SRAM access energy scales from the 45 nm figures the
+// model is fitted to. Every figure's source is in model/energy/SOURCES.md.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace rtsim {
+
+struct ProcessNode {
+  std::string name;    // "45nm", "12nm", "7nm"
+  double volts;        // V: supply voltage assumed at the node
+  double bitcell_um2;  // µm²: high-density 6T SRAM bitcell
+};
+
+const std::vector<ProcessNode>& process_nodes();                // 45 nm first: the reference
+const ProcessNode* find_process_node(const std::string& name);  // nullptr if unknown
+
+// A node's SRAM access energy over 45 nm's at the same size: an access charges word and bit
+// lines whose length follows the cell pitch (the square root of the bitcell's area), at C V².
+double sram_energy_scale(const ProcessNode& node);
+
+}  // namespace rtsim
