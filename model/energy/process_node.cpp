@@ -6,9 +6,12 @@ namespace rtsim {
 
 const std::vector<ProcessNode>& process_nodes() {
   static const std::vector<ProcessNode> nodes = {
-      {"45nm", 0.90, 0.346},  // Horowitz ISSCC 2014's node and voltage; Intel 45 nm bitcell
-      {"12nm", 0.80, 0.070},  // no published 12 nm bitcell: TSMC 16FF's
-      {"7nm", 0.75, 0.027},   // TSMC N7 (IEDM 2016)
+      // Horowitz ISSCC 2014's node and voltage; Intel 45 nm bitcell; HP45 energy fit
+      {"45nm", 0.90, 0.346, 1.018, -0.3107, 0.1539},
+      // no published 12 nm bitcell or energy fit: TSMC 16FF's bitcell and the HP16 fit
+      {"12nm", 0.80, 0.070, 0.2958, -0.1241, 0.03024},
+      // TSMC N7 (IEDM 2016); HP7 energy fit
+      {"7nm", 0.75, 0.027, 0.1776, -0.09097, 0.02447},
   };
   return nodes;
 }
@@ -23,6 +26,13 @@ double sram_energy_scale(const ProcessNode& node) {
   const ProcessNode& reference = process_nodes().front();
   double volts = node.volts / reference.volts;
   return std::sqrt(node.bitcell_um2 / reference.bitcell_um2) * volts * volts;
+}
+
+double logic_energy_scale(const ProcessNode& node) {
+  auto energy = [](const ProcessNode& n) {
+    return n.energy_a * n.volts * n.volts + n.energy_b * n.volts + n.energy_c;
+  };
+  return energy(node) / energy(process_nodes().front());
 }
 
 }  // namespace rtsim

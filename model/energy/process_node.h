@@ -12,6 +12,8 @@ struct ProcessNode {
   std::string name;    // "45nm", "12nm", "7nm"
   double volts;        // V: supply voltage assumed at the node
   double bitcell_um2;  // µm²: high-density 6T SRAM bitcell
+  // Stillmaker and Baas (2017): a logic gate's energy at the node goes as a V² + b V + c.
+  double energy_a, energy_b, energy_c;
 };
 
 const std::vector<ProcessNode>& process_nodes();                // 45 nm first: the reference
@@ -20,5 +22,7 @@ const ProcessNode* find_process_node(const std::string& name);  // nullptr if un
 // A node's SRAM access energy over 45 nm's at the same size: an access charges word and bit
 // lines whose length follows the cell pitch (the square root of the bitcell's area), at C V².
 double sram_energy_scale(const ProcessNode& node);
+// A node's logic (arithmetic) energy over 45 nm's, by Stillmaker and Baas's fit of each node.
+double logic_energy_scale(const ProcessNode& node);
 
 }  // namespace rtsim
