@@ -1,6 +1,7 @@
 #include "model/energy/process_node.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace rtsim {
 
@@ -16,10 +17,13 @@ const std::vector<ProcessNode>& process_nodes() {
   return nodes;
 }
 
-const ProcessNode* find_process_node(const std::string& name) {
-  for (const ProcessNode& node : process_nodes())
-    if (node.name == name) return &node;
-  return nullptr;
+const ProcessNode& process_node(const std::string& name) {
+  std::string known;
+  for (const ProcessNode& node : process_nodes()) {
+    if (node.name == name) return node;
+    known += (known.empty() ? "" : ", ") + node.name;
+  }
+  throw std::invalid_argument("process node '" + name + "' is unknown (" + known + ")");
 }
 
 double sram_energy_scale(const ProcessNode& node) {

@@ -16,8 +16,9 @@ struct ProcessNode {
   double energy_a, energy_b, energy_c;
 };
 
-const std::vector<ProcessNode>& process_nodes();                // 45 nm first: the reference
-const ProcessNode* find_process_node(const std::string& name);  // nullptr if unknown
+const std::vector<ProcessNode>& process_nodes();  // 45 nm first: the reference
+// The node of that name; std::invalid_argument naming the known ones if there is none.
+const ProcessNode& process_node(const std::string& name);
 
 // A node's SRAM access energy over 45 nm's at the same size: an access charges word and bit
 // lines whose length follows the cell pitch (the square root of the bitcell's area), at C V².

@@ -8,28 +8,17 @@ constexpr double kFp32Mul = 3.7, kFp32Add = 0.9, kInt8Mul = 0.2, kInt32Add = 0.1
 
 }  // namespace
 
+// {fp32 multiplies, fp32 adds, int8 multiplies, int32 adds, compares}
 ArithmeticOps fp32_box_test() {
-  ArithmeticOps ops;
-  ops.fp32_mul = 6;
-  ops.fp32_add = 6;
-  ops.compares = 7;
-  return ops;
+  return {6, 6, 0, 0, 7};
 }
 
 ArithmeticOps quantized_box_test() {
-  ArithmeticOps ops;
-  ops.int8_mul = 6;
-  ops.int32_add = 6;
-  ops.compares = 7;
-  return ops;
+  return {0, 0, 6, 6, 7};
 }
 
 ArithmeticOps triangle_test() {
-  ArithmeticOps ops;
-  ops.fp32_mul = 21 + 5 + 3;  // edges, determinant and barycentrics; depth; hit
-  ops.fp32_add = 16 + 2;
-  ops.compares = 1 + 2;
-  return ops;
+  return {21 + 5 + 3, 16 + 2, 0, 0, 1 + 2};  // edges and barycentrics; depth test; hit
 }
 
 double arithmetic_pj(const ArithmeticOps& ops, const ProcessNode& node) {
