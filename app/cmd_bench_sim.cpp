@@ -196,7 +196,9 @@ void add_bench_sim_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("bench-sim", "Time the cycle-approximate model against Embree");
   auto o = std::make_shared<BenchSimOptions>();
   cmd->add_option("--scene", o->scene, "Scene file or built-in scene")->capture_default_str();
-  cmd->add_option("--rays", o->rays, "Diffuse-GI-like rays to generate")->capture_default_str();
+  cmd->add_option("--rays", o->rays, "Diffuse-GI-like rays to generate")
+      ->check(reports::non_negative())
+      ->capture_default_str();
   cmd->add_option("--seed", o->seed, "Seed of the ray sampler")
       ->check(reports::non_negative())
       ->capture_default_str();

@@ -21,10 +21,6 @@
 #include "traces/error.h"
 #include "workloads/scene.h"
 
-int sc_main(int, char**) {
-  return 0;
-}  // SystemC's library needs the symbol; main() is ours
-
 namespace rtsim::app {
 namespace {
 

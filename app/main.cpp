@@ -1,36 +1,14 @@
 // rtsim: the command line. Thin: it parses, calls the parts, prints.
 #include <cstdio>
 #include <cstdlib>
-#include <exception>
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <fmt/core.h>
 
+#include "app/cli_main.h"
 #include "app/commands.h"
-#include "traces/error.h"
 #include "traces/output_file.h"
 #include "workloads/pipeline/image_io.h"
-
-namespace {
-
-// A usage error as one line: CLI11's message, naming the command and where help is; an unknown
-// or missing command lists the commands.
-std::string usage_problem(const CLI::App& app, int argc, char** argv, const CLI::ParseError& e) {
-  std::string commands;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    commands += (commands.empty() ? "" : ", ") + sub->get_name();
-  std::string first = argc > 1 ? argv[1] : "";
-  if (first.empty() || first[0] == '-')
-    return "a command is required (" + commands + "; rtsim --help describes them)";
-  const CLI::App* command = nullptr;
-  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-    if (sub->get_name() == first) command = sub;
-  if (!command) return "unknown command '" + first + "' (commands: " + commands + ")";
-  return first + ": " + e.what() + " (rtsim " + first + " --help lists the options)";
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   // SystemC's banner would precede every simulation's output; children inherit this.
@@ -59,23 +37,5 @@ int main(int argc, char** argv) {
   rtsim::app::add_regress_command(app, exit_code);
   rtsim::app::add_validate_command(app, exit_code);
 
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForVersion& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    fmt::print(stderr, "rtsim: error: {}\n", usage_problem(app, argc, argv, e));
-    return 2;
-  } catch (const rtsim::InputError& e) {
-    fmt::print(stderr, "rtsim: error: {}\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "rtsim: internal error: {}\n", e.what());
-    return 3;
-  }
-  return exit_code;
+  return rtsim::app::run_command_line(app, argc, argv, "rtsim", exit_code);
 }

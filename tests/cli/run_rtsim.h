@@ -1,4 +1,5 @@
-// Runs the rtsim executable as a user would, capturing exit code, stdout and stderr.
+// Runs the rtsim executable (or another of the project's) as a user would, capturing exit code,
+// stdout and stderr.
 #pragma once
 
 #include <sys/wait.h>
@@ -23,10 +24,10 @@ inline std::string slurp(const std::string& path) {
   return s.str();
 }
 
-// args is appended to the rtsim path as shell words; quote them as a shell would need.
-inline RunResult run_rtsim(const std::string& args) {
+// args is appended to the executable's path as shell words; quote them as a shell would need.
+inline RunResult run_program(const std::string& executable, const std::string& args) {
   std::string base = "/tmp/rtsim-cli-" + std::to_string(getpid());
-  std::string cmd = std::string(RTSIM_EXE) + " " + args + " >" + base + ".out 2>" + base + ".err";
+  std::string cmd = executable + " " + args + " >" + base + ".out 2>" + base + ".err";
   int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -35,6 +36,10 @@ inline RunResult run_rtsim(const std::string& args) {
   std::remove((base + ".out").c_str());
   std::remove((base + ".err").c_str());
   return r;
+}
+
+inline RunResult run_rtsim(const std::string& args) {
+  return run_program(RTSIM_EXE, args);
 }
 
 inline int count_lines(const std::string& s) {
