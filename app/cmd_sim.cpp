@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>
@@ -108,6 +110,7 @@ void print_summary(const nlohmann::ordered_json& doc) {
       100 * u["control"].get<double>(), 100 * u["ray_slots"].get<double>(),
       100 * doc["utilisation"]["dram"].get<double>());
   if (!doc["shader"].is_null()) fmt::print("{}\n", shader_summary_line(doc["shader"]));
+  fmt::print("{}\n", energy_summary_line(doc["energy"]));
   const auto& c = doc["coherence"];
   std::string coherence;
   if (!c["simd_efficiency"].is_null())
@@ -136,6 +139,25 @@ std::string shader_summary_line(const nlohmann::ordered_json& sh) {
       share("raygen_cycles"), share("hit_cycles"), share("miss_cycles"),
       sh["mean_trace_delay"].get<double>(), sh["slot_wait_cycles"].get<double>(),
       sh["reads_dram_bytes_per_ray"].get<double>());
+}
+
+std::string energy_summary_line(const nlohmann::ordered_json& e) {
+  // The three structures that took the most energy, dynamic and static.
+  std::vector<std::pair<double, std::string>> shares;
+  double total = std::max(e["total_nj"].get<double>(), 1e-30);
+  for (const auto& [name, s] : e["structures"].items())
+    shares.emplace_back((s["dynamic_nj"].get<double>() + s["static_nj"].get<double>()) / total,
+                        name);
+  std::sort(shares.rbegin(), shares.rend());
+  std::string most;
+  for (size_t i = 0; i < std::min<size_t>(3, shares.size()); ++i)
+    most += fmt::format("{}{} {:.0f}%", i ? ", " : "", shares[i].second, 100 * shares[i].first);
+  return fmt::format(
+      "energy     {:.3g} nJ/ray  {:.4g} MRays/J  {:.3g} W  (static {:.0f}%; most: {})  area {:.3g} "
+      "mm² (SRAM {:.3g}) at {}",
+      e["nj_per_ray"].get<double>(), e["mrays_per_joule"].get<double>(), e["power_w"].get<double>(),
+      100 * e["static_nj"].get<double>() / total, most, e["area_mm2"].get<double>(),
+      e["sram_area_mm2"].get<double>(), e["node"].get<std::string>());
 }
 
 namespace {

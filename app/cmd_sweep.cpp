@@ -42,6 +42,8 @@ int write_results(const reports::SweepSpec& spec, const std::vector<reports::Poi
   }
   if (!o.quiet) {
     if (!out.charts_ok) fmt::print("charts     missing: {}\n", out.message);
+    for (const std::string& line : reports::objective_lines(doc))
+      fmt::print("best       {}\n", line);
     fmt::print(
         "sweep      {} points: {} failed or missing, {} with unexplained mismatches; results in "
         "{}/sweep.html, sweep.csv, sweep.json\n",

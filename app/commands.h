@@ -34,5 +34,8 @@ void add_bvh_options(CLI::App& cmd, BvhConfig& config);
 // The console line of a shader model's figures (the stats JSON's `shader`), shared by sim and
 // run (defined in cmd_sim.cpp).
 std::string shader_summary_line(const nlohmann::ordered_json& shader);
+// The console line of the energy and area model's figures (the stats JSON's `energy`), shared
+// likewise.
+std::string energy_summary_line(const nlohmann::ordered_json& energy);
 
 }  // namespace rtsim::app

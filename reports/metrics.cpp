@@ -30,6 +30,11 @@ constexpr MetricKey kRunMetrics[] = {
     {"triangles_per_ray", "coherence.triangles_per_ray"},
     {"stack_spills_per_ray", "coherence.stack_spills_per_ray"},
     {"on_chip_bytes", "hardware.on_chip_bytes"},
+    {"energy_nj_per_ray", "energy.nj_per_ray"},
+    {"mrays_per_joule", "energy.mrays_per_joule"},
+    {"power_w", "energy.power_w"},
+    {"area_mm2", "energy.area_mm2"},
+    {"sram_area_mm2", "energy.sram_area_mm2"},
     {"unexplained", "verification.unexplained"},
     {"host_seconds", "timing.host_seconds"},
 };
@@ -42,6 +47,7 @@ constexpr MetricKey kTypeMetrics[] = {
     {"latency_mean", "latency.by_type.%.mean"},
     {"latency_p50", "latency.by_type.%.p50"},
     {"latency_p99", "latency.by_type.%.p99"},
+    {"dynamic_energy_nj_per_ray", "energy.by_type.%.dynamic_nj_per_ray"},
 };
 
 std::string with_type(const char* key, const std::string& type) {
@@ -88,9 +94,10 @@ std::string metric_direction(const std::string& name) {
     return name.size() >= suffix.size() &&
            name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
-  if (ends("hit_rate") || ends("mrays_per_second")) return "higher";
+  if (ends("hit_rate") || ends("mrays_per_second") || ends("mrays_per_joule")) return "higher";
   if (ends("cycles") || ends("bytes") || ends("per_ray") || ends("unexplained") ||
-      ends("latency_mean") || ends("latency_p50") || ends("latency_p99"))
+      ends("latency_mean") || ends("latency_p50") || ends("latency_p99") || ends("power_w") ||
+      ends("mm2"))
     return "lower";
   return "either";
 }

@@ -2,10 +2,11 @@
 // chart and what regression suites compare. Names: cycles, cycles_ci95, mrays_per_second,
 // rays, dram_bytes, dram_bytes_per_ray, l1_bytes_per_ray, l2_bytes_per_ray, l1_hit_rate,
 // l2_hit_rate, dram_utilisation, nodes_per_ray, triangles_per_ray, stack_spills_per_ray,
-// on_chip_bytes, unexplained, host_seconds, and per ray type type.T.rays,
-// type.T.dram_bytes_per_ray, type.T.l1_hit_rate, type.T.l2_hit_rate, type.T.nodes_per_ray,
-// type.T.latency_mean, type.T.latency_p50, type.T.latency_p99. A metric the run's fidelity
-// level does not model is null.
+// on_chip_bytes, energy_nj_per_ray, mrays_per_joule, power_w, area_mm2, sram_area_mm2,
+// unexplained, host_seconds, and per ray type type.T.rays, type.T.dram_bytes_per_ray,
+// type.T.l1_hit_rate, type.T.l2_hit_rate, type.T.nodes_per_ray, type.T.latency_mean,
+// type.T.latency_p50, type.T.latency_p99, type.T.dynamic_energy_nj_per_ray. A metric the run's
+// fidelity level does not model is null.
 #pragma once
 
 #include <string>

@@ -262,6 +262,7 @@ Json build_report(const ReportInputs& in) {
   r["latency"] = latency_json(f, stats, collected);
   r["hit_rates"] = hit_rates_json(f);
   r["time"] = time_json(f, stats, collected);
+  r["energy"] = stats.is_null() ? Json() : stats["energy"];  // from the cycle model's counts
   bool pixels = !stats.is_null() && stats.contains("pixel_buffers");
   r["pixel_buffers"] = pixels ? stats["pixel_buffers"] : Json();
   r["images"] = report_images(r, !in.trace->preview.empty(), pixels);

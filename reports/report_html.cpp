@@ -1,4 +1,4 @@
-// report.html of a run: summary, workload, hardware config, timing, bandwidth, DRAM,
+// report.html of a run: summary, workload, hardware config, timing, bandwidth, DRAM, energy,
 // coherence, verification, pictures and charts, in that order.
 #include <fmt/core.h>
 
@@ -61,6 +61,15 @@ std::string dram(const Json& r) {
                          "channel");
 }
 
+std::string energy(const Json& r) {
+  if (r["energy"].is_null())
+    return "<p class=\"na\">n/a: the energy model counts the events of a cycle-level run.</p>\n";
+  return html_rows(r, energy_rows()) + "<h3>Per structure</h3>\n" +
+         html_type_table(r, "energy.structures", energy_structure_columns(), "structure") +
+         "<h3>Dynamic energy per ray type</h3>\n" +
+         html_type_table(r, "energy.by_type", {{"nJ/ray", "dynamic_nj_per_ray", kReal}});
+}
+
 std::string coherence(const Json& r) {
   std::string out = html_rows(
       r, {{"nodes per ray", "coherence.nodes_per_ray", Style::Real},
@@ -119,7 +128,7 @@ std::string report_html(const Json& r, const std::string& run_dir) {
       "<nav><a href=\"#summary\">Summary</a><a href=\"#workload\">Workload</a><a "
       "href=\"#hardware\">Hardware</a><a href=\"#timing\">Timing</a><a "
       "href=\"#bandwidth\">Bandwidth</a><a href=\"#dram\">DRAM</a><a "
-      "href=\"#coherence\">Coherence</a><a "
+      "href=\"#energy\">Energy</a><a href=\"#coherence\">Coherence</a><a "
       "href=\"#verification\">Verification</a><a href=\"#pictures\">Pictures</a><a "
       "href=\"#charts\">Charts</a></nav>\n";
   out += section("summary", "Summary", html_rows(r, summary_rows()));
@@ -130,6 +139,7 @@ std::string report_html(const Json& r, const std::string& run_dir) {
       html_rows(r, timing_rows()) + "<h3>Latency per ray type (cycles)</h3>\n" + latency(r));
   out += section("bandwidth", "Bandwidth", bandwidth(r));
   out += section("dram", "DRAM", dram(r));
+  out += section("energy", "Energy and area", energy(r));
   out += section("coherence", "Coherence", coherence(r));
   out += section("verification", "Verification", verification(r));
   out += section("pictures", "Pictures", html_figures(r, run_dir, {"picture", "heatmap"}));

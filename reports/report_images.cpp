@@ -12,6 +12,7 @@ nlohmann::ordered_json report_images(const nlohmann::ordered_json& r, bool has_p
   bool histogram = !r["latency"]["histogram"].is_null();
   bool hit_rates = !r["hit_rates"]["by_type"].empty();
   bool time = !r["time"]["ray_time_share"].empty();
+  bool energy = !r["energy"].is_null();
   struct Entry {
     const char *id, *kind, *title, *caption;
     bool available;
@@ -45,6 +46,10 @@ nlohmann::ordered_json report_images(const nlohmann::ordered_json& r, bool has_p
        "Left: each ray type's share of the ray-slot time (the sum of its rays' latencies). "
        "Middle: how busy the units were. Right: rays retired over time, per ray type.",
        time, not_modelled},
+      {"chart_energy", "chart", "Where the energy went",
+       "Left: energy per ray of each structure, dynamic (events) and static (leakage and DRAM "
+       "background over the run). Right: dynamic energy per ray of each ray type.",
+       energy, "the energy model counts the events of a cycle-level run"},
   };
   Json images = Json::array();
   for (const Entry& e : entries)

@@ -73,6 +73,10 @@ std::string report_markdown(const Json& r) {
   if (!r["dram"]["by_channel"].empty())
     out += "\n" + markdown_type_table(r, "dram.by_channel",
                                       {{"data bus utilisation", "utilisation", kPct}}, "channel");
+  out += "\n## Energy and area\n\n" + markdown_rows(r, energy_rows());
+  if (!r["energy"].is_null())
+    out +=
+        "\n" + markdown_type_table(r, "energy.structures", energy_structure_columns(), "structure");
   if (!at_key(r, "coherence.instances_per_ray").is_null())
     out += "\n## Two BVH levels\n\n" + markdown_rows(r, two_level_rows());
   out += "\n## Coherence\n\n" +

@@ -26,6 +26,8 @@ const std::vector<Row>& two_level_rows();
 const std::vector<Row>& timing_rows();
 const std::vector<Row>& bandwidth_rows();
 const std::vector<Row>& dram_rows();
+// Energy and area (null below cycle level), and the per-structure table's columns.
+const std::vector<Row>& energy_rows();
 
 // A table with one row per key of doc[prefix] (ray types, or what row_title names), columns
 // (title, key under the row, style); the HTML cells carry their full keys.
@@ -39,6 +41,7 @@ std::string html_type_table(const nlohmann::ordered_json& doc, const std::string
 std::string markdown_type_table(const nlohmann::ordered_json& doc, const std::string& prefix,
                                 const std::vector<Column>& columns,
                                 const std::string& row_title = "ray type");
+const std::vector<Column>& energy_structure_columns();
 
 // The image gallery of one kind list ("picture,heatmap" or "chart").
 std::string html_figures(const nlohmann::ordered_json& report, const std::string& run_dir,

@@ -123,4 +123,28 @@ const std::vector<Row>& dram_rows() {
   return rows;
 }
 
+const std::vector<Row>& energy_rows() {
+  static const std::vector<Row> rows{
+      {"process node", "energy.node", Style::Text},
+      {"energy per ray (nJ)", "energy.nj_per_ray", Style::Real},
+      {"MRays/J", "energy.mrays_per_joule", Style::Real},
+      {"average power (W)", "energy.power_w", Style::Real},
+      {"dynamic energy (nJ)", "energy.dynamic_nj", Style::Real, false},
+      {"static energy (nJ, leakage and background over the run)", "energy.static_nj", Style::Real,
+       false},
+      {"area on chip (mm²)", "energy.area_mm2", Style::Real},
+      {"SRAM area (mm²)", "energy.sram_area_mm2", Style::Real}};
+  return rows;
+}
+
+const std::vector<Column>& energy_structure_columns() {
+  static const std::vector<Column> columns{{"event", "event", int(Style::Text)},
+                                           {"events", "events", int(Style::Integer)},
+                                           {"pJ/event", "pj_per_event", int(Style::Real)},
+                                           {"dynamic nJ", "dynamic_nj", int(Style::Real)},
+                                           {"static nJ", "static_nj", int(Style::Real)},
+                                           {"area mm²", "area_mm2", int(Style::Real)}};
+  return columns;
+}
+
 }  // namespace rtsim::reports

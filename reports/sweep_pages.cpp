@@ -22,7 +22,15 @@ const Metric kMetrics[] = {{"cycles", "cycles", Style::Integer},
                            {"l1_hit_rate", "L1 hit", Style::Percent},
                            {"l2_hit_rate", "L2 hit", Style::Percent},
                            {"on_chip_bytes", "on-chip bytes", Style::Integer},
+                           {"energy_nj_per_ray", "nJ/ray", Style::Real},
+                           {"area_mm2", "area mm²", Style::Real},
                            {"unexplained", "unexplained", Style::Integer}};
+
+std::string pareto_cost(const std::string& metric) {
+  if (metric == "area_mm2") return "area on chip (test units, registers and SRAM, model/energy)";
+  if (metric == "energy_nj_per_ray") return "energy per ray (dynamic and static, model/energy)";
+  return "on-chip memory (caches, ray stacks, the treelet ray buffer and the sorting buffer)";
+}
 
 std::string title_of(const Json& doc) {
   return "rtsim sweep: " + doc["spec"]["name"].get<std::string>();
@@ -37,9 +45,9 @@ Json figures_doc(const Json& doc) {
          {"kind", "chart"},
          {"title", c["title"]},
          {"caption", c["kind"] == "pareto"
-                         ? "Each point's cycles against its on-chip memory (caches, ray "
-                           "stacks, the treelet ray buffer and the sorting buffer); the line "
-                           "joins the Pareto-optimal points of each workload."
+                         ? fmt::format("Each point's cycles against its {}; the line joins "
+                                       "the Pareto-optimal points of each workload.",
+                                       pareto_cost(c["x"].get<std::string>()))
                          : fmt::format("{} against {}, one line per {}.", c["y"].get<std::string>(),
                                        c["x"].get<std::string>(), c["series"].get<std::string>())},
          {"available", c["available"]},
@@ -81,7 +89,14 @@ std::string sweep_html(const Json& doc, const std::string& dir) {
     for (const Metric& m : kMetrics) out += html_cell(doc, p + ".metrics." + m.name, m.style);
     out += "</tr>\n";
   }
-  out += "</table>\n</section>\n<section id=\"charts\">\n<h2>Charts</h2>\n" +
+  out += "</table>\n</section>\n";
+  std::vector<std::string> best = objective_lines(doc);
+  if (!best.empty()) {
+    out += "<section id=\"objective\">\n<h2>Objective</h2>\n<ul>\n";
+    for (const std::string& line : best) out += "<li>" + html_escape(line) + "</li>\n";
+    out += "</ul>\n</section>\n";
+  }
+  out += "<section id=\"charts\">\n<h2>Charts</h2>\n" +
          html_figures(figures_doc(doc), dir, {"chart"}) + "</section>\n";
   return out + html_tail();
 }
@@ -109,6 +124,12 @@ std::string sweep_markdown(const Json& doc) {
     out += "\n";
   }
   out += "\n";
+  std::vector<std::string> best = objective_lines(doc);
+  if (!best.empty()) {
+    out += "## Objective\n\n";
+    for (const std::string& line : best) out += "- " + line + "\n";
+    out += "\n";
+  }
   for (const Json& c : doc["charts"])
     out += c["available"].get<bool>()
                ? fmt::format("## {}\n\n![{}]({})\n\n", c["title"].get<std::string>(),

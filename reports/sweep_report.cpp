@@ -29,7 +29,7 @@ std::string chart_title(const Json& c) {
 }
 
 // The curves asked for, or cycles and DRAM bytes per ray (per ray type) against each numeric
-// key; then the Pareto chart.
+// key; then the Pareto charts of cycles against each cost: on-chip bytes, area, energy.
 Json chart_list(const SweepSpec& spec, const Json& points) {
   Json charts = Json::array();
   auto add = [&](const std::string& x, const std::string& y, const std::string& series) {
@@ -47,18 +47,100 @@ Json chart_list(const SweepSpec& spec, const Json& points) {
         add(key, "type.*.dram_bytes_per_ray", "workload");
       }
   for (Json& c : charts) c["title"] = chart_title(c);
-  charts.push_back({{"id", "pareto"},
-                    {"kind", "pareto"},
-                    {"x", "on_chip_bytes"},
-                    {"y", "cycles"},
-                    {"series", "workload"},
-                    {"title", "Pareto: cycles against on-chip memory"}});
+  struct Cost {
+    const char *id, *metric, *what;
+  };
+  for (const Cost& c :
+       {Cost{"pareto", "on_chip_bytes", "on-chip memory"}, Cost{"pareto_area", "area_mm2", "area"},
+        Cost{"pareto_energy", "energy_nj_per_ray", "energy per ray"}})
+    charts.push_back({{"id", c.id},
+                      {"kind", "pareto"},
+                      {"x", c.metric},
+                      {"y", "cycles"},
+                      {"series", "workload"},
+                      {"title", std::string("Pareto: cycles against ") + c.what}});
   for (Json& c : charts) {
     c["file"] = "images/" + c["id"].get<std::string>() + ".png";
     c["available"] = true;
     c["reason"] = "";
   }
   return charts;
+}
+
+// A point's metric, null when it has none (a failed point, a level that does not model it).
+const Json& metric_of(const Json& point, const std::string& name) {
+  static const Json null;
+  const Json& m = point["metrics"];
+  auto it = m.is_object() ? m.find(name) : m.end();
+  return it != m.end() && it->is_number() ? *it : null;
+}
+
+// Charts whose x metric no point has (energy and area below cycle level) are left out.
+void mark_unmeasured_charts(Json& doc) {
+  for (Json& c : doc["charts"]) {
+    std::string x = c["x"].get<std::string>();
+    if (c["kind"] != "pareto" || !c["available"].get<bool>()) continue;
+    bool any = false;
+    for (const Json& p : doc["points"]) any |= !metric_of(p, x).is_null();
+    if (!any) {
+      c["available"] = false;
+      c["reason"] = "no point has " + x + " (the energy and area model needs the cycle level)";
+    }
+  }
+}
+
+// Per workload, the point the objective picks: among points whose metric is known and within
+// every bound, the least (or most) of the metric; a tie goes to the earlier point.
+Json objective_json(const SweepSpec& spec, const Json& points) {
+  const SweepObjective& o = spec.objective;
+  if (o.metric.empty()) return Json();
+  auto bounds = [](const std::vector<std::pair<std::string, double>>& list) {
+    Json out = Json::object();
+    for (const auto& [metric, bound] : list) out[metric] = bound;
+    return out;
+  };
+  auto within = [&](const Json& p) {
+    for (const auto& [metric, bound] : o.at_most)
+      if (metric_of(p, metric).is_null() || metric_of(p, metric).get<double>() > bound)
+        return false;
+    for (const auto& [metric, bound] : o.at_least)
+      if (metric_of(p, metric).is_null() || metric_of(p, metric).get<double>() < bound)
+        return false;
+    return true;
+  };
+  Json best = Json::array();
+  for (const SweepWorkload& w : spec.workloads) {
+    const Json* pick = nullptr;
+    size_t measured = 0;
+    for (const Json& p : points) {
+      if (p["workload"] != w.name || metric_of(p, o.metric).is_null()) continue;
+      ++measured;
+      if (!within(p)) continue;
+      double value = metric_of(p, o.metric).get<double>();
+      if (!pick || (o.maximise ? value > metric_of(*pick, o.metric).get<double>()
+                               : value < metric_of(*pick, o.metric).get<double>()))
+        pick = &p;
+    }
+    Json entry = {{"workload", w.name}};
+    if (pick) {
+      entry["id"] = (*pick)["id"];
+      entry["values"] = (*pick)["values"];
+      entry["value"] = metric_of(*pick, o.metric);
+      Json constrained = Json::object();
+      for (const auto& list : {o.at_most, o.at_least})
+        for (const auto& bound : list) constrained[bound.first] = metric_of(*pick, bound.first);
+      entry["bounded_metrics"] = constrained;
+    } else {
+      entry["id"] = Json();
+      entry["reason"] = measured ? "no point is within the bounds" : "no point has " + o.metric;
+    }
+    best.push_back(entry);
+  }
+  return {{"metric", o.metric},
+          {"goal", o.maximise ? "maximise" : "minimise"},
+          {"at_most", bounds(o.at_most)},
+          {"at_least", bounds(o.at_least)},
+          {"best", best}};
 }
 
 std::string csv_field(const Json& v) {
@@ -102,6 +184,7 @@ Json sweep_json(const SweepSpec& spec, const std::vector<PointRun>& runs) {
       {"verify", spec.verify}};
   doc["points"] = points;
   doc["charts"] = chart_list(spec, points);
+  doc["objective"] = objective_json(spec, points);
   return doc;
 }
 
@@ -130,9 +213,36 @@ std::string sweep_csv(const Json& doc) {
   return out;
 }
 
+std::vector<std::string> objective_lines(const Json& doc) {
+  std::vector<std::string> lines;
+  const Json& o = doc.contains("objective") ? doc["objective"] : Json();
+  if (o.is_null()) return lines;
+  std::string metric = o["metric"].get<std::string>();
+  for (const Json& b : o["best"]) {
+    std::string line = b["workload"].get<std::string>() + ": ";
+    if (b["id"].is_null()) {
+      lines.push_back(line + "none (" + b["reason"].get<std::string>() + ")");
+      continue;
+    }
+    std::string values, bounds;
+    for (const auto& [key, value] : b["values"].items())
+      values += (values.empty() ? " at " : ", ") + key + "=" + csv_field(value);
+    for (const char* side : {"at_most", "at_least"})
+      for (const auto& [name, bound] : o[side].items())
+        bounds +=
+            fmt::format("; {} = {:.4g} {} {:.4g}", name, b["bounded_metrics"][name].get<double>(),
+                        side[3] == 'm' ? "<=" : ">=", bound.get<double>());
+    lines.push_back(fmt::format("{}{} {:.4g} ({}){} (point {}{})", line, metric,
+                                b["value"].get<double>(), o["goal"].get<std::string>(), values,
+                                b["id"].get<std::string>(), bounds));
+  }
+  return lines;
+}
+
 ReportOutcome write_sweep_report(Json& doc, const std::string& dir, const ReportOptions& options) {
   fs::create_directories(dir + "/images");
   std::string json_path = dir + "/sweep.json";
+  mark_unmeasured_charts(doc);
   write_file_atomic(json_path, doc.dump(2) + "\n");
   write_file_atomic(dir + "/sweep.csv", sweep_csv(doc));
   ReportOutcome outcome{false, "charts skipped (--no-charts)"};

@@ -1,7 +1,8 @@
 // The results of a sweep: sweep.json (spec, every point's swept values and flat metrics),
 // sweep.csv (one row per workload x point), the charts drawn by charts/sweep_charts.py (curves
-// of a metric against a swept key, one line per series, and the Pareto chart of cycles
-// against on-chip memory) and the pages sweep.html (self-contained) and sweep.md.
+// of a metric against a swept key, one line per series, and the Pareto charts of cycles
+// against on-chip memory, area and energy per ray), the objective's pick per workload
+// (`[objective]`), and the pages sweep.html (self-contained) and sweep.md.
 #pragma once
 
 #include <string>
@@ -24,6 +25,10 @@ ReportOutcome write_sweep_report(nlohmann::ordered_json& doc, const std::string&
                                  const ReportOptions& options);
 // `rtsim report SWEEP_DIR`: the same from an existing sweep.json.
 ReportOutcome rewrite_sweep_report(const std::string& dir, const ReportOptions& options);
+
+// The objective's pick per workload as text: "WORKLOAD: METRIC V at KEY=VALUE, ... (point ID;
+// BOUNDED = V <= BOUND ...)", or why there is none; empty without an objective.
+std::vector<std::string> objective_lines(const nlohmann::ordered_json& doc);
 
 std::string sweep_html(const nlohmann::ordered_json& doc, const std::string& dir);
 std::string sweep_markdown(const nlohmann::ordered_json& doc);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/core.h>
 #include <toml++/toml.h>
@@ -9,6 +10,7 @@
 #include "model/config/config_reader.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/fidelity_result.h"
+#include "reports/metrics.h"
 #include "reports/spec_reader.h"
 #include "traces/error.h"
 #include "workloads/pipeline/spec.h"
@@ -143,6 +145,39 @@ void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) 
   }
 }
 
+// A metric a point is judged by: one of flat_metrics, of one ray type if per type.
+std::string objective_metric(const SpecReader& r, const toml::node& n, const char* key) {
+  std::string name = r.text(&n, key);
+  std::string problem = metric_name_problem(name);
+  if (problem.empty() && name.find('*') != std::string::npos)
+    problem = "'" + name + "' names every ray type: pick one";
+  if (!problem.empty()) r.fail(n, problem);
+  return name;
+}
+
+void read_objective(const SpecReader& r, const toml::table& t, SweepObjective& o) {
+  r.only(t, {"minimise", "maximise", "at_most", "at_least"}, "[objective]");
+  const toml::node *min = t.get("minimise"), *max = t.get("maximise");
+  if (bool(min) == bool(max)) r.fail(t, "[objective] needs one of minimise or maximise");
+  o.maximise = max != nullptr;
+  o.metric = objective_metric(r, max ? *max : *min, max ? "maximise" : "minimise");
+  for (const auto& [key, bounds] :
+       {std::pair{"at_most", &o.at_most}, std::pair{"at_least", &o.at_least}}) {
+    const toml::node* n = t.get(key);
+    if (!n) continue;
+    const toml::table* table = n->as_table();
+    if (!table) r.fail(*n, std::string(key) + " must be a table of metric = bound");
+    for (const auto& [name, bound] : *table) {
+      std::string metric = std::string(name.str());
+      std::string problem = metric_name_problem(metric);
+      if (!problem.empty()) r.fail(bound, problem);
+      std::optional<double> value = bound.value<double>();
+      if (!value) r.fail(bound, std::string(key) + "." + metric + " must be a number");
+      bounds->emplace_back(metric, *value);
+    }
+  }
+}
+
 // Loads a point's config; if that fails, blames the spec's line of the first setting (the
 // spec's `set`, then the point's) that makes it fail, not --set or the preset file.
 void check_point_config(const SweepSpec& spec, const SweepPoint& p, uint32_t set_line) {
@@ -175,7 +210,8 @@ SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points) {
   SpecReader r{path};
   toml::table root = parse_config_file(path, "sweep spec");
   r.only(root,
-         {"name", "description", "config", "set", "workload", "grid", "point", "run", "chart"},
+         {"name", "description", "config", "set", "workload", "grid", "point", "run", "chart",
+          "objective"},
          "the sweep spec");
   SweepSpec spec;
   spec.file = path;
@@ -196,6 +232,10 @@ SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points) {
     }
   if (const toml::table* run = root["run"].as_table()) read_run(r, *run, spec);
   read_charts(r, root, spec);
+  if (const toml::node* objective = root.get("objective")) {
+    if (!objective->is_table()) r.fail(*objective, "[objective] must be a table");
+    read_objective(r, *objective->as_table(), spec.objective);
+  }
   uint32_t set_line = root.get("set") ? root.get("set")->source().begin.line : 0;
   for (const SweepPoint& p : spec.points) check_point_config(spec, p, set_line);
   return spec;

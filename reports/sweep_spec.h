@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -30,6 +31,14 @@ struct SweepChart {
   std::string x, y, series;  // y may hold "*" for every ray type; series: key or "workload"
 };
 
+// The point to pick: the least (or most) of a metric among the points within budgets on
+// other metrics ("least energy per ray under 10 mm² of SRAM").
+struct SweepObjective {
+  std::string metric;  // empty: no objective
+  bool maximise = false;
+  std::vector<std::pair<std::string, double>> at_most, at_least;  // metric, bound
+};
+
 // The most grid points a sweep expands unless asked for more (`rtsim sweep --max-points`): a
 // grid is counted before it is expanded, so a mistyped one is refused at once.
 constexpr uint64_t kDefaultMaxSweepPoints = 10000;
@@ -47,6 +56,7 @@ struct SweepSpec {
   bool verify = true;
   uint32_t jobs = 0;               // parallel runs; 0: every local core
   std::vector<SweepChart> charts;  // empty: curves of cycles and DRAM bytes per swept key
+  SweepObjective objective;
 };
 
 SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points = kDefaultMaxSweepPoints);

@@ -8,6 +8,8 @@
 #include <fmt/ranges.h>
 
 #include "model/config/config_reader.h"
+#include "model/energy/dram_energy.h"
+#include "model/energy/process_node.h"
 #include "model/config/dram_presets.h"
 #include "traces/error.h"
 
@@ -157,6 +159,15 @@ void read_banked_dram(ConfigReader dram, BankedDramConfig& c) {
   clocks("tRFC", d.tRFC, "banked: all-bank refresh: the rank is blocked this long");
   clocks("tREFIpb", d.tREFIpb, "banked: per-bank refresh interval (one bank after the other)");
   clocks("tRFCpb", d.tRFCpb, "banked: per-bank refresh: the bank is blocked this long");
+  ConfigReader energy = dram.section("energy");
+  c.energy_device = energy.text("device", c.energy_device,
+                                "the device whose data-sheet currents give the command energies "
+                                "(model/energy/SOURCES.md, D.2), scaled to this one's bursts, "
+                                "rows and capacity",
+                                dram_energy_device_names());
+  c.io_pj_per_bit =
+      energy.real("io_pj_per_bit", c.io_pj_per_bit, "pJ/bit",
+                  "I/O energy of a bit crossing the bus (the currents leave it out)", 0, 1000);
 }
 
 void read_test_units(ConfigReader r, TestUnitConfig& c, const char* tests) {
@@ -434,6 +445,21 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                "over the world-space triangles (flatten)",
                {"auto", "flatten", "two_level"});
   c.bvh.instancing = *instancing_from_name(instancing);
+
+  ConfigReader energy = r.section("energy");
+  std::vector<std::string> nodes;
+  for (const ProcessNode& node : process_nodes()) nodes.push_back(node.name);
+  c.energy.node =
+      energy.text("node", c.energy.node,
+                  "process node of the energy and area model (model/energy/README.md)", nodes);
+  c.energy.sram_leak_mw_per_kb =
+      energy.real("sram_leak_mw_per_kb", c.energy.sram_leak_mw_per_kb, "mW/KB",
+                  "static power of SRAM (caches, ray buffer), per KB", 0, 100);
+  c.energy.logic_leak_share =
+      energy.real("logic_leak_share", c.energy.logic_leak_share, "fraction",
+                  "static power of a test unit as a share of its peak dynamic power", 0, 10);
+  c.energy.wire_mm = energy.real("wire_mm", c.energy.wire_mm, "mm",
+                                 "distance a byte travels between an L1 and the L2", 0, 1000);
 }
 
 std::string toml_literal(const nlohmann::ordered_json& value) {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model/bvh/bvh_config.h"
+#include "model/energy/energy_config.h"
 #include "model/mem/cache.h"
 #include "model/mem/crossbar.h"
 #include "model/mem/dram.h"
@@ -58,6 +59,7 @@ struct HwConfig {
   BankedDramConfig banked_dram = default_banked_dram();  // the banked model
   BvhConfig bvh;
   ShaderConfig shader;  // the SM around each RT unit (off by default)
+  EnergyConfig energy;  // the energy and area model's node and assumptions
 };
 
 // The L1 as the simulator builds it: write-back, but write-through in treelet mode, where a

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace rtsim {
 
@@ -40,9 +41,15 @@ struct DramDeviceData {
   DramCurrents currents;
   DramCommandTimes times;
   double burst_bits;  // one burst's data: device width x burst length
+  double gbit;        // capacity (an HBM2 set: one channel's)
+  double page_bytes;  // a row: capacity / (banks x rows)
 };
 const DramDeviceData& ddr5_4800_x8();    // Micron MT60B 16 Gb x8 data sheet
 const DramDeviceData& hbm2_8gb_x128();   // DRAMsim3 configs/HBM2_8Gb_x128.ini
 const DramDeviceData& gddr5x_8gb_x32();  // DRAMsim3 configs/GDDR5X_8Gb_x32.ini
+
+std::vector<std::string> dram_energy_device_names();
+// The data set of that name; std::invalid_argument naming the known ones if there is none.
+const DramDeviceData& dram_energy_device(const std::string& name);
 
 }  // namespace rtsim

@@ -17,7 +17,11 @@ struct ArithmeticOps {
 ArithmeticOps fp32_box_test();       // one box: 6 multiplies, 6 adds, 7 compares
 ArithmeticOps quantized_box_test();  // an 8-bit quantized box: the same in int8 and int32
 ArithmeticOps triangle_test();       // Möller-Trumbore with its depth test and hit finalise
+ArithmeticOps transform_test();      // an instance's 3x4 transform of a ray's origin and direction
 
 double arithmetic_pj(const ArithmeticOps& ops, const ProcessNode& node);
+// mm² of a pipelined datapath doing ops once a cycle: the operators' areas at 45 nm (Horowitz,
+// ISSCC 2014) and 30% for pipeline registers (an assumption), scaled to the node.
+double arithmetic_area_mm2(const ArithmeticOps& ops, const ProcessNode& node);
 
 }  // namespace rtsim

@@ -61,6 +61,10 @@ struct BankedDramConfig {
   uint32_t starvation_cap = 16;      // younger row hits served before the oldest request
   uint32_t controller_latency = 20;  // core cycles: controller and PHY, added to every read
   DramTiming timing;
+  // Energy (model/energy/design_energy.h): the device whose data-sheet currents stand for this
+  // one's, and the I/O energy that currents measured without output drivers leave out.
+  std::string energy_device = "gddr5x-8gb-x32";
+  double io_pj_per_bit = 6;
 
   uint32_t banks() const { return bank_groups * banks_per_group; }  // per rank
   uint32_t burst_bytes() const { return bus_bits / 8 * burst_length; }

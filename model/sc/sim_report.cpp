@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "model/energy/design_energy.h"
 #include "model/verify/arbiter.h"
 #include "traces/error.h"
 #include "traces/output_file.h"
@@ -321,6 +322,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   doc["utilisation"] = utilisation_json(c, r);
   doc["bottleneck"] = bottleneck_json(doc["utilisation"]);
   doc["shader"] = shader_json(c, r);
+  doc["energy"] = design_energy_json(design_energy(c, r));
   // Coherence figures exist only in the mode that produces them; elsewhere they are null.
   bool packet = c.rt.mode == TraversalMode::Packet, treelet = c.rt.mode == TraversalMode::Treelet;
   auto when = [&](bool applies, const char* name) {

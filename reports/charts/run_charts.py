@@ -121,9 +121,35 @@ def time_chart(report, run_dir, image):
     return fig
 
 
+def energy_chart(report, run_dir, image):
+    energy = report["energy"]
+    rays = max(report["timing"]["rays"], 1)
+    fig, axes = chart_style.new(9, 3.8, ncols=2)
+    structures = energy["structures"]
+    names = list(structures)
+    dynamic = [structures[n]["dynamic_nj"] / rays for n in names]
+    static = [structures[n]["static_nj"] / rays for n in names]
+    axes[0].barh(names, dynamic, color="#4c72b0", label="dynamic")
+    axes[0].barh(names, static, left=dynamic, color="#c9c9c9", label="static")
+    axes[0].invert_yaxis()
+    axes[0].set_xlabel("nJ per ray")
+    axes[0].set_title("by structure (%.3g nJ/ray, %.4g MRays/J at %s)"
+                      % (energy["nj_per_ray"], energy["mrays_per_joule"], energy["node"]))
+    axes[0].legend(fontsize=7)
+    types = energy["by_type"]
+    axes[1].bar(list(types), [t["dynamic_nj_per_ray"] for t in types.values()],
+                color=[chart_style.color(n) for n in types])
+    axes[1].set_ylabel("dynamic nJ per ray")
+    axes[1].set_title("by ray type")
+    axes[1].set_xticks(range(len(types)))
+    axes[1].set_xticklabels(list(types), rotation=30, ha="right")
+    fig.suptitle(image["title"])
+    return fig
+
+
 DRAW = {"heatmap_cycles": heatmap, "heatmap_nodes": heatmap, "heatmap_dram_bytes": heatmap,
         "chart_latency": latency_chart, "chart_hit_rates": hit_rate_chart,
-        "chart_time": time_chart}
+        "chart_time": time_chart, "chart_energy": energy_chart}
 
 
 def main(report_path, run_dir):

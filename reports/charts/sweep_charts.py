@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """Charts of an `rtsim sweep`.
 
-Usage: sweep_charts.py SWEEP.json OUTDIR  -- draws every chart listed in SWEEP.json's
+Usage: sweep_charts.py SWEEP.json OUTDIR  -- draws every available chart listed in SWEEP.json's
 "charts" into OUTDIR (their "file" paths):
   curve:  a metric against a swept key, one line per value of the series key (and of any
           other swept key); a y of "type.*.NAME" draws NAME for every ray type.
-  pareto: cycles against on-chip memory, every point, with each workload's Pareto front.
+  pareto: cycles against a cost (on-chip memory, area, energy per ray), every point, with
+          each workload's Pareto front.
 Exits 1 if any chart failed, after drawing the others.
 """
 import json
@@ -109,28 +110,39 @@ def log2_if_spread(ax, xs):
         ax.set_xscale("log", base=2)
 
 
-def pareto(doc, chart):
-    points = [p for p in doc["points"] if metric(p, "cycles") is not None]
+# Each cost a Pareto chart puts on x: its axis label and the scale from the metric's unit.
+PARETO_X = {
+    "on_chip_bytes": ("on-chip memory (MB: L1s, L2, ray stacks, treelet ray buffer, sorting "
+                      "buffer)", 1 / 2**20),
+    "area_mm2": ("area on chip (mm²: test units, registers, SRAM; model/energy)", 1),
+    "energy_nj_per_ray": ("energy per ray (nJ, dynamic and static; model/energy)", 1),
+}
 
-    def megabytes(p):
-        return metric(p, "on_chip_bytes") / 2**20
+
+def pareto(doc, chart):
+    x_label, scale = PARETO_X[chart["x"]]
+    points = [p for p in doc["points"]
+              if metric(p, "cycles") is not None and metric(p, chart["x"]) is not None]
+
+    def cost(p):
+        return metric(p, chart["x"]) * scale
 
     fig, ax = chart_style.new(8, 4.6)
     for w, members in sorted(groups(points, ["workload"]).items()):
-        dots = ax.scatter([megabytes(p) for p in members], [metric(p, "cycles") for p in members],
+        dots = ax.scatter([cost(p) for p in members], [metric(p, "cycles") for p in members],
                           s=18, label=w[0])
         front, best = [], float("inf")
-        for p in sorted(members, key=lambda p: (megabytes(p), metric(p, "cycles"))):
+        for p in sorted(members, key=lambda p: (cost(p), metric(p, "cycles"))):
             if metric(p, "cycles") < best:
                 best = metric(p, "cycles")
                 front.append(p)
-        ax.step([megabytes(p) for p in front], [metric(p, "cycles") for p in front],
+        ax.step([cost(p) for p in front], [metric(p, "cycles") for p in front],
                 where="post", color=dots.get_facecolor()[0], lw=1)
         for p in front:
-            ax.annotate(label(p, doc["spec"]["keys"]), (megabytes(p), metric(p, "cycles")),
+            ax.annotate(label(p, doc["spec"]["keys"]), (cost(p), metric(p, "cycles")),
                         fontsize=5, xytext=(3, 3), textcoords="offset points")
-    log2_if_spread(ax, [megabytes(p) for p in points])
-    ax.set_xlabel("on-chip memory (MB: L1s, L2, ray stacks, treelet ray buffer, sorting buffer)")
+    log2_if_spread(ax, [cost(p) for p in points])
+    ax.set_xlabel(x_label)
     ax.set_ylabel("cycles")
     ax.set_title(chart["title"])
     ax.legend(fontsize=7)
@@ -140,7 +152,7 @@ def pareto(doc, chart):
 def main(path, outdir):
     doc = json.load(open(path))
     chart_style.draw_all(
-        doc["charts"],
+        [c for c in doc["charts"] if c["available"]],
         lambda chart: pareto(doc, chart) if chart["kind"] == "pareto" else curve(doc, chart),
         outdir)
 

@@ -56,6 +56,11 @@ TEST(Metrics, DirectionsSayWhichWayIsBetter) {
   EXPECT_EQ(metric_direction("l1_hit_rate"), "higher");
   EXPECT_EQ(metric_direction("mrays_per_second"), "higher");
   EXPECT_EQ(metric_direction("rays"), "either");
+  EXPECT_EQ(metric_direction("mrays_per_joule"), "higher");
+  EXPECT_EQ(metric_direction("energy_nj_per_ray"), "lower");
+  EXPECT_EQ(metric_direction("type.ao.dynamic_energy_nj_per_ray"), "lower");
+  EXPECT_EQ(metric_direction("power_w"), "lower");
+  EXPECT_EQ(metric_direction("sram_area_mm2"), "lower");
 }
 
 }  // namespace

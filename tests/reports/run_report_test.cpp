@@ -61,11 +61,12 @@ TEST(OnChipBytes, ASortingUnitCountsItsBuffer) {
 }
 
 TEST_F(RunReport, HasEverySection) {
-  for (const char* id : {"summary", "workload", "hardware", "timing", "bandwidth", "coherence",
-                         "verification", "pictures", "charts"})
+  for (const char* id : {"summary", "workload", "hardware", "timing", "bandwidth", "energy",
+                         "coherence", "verification", "pictures", "charts"})
     EXPECT_NE(html_.find(std::string("<section id=\"") + id + "\">"), std::string::npos) << id;
-  for (const char* heading : {"## Workload", "## Hardware config", "## Timing", "## Bandwidth",
-                              "## Coherence", "## Verification", "## Pictures and charts"})
+  for (const char* heading :
+       {"## Workload", "## Hardware config", "## Timing", "## Bandwidth", "## Energy and area",
+        "## Coherence", "## Verification", "## Pictures and charts"})
     EXPECT_NE(markdown_.find(heading), std::string::npos) << heading;
   EXPECT_EQ(report_["workload"]["scene"], "builtin:pica");
   EXPECT_EQ(report_["workload"]["triangles"], 4328);
@@ -88,6 +89,16 @@ TEST_F(RunReport, HasEverySection) {
        {"l1_bytes_per_ray", "l2_bytes_per_ray", "dram_bytes_per_ray", "dram_utilisation"})
     EXPECT_TRUE(report_["bandwidth"][level].is_number()) << level;
   EXPECT_TRUE(report_["coherence"]["nodes_per_ray"].is_number());
+  const Json& energy = report_["energy"];
+  EXPECT_NEAR(
+      energy["mrays_per_joule"].get<double>(),
+      report_["timing"]["rays"].get<double>() / (energy["total_nj"].get<double>() * 1e-9) / 1e6,
+      1e-6)
+      << "the stats JSON's energy, rays per joule";
+  for (const auto& [type, rays] : report_["workload"]["rays_per_type"].items()) {
+    if (rays.get<uint64_t>() == 0) continue;
+    EXPECT_GT(energy["by_type"][type]["dynamic_nj_per_ray"].get<double>(), 0) << type;
+  }
   EXPECT_TRUE(report_["verification"]["passed"].get<bool>());
   EXPECT_NE(html_.find("PASSED"), std::string::npos);
 }
@@ -136,7 +147,7 @@ TEST_F(RunReport, NamesAndShowsEveryImage) {
     EXPECT_NE(it->caption.find(file), std::string::npos) << id << " names its file";
     EXPECT_NE(markdown_.find("![" + title + "](" + file + ")"), std::string::npos) << id;
   }
-  EXPECT_EQ(charts, 3u) << "latency per ray type, hit rates, where the time went";
+  EXPECT_EQ(charts, 4u) << "latency per ray type, hit rates, where the time went and the energy";
   EXPECT_EQ(heatmaps, 3u) << "cycles, nodes and DRAM bytes per pixel";
 }
 

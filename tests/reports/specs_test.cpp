@@ -118,6 +118,31 @@ TEST(SweepSpec, MistakesNameTheFileAndLine) {
       << "checked when read, not point by point";
 }
 
+TEST(SweepSpec, AnObjectiveNamesAMetricAndItsBounds) {
+  std::string grid = "[[workload]]\n[grid]\n\"rt.count\" = [1, 2]\n";
+  SweepSpec spec =
+      read_sweep_spec(write("s.toml", grid + "[objective]\nmaximise = \"mrays_per_joule\"\n"
+                                             "at_most = { sram_area_mm2 = 10 }\n"
+                                             "at_least = { mrays_per_second = 500 }\n"));
+  EXPECT_EQ(spec.objective.metric, "mrays_per_joule");
+  EXPECT_TRUE(spec.objective.maximise);
+  ASSERT_EQ(spec.objective.at_most.size(), 1u);
+  EXPECT_EQ(spec.objective.at_most[0], std::make_pair(std::string("sram_area_mm2"), 10.0));
+  EXPECT_EQ(spec.objective.at_least[0].first, "mrays_per_second");
+  auto fails = [&](const std::string& objective, const std::string& what) {
+    std::string e = error_of([&] { read_sweep_spec(write("s.toml", grid + objective)); });
+    EXPECT_NE(e.find(what), std::string::npos) << objective << " gave: " << e;
+  };
+  fails("[objective]\nminimise = \"joules\"\n", "line 5: unknown metric 'joules'");
+  fails("[objective]\nat_most = { area_mm2 = 1 }\n", "needs one of minimise or maximise");
+  fails("[objective]\nminimise = \"cycles\"\nmaximise = \"cycles\"\n", "one of minimise");
+  fails("[objective]\nminimise = \"type.*.dynamic_energy_nj_per_ray\"\n", "pick one");
+  fails("[objective]\nminimise = \"cycles\"\nat_most = { area_mm2 = \"big\" }\n",
+        "line 6: at_most.area_mm2 must be a number");
+  fails("[objective]\nminimise = \"cycles\"\nat_least = { nope = 1 }\n", "unknown metric 'nope'");
+  fails("[objective]\nminimise = \"cycles\"\nbudget = 3\n", "unknown key 'budget'");
+}
+
 TEST(SweepSpec, BadWorkloadsAndSettingsBlameTheSpecsLineNotAnOptionOrThePreset) {
   auto error = [](const std::string& text) {
     std::string path = write("s.toml", text);

@@ -67,8 +67,33 @@ TEST(Sweep, FinishesWithCsvJsonChartsAndPages) {
     EXPECT_EQ(png.substr(1, 3), "PNG") << c["file"];
     pareto |= c["kind"] == "pareto";
   }
-  EXPECT_TRUE(pareto) << "the Pareto chart of cycles against on-chip memory";
-  EXPECT_GE(doc["charts"].size(), 3u) << "curves of cycles and DRAM bytes per ray, and Pareto";
+  EXPECT_TRUE(pareto) << "the Pareto charts of cycles against on-chip memory, area and energy";
+  EXPECT_GE(doc["charts"].size(), 5u) << "curves of cycles and DRAM bytes per ray, and Pareto";
+  EXPECT_NE(csv.find(",energy_nj_per_ray,mrays_per_joule,power_w,area_mm2,sram_area_mm2,"),
+            std::string::npos)
+      << "energy and area in the CSV";
+  // The objective: least energy per ray within 0.05 mm² of SRAM, which rules out points.
+  const Json* pick = nullptr;
+  size_t excluded = 0;
+  for (const Json& p : doc["points"]) {
+    const Json& m = p["metrics"];
+    if (m["sram_area_mm2"].get<double>() > 0.05) {
+      ++excluded;
+      continue;
+    }
+    if (!pick || m["energy_nj_per_ray"].get<double>() <
+                     (*pick)["metrics"]["energy_nj_per_ray"].get<double>())
+      pick = &p;
+  }
+  ASSERT_NE(pick, nullptr);
+  EXPECT_GT(excluded, 0u);
+  const Json& best = doc["objective"]["best"][0];
+  EXPECT_EQ(best["id"], (*pick)["id"]);
+  EXPECT_EQ(best["value"], (*pick)["metrics"]["energy_nj_per_ray"]);
+  EXPECT_LE(best["bounded_metrics"]["sram_area_mm2"].get<double>(), 0.05);
+  EXPECT_NE(html.find("<section id=\"objective\">"), std::string::npos);
+  EXPECT_NE(test::slurp(dir + "/sweep.md").find("## Objective\n\n- pica: energy_nj_per_ray"),
+            std::string::npos);
   for (const test::Cell& c : test::number_cells(html))
     EXPECT_EQ(Json::parse(c.value), reports::at_key(doc, c.key)) << c.key;
 }

@@ -1,0 +1,274 @@
+#include "model/energy/design_energy.h"
+
+#include <cmath>
+
+#include "model/energy/dram_energy.h"
+#include "model/energy/process_node.h"
+#include "model/energy/sram.h"
+#include "model/energy/test_units.h"
+#include "model/sched/ray_buffer.h"
+
+namespace rtsim {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// A write of an SRAM bit over a read of it: 1.0-1.4 in the CACTI rows of SOURCES.md (A.3, A.4).
+constexpr double kSramWriteOverRead = 1.1;
+// Bits of one tag entry (address tag and state); one is read per access (SOURCES.md, A.3: a
+// tag access costs about 2% of a line's read).
+constexpr uint32_t kTagBits = 32;
+// The ray state a traversal step reads from its registers besides two stack entries: origin,
+// direction and its inverse, and the hit distance.
+constexpr uint32_t kRayRegisterBits = 40 * 8;
+
+// The RT part as the events of a run see it.
+struct Run {
+  const HwConfig& config;
+  const StatsRegistry& stats;
+  const ProcessNode& node;
+  double seconds;
+
+  double value(const std::string& name) const { return stats.value(name); }
+  double units_value(const std::string& suffix) const {  // summed over the RT units
+    double sum = 0;
+    for (uint32_t i = 0; i < config.rt_units; ++i)
+      sum += stats.value("rt" + std::to_string(i) + "." + suffix);
+    return sum;
+  }
+  double leak_pj(uint64_t sram_bytes) const {  // mW x s = mJ = 1e9 pJ
+    return config.energy.sram_leak_mw_per_kb * double(sram_bytes) / 1024 * seconds * 1e9;
+  }
+};
+
+// A pool of test datapaths: each issue of a unit runs issue_width of them.
+StructureEnergy test_units(const Run& run, const char* name, const TestUnitConfig& unit,
+                           const ArithmeticOps& ops, const char* counter) {
+  StructureEnergy s{name, "test"};
+  s.instances = run.config.rt_units * unit.count * unit.issue_width;
+  s.events = run.units_value(counter);
+  double pj = arithmetic_pj(ops, run.node);
+  s.dynamic_pj = s.events * pj;
+  double peak_mw = s.instances * pj * run.config.clock_ghz;  // pJ x GHz = mW
+  s.static_pj = run.config.energy.logic_leak_share * peak_mw * run.seconds * 1e9;
+  s.area_mm2 = s.instances * arithmetic_area_mm2(ops, run.node);
+  return s;
+}
+
+// Each ray slot's state and on-chip stack, in flip-flops: a step reads the ray and pops and
+// pushes an entry.
+StructureEnergy ray_registers(const Run& run) {
+  const RtCoreConfig& rt = run.config.rt;
+  StructureEnergy s{"ray_registers", "step"};
+  s.instances = run.config.rt_units * rt.warps * rt.warp_size;
+  s.events = run.units_value("node_steps") + run.units_value("leaf_steps");
+  double step_pj =
+      (kRayRegisterBits + 2 * 8 * rt.stack.entry_bytes) * flipflop_pj_per_bit(run.node);
+  s.dynamic_pj = s.events * step_pj;
+  double peak_mw = run.config.rt_units * rt.issue_per_cycle * step_pj * run.config.clock_ghz;
+  s.static_pj = run.config.energy.logic_leak_share * peak_mw * run.seconds * 1e9;
+  double bits = double(ray_state_bytes(rt.stack)) * 8;
+  s.area_mm2 = s.instances * bits * flipflop_um2_per_bit(run.node) * 1e-6;
+  return s;
+}
+
+// An SRAM of `instances` arrays: reads and writes by the bits they move, a tag read per access
+// when it is a cache, leakage and area of data and tags.
+struct SramTraffic {
+  double accesses = 0, read_bytes = 0, write_bytes = 0;
+};
+StructureEnergy sram(const Run& run, const char* name, uint32_t instances, uint64_t bytes,
+                     uint32_t banks, uint32_t line_bytes, const SramTraffic& t) {
+  StructureEnergy s{name, "access"};
+  s.instances = instances;
+  s.events = t.accesses;
+  SramArray data{bytes, 64, banks};
+  double bit_pj = sram_read_pj(data, run.node) / 64;
+  s.dynamic_pj = (t.read_bytes + kSramWriteOverRead * t.write_bytes) * 8 * bit_pj;
+  uint64_t tag_bytes = line_bytes ? bytes / line_bytes * kTagBits / 8 : 0;
+  if (tag_bytes) s.dynamic_pj += t.accesses * sram_read_pj({tag_bytes, kTagBits, 1}, run.node);
+  s.sram_bytes = instances * (bytes + tag_bytes);
+  s.static_pj = run.leak_pj(s.sram_bytes);
+  s.area_mm2 = instances * (sram_area_mm2(data, run.node) + sram_area_mm2({tag_bytes}, run.node));
+  return s;
+}
+
+// Bytes between the L1s and the L2 slices, over wire_mm of wire.
+StructureEnergy wires(const Run& run) {
+  StructureEnergy s{"l1_l2_wires", "byte"};
+  s.instances = run.config.rt_units;
+  s.events = run.value("l2.bytes_read") + run.value("l2.write_bytes");
+  s.dynamic_pj = s.events * 8 * wire_pj_per_bit_mm(run.node) * run.config.energy.wire_mm;
+  return s;
+}
+
+// The device data scaled to one channel: bursts by their bits, activations by the row, refresh
+// and background by capacity (one rank against the device).
+StructureEnergy dram(const Run& run) {
+  const BankedDramConfig& c = run.config.banked_dram;
+  const DramDeviceData& device = dram_energy_device(c.energy_device);
+  DramCommandEnergy e = dram_command_energy(device.currents, device.times);
+  double burst = c.burst_bytes() * 8 / device.burst_bits;
+  double row = c.row_bytes / device.page_bytes;
+  double rank_gbit = double(c.banks()) * c.rows * c.row_bytes * 8 / double(1ull << 30);
+  double capacity = rank_gbit / device.gbit;
+  bool closed = c.page_policy == DramPagePolicy::Closed;
+  double background_mw = (closed ? e.precharged_mw : e.active_mw) * capacity * c.ranks;
+
+  StructureEnergy s{"dram", "burst"};
+  s.instances = c.channels;
+  double bytes = run.value("dram.bytes");
+  if (run.config.dram_model == DramModel::Banked) {
+    double rd = run.value("dram.cmd.rd"), wr = run.value("dram.cmd.wr");
+    s.events = rd + wr;
+    s.parts_pj = {
+        {"act_pre", run.value("dram.cmd.act") * e.act_pre_pj * row},
+        {"read", rd * e.read_pj * burst},
+        {"write", wr * e.write_pj * burst},
+        {"refresh", (run.value("dram.cmd.ref") + run.value("dram.cmd.ref_pb") / c.banks()) *
+                        e.refresh_pj * capacity}};
+  } else {  // one bus: every byte at the streaming read energy, no commands
+    s.events = bytes / c.burst_bytes();
+    s.parts_pj = {{"read", s.events * e.read_pj * burst}};
+  }
+  s.parts_pj.emplace_back("io", bytes * 8 * c.io_pj_per_bit);
+  for (const auto& part : s.parts_pj) s.dynamic_pj += part.second;
+  s.static_pj = c.channels * background_mw * run.seconds * 1e9;
+  return s;
+}
+
+// Each structure's dynamic energy goes to the ray types by their share of its events.
+const char* type_share_counter(const std::string& structure) {
+  if (structure == "box_units" || structure == "ray_registers") return "trav_nodes";
+  if (structure == "triangle_units") return "trav_prims";
+  if (structure == "transform_units") return "trav_instances";
+  if (structure == "l1") return "l1_accesses";
+  if (structure == "dram") return "dram_bytes";
+  if (structure == "ray_buffer") return "rays";
+  return "l2_accesses";  // L2 and its wires
+}
+
+void split_by_type(DesignEnergy& d, const StatsRegistry& stats) {
+  for (int t = 0; t < kRayTypeCount; ++t)
+    d.type_rays[t] =
+        uint64_t(stats.value(std::string("type.") + ray_type_name(RayType(t)) + ".rays"));
+  for (const StructureEnergy& s : d.structures) {
+    std::array<double, kRayTypeCount> share{};
+    double all = 0;
+    for (int t = 0; t < kRayTypeCount; ++t) {
+      std::string name =
+          std::string("type.") + ray_type_name(RayType(t)) + "." + type_share_counter(s.name);
+      share[t] = stats.value(name);
+      all += share[t];
+    }
+    if (all > 0)
+      for (int t = 0; t < kRayTypeCount; ++t) d.type_dynamic_pj[t] += s.dynamic_pj * share[t] / all;
+  }
+}
+
+double sum(const std::vector<StructureEnergy>& all, double StructureEnergy::*field) {
+  double total = 0;
+  for (const StructureEnergy& s : all) total += s.*field;
+  return total;
+}
+
+}  // namespace
+
+double DesignEnergy::dynamic_pj() const {
+  return sum(structures, &StructureEnergy::dynamic_pj);
+}
+double DesignEnergy::static_pj() const {
+  return sum(structures, &StructureEnergy::static_pj);
+}
+double DesignEnergy::area_mm2() const {
+  return sum(structures, &StructureEnergy::area_mm2);
+}
+
+double DesignEnergy::sram_area_mm2() const {
+  double area = 0;
+  for (const StructureEnergy& s : structures)
+    if (s.sram_bytes) area += s.area_mm2;
+  return area;
+}
+
+uint64_t DesignEnergy::sram_bytes() const {
+  uint64_t bytes = 0;
+  for (const StructureEnergy& s : structures) bytes += s.sram_bytes;
+  return bytes;
+}
+
+DesignEnergy design_energy(const HwConfig& c, const StatsRegistry& stats) {
+  DesignEnergy d;
+  d.node = c.energy.node;
+  d.rays = uint64_t(stats.value("rays"));
+  d.seconds = stats.value("cycles") / (c.clock_ghz * 1e9);
+  Run run{c, stats, process_node(c.energy.node), d.seconds};
+
+  d.structures.push_back(test_units(run, "box_units", c.rt.box, fp32_box_test(), "box.tests"));
+  d.structures.push_back(
+      test_units(run, "triangle_units", c.rt.triangle, triangle_test(), "triangle.tests"));
+  d.structures.push_back(
+      test_units(run, "transform_units", c.rt.transform, transform_test(), "transform.tests"));
+  d.structures.push_back(ray_registers(run));
+  SramTraffic l1{run.units_value("l1.accesses"), run.units_value("l1.bytes_read"),
+                 run.units_value("l1.bytes_below") + run.units_value("l1.write_bytes")};
+  d.structures.push_back(
+      sram(run, "l1", c.rt_units, c.l1.size_bytes, c.l1.banks, c.l1.line_bytes, l1));
+  if (uint64_t bytes = ray_buffer_sram_bytes(c)) {
+    double moved = run.value("treelet_queues.buffer.sram_bytes");
+    SramTraffic buffer{run.value("treelet_queues.buffer.sram_reads") +
+                           run.value("treelet_queues.buffer.sram_writes"),
+                       moved / 2, moved / 2};
+    d.structures.push_back(
+        sram(run, "ray_buffer", 1, bytes, c.treelet_queues.buffer.banks, 0, buffer));
+  }
+  d.structures.push_back(wires(run));
+  uint32_t slices = c.l2_layout.slices;
+  SramTraffic l2{run.value("l2.accesses"), run.value("l2.bytes_read"),
+                 run.value("l2.bytes_below") + run.value("l2.write_bytes")};
+  d.structures.push_back(
+      sram(run, "l2", slices, c.l2.size_bytes / slices, c.l2.banks, c.l2.line_bytes, l2));
+  d.structures.push_back(dram(run));
+  split_by_type(d, stats);
+  return d;
+}
+
+Json design_energy_json(const DesignEnergy& d) {
+  auto nj = [](double pj) { return pj / 1000; };
+  double joules = d.total_pj() * 1e-12;
+  double rays = double(std::max<uint64_t>(d.rays, 1));
+  Json doc = {{"node", d.node},
+              {"seconds", d.seconds},
+              {"total_nj", nj(d.total_pj())},
+              {"dynamic_nj", nj(d.dynamic_pj())},
+              {"static_nj", nj(d.static_pj())},
+              {"nj_per_ray", nj(d.total_pj()) / rays},
+              {"mrays_per_joule", joules > 0 ? double(d.rays) / joules / 1e6 : 0},
+              {"power_w", d.seconds > 0 ? joules / d.seconds : 0},
+              {"area_mm2", d.area_mm2()},
+              {"sram_area_mm2", d.sram_area_mm2()},
+              {"sram_bytes", d.sram_bytes()}};
+  Json structures = Json::object();
+  for (const StructureEnergy& s : d.structures)
+    structures[s.name] = {{"event", s.event},
+                          {"instances", s.instances},
+                          {"events", s.events},
+                          {"pj_per_event", s.events > 0 ? s.dynamic_pj / s.events : 0},
+                          {"dynamic_nj", nj(s.dynamic_pj)},
+                          {"static_nj", nj(s.static_pj)},
+                          {"area_mm2", s.area_mm2},
+                          {"sram_bytes", s.sram_bytes}};
+  for (const StructureEnergy& s : d.structures)
+    for (const auto& [part, pj] : s.parts_pj) structures[s.name]["parts_nj"][part] = nj(pj);
+  doc["structures"] = structures;
+  Json types = Json::object();
+  for (int t = 0; t < kRayTypeCount; ++t)
+    if (d.type_rays[t])
+      types[ray_type_name(RayType(t))] = {
+          {"dynamic_nj", nj(d.type_dynamic_pj[t])},
+          {"dynamic_nj_per_ray", nj(d.type_dynamic_pj[t]) / double(d.type_rays[t])}};
+  doc["by_type"] = types;
+  return doc;
+}
+
+}  // namespace rtsim
