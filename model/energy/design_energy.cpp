@@ -1,5 +1,6 @@
 #include "model/energy/design_energy.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/energy/dram_energy.h"
@@ -7,6 +8,7 @@
 #include "model/energy/sram.h"
 #include "model/energy/test_units.h"
 #include "model/sched/ray_buffer.h"
+#include "model/sched/ray_sorter.h"
 
 namespace rtsim {
 namespace {
@@ -77,20 +79,24 @@ StructureEnergy ray_registers(const Run& run) {
 struct SramTraffic {
   double accesses = 0, read_bytes = 0, write_bytes = 0;
 };
-StructureEnergy sram(const Run& run, const char* name, uint32_t instances, uint64_t bytes,
-                     uint32_t banks, uint32_t line_bytes, const SramTraffic& t) {
+// line_bytes 0: a plain RAM without tags.
+StructureEnergy sram(const Run& run, const char* name, uint32_t instances, const SramArray& data,
+                     uint32_t line_bytes, const SramTraffic& t) {
   StructureEnergy s{name, "access"};
   s.instances = instances;
   s.events = t.accesses;
-  SramArray data{bytes, 64, banks};
-  double bit_pj = sram_read_pj(data, run.node) / 64;
+  double bit_pj = sram_read_pj(data, run.node) / data.access_bits;
   s.dynamic_pj = (t.read_bytes + kSramWriteOverRead * t.write_bytes) * 8 * bit_pj;
-  uint64_t tag_bytes = line_bytes ? bytes / line_bytes * kTagBits / 8 : 0;
-  if (tag_bytes) s.dynamic_pj += t.accesses * sram_read_pj({tag_bytes, kTagBits, 1}, run.node);
-  s.sram_bytes = instances * (bytes + tag_bytes);
+  SramArray tags{line_bytes ? data.bytes / line_bytes * kTagBits / 8 : 0, kTagBits, 1, data.ports};
+  if (tags.bytes) s.dynamic_pj += t.accesses * sram_read_pj(tags, run.node);
+  s.sram_bytes = instances * (data.bytes + tags.bytes);
   s.static_pj = run.leak_pj(s.sram_bytes);
-  s.area_mm2 = instances * (sram_area_mm2(data, run.node) + sram_area_mm2({tag_bytes}, run.node));
+  s.area_mm2 = instances * (sram_area_mm2(data, run.node) + sram_area_mm2(tags, run.node));
   return s;
+}
+
+SramArray cache_array(const CacheConfig& c, uint64_t bytes) {
+  return {bytes, 64, c.banks, std::max<uint32_t>(c.bank_ports, 1)};
 }
 
 // Bytes between the L1s and the L2 slices, over wire_mm of wire.
@@ -144,7 +150,7 @@ const char* type_share_counter(const std::string& structure) {
   if (structure == "transform_units") return "trav_instances";
   if (structure == "l1") return "l1_accesses";
   if (structure == "dram") return "dram_bytes";
-  if (structure == "ray_buffer") return "rays";
+  if (structure == "ray_buffer" || structure == "sort_buffer") return "rays";
   return "l2_accesses";  // L2 and its wires
 }
 
@@ -213,21 +219,26 @@ DesignEnergy design_energy(const HwConfig& c, const StatsRegistry& stats) {
   SramTraffic l1{run.units_value("l1.accesses"), run.units_value("l1.bytes_read"),
                  run.units_value("l1.bytes_below") + run.units_value("l1.write_bytes")};
   d.structures.push_back(
-      sram(run, "l1", c.rt_units, c.l1.size_bytes, c.l1.banks, c.l1.line_bytes, l1));
+      sram(run, "l1", c.rt_units, cache_array(c.l1, c.l1.size_bytes), c.l1.line_bytes, l1));
   if (uint64_t bytes = ray_buffer_sram_bytes(c)) {
     double moved = run.value("treelet_queues.buffer.sram_bytes");
     SramTraffic buffer{run.value("treelet_queues.buffer.sram_reads") +
                            run.value("treelet_queues.buffer.sram_writes"),
                        moved / 2, moved / 2};
     d.structures.push_back(
-        sram(run, "ray_buffer", 1, bytes, c.treelet_queues.buffer.banks, 0, buffer));
+        sram(run, "ray_buffer", 1, {bytes, 64, c.treelet_queues.buffer.banks}, 0, buffer));
+  }
+  if (uint64_t bytes = uint64_t(sort_buffer_bytes(c.sort))) {  // each ray written and read once
+    double rays = run.value("sort.rays");
+    SramTraffic sort{2 * rays, rays * kSortedRayBytes, rays * kSortedRayBytes};
+    d.structures.push_back(sram(run, "sort_buffer", 1, {bytes}, 0, sort));
   }
   d.structures.push_back(wires(run));
   uint32_t slices = c.l2_layout.slices;
   SramTraffic l2{run.value("l2.accesses"), run.value("l2.bytes_read"),
                  run.value("l2.bytes_below") + run.value("l2.write_bytes")};
   d.structures.push_back(
-      sram(run, "l2", slices, c.l2.size_bytes / slices, c.l2.banks, c.l2.line_bytes, l2));
+      sram(run, "l2", slices, cache_array(c.l2, c.l2.size_bytes / slices), c.l2.line_bytes, l2));
   d.structures.push_back(dram(run));
   split_by_type(d, stats);
   return d;

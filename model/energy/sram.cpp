@@ -43,12 +43,14 @@ SramEnergyFit fit_sram_energy(const std::vector<SramEnergyRow>& rows) {
 double sram_read_pj(const SramArray& array, const ProcessNode& node) {
   static const SramEnergyFit fit = fit_sram_energy(horowitz_45nm_sram_rows());
   uint64_t bank_bytes = array.bytes / std::max<uint32_t>(array.banks, 1);
-  return fit.read_pj(bank_bytes) * (array.access_bits / kReferenceBits) * sram_energy_scale(node);
+  double ports = 1 + 0.5 * (std::max<uint32_t>(array.ports, 1) - 1);
+  return fit.read_pj(bank_bytes) * (array.access_bits / kReferenceBits) * sram_energy_scale(node) *
+         ports;
 }
 
 double sram_area_mm2(const SramArray& array, const ProcessNode& node) {
-  double bits = double(array.bytes) * 8;
-  return bits * node.bitcell_um2 / kSramArrayEfficiency * 1e-6;
+  double bits = double(array.bytes) * 8, ports = std::max<uint32_t>(array.ports, 1);
+  return bits * node.bitcell_um2 / kSramArrayEfficiency * ports * ports * 1e-6;
 }
 
 }  // namespace rtsim

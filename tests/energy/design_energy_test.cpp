@@ -157,5 +157,21 @@ TEST(DesignEnergy, RayTypesShareEachStructuresEnergyByTheirEvents) {
   EXPECT_NEAR(doc["power_w"].get<double>(), d.total_pj() * 1e-12 / 1e-3, 1e-12);
 }
 
+TEST(DesignEnergy, ASortingUnitsBufferIsAnSramWrittenAndReadOncePerRay) {
+  HwConfig c;
+  StatsRegistry r = one_millisecond();
+  r.counter("sort.rays", 500);
+  DesignEnergy none = design_energy(c, r);
+  for (const StructureEnergy& s : none.structures) EXPECT_NE(s.name, "sort_buffer");
+  c.sort.key = SortKey::OctantCell;
+  DesignEnergy sorted = design_energy(c, r);
+  const StructureEnergy& buffer = structure(sorted, "sort_buffer");
+  uint64_t bytes = uint64_t(c.sort.buffer_rays) * kSortedRayBytes;
+  double bit = sram_read_pj({bytes}, process_node("7nm")) / 64;
+  EXPECT_NEAR(buffer.dynamic_pj, 500 * 40 * 8 * bit * (1 + 1.1), 1e-6);
+  EXPECT_EQ(buffer.sram_bytes, bytes) << "a RAM: no tags";
+  EXPECT_EQ(sorted.sram_bytes(), none.sram_bytes() + bytes);
+}
+
 }  // namespace
 }  // namespace rtsim

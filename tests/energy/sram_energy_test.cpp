@@ -54,5 +54,13 @@ TEST(SramEnergy, AreaIsTheBitcellsOverTheArrayEfficiency) {
   EXPECT_NEAR(sram_area_mm2({1 << 20, 64, 1}, process_node("45nm")), 4.84, 0.01);
 }
 
+TEST(SramEnergy, EachPortAddsHalfAReadAndTheAreaGrowsAsTheirSquare) {
+  const ProcessNode& n7 = process_node("7nm");
+  SramArray one{65536, 512, 4, 1}, two{65536, 512, 4, 2};
+  EXPECT_NEAR(sram_read_pj(two, n7) / sram_read_pj(one, n7), 1.5, 1e-12);
+  EXPECT_NEAR(sram_area_mm2(two, n7) / sram_area_mm2(one, n7), 4, 1e-12);
+  EXPECT_EQ(sram_read_pj({65536, 512, 4, 0}, n7), sram_read_pj(one, n7)) << "0 ports: one";
+}
+
 }  // namespace
 }  // namespace rtsim

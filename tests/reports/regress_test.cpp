@@ -2,7 +2,8 @@
 // after a config change that slows the design beyond the tolerance it fails (exit 1, the delta
 // table and the JUnit XML say which metric); a faster design passes as "improved". At 32x18 some
 // ray types have a few rays, whose DRAM bytes move by whole 64-byte lines when more MSHRs
-// reorder the misses (which ray fetches a shared line first), hence 4 lines' tolerance.
+// reorder the misses (which ray fetches a shared line first), hence 4 lines' tolerance. Energy
+// per ray is compared too: another process node regresses it and no timing figure.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -30,7 +31,8 @@ class Regress : public ::testing::Test {
                                            "cycles = 0.02\n"
                                            "l1_hit_rate = { absolute = 0.01 }\n"
                                            "\"type.*.dram_bytes_per_ray\" = "
-                                           "{ relative = 0.05, absolute = 256 }\n";
+                                           "{ relative = 0.05, absolute = 256 }\n"
+                                           "energy_nj_per_ray = 0.01\n";
     test::RunResult r = regress("--update-baseline");
     ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   }
@@ -78,6 +80,17 @@ TEST_F(Regress, AFasterDesignPassesAsImproved) {
   test::RunResult r = regress();
   EXPECT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("improved"), std::string::npos) << r.out;
+}
+
+TEST_F(Regress, AnOlderProcessNodeRegressesEnergyNotCycles) {
+  std::ofstream(dir_ + "/hw.toml", std::ios::app) << "\n[energy]\nnode = \"45nm\"\n";
+  test::RunResult r = regress();
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  std::string junit = test::slurp(dir_ + "/out/junit.xml");
+  EXPECT_NE(junit.find("name=\"energy_nj_per_ray\" time=\"0\"><failure"), std::string::npos)
+      << junit;
+  EXPECT_EQ(junit.find("name=\"cycles\" time=\"0\"><failure"), std::string::npos)
+      << "the energy model changes no timing";
 }
 
 TEST_F(Regress, AMissingBaselineIsBadInput) {
