@@ -72,6 +72,7 @@ void print_summary(const nlohmann::ordered_json& r) {
              reports::show(b["l1_hit_rate"], Style::Percent),
              reports::show(b["l2_hit_rate"], Style::Percent),
              reports::show(b["dram_bytes_per_ray"], Style::Real));
+  if (r["energy"].is_object()) fmt::print("{}\n", energy_summary_line(r["energy"]));
   const auto& v = r["verification"];
   if (v["skipped"].get<bool>())
     fmt::print("verify     skipped: {}\n", v["reason"].get<std::string>());
