@@ -118,6 +118,25 @@ TEST(SweepSpec, MistakesNameTheFileAndLine) {
       << "checked when read, not point by point";
 }
 
+// The examples reports/README.md points users to read as they are documented.
+TEST(SweepSpec, EveryExampleReads) {
+  size_t sweeps = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(test::source_path("reports/examples"))) {
+    std::string path = entry.path().string();
+    if (test::slurp(path).find("[[case]]") != std::string::npos) {
+      EXPECT_FALSE(read_regress_suite(path).cases.empty()) << path;
+      continue;
+    }
+    EXPECT_FALSE(read_sweep_spec(path).points.empty()) << path;
+    ++sweeps;
+  }
+  EXPECT_GE(sweeps, 6u);
+  SweepSpec energy = read_sweep_spec(test::source_path("reports/examples/energy-budget.toml"));
+  EXPECT_EQ(energy.objective.metric, "energy_nj_per_ray");
+  EXPECT_EQ(energy.points.size(), 15u);
+}
+
 TEST(SweepSpec, AnObjectiveNamesAMetricAndItsBounds) {
   std::string grid = "[[workload]]\n[grid]\n\"rt.count\" = [1, 2]\n";
   SweepSpec spec =
