@@ -135,27 +135,35 @@ void DramController::step(Channel& ch, DramClock t, std::vector<DramReadDone>& d
     DramClock arrival = ch.waiting.front().arrival;
     if (arrival > t || issued) wake = std::min(wake, std::max(arrival, t + 1));
   }
-  if (issued) {  // when the next command may issue, without a decision at each clock between
-    decide(ch, t + 1, wake, done, true);
-    t++;
-  }
+  if (issued) t++;  // the next decision is at t + 1 at the earliest
   bool idle = ch.reads.empty() && ch.writes.empty() && ch.waiting.empty();
   bool refresh_due = config_.refresh != DramRefresh::None && ch.refresh_due <= t;
-  if (idle && !refresh_due)
-    ch.next = kNever;  // asleep until a request arrives
-  else
-    ch.next = std::max(wake, issued ? t : t + 1);
+  if (idle && !refresh_due) {
+    ch.draining = false;  // as a decision finds with no write queued
+    ch.next = kNever;     // asleep until a request arrives
+    return;
+  }
+  // When the next command may issue, without a decision at each clock between.
+  if (issued) decide(ch, t, wake, done, true);
+  ch.next = std::max(wake, issued ? t : t + 1);
 }
 
 bool DramController::decide(Channel& ch, DramClock t, DramClock& wake,
                             std::vector<DramReadDone>& done, bool dry) {
   ch.rows_valid = false;
-  if (refresh(ch, t, wake, dry)) return true;
+  if (config_.refresh != DramRefresh::None) {
+    if (ch.refresh_due > t)  // the common case, without a call
+      wake = std::min(wake, ch.refresh_due);
+    else if (refresh(ch, t, wake, dry))
+      return true;
+  }
   if (ch.draining && ch.writes.size() <= config_.write_low) ch.draining = false;
   if (!ch.draining && ch.writes.size() >= config_.write_high) ch.draining = true;
   bool write = ch.draining || ch.reads.empty();
-  return schedule(ch, write ? ch.writes : ch.reads, write, t, wake, done, dry) ||
-         schedule(ch, write ? ch.reads : ch.writes, !write, t, wake, done, dry);
+  std::vector<Burst>& first = write ? ch.writes : ch.reads;
+  std::vector<Burst>& second = write ? ch.reads : ch.writes;
+  return (!first.empty() && schedule(ch, first, write, t, wake, done, dry)) ||
+         (!second.empty() && schedule(ch, second, !write, t, wake, done, dry));
 }
 
 bool DramController::blocked(const Channel& ch, const Burst& b, DramClock t) const {
@@ -197,11 +205,6 @@ void DramController::mark_opened(Channel& ch, const Burst& b) {
 }
 
 bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry) {
-  if (config_.refresh == DramRefresh::None) return false;
-  if (ch.refresh_due > t) {
-    wake = std::min(wake, ch.refresh_due);
-    return false;
-  }
   bool per_bank = config_.refresh == DramRefresh::PerBank;
   for (uint32_t rank = 0; rank < config_.ranks; ++rank) {
     RankRefresh& r = ch.refresh[rank];
@@ -259,9 +262,12 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
 
 bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write, DramClock t,
                               DramClock& wake, std::vector<DramReadDone>& done, bool dry) {
+  if (dry && wake <= t) return false;  // the next decision is at t: nothing can lower wake
   DramChannel& dev = ch.device;
+  // Only a refresh that is due blocks requests.
+  bool refreshing = config_.refresh != DramRefresh::None && ch.refresh_due <= t;
   size_t oldest = 0;
-  while (oldest < queue.size() && blocked(ch, queue[oldest], t)) ++oldest;
+  while (refreshing && oldest < queue.size() && blocked(ch, queue[oldest], t)) ++oldest;
   if (oldest == queue.size()) return false;
   // Past the cap, the oldest request's bank is kept for it: no younger request to that bank
   // issues, except one whose row was opened for it (so every ACT is used).
@@ -278,7 +284,7 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
   DramCommand first_command = DramCommand::Act;
   for (size_t i = oldest; i < queue.size(); ++i) {
     Burst& b = queue[i];
-    if (blocked(ch, b, t) || held_back(i)) continue;
+    if ((refreshing && blocked(ch, b, t)) || held_back(i)) continue;
     uint32_t row = dev.open_row(b.a);
     DramCommand command = row == b.a.row                ? column_command(write)
                           : row == DramChannel::kClosed ? DramCommand::Act
@@ -291,6 +297,7 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
     DramClock e = dev.earliest(command, b.a, t);
     if (e > t || dry) {
       wake = std::min(wake, e);
+      if (dry && wake <= t) return false;  // no later request can lower it
       continue;
     }
     if (!hit) {
