@@ -266,24 +266,24 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
   DramChannel& dev = ch.device;
   // Only a refresh that is due blocks requests.
   bool refreshing = config_.refresh != DramRefresh::None && ch.refresh_due <= t;
-  size_t oldest = 0;
-  while (refreshing && oldest < queue.size() && blocked(ch, queue[oldest], t)) ++oldest;
-  if (oldest == queue.size()) return false;
+  Burst* const end = queue.data() + queue.size();
+  Burst* oldest = queue.data();
+  while (refreshing && oldest != end && blocked(ch, *oldest, t)) ++oldest;
+  if (oldest == end) return false;
   // Past the cap, the oldest request's bank is kept for it: no younger request to that bank
   // issues, except one whose row was opened for it (so every ACT is used).
-  bool capped = queue[oldest].bypassed >= config_.starvation_cap;
-  auto held_back = [&](size_t i) {
-    return capped && i != oldest && same_bank(queue[i].a, queue[oldest].a) && !queue[i].opened;
+  bool capped = oldest->bypassed >= config_.starvation_cap;
+  auto held_back = [&](const Burst* b) {
+    return capped && b != oldest && same_bank(b->a, oldest->a) && !b->opened;
   };
   // FR-FCFS in one pass, oldest first: the first row hit whose column command can issue now;
   // failing that, the first other request whose next command (ACT, or PRE for another row) can.
   // A row stays open while a request it was opened for waits, and, unless this request is past
   // the cap, while any queued request hits it.
-  const size_t none = queue.size();
-  size_t first_come = none;
+  Burst* first_come = nullptr;
   DramCommand first_command = DramCommand::Act;
-  for (size_t i = oldest; i < queue.size(); ++i) {
-    Burst& b = queue[i];
+  for (Burst* i = oldest; i != end; ++i) {
+    Burst& b = *i;
     if ((refreshing && blocked(ch, b, t)) || held_back(i)) continue;
     uint32_t row = dev.open_row(b.a);
     DramCommand command = row == b.a.row                ? column_command(write)
@@ -293,7 +293,7 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
         (rows(ch)[bank_of(b.a)] & (capped && i == oldest ? kHeld : kWanted)))
       continue;
     bool hit = row == b.a.row;
-    if (!hit && first_come != none) continue;  // only the first of them can issue
+    if (!hit && first_come) continue;  // only the first of them can issue
     DramClock e = dev.earliest(command, b.a, t);
     if (e > t || dry) {
       wake = std::min(wake, e);
@@ -305,13 +305,13 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
       first_command = command;
       continue;
     }
-    for (size_t j = oldest; j < i; ++j)
-      if (same_bank(queue[j].a, b.a) && queue[j].a.row != b.a.row) queue[j].bypassed++;
-    serve_column(ch, queue, i, write, t, done);
+    for (Burst* j = oldest; j != i; ++j)
+      if (same_bank(j->a, b.a) && j->a.row != b.a.row) j->bypassed++;
+    serve_column(ch, queue, size_t(i - queue.data()), write, t, done);
     return true;
   }
-  if (first_come == none) return false;
-  Burst& b = queue[first_come];
+  if (!first_come) return false;
+  Burst& b = *first_come;
   dev.issue(first_command, b.a, t);
   if (first_command == DramCommand::Act) {
     b.needed_act = true;
