@@ -83,32 +83,31 @@ DramAddressMap::DramAddressMap(const BankedDramConfig& c)
       order.push_back(fields[i]);
     }
   }
+  auto member = [](Field f) -> uint32_t DramAddress::* {
+    switch (f) {
+      case Field::Row: return &DramAddress::row;
+      case Field::Rank: return &DramAddress::rank;
+      case Field::Group: return &DramAddress::group;
+      case Field::Bank: return &DramAddress::bank;
+      case Field::Column:
+      case Field::ColumnHigh: return &DramAddress::column;
+      case Field::Channel: return &DramAddress::channel;
+    }
+    return &DramAddress::row;
+  };
   for (Field f : order) {
     uint32_t n = f == Field::Column && column_low_ > 1 ? column_low_ : size(f);
-    digits_.push_back({f, n});
+    digits_.push_back({member(f), n, f == Field::ColumnHigh ? column_low_ : 1});
   }
 }
 
 DramAddress DramAddressMap::decode(uint64_t addr) const {
   uint64_t rest = addr >> burst_shift_;
-  DramAddress a;
-  uint32_t column_high = 0;
-  for (size_t i = 0; i < digits_.size(); ++i) {
-    const Digit& d = digits_[i];
-    bool last = i + 1 == digits_.size();
-    auto value = uint32_t(rest % d.size);
-    rest = last ? 0 : rest / d.size;
-    switch (d.field) {
-      case Field::Row: a.row = value; break;
-      case Field::Rank: a.rank = value; break;
-      case Field::Group: a.group = value; break;
-      case Field::Bank: a.bank = value; break;
-      case Field::Column: a.column = value; break;
-      case Field::ColumnHigh: column_high = value; break;
-      case Field::Channel: a.channel = value; break;
-    }
+  DramAddress a;                    // all 0: each digit adds to its field (the column has two)
+  for (const Digit& d : digits_) {  // the most significant one wraps: the rest is dropped
+    a.*d.field += uint32_t(rest % d.size) * d.scale;
+    rest /= d.size;
   }
-  a.column += column_high * column_low_;
   if (hashed_) {
     a.bank ^= a.row & (banks_ - 1);
     a.group ^= (a.row / banks_) & (groups_ - 1);

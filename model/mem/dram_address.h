@@ -35,8 +35,9 @@ class DramAddressMap {
  private:
   enum class Field : uint8_t { Row, Rank, Group, Bank, Column, ColumnHigh, Channel };
   struct Digit {
-    Field field;
+    uint32_t DramAddress::*field;  // the field it adds to
     uint32_t size;
+    uint32_t scale;  // of its value in the field (column_high: column_low_ columns)
   };
   std::vector<Digit> digits_;  // least significant first
   uint32_t burst_shift_;

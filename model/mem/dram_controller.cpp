@@ -135,27 +135,35 @@ void DramController::step(Channel& ch, DramClock t, std::vector<DramReadDone>& d
     DramClock arrival = ch.waiting.front().arrival;
     if (arrival > t || issued) wake = std::min(wake, std::max(arrival, t + 1));
   }
-  if (issued) {  // when the next command may issue, without a decision at each clock between
-    decide(ch, t + 1, wake, done, true);
-    t++;
-  }
+  if (issued) t++;  // the next decision is at t + 1 at the earliest
   bool idle = ch.reads.empty() && ch.writes.empty() && ch.waiting.empty();
   bool refresh_due = config_.refresh != DramRefresh::None && ch.refresh_due <= t;
-  if (idle && !refresh_due)
-    ch.next = kNever;  // asleep until a request arrives
-  else
-    ch.next = std::max(wake, issued ? t : t + 1);
+  if (idle && !refresh_due) {
+    ch.draining = false;  // as a decision finds with no write queued
+    ch.next = kNever;     // asleep until a request arrives
+    return;
+  }
+  // When the next command may issue, without a decision at each clock between.
+  if (issued) decide(ch, t, wake, done, true);
+  ch.next = std::max(wake, issued ? t : t + 1);
 }
 
 bool DramController::decide(Channel& ch, DramClock t, DramClock& wake,
                             std::vector<DramReadDone>& done, bool dry) {
   ch.rows_valid = false;
-  if (refresh(ch, t, wake, dry)) return true;
+  if (config_.refresh != DramRefresh::None) {
+    if (ch.refresh_due > t)  // the common case, without a call
+      wake = std::min(wake, ch.refresh_due);
+    else if (refresh(ch, t, wake, dry))
+      return true;
+  }
   if (ch.draining && ch.writes.size() <= config_.write_low) ch.draining = false;
   if (!ch.draining && ch.writes.size() >= config_.write_high) ch.draining = true;
   bool write = ch.draining || ch.reads.empty();
-  return schedule(ch, write ? ch.writes : ch.reads, write, t, wake, done, dry) ||
-         schedule(ch, write ? ch.reads : ch.writes, !write, t, wake, done, dry);
+  std::vector<Burst>& first = write ? ch.writes : ch.reads;
+  std::vector<Burst>& second = write ? ch.reads : ch.writes;
+  return (!first.empty() && schedule(ch, first, write, t, wake, done, dry)) ||
+         (!second.empty() && schedule(ch, second, !write, t, wake, done, dry));
 }
 
 bool DramController::blocked(const Channel& ch, const Burst& b, DramClock t) const {
@@ -197,11 +205,6 @@ void DramController::mark_opened(Channel& ch, const Burst& b) {
 }
 
 bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry) {
-  if (config_.refresh == DramRefresh::None) return false;
-  if (ch.refresh_due > t) {
-    wake = std::min(wake, ch.refresh_due);
-    return false;
-  }
   bool per_bank = config_.refresh == DramRefresh::PerBank;
   for (uint32_t rank = 0; rank < config_.ranks; ++rank) {
     RankRefresh& r = ch.refresh[rank];
@@ -259,26 +262,29 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
 
 bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write, DramClock t,
                               DramClock& wake, std::vector<DramReadDone>& done, bool dry) {
+  if (dry && wake <= t) return false;  // the next decision is at t: nothing can lower wake
   DramChannel& dev = ch.device;
-  size_t oldest = 0;
-  while (oldest < queue.size() && blocked(ch, queue[oldest], t)) ++oldest;
-  if (oldest == queue.size()) return false;
+  // Only a refresh that is due blocks requests.
+  bool refreshing = config_.refresh != DramRefresh::None && ch.refresh_due <= t;
+  Burst* const end = queue.data() + queue.size();
+  Burst* oldest = queue.data();
+  while (refreshing && oldest != end && blocked(ch, *oldest, t)) ++oldest;
+  if (oldest == end) return false;
   // Past the cap, the oldest request's bank is kept for it: no younger request to that bank
   // issues, except one whose row was opened for it (so every ACT is used).
-  bool capped = queue[oldest].bypassed >= config_.starvation_cap;
-  auto held_back = [&](size_t i) {
-    return capped && i != oldest && same_bank(queue[i].a, queue[oldest].a) && !queue[i].opened;
+  bool capped = oldest->bypassed >= config_.starvation_cap;
+  auto held_back = [&](const Burst* b) {
+    return capped && b != oldest && same_bank(b->a, oldest->a) && !b->opened;
   };
   // FR-FCFS in one pass, oldest first: the first row hit whose column command can issue now;
   // failing that, the first other request whose next command (ACT, or PRE for another row) can.
   // A row stays open while a request it was opened for waits, and, unless this request is past
   // the cap, while any queued request hits it.
-  const size_t none = queue.size();
-  size_t first_come = none;
+  Burst* first_come = nullptr;
   DramCommand first_command = DramCommand::Act;
-  for (size_t i = oldest; i < queue.size(); ++i) {
-    Burst& b = queue[i];
-    if (blocked(ch, b, t) || held_back(i)) continue;
+  for (Burst* i = oldest; i != end; ++i) {
+    Burst& b = *i;
+    if ((refreshing && blocked(ch, b, t)) || held_back(i)) continue;
     uint32_t row = dev.open_row(b.a);
     DramCommand command = row == b.a.row                ? column_command(write)
                           : row == DramChannel::kClosed ? DramCommand::Act
@@ -287,10 +293,11 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
         (rows(ch)[bank_of(b.a)] & (capped && i == oldest ? kHeld : kWanted)))
       continue;
     bool hit = row == b.a.row;
-    if (!hit && first_come != none) continue;  // only the first of them can issue
+    if (!hit && first_come) continue;  // only the first of them can issue
     DramClock e = dev.earliest(command, b.a, t);
     if (e > t || dry) {
       wake = std::min(wake, e);
+      if (dry && wake <= t) return false;  // no later request can lower it
       continue;
     }
     if (!hit) {
@@ -298,13 +305,13 @@ bool DramController::schedule(Channel& ch, std::vector<Burst>& queue, bool write
       first_command = command;
       continue;
     }
-    for (size_t j = oldest; j < i; ++j)
-      if (same_bank(queue[j].a, b.a) && queue[j].a.row != b.a.row) queue[j].bypassed++;
-    serve_column(ch, queue, i, write, t, done);
+    for (Burst* j = oldest; j != i; ++j)
+      if (same_bank(j->a, b.a) && j->a.row != b.a.row) j->bypassed++;
+    serve_column(ch, queue, size_t(i - queue.data()), write, t, done);
     return true;
   }
-  if (first_come == none) return false;
-  Burst& b = queue[first_come];
+  if (!first_come) return false;
+  Burst& b = *first_come;
   dev.issue(first_command, b.a, t);
   if (first_command == DramCommand::Act) {
     b.needed_act = true;

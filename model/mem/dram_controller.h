@@ -119,6 +119,7 @@ class DramController {
   // Issues the command due at t, if one is (refresh first); else lowers wake to the clock the
   // first command may issue. dry: issues nothing, only lowers wake (to t at the least).
   bool decide(Channel& ch, DramClock t, DramClock& wake, std::vector<DramReadDone>& done, bool dry);
+  // A refresh that is due (ch.refresh_due <= t, refresh on): its PRE or REF, as decide's.
   bool refresh(Channel& ch, DramClock t, DramClock& wake, bool dry);
   bool blocked(const Channel& ch, const Burst& b, DramClock t) const;  // by a due refresh
   bool activated_for(const Channel& ch, const Burst& b) const;  // its open row was opened for it
