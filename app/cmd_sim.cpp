@@ -152,10 +152,12 @@ std::string energy_summary_line(const nlohmann::ordered_json& e) {
   std::string most;
   for (size_t i = 0; i < std::min<size_t>(3, shares.size()); ++i)
     most += fmt::format("{}{} {:.0f}%", i ? ", " : "", shares[i].second, 100 * shares[i].first);
+  const auto& per_ray = e["nj_per_ray"];  // null without rays
   return fmt::format(
-      "energy     {:.3g} nJ/ray  {:.4g} MRays/J  {:.3g} W  (static {:.0f}%; most: {})  area {:.3g} "
+      "energy     {} nJ/ray  {:.4g} MRays/J  {:.3g} W  (static {:.0f}%; most: {})  area {:.3g} "
       "mm² (SRAM {:.3g}) at {}",
-      e["nj_per_ray"].get<double>(), e["mrays_per_joule"].get<double>(), e["power_w"].get<double>(),
+      per_ray.is_null() ? "n/a" : fmt::format("{:.3g}", per_ray.get<double>()),
+      e["mrays_per_joule"].get<double>(), e["power_w"].get<double>(),
       100 * e["static_nj"].get<double>() / total, most, e["area_mm2"].get<double>(),
       e["sram_area_mm2"].get<double>(), e["node"].get<std::string>());
 }

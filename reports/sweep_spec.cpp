@@ -146,13 +146,11 @@ void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) 
 }
 
 // A metric a point is judged by: one of flat_metrics, of one ray type if per type.
-std::string objective_metric(const SpecReader& r, const toml::node& n, const char* key) {
-  std::string name = r.text(&n, key);
+void check_objective_metric(const SpecReader& r, const toml::node& n, const std::string& name) {
   std::string problem = metric_name_problem(name);
   if (problem.empty() && name.find('*') != std::string::npos)
     problem = "'" + name + "' names every ray type: pick one";
   if (!problem.empty()) r.fail(n, problem);
-  return name;
 }
 
 void read_objective(const SpecReader& r, const toml::table& t, SweepObjective& o) {
@@ -160,7 +158,8 @@ void read_objective(const SpecReader& r, const toml::table& t, SweepObjective& o
   const toml::node *min = t.get("minimise"), *max = t.get("maximise");
   if (bool(min) == bool(max)) r.fail(t, "[objective] needs one of minimise or maximise");
   o.maximise = max != nullptr;
-  o.metric = objective_metric(r, max ? *max : *min, max ? "maximise" : "minimise");
+  o.metric = r.text(max ? max : min, max ? "maximise" : "minimise");
+  check_objective_metric(r, max ? *max : *min, o.metric);
   for (const auto& [key, bounds] :
        {std::pair{"at_most", &o.at_most}, std::pair{"at_least", &o.at_least}}) {
     const toml::node* n = t.get(key);
@@ -169,8 +168,7 @@ void read_objective(const SpecReader& r, const toml::table& t, SweepObjective& o
     if (!table) r.fail(*n, std::string(key) + " must be a table of metric = bound");
     for (const auto& [name, bound] : *table) {
       std::string metric = std::string(name.str());
-      std::string problem = metric_name_problem(metric);
-      if (!problem.empty()) r.fail(bound, problem);
+      check_objective_metric(r, bound, metric);
       std::optional<double> value = bound.value<double>();
       if (!value) r.fail(bound, std::string(key) + "." + metric + " must be a number");
       bounds->emplace_back(metric, *value);

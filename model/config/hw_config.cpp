@@ -455,9 +455,10 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.energy.sram_leak_mw_per_kb =
       energy.real("sram_leak_mw_per_kb", c.energy.sram_leak_mw_per_kb, "mW/KB",
                   "static power of SRAM (caches, ray buffer), per KB", 0, 100);
-  c.energy.logic_leak_share =
-      energy.real("logic_leak_share", c.energy.logic_leak_share, "fraction",
-                  "static power of a test unit as a share of its peak dynamic power", 0, 10);
+  c.energy.logic_leak_share = energy.real(
+      "logic_leak_share", c.energy.logic_leak_share, "fraction",
+      "static power of the test units and ray registers as a share of their peak dynamic power", 0,
+      10);
   c.energy.wire_mm = energy.real("wire_mm", c.energy.wire_mm, "mm",
                                  "distance a byte travels between an L1 and the L2", 0, 1000);
 }

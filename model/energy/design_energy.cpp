@@ -38,21 +38,27 @@ struct Run {
       sum += stats.value("rt" + std::to_string(i) + "." + suffix);
     return sum;
   }
-  double leak_pj(uint64_t sram_bytes) const {  // mW x s = mJ = 1e9 pJ
-    return config.energy.sram_leak_mw_per_kb * double(sram_bytes) / 1024 * seconds * 1e9;
+  double over_run_pj(double mw) const { return mw * seconds * 1e9; }  // mW x s = 1e9 pJ
+  double leak_pj(uint64_t sram_bytes) const {
+    return over_run_pj(config.energy.sram_leak_mw_per_kb * double(sram_bytes) / 1024);
+  }
+  // Logic leaks a share of its peak dynamic power (pJ an event x events a cycle x GHz = mW),
+  // whatever the run's activity.
+  double logic_leak_pj(double pj_per_cycle) const {
+    return over_run_pj(config.energy.logic_leak_share * pj_per_cycle * config.clock_ghz);
   }
 };
 
 // A pool of test datapaths: each issue of a unit runs issue_width of them.
 StructureEnergy test_units(const Run& run, const char* name, const TestUnitConfig& unit,
-                           const ArithmeticOps& ops, const char* counter) {
-  StructureEnergy s{name, "test"};
+                           const ArithmeticOps& ops, const char* counter,
+                           const char* share_counter) {
+  StructureEnergy s{name, "test", share_counter};
   s.instances = run.config.rt_units * unit.count * unit.issue_width;
   s.events = run.units_value(counter);
   double pj = arithmetic_pj(ops, run.node);
   s.dynamic_pj = s.events * pj;
-  double peak_mw = s.instances * pj * run.config.clock_ghz;  // pJ x GHz = mW
-  s.static_pj = run.config.energy.logic_leak_share * peak_mw * run.seconds * 1e9;
+  s.static_pj = run.logic_leak_pj(s.instances * pj);
   s.area_mm2 = s.instances * arithmetic_area_mm2(ops, run.node);
   return s;
 }
@@ -61,14 +67,13 @@ StructureEnergy test_units(const Run& run, const char* name, const TestUnitConfi
 // pushes an entry.
 StructureEnergy ray_registers(const Run& run) {
   const RtCoreConfig& rt = run.config.rt;
-  StructureEnergy s{"ray_registers", "step"};
+  StructureEnergy s{"ray_registers", "step", "trav_nodes"};
   s.instances = run.config.rt_units * rt.warps * rt.warp_size;
   s.events = run.units_value("node_steps") + run.units_value("leaf_steps");
   double step_pj =
       (kRayRegisterBits + 2 * 8 * rt.stack.entry_bytes) * flipflop_pj_per_bit(run.node);
   s.dynamic_pj = s.events * step_pj;
-  double peak_mw = run.config.rt_units * rt.issue_per_cycle * step_pj * run.config.clock_ghz;
-  s.static_pj = run.config.energy.logic_leak_share * peak_mw * run.seconds * 1e9;
+  s.static_pj = run.logic_leak_pj(run.config.rt_units * rt.issue_per_cycle * step_pj);
   double bits = double(ray_state_bytes(rt.stack)) * 8;
   s.area_mm2 = s.instances * bits * flipflop_um2_per_bit(run.node) * 1e-6;
   return s;
@@ -80,9 +85,10 @@ struct SramTraffic {
   double accesses = 0, read_bytes = 0, write_bytes = 0;
 };
 // line_bytes 0: a plain RAM without tags.
-StructureEnergy sram(const Run& run, const char* name, uint32_t instances, const SramArray& data,
-                     uint32_t line_bytes, const SramTraffic& t) {
-  StructureEnergy s{name, "access"};
+StructureEnergy sram(const Run& run, const char* name, const char* share_counter,
+                     uint32_t instances, const SramArray& data, uint32_t line_bytes,
+                     const SramTraffic& t) {
+  StructureEnergy s{name, "access", share_counter};
   s.instances = instances;
   s.events = t.accesses;
   double bit_pj = sram_read_pj(data, run.node) / data.access_bits;
@@ -101,7 +107,7 @@ SramArray cache_array(const CacheConfig& c, uint64_t bytes) {
 
 // Bytes between the L1s and the L2 slices, over wire_mm of wire.
 StructureEnergy wires(const Run& run) {
-  StructureEnergy s{"l1_l2_wires", "byte"};
+  StructureEnergy s{"l1_l2_wires", "byte", "l2_accesses"};
   s.instances = run.config.rt_units;
   s.events = run.value("l2.bytes_read") + run.value("l2.write_bytes");
   s.dynamic_pj = s.events * 8 * wire_pj_per_bit_mm(run.node) * run.config.energy.wire_mm;
@@ -121,51 +127,48 @@ StructureEnergy dram(const Run& run) {
   bool closed = c.page_policy == DramPagePolicy::Closed;
   double background_mw = (closed ? e.precharged_mw : e.active_mw) * capacity * c.ranks;
 
-  StructureEnergy s{"dram", "burst"};
+  StructureEnergy s{"dram", "burst", "dram_bytes"};
   s.instances = c.channels;
-  double bytes = run.value("dram.bytes");
+  double bytes = run.value("dram.bytes"), act = 0, read = 0, write = 0, refresh = 0;
+  double background = run.over_run_pj(c.channels * background_mw);
   if (run.config.dram_model == DramModel::Banked) {
     double rd = run.value("dram.cmd.rd"), wr = run.value("dram.cmd.wr");
     s.events = rd + wr;
-    s.parts_pj = {
-        {"act_pre", run.value("dram.cmd.act") * e.act_pre_pj * row},
-        {"read", rd * e.read_pj * burst},
-        {"write", wr * e.write_pj * burst},
-        {"refresh", (run.value("dram.cmd.ref") + run.value("dram.cmd.ref_pb") / c.banks()) *
-                        e.refresh_pj * capacity}};
-  } else {  // one bus: every byte at the streaming read energy, no commands
+    act = run.value("dram.cmd.act") * e.act_pre_pj * row;
+    read = rd * e.read_pj * burst;
+    write = wr * e.write_pj * burst;
+    refresh = (run.value("dram.cmd.ref") + run.value("dram.cmd.ref_pb") / c.banks()) *
+              e.refresh_pj * capacity;
+  } else {  // one bus: every byte at the streaming read energy; the preset's devices in the
+            // share of its bandwidth the bus has
     s.events = bytes / c.burst_bytes();
-    s.parts_pj = {{"read", s.events * e.read_pj * burst}};
+    read = s.events * e.read_pj * burst;
+    background *=
+        std::min(1.0, run.config.dram.bytes_per_cycle * run.config.clock_ghz / c.peak_gb_per_s());
   }
-  s.parts_pj.emplace_back("io", bytes * 8 * c.io_pj_per_bit);
-  for (const auto& part : s.parts_pj) s.dynamic_pj += part.second;
-  s.static_pj = c.channels * background_mw * run.seconds * 1e9;
+  double io = bytes * 8 * c.io_pj_per_bit;
+  s.parts_pj = {{"act_pre", act}, {"read", read},       {"write", write},
+                {"io", io},       {"refresh", refresh}, {"background", background}};
+  s.dynamic_pj = act + read + write + io;
+  s.static_pj = refresh + background;  // by time, not by rays
   return s;
-}
-
-// Each structure's dynamic energy goes to the ray types by their share of its events.
-const char* type_share_counter(const std::string& structure) {
-  if (structure == "box_units" || structure == "ray_registers") return "trav_nodes";
-  if (structure == "triangle_units") return "trav_prims";
-  if (structure == "transform_units") return "trav_instances";
-  if (structure == "l1") return "l1_accesses";
-  if (structure == "dram") return "dram_bytes";
-  if (structure == "ray_buffer" || structure == "sort_buffer") return "rays";
-  return "l2_accesses";  // L2 and its wires
 }
 
 void split_by_type(DesignEnergy& d, const StatsRegistry& stats) {
   for (int t = 0; t < kRayTypeCount; ++t)
     d.type_rays[t] =
         uint64_t(stats.value(std::string("type.") + ray_type_name(RayType(t)) + ".rays"));
+  // Each structure's dynamic energy by the types' shares of its events; by their rays when no
+  // type has any (a prefetch's traffic, say), so that the types share all of it.
   for (const StructureEnergy& s : d.structures) {
     std::array<double, kRayTypeCount> share{};
     double all = 0;
-    for (int t = 0; t < kRayTypeCount; ++t) {
-      std::string name =
-          std::string("type.") + ray_type_name(RayType(t)) + "." + type_share_counter(s.name);
-      share[t] = stats.value(name);
-      all += share[t];
+    for (const char* counter : {s.share_counter, "rays"}) {
+      for (int t = 0; t < kRayTypeCount; ++t) {
+        share[t] = stats.value(std::string("type.") + ray_type_name(RayType(t)) + "." + counter);
+        all += share[t];
+      }
+      if (all > 0) break;
     }
     if (all > 0)
       for (int t = 0; t < kRayTypeCount; ++t) d.type_dynamic_pj[t] += s.dynamic_pj * share[t] / all;
@@ -210,35 +213,37 @@ DesignEnergy design_energy(const HwConfig& c, const StatsRegistry& stats) {
   d.seconds = stats.value("cycles") / (c.clock_ghz * 1e9);
   Run run{c, stats, process_node(c.energy.node), d.seconds};
 
-  d.structures.push_back(test_units(run, "box_units", c.rt.box, fp32_box_test(), "box.tests"));
   d.structures.push_back(
-      test_units(run, "triangle_units", c.rt.triangle, triangle_test(), "triangle.tests"));
-  d.structures.push_back(
-      test_units(run, "transform_units", c.rt.transform, transform_test(), "transform.tests"));
+      test_units(run, "box_units", c.rt.box, fp32_box_test(), "box.tests", "trav_nodes"));
+  d.structures.push_back(test_units(run, "triangle_units", c.rt.triangle, triangle_test(),
+                                    "triangle.tests", "trav_prims"));
+  d.structures.push_back(test_units(run, "transform_units", c.rt.transform, transform_test(),
+                                    "transform.tests", "trav_instances"));
   d.structures.push_back(ray_registers(run));
   SramTraffic l1{run.units_value("l1.accesses"), run.units_value("l1.bytes_read"),
                  run.units_value("l1.bytes_below") + run.units_value("l1.write_bytes")};
-  d.structures.push_back(
-      sram(run, "l1", c.rt_units, cache_array(c.l1, c.l1.size_bytes), c.l1.line_bytes, l1));
+  d.structures.push_back(sram(run, "l1", "l1_accesses", c.rt_units,
+                              cache_array(c.l1, c.l1.size_bytes), c.l1.line_bytes, l1));
   if (uint64_t bytes = ray_buffer_sram_bytes(c)) {
     double moved = run.value("treelet_queues.buffer.sram_bytes");
-    SramTraffic buffer{run.value("treelet_queues.buffer.sram_reads") +
-                           run.value("treelet_queues.buffer.sram_writes"),
-                       moved / 2, moved / 2};
+    double reads = run.value("treelet_queues.buffer.sram_reads");
+    double accesses = reads + run.value("treelet_queues.buffer.sram_writes");
+    double read_share = accesses > 0 ? reads / accesses : 0;  // states move whole
+    SramTraffic buffer{accesses, moved * read_share, moved * (1 - read_share)};
     d.structures.push_back(
-        sram(run, "ray_buffer", 1, {bytes, 64, c.treelet_queues.buffer.banks}, 0, buffer));
+        sram(run, "ray_buffer", "rays", 1, {bytes, 64, c.treelet_queues.buffer.banks}, 0, buffer));
   }
   if (uint64_t bytes = uint64_t(sort_buffer_bytes(c.sort))) {  // each ray written and read once
     double rays = run.value("sort.rays");
     SramTraffic sort{2 * rays, rays * kSortedRayBytes, rays * kSortedRayBytes};
-    d.structures.push_back(sram(run, "sort_buffer", 1, {bytes}, 0, sort));
+    d.structures.push_back(sram(run, "sort_buffer", "rays", 1, {bytes}, 0, sort));
   }
   d.structures.push_back(wires(run));
   uint32_t slices = c.l2_layout.slices;
   SramTraffic l2{run.value("l2.accesses"), run.value("l2.bytes_read"),
                  run.value("l2.bytes_below") + run.value("l2.write_bytes")};
-  d.structures.push_back(
-      sram(run, "l2", slices, cache_array(c.l2, c.l2.size_bytes / slices), c.l2.line_bytes, l2));
+  d.structures.push_back(sram(run, "l2", "l2_accesses", slices,
+                              cache_array(c.l2, c.l2.size_bytes / slices), c.l2.line_bytes, l2));
   d.structures.push_back(dram(run));
   split_by_type(d, stats);
   return d;
@@ -247,13 +252,13 @@ DesignEnergy design_energy(const HwConfig& c, const StatsRegistry& stats) {
 Json design_energy_json(const DesignEnergy& d) {
   auto nj = [](double pj) { return pj / 1000; };
   double joules = d.total_pj() * 1e-12;
-  double rays = double(std::max<uint64_t>(d.rays, 1));
+  Json per_ray = d.rays ? Json(nj(d.total_pj()) / double(d.rays)) : Json();  // null: no rays
   Json doc = {{"node", d.node},
               {"seconds", d.seconds},
               {"total_nj", nj(d.total_pj())},
               {"dynamic_nj", nj(d.dynamic_pj())},
               {"static_nj", nj(d.static_pj())},
-              {"nj_per_ray", nj(d.total_pj()) / rays},
+              {"nj_per_ray", per_ray},
               {"mrays_per_joule", joules > 0 ? double(d.rays) / joules / 1e6 : 0},
               {"power_w", d.seconds > 0 ? joules / d.seconds : 0},
               {"area_mm2", d.area_mm2()},

@@ -22,17 +22,19 @@
 namespace rtsim {
 
 struct StructureEnergy {
-  StructureEnergy(std::string name, std::string event)
-      : name(std::move(name)), event(std::move(event)) {}
-  std::string name;         // "l1", "dram", ...
-  std::string event;        // what one event is: "test", "access", "burst", "byte"
-  uint32_t instances = 0;   // datapaths, caches, slices, channels
-  double events = 0;        // over the run, all instances
-  double dynamic_pj = 0;    // over the run
-  double static_pj = 0;     // static power over the measured time
-  double area_mm2 = 0;      // all instances; 0 off chip (DRAM)
-  uint64_t sram_bytes = 0;  // SRAM arrays it holds (data and tags)
-  // Where the dynamic energy went, where it has parts (DRAM: its commands and I/O).
+  StructureEnergy(std::string name, std::string event, const char* share_counter)
+      : name(std::move(name)), event(std::move(event)), share_counter(share_counter) {}
+  std::string name;           // "l1", "dram", ...
+  std::string event;          // what one event is: "test", "access", "burst", "byte"
+  const char* share_counter;  // type.T.NAME: the ray types' share of its dynamic energy
+  uint32_t instances = 0;     // datapaths, caches, slices, channels
+  double events = 0;          // over the run, all instances
+  double dynamic_pj = 0;      // over the run
+  double static_pj = 0;       // static power over the measured time
+  double area_mm2 = 0;        // all instances; 0 off chip (DRAM)
+  uint64_t sram_bytes = 0;    // SRAM arrays it holds (data and tags)
+  // Where the energy went, where it has parts (DRAM: ACT+PRE, RD, WR and I/O, dynamic;
+  // refresh and background, static).
   std::vector<std::pair<std::string, double>> parts_pj;
 };
 

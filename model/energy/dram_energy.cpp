@@ -30,6 +30,19 @@ const DramDeviceData& ddr5_4800_x8() {
   return d;
 }
 
+const DramDeviceData& ddr5_4800_x16() {
+  static const DramDeviceData d{
+      "ddr5-4800-x16",
+      "Micron MT60B 16 Gb DDR5 data sheet, -48B speed grade, x16 (IDD/IPP as transcribed in "
+      "SOURCES.md D.2)",
+      {1.1, 1.8, 122, 92, 142, 530, 479, 277, 10, 6, 7, 9, 64, 28},
+      {32 + 16.25, 16 * 0.4167 / 2, 295},
+      16 * 16,
+      16,
+      2048};  // 16 banks of 65,536 rows
+  return d;
+}
+
 const DramDeviceData& hbm2_8gb_x128() {
   static const DramDeviceData d{"hbm2-8gb-x128",
                                 "DRAMsim3 configs/HBM2_8Gb_x128.ini",
@@ -56,8 +69,8 @@ const DramDeviceData& gddr5x_8gb_x32() {
 namespace {
 
 const std::vector<const DramDeviceData*>& devices() {
-  static const std::vector<const DramDeviceData*> all = {&ddr5_4800_x8(), &hbm2_8gb_x128(),
-                                                         &gddr5x_8gb_x32()};
+  static const std::vector<const DramDeviceData*> all = {&ddr5_4800_x8(), &ddr5_4800_x16(),
+                                                         &hbm2_8gb_x128(), &gddr5x_8gb_x32()};
   return all;
 }
 

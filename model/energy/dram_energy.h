@@ -45,6 +45,7 @@ struct DramDeviceData {
   double page_bytes;  // a row: capacity / (banks x rows)
 };
 const DramDeviceData& ddr5_4800_x8();    // Micron MT60B 16 Gb x8 data sheet
+const DramDeviceData& ddr5_4800_x16();   // the same data sheet's x16 device
 const DramDeviceData& hbm2_8gb_x128();   // DRAMsim3 configs/HBM2_8Gb_x128.ini
 const DramDeviceData& gddr5x_8gb_x32();  // DRAMsim3 configs/GDDR5X_8Gb_x32.ini
 

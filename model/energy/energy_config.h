@@ -10,7 +10,7 @@ namespace rtsim {
 struct EnergyConfig {
   std::string node = "7nm";          // a process_nodes() name
   double sram_leak_mw_per_kb = 0.4;  // mW per KB of SRAM (CACTI's band: 0.4 to 2)
-  double logic_leak_share = 0.1;     // a test unit's static power over its peak dynamic power
+  double logic_leak_share = 0.1;     // test units and registers: static over peak dynamic power
   double wire_mm = 5;                // mm: how far a byte travels between an L1 and the L2
 };
 

@@ -74,8 +74,11 @@ TEST(DesignEnergy, ScalesDramCommandsFromTheDeviceToThePresetsChannel) {
   EXPECT_DOUBLE_EQ(part(dram, "refresh"), (1 + 32.0 / 16) * e.refresh_pj / 2);
   EXPECT_DOUBLE_EQ(part(dram, "io"), 120 * 32 * 8 * 6.0);
   EXPECT_EQ(dram.events, 120);
-  // Open pages: active standby for 1 ms, per channel.
-  EXPECT_NEAR(dram.static_pj, 8 * e.active_mw / 2 * 1e-3 * 1e9, 1e-3);
+  // Static: refresh, and open pages' active standby for 1 ms, per channel.
+  EXPECT_NEAR(dram.static_pj, part(dram, "refresh") + 8 * e.active_mw / 2 * 1e-3 * 1e9, 1e-3);
+  EXPECT_NEAR(part(dram, "background"), 8 * e.active_mw / 2 * 1e-3 * 1e9, 1e-3);
+  EXPECT_DOUBLE_EQ(dram.dynamic_pj, part(dram, "act_pre") + part(dram, "read") +
+                                        part(dram, "write") + part(dram, "io"));
   EXPECT_EQ(dram.area_mm2, 0) << "off chip";
 }
 
@@ -89,6 +92,9 @@ TEST(DesignEnergy, SimpleDramChargesItsBytesAtTheStreamingReadEnergy) {
   const StructureEnergy& dram = structure(d, "dram");
   DramCommandEnergy e = dram_command_energy(gddr5x_8gb_x32().currents, gddr5x_8gb_x32().times);
   EXPECT_DOUBLE_EQ(dram.dynamic_pj, 200 * e.read_pj / 2 + 6400 * 8 * 6.0);
+  // The preset's devices in the bus's share of their bandwidth: 64 B/cycle x 1.5 GHz = 96 GB/s
+  // of gddr6-16's 256.
+  EXPECT_NEAR(dram.static_pj, 8 * e.active_mw / 2 * 96.0 / 256 * 1e-3 * 1e9, 1e-3);
 }
 
 TEST(DesignEnergy, CachesChargeBitsMovedTagsAndLeakage) {
@@ -152,6 +158,9 @@ TEST(DesignEnergy, RayTypesShareEachStructuresEnergyByTheirEvents) {
   EXPECT_NEAR(doc["by_type"]["camera"]["dynamic_nj_per_ray"].get<double>(), 0.75 * box / 1000 / 10,
               1e-12);
   EXPECT_FALSE(doc["by_type"].contains("ao")) << "types without rays are left out";
+  StatsRegistry none;
+  none.counter("cycles", 1000);
+  EXPECT_TRUE(design_energy_json(design_energy(c, none))["nj_per_ray"].is_null()) << "no rays";
   EXPECT_NEAR(doc["total_nj"].get<double>(), d.total_pj() / 1000, 1e-12);
   EXPECT_NEAR(doc["mrays_per_joule"].get<double>(), 1000 / (d.total_pj() * 1e-12) / 1e6, 1e-9);
   EXPECT_NEAR(doc["power_w"].get<double>(), d.total_pj() * 1e-12 / 1e-3, 1e-12);

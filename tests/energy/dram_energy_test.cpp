@@ -22,6 +22,16 @@ TEST(DramEnergy, Ddr5CommandsFromMicronsCurrentsOnBothRails) {
   EXPECT_GT(e.act_pre_pj, 0) << "IDD3N > IDD0 on this sheet: the DRAMsim3 form goes negative";
 }
 
+TEST(DramEnergy, Ddr5X16CommandsFromTheSameSheet) {
+  const DramDeviceData& d = ddr5_4800_x16();
+  DramCommandEnergy e = dram_command_energy(d.currents, d.times);
+  expect_within(e.act_pre_pj, 1940, 0.002, "ACT+PRE (SOURCES.md D.4)");
+  expect_within(e.read_pj, 1435, 0.002, "RD");
+  expect_within(e.write_pj, 1578, 0.002, "WR");
+  EXPECT_EQ(&dram_energy_device("ddr5-4800-x16"), &d);
+  EXPECT_THROW(dram_energy_device("gddr7"), std::invalid_argument);
+}
+
 TEST(DramEnergy, Hbm2AndGddr5xCommandsFromDramsim3sCurrents) {
   DramCommandEnergy h = dram_command_energy(hbm2_8gb_x128().currents, hbm2_8gb_x128().times);
   expect_within(h.act_pre_pj, 1440, 0.002, "HBM2 ACT+PRE");

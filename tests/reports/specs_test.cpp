@@ -160,6 +160,7 @@ TEST(SweepSpec, AnObjectiveNamesAMetricAndItsBounds) {
         "line 6: at_most.area_mm2 must be a number");
   fails("[objective]\nminimise = \"cycles\"\nat_least = { nope = 1 }\n", "unknown metric 'nope'");
   fails("[objective]\nminimise = \"cycles\"\nbudget = 3\n", "unknown key 'budget'");
+  fails("[objective]\nminimise = \"cycles\"\nat_most = { \"type.*.rays\" = 1 }\n", "pick one");
 }
 
 TEST(SweepSpec, BadWorkloadsAndSettingsBlameTheSpecsLineNotAnOptionOrThePreset) {
