@@ -63,6 +63,7 @@ void print_summary(const nlohmann::ordered_json& r) {
                    ? fmt::format(" ±{}", reports::show(t["cycles_ci95"], Style::Integer))
                    : "",
                t["mrays_per_second"].get<double>(), t["clock_ghz"].get<double>());
+  if (t["caveat"].is_string()) fmt::print("caveat     {}\n", t["caveat"].get<std::string>());
   if (t["bottleneck"]["text"].is_string())
     fmt::print("limit      {}\n", t["bottleneck"]["text"].get<std::string>());
   if (r["time"].contains("shader") && r["time"]["shader"].is_object())

@@ -63,6 +63,7 @@ Json hardware_json(const ReportInputs& in) {
 Json timing_json(const FidelityResult& f, const Json& stats) {
   Json t = {{"level", fidelity_level_name(f.level)},
             {"time_model", f.time_model},
+            {"caveat", f.caveat.empty() ? Json() : Json(f.caveat)},
             {"rays", f.rays},
             {"cycles", estimate_value(f.cycles)},
             {"cycles_ci95", f.cycles.known ? Json(f.cycles.ci95) : Json()},

@@ -71,6 +71,7 @@ const std::vector<Row>& timing_rows() {
   static const std::vector<Row> rows{
       {"fidelity level", "timing.level", Style::Text, false},
       {"time model", "timing.time_model", Style::Text},
+      {"caveat", "timing.caveat", Style::Text, true, true},
       {"cycles", "timing.cycles", Style::Integer},
       {"cycles, 95% interval (±)", "timing.cycles_ci95", Style::Integer, true, true},
       {"clock (GHz)", "timing.clock_ghz", Style::Real},

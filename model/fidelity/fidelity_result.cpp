@@ -113,6 +113,7 @@ Json FidelityResult::to_json() const {
           {"strata", strata},
           {"clock_ghz", clock_ghz},
           {"time_model", time_model},
+          {"caveat", caveat.empty() ? Json() : Json(caveat)},
           {"cycles", estimate_json(cycles)},
           {"mrays_per_second", cycles.known ? Json(mrays_per_second()) : Json()},
           {"dram_bytes", estimate_json(dram_bytes)},
@@ -136,6 +137,8 @@ FidelityResult FidelityResult::from_json(const nlohmann::json& doc) {
   r.strata = doc.at("strata").get<uint32_t>();
   r.clock_ghz = doc.at("clock_ghz").get<double>();
   r.time_model = doc.at("time_model").get<std::string>();
+  if (doc.contains("caveat") && doc["caveat"].is_string())
+    r.caveat = doc["caveat"].get<std::string>();
   r.cycles = estimate_from(doc.at("cycles"));
   r.dram_bytes = estimate_from(doc.at("dram_bytes"));
   r.l1_hit_rate = estimate_from(doc.at("l1_hit_rate"));

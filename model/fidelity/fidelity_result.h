@@ -56,6 +56,7 @@ struct FidelityResult {
   uint32_t strata = 0;          // sampled level: strata (one measured window or warp each)
   double clock_ghz = 1.0;
   std::string time_model;  // how cycles were obtained (cache level: the binding bound)
+  std::string caveat;      // sampled level: why estimates may be biased, if it is known (or empty)
   Estimate cycles, dram_bytes, l1_hit_rate, l2_hit_rate, nodes_per_ray, triangles_per_ray;
   std::array<TypeEstimate, kRayTypeCount> types;
   double host_seconds = 0;  // wall time of the level's run, scene and BVH excluded

@@ -6,6 +6,8 @@
 #include <functional>
 #include <random>
 
+#include <fmt/format.h>
+
 #include "model/fidelity/ray_charge.h"
 #include "model/fidelity/l2_warming.h"
 #include "model/fidelity/ray_range_reader.h"
@@ -157,6 +159,21 @@ uint32_t scaled_units(uint32_t units, uint32_t rate) {
   return std::max(1u, uint32_t(std::lround(double(units) / double(std::max(rate, 1u)))));
 }
 
+// Why the plain scale model's L2 and DRAM figures may read low, or nothing. The whole stream
+// reads at most k times the distinct blocks the sampled warps read (a block only one warp reads
+// is drawn with odds 1 in k), so if that fits the L2 the full machine has no capacity misses
+// that lines outside the sample would cause; otherwise it may (model/fidelity/README.md).
+std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& config) {
+  double sampled = double(l2.cold_misses + l2.absent_fills) * double(block_bytes(config));
+  if (k * sampled <= double(config.size_bytes)) return {};
+  return fmt::format(
+      "L2 and DRAM figures (and cycles) may read low: the sampled warps read {:.2f} MiB of "
+      "distinct blocks, the whole stream up to {:.1f} times that ({:.1f} MiB) against an L2 of "
+      "{:.1f} MiB, and its capacity misses of lines no sampled warp reads are not counted "
+      "(--sample-method warmed counts them)",
+      sampled / 1048576, k, k * sampled / 1048576, double(config.size_bytes) / 1048576);
+}
+
 }  // namespace
 
 std::vector<uint64_t> scale_model_warps(uint64_t warps, uint32_t rate, uint32_t units,
@@ -237,6 +254,7 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   // made: the scaled units' (their DRAM bytes over the block) once, the absent units' by their
   // rays' types.
   CacheStats l2 = sim.l2_stats();
+  if (!warmed) r.caveat = capacity_caveat(k, l2, config.l2);
   double line = double(block_bytes(config.l2));
   const auto& totals = collector.totals();
   double misses = 0, accesses = 0;

@@ -3,6 +3,7 @@
 // bytes within 5%, its L1 and L2 hit rates within 1 point (rms over the seeds), its 95%
 // intervals holding the full model's cycles, DRAM bytes and hit rates for at least 90% of the
 // seeds, and at a speed-up of 20x or more.
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -150,8 +151,12 @@ void judge(std::vector<Check>& out, const Workload& w, const FidelityResult& ful
         first.ci95 * m.scale, sampled.size());
   }
   out[3].measured = double(held) / double(intervals);
-  out[3].detail = fmt::format("{} at {}: intervals that hold the full value, by metric: {}", w.name,
-                              kResolution, coverage_detail);
+  auto caveats = std::count_if(sampled.begin(), sampled.end(),
+                               [](const FidelityResult& s) { return !s.caveat.empty(); });
+  out[3].detail = fmt::format(
+      "{} at {}: intervals that hold the full value, by metric: {}; results that say their L2 "
+      "and DRAM figures may read low (caveat): {}/{}",
+      w.name, kResolution, coverage_detail, caveats, sampled.size());
   out[4].measured = full.cpu_seconds / (cpu / double(sampled.size()));
   out[4].detail =
       fmt::format("{} at {}: full model {:.2f} s CPU, sampled {:.2f} s (mean of {})", w.name,

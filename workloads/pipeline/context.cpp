@@ -22,7 +22,7 @@ Surface surface_at(const FlatTriangles& triangles, const Ray& ray, const Hit& hi
 
 Hit SceneContext::shoot_closest(RaySink& sink, const Ray& ray, uint32_t origin_prim) const {
   bool met_alpha = false;
-  Hit hit = materials.triangles.flat(embree.intersect(ray, &met_alpha));
+  Hit hit = intersect(ray, &met_alpha);
   sink.emit(ray, origin_prim, met_alpha);
   return hit;
 }

@@ -30,8 +30,10 @@ struct SceneContext {
   bool emission_is_light = false;  // emissive objects were turned into lights
 
   const ShadingMaterial& material_of(uint32_t prim) const { return materials.of(prim); }
-  // Embree's closest hit, its triangle named by flat id.
-  Hit intersect(const Ray& ray) const { return materials.triangles.flat(embree.intersect(ray)); }
+  // Embree's closest hit, its triangle named by flat id; met_alpha as EmbreeScene::intersect's.
+  Hit intersect(const Ray& ray, bool* met_alpha = nullptr) const {
+    return materials.triangles.flat(embree.intersect(ray, met_alpha));
+  }
 
   // A pass's ray, traced and put into the sink (under its current pass) with whether it met an
   // alpha-tested candidate; origin_prim as RaySink::emit takes it.
