@@ -167,9 +167,9 @@ std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& c
   double sampled = double(l2.cold_misses + l2.absent_fills) * double(block_bytes(config));
   if (k * sampled <= double(config.size_bytes)) return {};
   return fmt::format(
-      "L2 and DRAM figures (and cycles) may read low: the sampled warps read {:.2f} MiB of "
-      "distinct blocks, the whole stream up to {:.1f} times that ({:.1f} MiB) against an L2 of "
-      "{:.1f} MiB, and its capacity misses of lines no sampled warp reads are not counted "
+      "L2 and DRAM figures (and cycles) may read low: the sampled warps read {:.3g} MiB of "
+      "distinct blocks, the whole stream up to {:.3g} times that ({:.3g} MiB) against an L2 of "
+      "{:.3g} MiB, and its capacity misses of lines no sampled warp reads are not counted "
       "(--sample-method warmed counts them)",
       sampled / 1048576, k, k * sampled / 1048576, double(config.size_bytes) / 1048576);
 }
