@@ -159,10 +159,11 @@ uint32_t scaled_units(uint32_t units, uint32_t rate) {
   return std::max(1u, uint32_t(std::lround(double(units) / double(std::max(rate, 1u)))));
 }
 
-// Why the plain scale model's L2 and DRAM figures may read low, or nothing. The whole stream
-// reads at most k times the distinct blocks the sampled warps read (a block only one warp reads
-// is drawn with odds 1 in k), so if that fits the L2 the full machine has no capacity misses
-// that lines outside the sample would cause; otherwise it may (model/fidelity/README.md).
+// Why the plain scale model's L2 and DRAM figures may read low, or nothing. In expectation the
+// whole stream reads at most k times the distinct blocks the sampled warps read (a block only
+// one warp reads is drawn with odds 1 in k), so if that fits the L2 the full machine has no
+// capacity misses that lines outside the sample would cause; otherwise it may
+// (model/fidelity/README.md).
 std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& config) {
   double sampled = double(l2.cold_misses + l2.absent_fills) * double(block_bytes(config));
   if (k * sampled <= double(config.size_bytes)) return {};
