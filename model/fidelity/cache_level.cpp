@@ -20,7 +20,7 @@ struct Lane {
   Ray ray;
   TraversalState state;
   bool live = false;
-  uint32_t spilled = 0;  // stack entries held in memory, below the on-chip ones
+  StackResidency stack;  // its stack entries on chip and in memory
   double latency = 0;
   CostTotals cost;
 };
@@ -75,7 +75,7 @@ class CacheWalk {
       if (!reader.next(lane.ray)) break;
       traversal_.begin(lane.state, lane.ray);
       lane.live = true;
-      lane.spilled = 0;
+      lane.stack = {};
       lane.latency = c_.rt.setup_latency;
       lane.cost = {};
       warp.live++;
@@ -116,12 +116,12 @@ class CacheWalk {
   void step(uint32_t unit, Warp& warp, Lane& lane, uint32_t slot) {
     TraversalState& s = lane.state;
     const StackConfig& stack = c_.rt.stack;
-    uint64_t spill_region = HardwareStack::region(unit * c_.rt.warps * c_.rt.warp_size + slot);
-    if (s.stack.size() == lane.spilled && lane.spilled > 0) {
-      lane.spilled--;
-      lane.latency +=
-          read(unit, lane, spill_region + lane.spilled * stack.entry_bytes, stack.entry_bytes);
-    }
+    uint32_t context = unit * c_.rt.warps * c_.rt.warp_size + slot;
+    if (lane.stack.refill(1) > 0)  // a step pops one entry
+      lane.latency += read(
+          unit, lane, HardwareStack::entry_address(context, lane.stack.spilled, stack.entry_bytes),
+          stack.entry_bytes);
+    auto kept = uint32_t(std::max<size_t>(s.stack.size(), 1) - 1);
     s.accesses.clear();
     StepResult r = traversal_.step(s);
     if (r.kind == StepKind::Done) {
@@ -141,13 +141,10 @@ class CacheWalk {
     (node ? w.box_issues : leaf ? w.triangle_issues : w.transform_issues) += issues;
     lane.latency += tests.latency + double(issues - 1) + c_.rt.control_latency;
     w.steps++;
-    uint32_t size = uint32_t(s.stack.size());
-    lane.spilled = std::min(lane.spilled, size);
-    if (size - lane.spilled > stack.entries) {
-      uint32_t spill = size - lane.spilled - stack.entries;
-      write(unit, spill_region + lane.spilled * stack.entry_bytes, spill * stack.entry_bytes);
-      lane.spilled += spill;
-    }
+    if (uint32_t out = lane.stack.settle(kept, uint32_t(s.stack.size()), stack.entries))
+      write(unit,
+            HardwareStack::entry_address(context, lane.stack.spilled - out, stack.entry_bytes),
+            out * stack.entry_bytes);
   }
 
   void retire(Warp& warp, Lane& lane) {

@@ -74,32 +74,31 @@ void WarmingSource::warm_until(uint64_t warp) {
     uint64_t absent = l1s_.size(), unit = next_warp_ % absent;
     uint64_t slot = (unit * warps_per_unit_ + next_warp_ / absent % warps_per_unit_) * warp_size_;
     for (size_t lane = 0; lane < others_.size(); ++lane) {
-      uint64_t region = HardwareStack::region(uint32_t(own_slots_ + slot + lane));
-      fetched_[int(others_[lane].type) % kRayTypeCount] += trace(others_[lane], l1s_[unit], region);
+      auto context = uint32_t(own_slots_ + slot + lane);
+      fetched_[int(others_[lane].type) % kRayTypeCount] +=
+          trace(others_[lane], l1s_[unit], context);
     }
   }
   next_warp_ = warp + 1;
 }
 
-uint32_t WarmingSource::trace(const Ray& ray, L1Filter& l1, uint64_t region) {
-  uint32_t fetched = 0, spilled = 0;
-  auto to_l2 = [&](uint64_t addr, uint32_t bytes) { fetched += sim_->warm_l2(addr, bytes); };
+uint32_t WarmingSource::trace(const Ray& ray, L1Filter& l1, uint32_t context) {
+  uint32_t fetched = 0, bytes = stack_.entry_bytes;
+  auto to_l2 = [&](uint64_t addr, uint32_t n) { fetched += sim_->warm_l2(addr, n); };
+  StackResidency stack;
   traversal_.begin(state_, ray);
   for (;;) {
-    if (state_.stack.size() == spilled && spilled > 0)
-      sim_->warm_l2(region + --spilled * stack_.entry_bytes, stack_.entry_bytes);
+    if (stack.refill(1) > 0)  // a step pops one entry
+      sim_->warm_l2(HardwareStack::entry_address(context, stack.spilled, bytes), bytes);
+    auto kept = uint32_t(std::max<size_t>(state_.stack.size(), 1) - 1);
     state_.accesses.clear();
     StepResult r = traversal_.step(state_);
     if (r.kind == StepKind::Done) return fetched;
     for (uint32_t a = r.first_access; a < r.first_access + r.access_count; ++a)
       l1.read(state_.accesses[a].address, state_.accesses[a].bytes, to_l2);
-    auto size = uint32_t(state_.stack.size());
-    spilled = std::min(spilled, size);
-    if (size - spilled > stack_.entries) {
-      uint32_t spill = size - spilled - stack_.entries;
-      sim_->warm_l2(region + spilled * stack_.entry_bytes, spill * stack_.entry_bytes, true);
-      spilled += spill;
-    }
+    if (uint32_t out = stack.settle(kept, uint32_t(state_.stack.size()), stack_.entries))
+      sim_->warm_l2(HardwareStack::entry_address(context, stack.spilled - out, bytes), out * bytes,
+                    true);
   }
 }
 

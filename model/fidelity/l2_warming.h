@@ -59,7 +59,7 @@ class WarmingSource : public RaySource {
  private:
   void warm_until(uint64_t warp);
   // Returns the blocks the ray's reads fetched into the L2.
-  uint32_t trace(const Ray& ray, L1Filter& l1, uint64_t region);
+  uint32_t trace(const Ray& ray, L1Filter& l1, uint32_t context);  // context: its spill region
 
   const std::vector<Ray>& rays_;
   const std::vector<uint64_t>& warps_;

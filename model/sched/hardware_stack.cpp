@@ -1,7 +1,5 @@
 #include "model/sched/hardware_stack.h"
 
-#include <algorithm>
-
 namespace rtsim {
 
 std::string stack_config_problem(const StackConfig& c) {
@@ -11,25 +9,17 @@ std::string stack_config_problem(const StackConfig& c) {
 }
 
 StackTransfer HardwareStack::refill(RayContext& ray, uint32_t pops) const {
-  if (pops <= ray.resident || ray.spilled == 0) return {};
-  uint32_t need = std::min(ray.spilled, pops - ray.resident);
-  ray.spilled -= need;
-  ray.resident += need;
+  uint32_t need = ray.residency.refill(pops);
+  if (need == 0) return {};
   ray.cost.stack_refills += need;
-  return {address(ray, ray.spilled), need * config_.entry_bytes, need};
+  return {address(ray, ray.residency.spilled), need * config_.entry_bytes, need};
 }
 
 StackTransfer HardwareStack::settle(RayContext& ray, uint32_t kept, uint32_t total) const {
-  // Spilled entries are the oldest, so they survive first.
-  ray.spilled = std::min({ray.spilled, kept, total});
-  ray.resident = total - ray.spilled;
-  if (ray.resident <= config_.entries) return {};
-  uint32_t out = ray.resident - config_.entries;
-  StackTransfer write{address(ray, ray.spilled), out * config_.entry_bytes, out};
-  ray.spilled += out;
-  ray.resident = config_.entries;
+  uint32_t out = ray.residency.settle(kept, total, config_.entries);
+  if (out == 0) return {};
   ray.cost.stack_spills += out;
-  return write;
+  return {address(ray, ray.residency.spilled - out), out * config_.entry_bytes, out};
 }
 
 }  // namespace rtsim

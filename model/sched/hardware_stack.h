@@ -16,6 +16,7 @@
 #include <string>
 
 #include "model/sched/ray_context.h"
+#include "model/sched/stack_residency.h"
 
 namespace rtsim {
 
@@ -43,6 +44,10 @@ class HardwareStack {
   static constexpr uint64_t kRegionBytes = 4096;
   static constexpr uint64_t kRegionStride = kRegionBytes + 64;
   static uint64_t region(uint32_t context) { return kSpillBase + context * kRegionStride; }
+  // Where entry `entry` of a context's stack spills to (entries wrap around within the region).
+  static uint64_t entry_address(uint32_t context, uint32_t entry, uint32_t entry_bytes) {
+    return region(context) + (uint64_t(entry) * entry_bytes) % kRegionBytes;
+  }
 
   // slots_per_unit: regions per ray slot of a unit with that many slots; 0: per ray context.
   HardwareStack(const StackConfig& config, uint32_t slots_per_unit)
@@ -50,8 +55,7 @@ class HardwareStack {
 
   // A ray starts with its root entry on chip.
   void start(RayContext& ray) const {
-    ray.resident = 1;
-    ray.spilled = 0;
+    ray.residency = {};
     ray.stack_region = slots_per_unit_ ? ray.unit * slots_per_unit_ + ray.slot : ray.id;
   }
   // Before a step that pops `pops` entries: the read that brings back the spilled ones it
@@ -64,7 +68,7 @@ class HardwareStack {
 
  private:
   uint64_t address(const RayContext& ray, uint32_t entry) const {
-    return region(ray.stack_region) + (uint64_t(entry) * config_.entry_bytes) % kRegionBytes;
+    return entry_address(ray.stack_region, entry, config_.entry_bytes);
   }
   StackConfig config_;
   uint32_t slots_per_unit_;

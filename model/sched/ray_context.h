@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/mem/memory_level.h"
+#include "model/sched/stack_residency.h"
 #include "model/units/traversal.h"
 #include "traces/ray.h"
 
@@ -36,9 +37,8 @@ struct RayContext {
   Cycle ready = 0;       // earliest cycle of its next step (arrival, queue exit)
   uint32_t unit = 0, slot = 0;  // where it runs now
   uint32_t shader_warp = 0;     // the SM's warp slot that traced it (shader_core.h)
-  // Hardware stack: entries on chip (the top of the traversal stack) and spilled below them.
-  uint32_t resident = 0, spilled = 0;
-  uint32_t stack_region = 0;  // whose spill region holds its spilled entries (hardware_stack.h)
+  StackResidency residency;     // its stack's entries on chip and spilled (hardware_stack.h)
+  uint32_t stack_region = 0;    // whose spill region holds its spilled entries (hardware_stack.h)
   // Treelet mode: the treelet being traversed, the treelet of each stack entry, and the next
   // ray in the same queue.
   uint32_t treelet = 0;

@@ -282,9 +282,9 @@ std::string RtCore::dump() const {
   for (const RayContext* ray : slots_) {
     if (!ray || ++busy > max_shown) continue;
     out << "  ray " << ray->sequence << " in slot " << ray->slot << ": stack "
-        << ray->state.stack.size() << " (" << ray->resident << " on chip, " << ray->spilled
-        << " spilled), " << ray->state.counters.trav_nodes << " nodes, ready at cycle "
-        << ray->ready << "\n";
+        << ray->state.stack.size() << " (" << ray->residency.resident << " on chip, "
+        << ray->residency.spilled << " spilled), " << ray->state.counters.trav_nodes
+        << " nodes, ready at cycle " << ray->ready << "\n";
   }
   if (busy > max_shown) out << "  (" << busy - max_shown << " more rays)\n";
   return out.str();

@@ -19,8 +19,8 @@ TEST(HardwareStack, SpillsTheOldestEntriesPastTheDepth) {
   EXPECT_EQ(spill.entries, 3u);
   EXPECT_EQ(spill.bytes, 24u);
   EXPECT_EQ(spill.addr, HardwareStack::region(3)) << "the ray's own region, from its bottom";
-  EXPECT_EQ(ray.resident, 4u);
-  EXPECT_EQ(ray.spilled, 3u);
+  EXPECT_EQ(ray.residency.resident, 4u);
+  EXPECT_EQ(ray.residency.spilled, 3u);
   EXPECT_EQ(ray.cost.stack_spills, 3u);
 }
 
@@ -60,7 +60,7 @@ TEST(HardwareStack, RefillsExactlyWhatAPopNeeds) {
   StackTransfer read = stack.refill(ray, 6);
   EXPECT_EQ(read.entries, 2u) << "6 pops with 4 on chip: two come back";
   EXPECT_EQ(read.addr, HardwareStack::region(0) + 1 * 8) << "the top two spilled entries";
-  EXPECT_EQ(ray.spilled, 1u);
+  EXPECT_EQ(ray.residency.spilled, 1u);
   EXPECT_EQ(ray.cost.stack_refills, 2u);
 }
 
@@ -77,8 +77,8 @@ TEST(HardwareStack, DeepStackNeverSpillsAndClearFreesAll) {
   stack.start(ray);
   EXPECT_EQ(stack.settle(ray, 0, 40).bytes, 0u);
   stack.settle(ray, 39, 0);  // an any-hit query cleared its stack
-  EXPECT_EQ(ray.resident, 0u);
-  EXPECT_EQ(ray.spilled, 0u);
+  EXPECT_EQ(ray.residency.resident, 0u);
+  EXPECT_EQ(ray.residency.spilled, 0u);
 }
 
 }  // namespace
