@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <utility>
 
 #include <fmt/core.h>
 
@@ -99,27 +100,25 @@ Json objective_json(const SweepSpec& spec, const Json& points) {
     for (const auto& [metric, bound] : list) out[metric] = bound;
     return out;
   };
-  auto within = [&](const Json& p) {
-    for (const auto& [metric, bound] : o.at_most)
-      if (metric_of(p, metric).is_null() || metric_of(p, metric).get<double>() > bound)
-        return false;
-    for (const auto& [metric, bound] : o.at_least)
-      if (metric_of(p, metric).is_null() || metric_of(p, metric).get<double>() < bound)
-        return false;
+  auto within = [&](const Json& p) {  // sign: +1 bounds from above, -1 from below
+    for (const auto& [list, sign] : {std::pair{&o.at_most, 1.0}, std::pair{&o.at_least, -1.0}})
+      for (const auto& [metric, bound] : *list) {
+        const Json& v = metric_of(p, metric);
+        if (v.is_null() || sign * (v.get<double>() - bound) > 0) return false;
+      }
     return true;
   };
+  double direction = o.maximise ? -1 : 1;  // the pick has the least direction x metric
   Json best = Json::array();
   for (const SweepWorkload& w : spec.workloads) {
     const Json* pick = nullptr;
+    double least = 0;
     size_t measured = 0;
     for (const Json& p : points) {
       if (p["workload"] != w.name || metric_of(p, o.metric).is_null()) continue;
       ++measured;
-      if (!within(p)) continue;
-      double value = metric_of(p, o.metric).get<double>();
-      if (!pick || (o.maximise ? value > metric_of(*pick, o.metric).get<double>()
-                               : value < metric_of(*pick, o.metric).get<double>()))
-        pick = &p;
+      double value = direction * metric_of(p, o.metric).get<double>();
+      if (within(p) && (!pick || value < least)) pick = &p, least = value;
     }
     Json entry = {{"workload", w.name}};
     if (pick) {
@@ -227,11 +226,11 @@ std::vector<std::string> objective_lines(const Json& doc) {
     std::string values, bounds;
     for (const auto& [key, value] : b["values"].items())
       values += (values.empty() ? " at " : ", ") + key + "=" + csv_field(value);
-    for (const char* side : {"at_most", "at_least"})
+    for (const auto& [side, relation] : {std::pair{"at_most", "<="}, std::pair{"at_least", ">="}})
       for (const auto& [name, bound] : o[side].items())
         bounds +=
             fmt::format("; {} = {:.4g} {} {:.4g}", name, b["bounded_metrics"][name].get<double>(),
-                        side[3] == 'm' ? "<=" : ">=", bound.get<double>());
+                        relation, bound.get<double>());
     lines.push_back(fmt::format("{}{} {:.4g} ({}){} (point {}{})", line, metric,
                                 b["value"].get<double>(), o["goal"].get<std::string>(), values,
                                 b["id"].get<std::string>(), bounds));

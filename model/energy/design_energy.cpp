@@ -33,10 +33,7 @@ struct Run {
 
   double value(const std::string& name) const { return stats.value(name); }
   double units_value(const std::string& suffix) const {  // summed over the RT units
-    double sum = 0;
-    for (uint32_t i = 0; i < config.rt_units; ++i)
-      sum += stats.value("rt" + std::to_string(i) + "." + suffix);
-    return sum;
+    return stats.units_sum(config.rt_units, "." + suffix);
   }
   double over_run_pj(double mw) const { return mw * seconds * 1e9; }  // mW x s = 1e9 pJ
   double leak_pj(uint64_t sram_bytes) const {
@@ -154,10 +151,12 @@ StructureEnergy dram(const Run& run) {
   return s;
 }
 
+double type_value(const StatsRegistry& stats, int type, const char* counter) {
+  return stats.value(std::string("type.") + ray_type_name(RayType(type)) + "." + counter);
+}
+
 void split_by_type(DesignEnergy& d, const StatsRegistry& stats) {
-  for (int t = 0; t < kRayTypeCount; ++t)
-    d.type_rays[t] =
-        uint64_t(stats.value(std::string("type.") + ray_type_name(RayType(t)) + ".rays"));
+  for (int t = 0; t < kRayTypeCount; ++t) d.type_rays[t] = uint64_t(type_value(stats, t, "rays"));
   // Each structure's dynamic energy by the types' shares of its events; by their rays when no
   // type has any (a prefetch's traffic, say), so that the types share all of it.
   for (const StructureEnergy& s : d.structures) {
@@ -165,7 +164,7 @@ void split_by_type(DesignEnergy& d, const StatsRegistry& stats) {
     double all = 0;
     for (const char* counter : {s.share_counter, "rays"}) {
       for (int t = 0; t < kRayTypeCount; ++t) {
-        share[t] = stats.value(std::string("type.") + ray_type_name(RayType(t)) + "." + counter);
+        share[t] = type_value(stats, t, counter);
         all += share[t];
       }
       if (all > 0) break;
@@ -265,7 +264,7 @@ Json design_energy_json(const DesignEnergy& d) {
               {"sram_area_mm2", d.sram_area_mm2()},
               {"sram_bytes", d.sram_bytes()}};
   Json structures = Json::object();
-  for (const StructureEnergy& s : d.structures)
+  for (const StructureEnergy& s : d.structures) {
     structures[s.name] = {{"event", s.event},
                           {"instances", s.instances},
                           {"events", s.events},
@@ -274,8 +273,8 @@ Json design_energy_json(const DesignEnergy& d) {
                           {"static_nj", nj(s.static_pj)},
                           {"area_mm2", s.area_mm2},
                           {"sram_bytes", s.sram_bytes}};
-  for (const StructureEnergy& s : d.structures)
     for (const auto& [part, pj] : s.parts_pj) structures[s.name]["parts_nj"][part] = nj(pj);
+  }
   doc["structures"] = structures;
   Json types = Json::object();
   for (int t = 0; t < kRayTypeCount; ++t)

@@ -72,12 +72,6 @@ Json verify_json(const VerifyReport& v) {
           {"unexplained_examples", unexplained}};
 }
 
-double sum(const StatsRegistry& r, uint32_t units, const std::string& suffix) {
-  double total = 0;
-  for (uint32_t i = 0; i < units; ++i) total += r.value("rt" + std::to_string(i) + suffix);
-  return total;
-}
-
 // The busiest crossbar link (0 without a crossbar).
 double busiest_link(const HwConfig& c, const StatsRegistry& r) {
   double most = 0;
@@ -100,7 +94,7 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
                 {"l1_port", r.value(p + ".l1.port_utilisation")},
                 {"ray_slots", r.value(p + ".slot_occupancy")}};
   }
-  auto mean = [&](const char* suffix) { return sum(r, c.rt_units, suffix) / c.rt_units; };
+  auto mean = [&](const char* suffix) { return r.units_sum(c.rt_units, suffix) / c.rt_units; };
   Json means = {{"box", mean(".box.utilisation")},
                 {"triangle", mean(".triangle.utilisation")},
                 {"control", mean(".control.utilisation")},
@@ -189,16 +183,16 @@ Json shader_json(const HwConfig& c, const StatsRegistry& r) {
 }
 
 Json memory_json(const HwConfig& c, const StatsRegistry& r) {
-  double l1_accesses = sum(r, c.rt_units, ".l1.accesses");
+  double l1_accesses = r.units_sum(c.rt_units, ".l1.accesses");
   auto l1_share = [&](const char* counter) {
-    return l1_accesses ? sum(r, c.rt_units, counter) / l1_accesses : 0;
+    return l1_accesses ? r.units_sum(c.rt_units, counter) / l1_accesses : 0;
   };
   return {{"l1_hit_rate", l1_share(".l1.hits")},
           {"l2_hit_rate", r.value("l2.hit_rate")},
           {"l1_served_rate", l1_share(".l1.served")},
           {"l2_served_rate", r.value("l2.served_rate")},
-          {"l1_compulsory_share",
-           sum(r, c.rt_units, ".l1.cold_misses") / std::max(1.0, sum(r, c.rt_units, ".l1.misses"))},
+          {"l1_compulsory_share", r.units_sum(c.rt_units, ".l1.cold_misses") /
+                                      std::max(1.0, r.units_sum(c.rt_units, ".l1.misses"))},
           {"l2_compulsory_share", r.value("l2.compulsory_share")},
           {"dram_bytes", r.value("dram.bytes")},
           {"dram_bytes_per_ray", r.value("dram.bytes_per_ray")},
@@ -347,10 +341,10 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   doc["stack"] = {{"spill_entries", r.value("rt.stack.spill_entries")},
                   {"refill_entries", r.value("rt.stack.refill_entries")},
                   {"spills_per_ray", r.value("rt.stack.spill_entries") / rays},
-                  {"refill_l1_reads", sum(r, c.rt_units, ".l1.local_reads")},
-                  {"refill_l1_misses", sum(r, c.rt_units, ".l1.local_misses")},
+                  {"refill_l1_reads", r.units_sum(c.rt_units, ".l1.local_reads")},
+                  {"refill_l1_misses", r.units_sum(c.rt_units, ".l1.local_misses")},
                   {"refill_l2_misses", r.value("l2.local_misses")},
-                  {"l1_writeback_bytes", sum(r, c.rt_units, ".l1.writeback_bytes")},
+                  {"l1_writeback_bytes", r.units_sum(c.rt_units, ".l1.writeback_bytes")},
                   {"l2_writeback_bytes", r.value("l2.writeback_bytes")},
                   {"dram_write_bytes", r.value("dram.write_bytes")}};
   doc["verify"] = info.verify ? verify_json(*info.verify) : Json{{"skipped", true}};

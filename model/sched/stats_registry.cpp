@@ -52,6 +52,12 @@ bool StatsRegistry::has(const std::string& name) const {
   return false;
 }
 
+double StatsRegistry::units_sum(uint32_t units, const std::string& suffix) const {
+  double total = 0;
+  for (uint32_t i = 0; i < units; ++i) total += value("rt" + std::to_string(i) + suffix);
+  return total;
+}
+
 double StatsRegistry::value(const std::string& name) const {
   if (const auto* v = find(name)) return v->second;
   for (const Ratio& r : ratios_) {

@@ -30,6 +30,8 @@ class StatsRegistry {
 
   bool has(const std::string& name) const;
   double value(const std::string& name) const;  // a counter, a real or a ratio; 0 if absent
+  // The sum over RT units 0 .. units - 1 of "rtI" + suffix (suffix: ".l1.accesses", say).
+  double units_sum(uint32_t units, const std::string& suffix) const;
   // {"counters": {...}, "derived": {...}}, each in the order added.
   nlohmann::ordered_json to_json() const;
 
