@@ -99,6 +99,7 @@ nlohmann::json simulate(const BenchSimOptions& o, const HwConfig& config, BvhVie
                           {"rays", sim.rays()},
                           {"cycles", sim.cycles()},
                           {"dram_bytes", stats.value("dram.bytes")},
+                          {"l2_requests", stats.value("l2.accesses") + stats.value("l2.writes")},
                           {"peak_rss_mib", peak_rss_mib()}};
     return out.dump();
   });
@@ -164,9 +165,11 @@ int run_bench_sim(const BenchSimOptions& o) {
   double seconds = sim["seconds"].get<double>(), cpu = sim["cpu_seconds"].get<double>();
   double n = sim["rays"].get<double>();
   fmt::print(
-      "sim        {:.3f} s wall, {:.3f} s CPU ({:.0f} rays per CPU second), {} cycles, "
-      "{:.0f} DRAM B/ray, child peak memory {:.0f} MiB\n",
-      seconds, cpu, n / cpu, sim["cycles"].get<uint64_t>(), sim["dram_bytes"].get<double>() / n,
+      "sim        {:.0f} rays, {:.3f} s wall, {:.3f} s CPU ({:.0f} rays per CPU second), {} "
+      "cycles, "
+      "{:.0f} DRAM B/ray, {:.0f} L2 requests ({:.1f}/ray), child peak memory {:.0f} MiB\n",
+      n, seconds, cpu, n / cpu, sim["cycles"].get<uint64_t>(), sim["dram_bytes"].get<double>() / n,
+      sim["l2_requests"].get<double>(), sim["l2_requests"].get<double>() / n,
       sim["peak_rss_mib"].get<double>());
   if (!o.no_embree)
     fmt::print(

@@ -43,6 +43,13 @@ tlm::tlm_sync_enum BankedDramModule::nb_transport_fw(tlm::tlm_generic_payload& t
   return tlm::TLM_UPDATED;
 }
 
+void BankedDramModule::request(uint64_t addr, uint32_t bytes, bool write, Cycle at,
+                               ReadClient* client, uint64_t token) {
+  if (!write) client_ = client;
+  controller_.enqueue(token, addr, bytes, write, at);
+  arm();
+}
+
 void BankedDramModule::arm() {
   Cycle next = controller_.next_event();
   if (next == kPending || next + 1 + slack_ >= armed_) return;
@@ -57,6 +64,10 @@ void BankedDramModule::decide() {
   done_.clear();
   controller_.advance(cycle - 1, done_);
   for (const DramReadDone& d : done_) {
+    if (client_) {
+      client_->read_done(d.id, std::max(d.ready, cycle), {});
+      continue;
+    }
     auto& trans = *reinterpret_cast<tlm::tlm_generic_payload*>(d.id);
     tlm::tlm_phase phase = tlm::BEGIN_RESP;
     sc_core::sc_time delay = clock_.time(std::max(d.ready, cycle)) - now;

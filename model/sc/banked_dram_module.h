@@ -1,6 +1,9 @@
-// The banked DRAM (model/mem/dram_controller.h) as a TLM-2.0 target speaking the
-// approximately-timed base protocol, bound below the shared L2 where the simple DRAM's
-// loosely-timed target binds.
+// The banked DRAM (model/mem/dram_controller.h) below the shared L2: connected by call
+// (QueuedMemory: the L2's fast path, SharedCacheModule::connect_memory), or as a TLM-2.0 target
+// speaking the approximately-timed base protocol, bound where the simple DRAM's loosely-timed
+// target binds.
+// By call, a request is queued at once and a read's data cycle reported to its client when the
+// controller has scheduled it, under the timing rules below.
 // Protocol. A read or write comes as BEGIN_REQ through nb_transport_fw, dated by its delay;
 // the target queues it and answers END_REQ at once (TLM_UPDATED; its queues back-pressure
 // inside, so END_REQ is never held back). A write is then complete (posted; TLM_COMPLETED). A
@@ -27,9 +30,9 @@
 
 namespace rtsim {
 
-class BankedDramModule : public sc_core::sc_module {
+class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
  public:
-  tlm_utils::simple_target_socket<BankedDramModule> in;
+  tlm_utils::simple_target_socket_optional<BankedDramModule> in;  // unbound: used by call
 
   SC_HAS_PROCESS(BankedDramModule);
   // Throws std::invalid_argument for an impossible config.
@@ -43,6 +46,9 @@ class BankedDramModule : public sc_core::sc_module {
   void set_response_lead(uint32_t lead);
   uint32_t max_response_lead() const;
   Cycle next_event() const { return controller_.next_event(); }
+  // By call (QueuedMemory); a module takes its requests by call or through `in`, not both.
+  void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, ReadClient* client,
+               uint64_t token) override;
 
  private:
   tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
@@ -56,6 +62,7 @@ class BankedDramModule : public sc_core::sc_module {
   uint32_t slack_ = 0;      // cycles a decision may be taken late
   Cycle armed_ = kPending;  // the cycle wake_ is notified for
   std::vector<DramReadDone> done_;
+  ReadClient* client_ = nullptr;  // by call: whom reads answer (one requester, the L2)
 };
 
 }  // namespace rtsim

@@ -44,10 +44,9 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
   } else if (config.dram_model == DramModel::Banked) {
     banked_dram_ =
         std::make_unique<BankedDramModule>("dram", config.banked_dram, clock_, config.clock_ghz);
-    l2_->out.bind(banked_dram_->in);
     // A lead beyond what the L2's window needs would only wake the DRAM more often.
     banked_dram_->set_response_lead(l2_->lookahead());
-    l2_->use_timed_memory(banked_dram_->response_lead());
+    l2_->connect_memory(*banked_dram_, banked_dram_->response_lead());
   } else {
     dram_ = std::make_unique<DramModule>("dram", config.dram, clock_);
     l2_->out.bind(dram_->in);
@@ -82,7 +81,7 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
                                                     control_, &footprints_, config.shader));
     units_.back()->l1.cache().track_cold_misses(bvh_begin, bvh_end);
     units_.back()->supply.bind(*supply);
-    units_.back()->l1.out.bind(l2_->in);
+    units_.back()->l1.connect(*l2_);
   }
   watchdog_ = std::make_unique<StallWatchdog>(
       "watchdog", config.sim.stall_cycles, clock_, control_, [this] { return next_delivery(); },

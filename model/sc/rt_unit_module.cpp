@@ -10,7 +10,7 @@ RtUnitModule::RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCo
                            const TreeletFootprints* footprints, const ShaderConfig& shader)
     : sc_module(name),
       supply("supply"),
-      l1("l1", l1_config, clock, [this] { arm_at(core_.take_data_event()); }),
+      l1("l1", l1_config, [this] { arm_at(core_.take_data_event()); }),
       clock_(clock),
       quantum_(std::max<uint32_t>(quantum_cycles, 1)),
       control_(control),

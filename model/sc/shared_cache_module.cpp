@@ -42,7 +42,14 @@ SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheCo
 }
 
 void SharedCacheModule::end_of_elaboration() {
-  crossbar_.add_units(uint32_t(in.size()));
+  if (!memory_ && out.size() == 0)
+    throw std::logic_error(std::string(name()) + ": no memory below (bind out or connect one)");
+  crossbar_.add_units(uint32_t(connected_.size() + in.size()));
+}
+
+uint32_t SharedCacheModule::connect(std::function<void()> on_response) {
+  connected_.push_back(std::move(on_response));
+  return uint32_t(connected_.size() - 1);
 }
 
 uint32_t SharedCacheModule::slice_of(uint64_t addr) const {
@@ -82,6 +89,11 @@ void SharedCacheModule::use_timed_memory(uint32_t lead) {
   window_ = std::min(lead + 1, lookahead_);
 }
 
+void SharedCacheModule::connect_memory(QueuedMemory& memory, uint32_t lead) {
+  memory_ = &memory;
+  use_timed_memory(lead);
+}
+
 void SharedCacheModule::add_job(const Job& job, Cycle at) {
   uint32_t id;
   if (free_jobs_.empty()) {
@@ -98,6 +110,32 @@ void SharedCacheModule::add_job(const Job& job, Cycle at) {
   wake_.notify(clock_.delay_to(at));
 }
 
+void SharedCacheModule::request(uint32_t port, JobKind kind, uint64_t addr, uint32_t bytes,
+                                Cycle at, ReadClient* client, uint64_t token) {
+  bool write = kind == JobKind::Write;
+  Job job;
+  job.kind = kind;
+  job.port = port;
+  job.slice = slice_of(addr);
+  job.addr = addr;
+  job.bytes = bytes;
+  job.client = client;
+  job.token = token;
+  Cycle sent = std::max(at, clock_.cycles(sim_now()));
+  Cycle arrives =
+      crossbar_.to_slice(port, job.slice, sent, write ? bytes : Crossbar::kRequestBytes);
+  // During serve() an L1 may send a miss that waited for an MSHR freed by a response: dated at
+  // or after the job being served, it joins the calendar in order. From outside, a request
+  // dated inside the window already served breaks the requesters' promise.
+  if (!serving_ && arrives < served_until_)
+    throw std::logic_error(std::string(name()) + ": a request dated cycle " +
+                           std::to_string(arrives) + " came after cycle " +
+                           std::to_string(served_until_) +
+                           " was served: its requester breaks the lookahead of " +
+                           std::to_string(lookahead_) + " cycles");
+  add_job(job, arrives);
+}
+
 tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
                                                       tlm::tlm_phase& phase,
                                                       sc_core::sc_time& delay) {
@@ -107,27 +145,9 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_fw(int port, tlm::tlm_generic
     trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
     return tlm::TLM_COMPLETED;
   }
-  Job job;
-  job.kind = write ? JobKind::Write : JobKind::Read;
-  job.port = port;
-  job.slice = slice_of(trans.get_address());
-  job.trans = write ? nullptr : &trans;
-  // Looked up now, while the initiator's transaction is in the host's cache.
-  job.charge_out = write ? nullptr : trans.get_extension<ReadChargeExtension>();
-  job.addr = trans.get_address();
-  job.bytes = trans.get_data_length();
-  Cycle sent = clock_.cycles(sim_now() + delay);
-  Cycle at = crossbar_.to_slice(uint32_t(port), job.slice, sent,
-                                write ? job.bytes : Crossbar::kRequestBytes);
-  // During serve() an L1 may send a miss that waited for an MSHR freed by a response: dated at
-  // or after the job being served, it joins the calendar in order. From outside, a request
-  // dated inside the window already served breaks the initiators' promise.
-  if (!serving_ && at < served_until_)
-    throw std::logic_error(std::string(name()) + ": a request dated cycle " + std::to_string(at) +
-                           " came after cycle " + std::to_string(served_until_) +
-                           " was served: its initiator breaks the lookahead of " +
-                           std::to_string(lookahead_) + " cycles");
-  add_job(job, at);
+  request(uint32_t(connected_.size() + port), write ? JobKind::Write : JobKind::Read,
+          trans.get_address(), trans.get_data_length(), clock_.cycles(sim_now() + delay), nullptr,
+          reinterpret_cast<uint64_t>(&trans));
   if (write) {
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
     return tlm::TLM_COMPLETED;
@@ -177,6 +197,18 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
       return;
     case JobKind::DramRead: {
       free_jobs_.push_back(id);
+      if (memory_) {
+        uint32_t read;
+        if (free_below_reads_.empty()) {
+          read = uint32_t(below_reads_.size());
+          below_reads_.push_back({job.client, job.token});
+        } else {
+          read = free_below_reads_.back();
+          free_below_reads_.pop_back();
+          below_reads_[read] = {job.client, job.token};
+        }
+        return memory_->request(job.addr, job.bytes, false, at, &answers_, read);
+      }
       if (timed_below_) return send_timed(job, at);
       ReadClient* client = job.client;
       uint64_t token = job.token;
@@ -186,6 +218,7 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
     }
     case JobKind::DramWrite:
       free_jobs_.push_back(id);
+      if (memory_) return memory_->request(job.addr, job.bytes, true, at, nullptr, 0);
       if (timed_below_) return send_timed(job, at);
       send_below(tlm::TLM_WRITE_COMMAND, job.addr, job.bytes, at);
       return;
@@ -225,16 +258,19 @@ void SharedCacheModule::read_done(uint64_t job, Cycle ready, const ReadCharge& c
 }
 
 void SharedCacheModule::respond(uint32_t id, Cycle ready) {
-  const Job& job = jobs_[id];
-  tlm::tlm_generic_payload& trans = *job.trans;
-  int port = job.port;
-  if (job.charge_out) job.charge_out->charge = job.charge;
+  const Job job = jobs_[id];
+  free_jobs_.push_back(id);  // the answer may add jobs
+  Cycle arrived = crossbar_.to_unit(job.slice, job.port, ready, job.bytes);
+  if (job.port < connected_.size()) {
+    job.client->read_done(job.token, arrived, job.charge);
+    connected_[job.port]();
+    return;
+  }
+  auto& trans = *reinterpret_cast<tlm::tlm_generic_payload*>(job.token);
   trans.set_response_status(tlm::TLM_OK_RESPONSE);
-  Cycle arrived = crossbar_.to_unit(job.slice, uint32_t(port), ready, job.bytes);
-  free_jobs_.push_back(id);  // the response below may add jobs
   tlm::tlm_phase phase = tlm::BEGIN_RESP;
   sc_core::sc_time delay = clock_.time(arrived) - stamp_;  // serve() runs at stamp_
-  in[port]->nb_transport_bw(trans, phase, delay);
+  in[int(job.port - connected_.size())]->nb_transport_bw(trans, phase, delay);
 }
 
 void SharedCacheModule::prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command,
@@ -301,11 +337,20 @@ tlm::tlm_sync_enum SharedCacheModule::nb_transport_bw(tlm::tlm_generic_payload& 
 
 void SharedCacheModule::below_done(BelowTransaction& t, Cycle ready) {
   below_free_.push_back(&t);
-  if (!t.client) return;  // a write's response
+  if (t.client) answer_below(t.client, t.token, ready);  // else a write's response
+}
+
+void SharedCacheModule::MemoryAnswers::read_done(uint64_t read, Cycle ready, const ReadCharge&) {
+  BelowRead r = l2.below_reads_[read];
+  l2.free_below_reads_.push_back(uint32_t(read));
+  l2.answer_below(r.client, r.token, ready);
+}
+
+void SharedCacheModule::answer_below(ReadClient* client, uint64_t token, Cycle ready) {
   Job job;
   job.kind = JobKind::DramDone;
-  job.client = t.client;
-  job.token = t.token;
+  job.client = client;
+  job.token = token;
   // Outside serve(), a response dated inside the window already served (a memory that answers
   // with less lead than the window) is served now, in order with what it starts there.
   bool late = !serving_ && ready < served_until_;

@@ -1,23 +1,28 @@
 // The shared L2 as an sc_module that serves its requests in simulated-time order: the crossbar
 // from the RT units' L1s (model/mem/crossbar.h) and the L2's address-hashed slices behind it.
-// Initiators (the RT units' L1s, model/sc/tlm_memory.h) bind to `in` and send TLM-2.0
-// approximately-timed transactions: BEGIN_REQ dated by its delay, answered END_REQ at once
-// (the request queue has no bound); the response is BEGIN_RESP, sent as soon as the data's
-// cycle is known (a hit: when the request is served; a miss: when the DRAM has answered),
-// with a delay saying when the data is ready. Writes are posted (completed on the request).
+// Requests come by function call from connected requesters (the RT units' L1s,
+// model/sc/tlm_memory.h: connect) or as TLM-2.0 approximately-timed transactions from initiators
+// bound to `in` (an adapter for outside models): BEGIN_REQ dated by its delay, answered END_REQ
+// at once (the request queue has no bound). Either way a request becomes one small record (a
+// Job) in the module's calendar. The answer to a read is sent as soon as the data's cycle is
+// known (a hit: when the request is served; a miss: when the DRAM has answered), dated by the
+// data's cycle: its client's read_done for a connected requester, BEGIN_RESP with a delay for
+// a TLM initiator. Writes are posted (a TLM write completes on the request).
 // Why a queue: units run up to a quantum ahead of simulated time and an L1 miss that waited for
 // an MSHR leaves later than it was made, so requests arrive out of time order. The module
 // holds them in an event calendar and serves each at its own cycle, when simulated time
 // reaches it; the cache (model/mem/cache.h) and the DRAM below therefore see every request in
 // non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
-// The DRAM is reached through `out`, at the request's own cycle, in one of two protocols. By
-// default the base protocol's blocking transport (loosely timed), so any loosely-timed TLM
-// memory can be bound there. After use_timed_memory(lead), the approximately-timed one (the
-// banked DRAM, model/sc/banked_dram_module.h, or a DRAMSys-class model): BEGIN_REQ through
-// nb_transport_fw, and the data's cycle in the delay of BEGIN_RESP, sent at least `lead` cycles
-// before it (0: at that cycle). The module then serves at most lead + 1 cycles ahead, so a
-// response is never dated before a job already served; one dated inside the window already
-// served is served at once, with what it starts there, in cycle order.
+// The DRAM is reached at the request's own cycle, by call or through `out`. By call
+// (connect_memory): the banked DRAM (model/sc/banked_dram_module.h) as a QueuedMemory, which
+// reports each read's data cycle at least `lead` cycles before it. Through `out`, in one of two
+// protocols: by default the base protocol's blocking transport (loosely timed), so any
+// loosely-timed TLM memory can be bound there; after use_timed_memory(lead), the approximately-
+// timed one (a DRAMSys-class model): BEGIN_REQ through nb_transport_fw, and the data's cycle in
+// the delay of BEGIN_RESP, sent at least `lead` cycles before it (0: at that cycle). With a
+// lead the module serves at most lead + 1 cycles ahead, so an answer is never dated before a
+// job already served; one dated inside the window already served is served at once, with what
+// it starts there, in cycle order.
 // A request crosses the crossbar to its slice (slice_of: a hash of the line address; a request
 // must not span lines, as an L1's blocks and line-by-line writes never do) when it
 // arrives, and is queued for the cycle it reaches the slice; its data crosses back when its
@@ -54,8 +59,12 @@ namespace rtsim {
 
 class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, private ReadClient {
  public:
-  tlm_utils::multi_passthrough_target_socket<SharedCacheModule> in;
-  tlm_utils::simple_initiator_socket<SharedCacheModule> out;
+  // TLM initiators bound here (none, or any number) take the crossbar ports after the connected
+  // requesters'.
+  tlm_utils::multi_passthrough_target_socket<SharedCacheModule, 32, tlm::tlm_base_protocol_types, 0,
+                                             sc_core::SC_ZERO_OR_MORE_BOUND>
+      in;
+  tlm_utils::simple_initiator_socket_optional<SharedCacheModule> out;  // unbound: connect_memory
 
   SC_HAS_PROCESS(SharedCacheModule);
   // on_error receives what serving a request threw (a failed DRAM access); without it the
@@ -65,6 +74,18 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   SharedCacheModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
                     const L2Layout& layout = {}, uint32_t lookahead = 0,
                     std::function<void(std::exception_ptr)> on_error = {});
+  // Connects a requester that calls read_request and write_request (before the simulation);
+  // returns its port. After each read's answer (its client's read_done) on_response runs.
+  uint32_t connect(std::function<void()> on_response);
+  // A read of `bytes` at `addr` sent from `port` at cycle `at` (or now, if that is later): its
+  // data's cycle is reported to client->read_done(token, ...), never during this call.
+  void read_request(uint32_t port, uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
+                    uint64_t token) {
+    request(port, JobKind::Read, addr, bytes, at, client, token);
+  }
+  void write_request(uint32_t port, uint64_t addr, uint32_t bytes, Cycle at) {
+    request(port, JobKind::Write, addr, bytes, at, nullptr, 0);
+  }
   uint32_t slice_count() const { return uint32_t(slices_.size()); }
   const Cache& slice(uint32_t i) const { return *slices_[i]; }
   uint32_t slice_of(uint64_t addr) const;
@@ -79,6 +100,9 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   // Before the simulation starts: the memory bound to `out` speaks the approximately-timed
   // protocol and sends BEGIN_RESP at least `lead` cycles before the data's cycle.
   void use_timed_memory(uint32_t lead);
+  // Before the simulation starts: the memory below is `memory`, by call (`out` stays unbound);
+  // it answers reads at least `lead` cycles before their data's cycle.
+  void connect_memory(QueuedMemory& memory, uint32_t lead);
   // Cycles ahead of simulated time its initiators date their requests, at the least.
   uint32_t lookahead() const { return lookahead_; }
   Cycle next_job() const { return events_.empty() ? kPending : events_.next_cycle(); }
@@ -90,20 +114,24 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
     ReadClient* client = nullptr;
     uint64_t token = 0;
   };
+  // One request record. Read: who waits (a connected requester's client and token; from a TLM
+  // initiator, its transaction as the token); DramRead: the slice's miss.
   struct Job {
     JobKind kind = JobKind::Read;
-    int port = 0;
+    uint32_t port = 0;
     uint32_t slice = 0;
-    tlm::tlm_generic_payload* trans = nullptr;  // Read: the initiator's transaction
-    ReadChargeExtension* charge_out = nullptr;  // and its charge extension, if it has one
-    uint64_t addr = 0;
     uint32_t bytes = 0;
-    ReadClient* client = nullptr;  // DramRead: the cache, and its token
+    uint64_t addr = 0;
+    ReadClient* client = nullptr;
     uint64_t token = 0;
     ReadCharge charge;
   };
 
-  void end_of_elaboration() override;  // gives the crossbar a port per bound initiator
+  // Gives the crossbar a port per requester; a module with no memory below is a wiring error.
+  void end_of_elaboration() override;
+  // A request from `port` sent at `at`: crosses to its slice and joins the calendar.
+  void request(uint32_t port, JobKind kind, uint64_t addr, uint32_t bytes, Cycle at,
+               ReadClient* client, uint64_t token);
   tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
                                      tlm::tlm_phase& phase, sc_core::sc_time& delay);
   // Below the cache: its misses and writes become DRAM accesses at their own cycle.
@@ -127,14 +155,31 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
                                      sc_core::sc_time& delay);
   void below_done(BelowTransaction& t, Cycle ready);  // a read's data at `ready`
+  // A read's data from below at `ready`, for `client` (a slice) and its token: a DramDone job.
+  void answer_below(ReadClient* client, uint64_t token, Cycle ready);
+  // What a QueuedMemory below answers: the pending read (below_reads_) its token names.
+  struct MemoryAnswers : ReadClient {
+    explicit MemoryAnswers(SharedCacheModule& l2) : l2(l2) {}
+    void read_done(uint64_t read, Cycle ready, const ReadCharge&) override;
+    SharedCacheModule& l2;
+  };
+  struct BelowRead {
+    ReadClient* client;
+    uint64_t token;
+  };
 
   Clock clock_;
   uint32_t lookahead_;  // at least 1: the initiators' promise
   uint32_t window_;     // a wake-up at cycle c serves what is dated before c + it (<= lookahead_)
   bool timed_below_ = false;
+  QueuedMemory* memory_ = nullptr;  // the memory below, by call (else `out`)
+  MemoryAnswers answers_{*this};
+  std::vector<BelowRead> below_reads_;
+  std::vector<uint32_t> free_below_reads_;
   std::vector<std::unique_ptr<BelowTransaction>> below_pool_;
   std::vector<BelowTransaction*> below_free_;
   std::function<void(std::exception_ptr)> on_error_;
+  std::vector<std::function<void()>> connected_;  // per connected port: its on_response
   std::vector<std::unique_ptr<Cache>> slices_;
   uint32_t line_shift_ = 0;
   Crossbar crossbar_;

@@ -1,9 +1,9 @@
-// TLM-2.0 modules of the memory hierarchy's ends: an RT unit's L1 (the initiator of the
-// approximately-timed requests to the shared L2, model/sc/shared_cache_module.h) and the DRAM
-// (a loosely-timed target, which the L2 calls in simulated-time order; another loosely-timed
-// TLM memory model can be bound in its place).
+// The memory hierarchy's ends as modules: an RT unit's L1, which sends its misses and writes to
+// the shared L2 (model/sc/shared_cache_module.h) by function call, and the simple DRAM as a
+// loosely-timed TLM-2.0 target (which the L2 calls in simulated-time order; another
+// loosely-timed TLM memory model can be bound in its place).
 // Only addresses and lengths matter: the functional model reads BVH data itself, so targets do
-// not fill data buffers. No module has a thread: a transaction is a function call chain.
+// not fill data buffers. No module has a thread: a request is a function call chain.
 #pragma once
 
 #include <functional>
@@ -12,7 +12,6 @@
 
 #include <systemc>
 #include <tlm>
-#include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/simple_target_socket.h>
 
 #include "model/mem/cache.h"
@@ -21,51 +20,30 @@
 
 namespace rtsim {
 
-// Carried by the L1's read transactions: what the read cost below the L1, filled in by a
-// target that knows (the shared L2); a foreign target may ignore it.
-struct ReadChargeExtension : tlm::tlm_extension<ReadChargeExtension> {
-  ReadCharge charge;
-  tlm::tlm_extension_base* clone() const override { return new ReadChargeExtension(*this); }
-  void copy_from(const tlm::tlm_extension_base& other) override {
-    charge = static_cast<const ReadChargeExtension&>(other).charge;
-  }
-};
+class SharedCacheModule;
 
-// An RT unit's L1. The unit reads it by a direct call (it is the unit's own); its misses leave
-// through `out` as AT transactions (BEGIN_REQ dated by the TLM delay; the data's cycle comes
-// back as BEGIN_RESP, possibly well before that cycle, its delay saying when), and so do its
-// posted writes. on_response runs after each response, so the owner can wake up.
+// An RT unit's L1. The unit reads it by a direct call (it is the unit's own); its misses and
+// posted writes go to the shared L2 it is connected to (connect), also by call, as request
+// records the L2 serves in time order; the L2 answers each read through its client's
+// read_done and then calls on_response, so the owner can wake up.
 class L1Module : public sc_core::sc_module, private MemoryTarget {
  public:
-  tlm_utils::simple_initiator_socket<L1Module> out;
-
-  L1Module(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
+  L1Module(sc_core::sc_module_name name, const CacheConfig& config,
            std::function<void()> on_response = {});
+  // Before the simulation starts: the L2 below this L1 (one of its requester ports).
+  void connect(SharedCacheModule& l2);
   Cache& cache() { return cache_; }
   const Cache& cache() const { return cache_; }
 
  private:
-  struct Transaction : tlm::tlm_generic_payload {
-    ReadClient* client = nullptr;  // null: a posted write
-    uint64_t token = 0;
-    ReadChargeExtension* charge = nullptr;
-  };
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
              ReadCharge& charge) override;
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
-  // Sends a transaction; true if the target completed it at once (delay then says when).
-  bool send(Transaction& t, tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at,
-            sc_core::sc_time& delay);
-  tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
-                                     sc_core::sc_time& delay);
-  Transaction& take();
-  void give_back(Transaction& t) { free_.push_back(&t); }
+  void before_end_of_elaboration() override;  // an unconnected L1 is a wiring error
 
-  Clock clock_;
   std::function<void()> on_response_;
-  std::vector<std::unique_ptr<Transaction>> pool_;
-  std::vector<Transaction*> free_;
-  std::vector<unsigned char> scratch_;
+  SharedCacheModule* l2_ = nullptr;
+  uint32_t port_ = 0;
   Cache cache_;
 };
 

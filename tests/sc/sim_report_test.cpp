@@ -91,8 +91,8 @@ struct Writer : sc_core::sc_module {
   test::RecordingClient client;
   uint32_t bytes;
   SC_HAS_PROCESS(Writer);
-  Writer(sc_core::sc_module_name name, const Clock& clock, uint32_t bytes)
-      : sc_module(name), l1("l1", CacheConfig{1024, 64, 2, "lru", 2, 4}, clock), bytes(bytes) {
+  Writer(sc_core::sc_module_name name, uint32_t bytes)
+      : sc_module(name), l1("l1", CacheConfig{1024, 64, 2, "lru", 2, 4}), bytes(bytes) {
     SC_METHOD(run);
   }
   void run() {
@@ -106,10 +106,10 @@ struct Writer : sc_core::sc_module {
 std::string write_then_read(uint32_t bytes) {
   return run_in_child([bytes] {
     Clock clock;
-    Writer writer("writer", clock, bytes);
+    Writer writer("writer", bytes);
     SharedCacheModule l2("l2", CacheConfig{4096, 64, 4, "lru", 10, 4}, clock);
     DramModule dram("dram", DramConfig{16.0, 100, 8}, clock);
-    writer.l1.out.bind(l2.in);
+    writer.l1.connect(l2);
     l2.out.bind(dram.in);
     sc_core::sc_start();
     const CacheStats& s1 = writer.l1.cache().stats();

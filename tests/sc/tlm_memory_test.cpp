@@ -1,7 +1,7 @@
-// The memory hierarchy as SystemC modules: L1 -> shared L2 -> DRAM through TLM-2.0 sockets
-// (approximately timed between L1 and L2, loosely timed to the DRAM), requests served in time
-// order, the configured latency sums, DRAM bandwidth under load, and a foreign loosely-timed
-// TLM memory bound where the DRAM would be.
+// The memory hierarchy as SystemC modules: L1 -> shared L2 (connected by call, or a TLM-2.0
+// approximately-timed initiator at its socket) -> DRAM (loosely or approximately timed TLM),
+// requests served in time order, the configured latency sums, DRAM bandwidth under load, and a
+// foreign loosely-timed TLM memory bound where the DRAM would be.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -127,8 +127,9 @@ TEST(TlmMemory, AThirdPartyTimedTargetAnswersBelowTheL2AtItsOwnCycles) {
 
 // The banked DRAM below the L2: one channel, DRAM clock = core clock (1 GHz), so a first read
 // is the L2's tag check, ACT, tRCD, two RDs tCCD_L apart (a 64-byte line is two 32-byte bursts
-// of one bank), tCL and the second burst, and the controller latency.
-TEST(TlmMemory, TheBankedDramSpeaksTheTimedProtocol) {
+// of one bank), tCL and the second burst, and the controller latency. The same answers through
+// the approximately-timed protocol and by call (the simulator's own connection).
+void expect_banked_dram_timing(bool by_call) {
   Clock clock;
   BankedDramConfig config;
   config.clock_mhz = 1000;
@@ -138,8 +139,12 @@ TEST(TlmMemory, TheBankedDramSpeaksTheTimedProtocol) {
   SharedCacheModule l2("l2", l2_config(10, 8), clock, {}, 20);
   BankedDramModule dram("dram", config, clock, 1.0);
   cpu.out.bind(l2.in);
-  l2.out.bind(dram.in);
-  l2.use_timed_memory(dram.response_lead());
+  if (by_call) {
+    l2.connect_memory(dram, dram.response_lead());
+  } else {
+    l2.out.bind(dram.in);
+    l2.use_timed_memory(dram.response_lead());
+  }
   cpu.script = {{0x0, 10}, {0x1000, 500}};  // the second: the same bank and row
   sc_core::sc_start();
   const DramTiming& t = config.timing;
@@ -148,6 +153,14 @@ TEST(TlmMemory, TheBankedDramSpeaksTheTimedProtocol) {
   EXPECT_EQ(cpu.ready[1], 500u + 10 + t.tCL + bursts + config.controller_latency) << "a row hit";
   EXPECT_EQ(dram.controller().stats().row_hits, 3u) << "the second burst of each line hits too";
   EXPECT_EQ(dram.controller().stats().row_misses, 1u);
+}
+
+TEST(TlmMemory, TheBankedDramSpeaksTheTimedProtocol) {
+  expect_banked_dram_timing(false);
+}
+
+TEST(TlmMemory, TheBankedDramConnectedByCallAnswersAlike) {
+  expect_banked_dram_timing(true);
 }
 
 TEST(TlmMemory, ManyIndependentMissesSaturateTheDramBandwidth) {
@@ -197,8 +210,8 @@ struct L1Requester : sc_core::sc_module {
   std::vector<ReadCharge> charge;
   test::RecordingClient client;
   SC_HAS_PROCESS(L1Requester);
-  L1Requester(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock)
-      : sc_module(name), l1("l1", config, clock) {
+  L1Requester(sc_core::sc_module_name name, const CacheConfig& config)
+      : sc_module(name), l1("l1", config) {
     SC_THREAD(run);
   }
   void run() {
@@ -228,19 +241,19 @@ TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   dram_config.bytes_per_cycle = 16;
   dram_config.latency = 100;
 
-  L1Requester cpu("cpu", l1, clock), other("other", l1, clock);
+  L1Requester cpu("cpu", l1), other("other", l1);
   SharedCacheModule l2("l2", l2_config(10, 8), clock);
   DramModule dram("dram", dram_config, clock);
-  cpu.l1.out.bind(l2.in);
-  other.l1.out.bind(l2.in);
+  cpu.l1.connect(l2);
+  other.l1.connect(l2);
   l2.out.bind(dram.in);
   cpu.script = {{0x1000, 0}, {0x1000, 200}};
   other.script = {{0x1000, 300}};
 
-  L1Requester foreign_cpu("foreign_cpu", l1, clock);
+  L1Requester foreign_cpu("foreign_cpu", l1);
   SharedCacheModule foreign_l2("foreign_l2", l2_config(10, 8), clock);
   FixedLatencyMemory foreign("foreign");
-  foreign_cpu.l1.out.bind(foreign_l2.in);
+  foreign_cpu.l1.connect(foreign_l2);
   foreign_l2.out.bind(foreign.in);
   foreign_cpu.script = {{0x40, 5}};
 
