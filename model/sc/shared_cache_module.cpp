@@ -95,16 +95,7 @@ void SharedCacheModule::connect_memory(QueuedMemory& memory, uint32_t lead) {
 }
 
 void SharedCacheModule::add_job(const Job& job, Cycle at) {
-  uint32_t id;
-  if (free_jobs_.empty()) {
-    id = uint32_t(jobs_.size());
-    jobs_.push_back(job);
-  } else {
-    id = free_jobs_.back();
-    free_jobs_.pop_back();
-    jobs_[id] = job;
-  }
-  events_.push(at, id);
+  events_.push(at, job);
   if (serving_ || at >= armed_) return;  // serve() arms wake_, or an earlier wake is pending
   armed_ = at;
   wake_.notify(clock_.delay_to(at));
@@ -166,7 +157,7 @@ void SharedCacheModule::serve_window() {
   try {
     stamp_ = sim_now();
     serving_ = true;
-    EventQueue::Event e;
+    Calendar<Job>::Event e;
     while (events_.pop_before(served_until_, e)) run_job(e.item, e.cycle);
     serving_ = false;
     if (!events_.empty() && events_.next_cycle() < armed_) {  // wake for the next job
@@ -180,23 +171,25 @@ void SharedCacheModule::serve_window() {
   }
 }
 
-void SharedCacheModule::run_job(uint32_t id, Cycle at) {
-  const Job& job = jobs_[id];  // read before anything that may add jobs (and move jobs_)
+void SharedCacheModule::run_job(const Job& job, Cycle at) {
   switch (job.kind) {
     case JobKind::Read: {
+      // The slice reports a miss's data later, never during the read: the record is kept under
+      // the id its read was given only if it missed.
+      uint32_t id = free_missed_.empty() ? uint32_t(missed_.size()) : free_missed_.back();
       ReadCharge charge;
-      Cache& slice = *slices_[job.slice];
-      Cycle ready = slice.read(job.addr, job.bytes, at, this, id, charge);
-      jobs_[id].charge += charge;
-      if (ready != kPending) respond(id, ready);
+      Cycle ready = slices_[job.slice]->read(job.addr, job.bytes, at, this, id, charge);
+      if (ready != kPending) return respond(job, ready, charge);
+      if (id == missed_.size()) {
+        missed_.push_back({job, charge});
+      } else {
+        free_missed_.pop_back();
+        missed_[id] = {job, charge};
+      }
       return;
     }
-    case JobKind::Write:
-      free_jobs_.push_back(id);
-      slices_[job.slice]->write(job.addr, job.bytes, at);
-      return;
+    case JobKind::Write: return slices_[job.slice]->write(job.addr, job.bytes, at);
     case JobKind::DramRead: {
-      free_jobs_.push_back(id);
       if (memory_) {
         uint32_t read;
         if (free_below_reads_.empty()) {
@@ -210,25 +203,15 @@ void SharedCacheModule::run_job(uint32_t id, Cycle at) {
         return memory_->request(job.addr, job.bytes, false, at, &answers_, read);
       }
       if (timed_below_) return send_timed(job, at);
-      ReadClient* client = job.client;
-      uint64_t token = job.token;
       Cycle ready = send_below(tlm::TLM_READ_COMMAND, job.addr, job.bytes, at);
-      client->read_done(token, ready, {});
-      return;
+      return job.client->read_done(job.token, ready, {});
     }
     case JobKind::DramWrite:
-      free_jobs_.push_back(id);
       if (memory_) return memory_->request(job.addr, job.bytes, true, at, nullptr, 0);
       if (timed_below_) return send_timed(job, at);
       send_below(tlm::TLM_WRITE_COMMAND, job.addr, job.bytes, at);
       return;
-    case JobKind::DramDone: {
-      free_jobs_.push_back(id);
-      ReadClient* client = job.client;
-      uint64_t token = job.token;
-      client->read_done(token, at, {});
-      return;
-    }
+    case JobKind::DramDone: return job.client->read_done(job.token, at, {});
   }
 }
 
@@ -252,17 +235,17 @@ void SharedCacheModule::write(uint64_t addr, uint32_t bytes, Cycle at) {
   add_job(job, at);
 }
 
-void SharedCacheModule::read_done(uint64_t job, Cycle ready, const ReadCharge& charge) {
-  jobs_[job].charge += charge;
-  respond(uint32_t(job), ready);
+void SharedCacheModule::read_done(uint64_t missed, Cycle ready, const ReadCharge& charge) {
+  MissedRead m = missed_[missed];
+  free_missed_.push_back(uint32_t(missed));  // the answer may add jobs
+  m.charge += charge;
+  respond(m.job, ready, m.charge);
 }
 
-void SharedCacheModule::respond(uint32_t id, Cycle ready) {
-  const Job job = jobs_[id];
-  free_jobs_.push_back(id);  // the answer may add jobs
+void SharedCacheModule::respond(const Job& job, Cycle ready, const ReadCharge& charge) {
   Cycle arrived = crossbar_.to_unit(job.slice, job.port, ready, job.bytes);
   if (job.port < connected_.size()) {
-    job.client->read_done(job.token, arrived, job.charge);
+    job.client->read_done(job.token, arrived, charge);
     connected_[job.port]();
     return;
   }

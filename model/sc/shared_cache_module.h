@@ -114,8 +114,9 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
     ReadClient* client = nullptr;
     uint64_t token = 0;
   };
-  // One request record. Read: who waits (a connected requester's client and token; from a TLM
-  // initiator, its transaction as the token); DramRead: the slice's miss.
+  // One request record, kept in the calendar itself. Read: who waits (a connected requester's
+  // client and token; from a TLM initiator, its transaction as the token); DramRead: the slice's
+  // miss.
   struct Job {
     JobKind kind = JobKind::Read;
     uint32_t port = 0;
@@ -124,6 +125,11 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
     uint64_t addr = 0;
     ReadClient* client = nullptr;
     uint64_t token = 0;
+  };
+  // A read that missed in its slice, until the slice reports its data: its record, and what it
+  // has cost so far.
+  struct MissedRead {
+    Job job;
     ReadCharge charge;
   };
 
@@ -138,12 +144,12 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
              ReadCharge& charge) override;
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
-  void read_done(uint64_t job, Cycle ready, const ReadCharge& charge) override;
+  void read_done(uint64_t missed, Cycle ready, const ReadCharge& charge) override;
 
   void serve();
   void serve_window();  // every job dated before served_until_, in order, at this stamp
-  void run_job(uint32_t id, Cycle at);
-  void respond(uint32_t id, Cycle ready);
+  void run_job(const Job& job, Cycle at);
+  void respond(const Job& job, Cycle ready, const ReadCharge& charge);
   void add_job(const Job& job, Cycle at);
   // A transaction below of `bytes` at `addr` (the data is a scratch buffer: timing only).
   void prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command, uint64_t addr,
@@ -183,9 +189,9 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   std::vector<std::unique_ptr<Cache>> slices_;
   uint32_t line_shift_ = 0;
   Crossbar crossbar_;
-  EventQueue events_;  // job ids at their cycles
-  std::vector<Job> jobs_;
-  std::vector<uint32_t> free_jobs_;
+  Calendar<Job> events_;  // the jobs at their cycles
+  std::vector<MissedRead> missed_;
+  std::vector<uint32_t> free_missed_;
   sc_core::sc_event wake_;
   Cycle armed_ = kPending;  // the cycle wake_ is notified for (kPending: none)
   Cycle served_until_ = 0;  // every job dated before it has been served
