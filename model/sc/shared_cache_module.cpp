@@ -44,7 +44,11 @@ SharedCacheModule::SharedCacheModule(sc_core::sc_module_name name, const CacheCo
 void SharedCacheModule::end_of_elaboration() {
   if (!memory_ && out.size() == 0)
     throw std::logic_error(std::string(name()) + ": no memory below (bind out or connect one)");
-  crossbar_.add_units(uint32_t(connected_.size() + in.size()));
+}
+
+// After every socket has completed its binding at the end of elaboration.
+void SharedCacheModule::start_of_simulation() {
+  crossbar_.add_units(uint32_t(connected_.size()) + in.bound());
 }
 
 uint32_t SharedCacheModule::connect(std::function<void()> on_response) {

@@ -59,11 +59,18 @@ namespace rtsim {
 
 class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, private ReadClient {
  public:
+  // The TLM adapter's socket, which can tell how many initiators are bound to it (its size()
+  // counts one when none is).
+  struct InitiatorSocket
+      : tlm_utils::multi_passthrough_target_socket<SharedCacheModule, 32,
+                                                   tlm::tlm_base_protocol_types, 0,
+                                                   sc_core::SC_ZERO_OR_MORE_BOUND> {
+    using multi_passthrough_target_socket::multi_passthrough_target_socket;
+    uint32_t bound() const { return uint32_t(m_sockets.size()); }  // after elaboration
+  };
   // TLM initiators bound here (none, or any number) take the crossbar ports after the connected
   // requesters'.
-  tlm_utils::multi_passthrough_target_socket<SharedCacheModule, 32, tlm::tlm_base_protocol_types, 0,
-                                             sc_core::SC_ZERO_OR_MORE_BOUND>
-      in;
+  InitiatorSocket in;
   tlm_utils::simple_initiator_socket_optional<SharedCacheModule> out;  // unbound: connect_memory
 
   SC_HAS_PROCESS(SharedCacheModule);
@@ -133,8 +140,8 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
     ReadCharge charge;
   };
 
-  // Gives the crossbar a port per requester; a module with no memory below is a wiring error.
-  void end_of_elaboration() override;
+  void end_of_elaboration() override;   // a module with no memory below is a wiring error
+  void start_of_simulation() override;  // gives the crossbar a port per requester
   // A request from `port` sent at `at`: crosses to its slice and joins the calendar.
   void request(uint32_t port, JobKind kind, uint64_t addr, uint32_t bytes, Cycle at,
                ReadClient* client, uint64_t token);

@@ -200,6 +200,7 @@ TEST(TlmMemory, TheCrossbarAddsItsLatencyBothWaysAndItsPortsBoundTheBandwidth) {
   uint32_t used = 0;
   for (uint32_t i = 0; i < 4; ++i) used += bench.l2.slice(i).stats().accesses > 0;
   EXPECT_EQ(used, 4u) << "lines hash over all slices";
+  EXPECT_EQ(bench.l2.crossbar().units(), 1u) << "one port, the bound TLM initiator's";
 }
 
 // Reads through an L1 from a thread at given cycles; records each read's ready cycle.
@@ -271,6 +272,7 @@ TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   EXPECT_EQ(other.charge[0].l2_hits, 1u);
   EXPECT_EQ(l2.stats().misses, 1u);
   EXPECT_EQ(dram.dram().stats().bytes, 64u);
+  EXPECT_EQ(l2.crossbar().units(), 2u) << "a port per connected L1, none for the unbound socket";
 
   ASSERT_EQ(foreign_cpu.ready.size(), 1u);
   EXPECT_EQ(foreign_cpu.ready[0], 5u + 2 + 10 + 50) << "the foreign memory's 50 ns, through TLM";
