@@ -54,7 +54,7 @@ RayTypeMask selected_ray_types(const SimOptions& o, const StreamHeader& header) 
   return mask;
 }
 
-// A Markdown table, as model/SIM.md shows it.
+// A Markdown table, as model/SIM-REFERENCE.md shows it.
 void print_keys() {
   fmt::print("| key | type | default | unit | description |\n|---|---|---|---|---|\n");
   for (const HwConfigKey& k : hw_config_keys())

@@ -1,8 +1,8 @@
 // The hardware config of a simulation: the RT units, their caches and test units, the shared
 // L2 and DRAM, the ray dispatcher, the treelet queues and the BVH the hardware traverses. The
 // TOML nesting follows the module tree (rt.l1 is each RT unit's L1). Every key is read in one
-// place, read_hw_config() in hw_config.cpp, with its default, unit and description; model/SIM.md
-// lists them all, and `rtsim sim --list-keys` prints them.
+// place, read_hw_config() in hw_config.cpp, with its default, unit and description;
+// model/SIM-REFERENCE.md lists them all, and `rtsim sim --list-keys` prints them.
 #pragma once
 
 #include <string>
@@ -68,7 +68,7 @@ CacheConfig l1_as_built(const HwConfig& config);
 // Bytes of the treelet queues' SRAM ray buffer (0 outside treelet mode and in memory).
 uint64_t ray_buffer_sram_bytes(const HwConfig& config);
 
-// One key's documentation (for SIM.md and --list-keys).
+// One key's documentation (for model/SIM-REFERENCE.md and --list-keys).
 struct HwConfigKey {
   std::string key, type, default_value, unit, description;
 };

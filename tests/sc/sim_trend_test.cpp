@@ -1,8 +1,8 @@
-// The Aila & Karras (HPG 2010) study of model/SIM.md on a small machine: treelet queues cut the
-// DRAM traffic of diffuse rays only while their ray states cost nothing. Held in an SRAM, the
-// states' bytes as extra L2 serve depth-first traversal better; spilled to memory, the states
-// move more bytes than the queues save, and the run slows down. (The Conference, Sponza and
-// Sibenik figures are in model/SIM.md: scripts/treelet-study.)
+// The Aila & Karras (HPG 2010) study of model/sched/README.md on a small machine: treelet queues
+// cut the DRAM traffic of diffuse rays only while their ray states cost nothing. Held in an SRAM,
+// the states' bytes as extra L2 serve depth-first traversal better; spilled to memory, the
+// states move more bytes than the queues save, and the run slows down. (scripts/treelet-study
+// prints the Conference, Sponza and Sibenik figures.)
 #include <gtest/gtest.h>
 
 #include "tests/sc/sim_test_util.h"

@@ -1,6 +1,6 @@
 // The hardware config: presets load, every key has a default, unit and description and is
-// documented in model/SIM.md, bad input is one clear error naming the file, line and key, and
-// --set overrides any key.
+// documented in model/SIM-REFERENCE.md, bad input is one clear error naming the file, line and
+// key, and --set overrides any key.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -57,14 +57,15 @@ TEST(HwConfig, PresetsDifferWhereTheyShould) {
 }
 
 TEST(HwConfig, EveryKeyIsDocumented) {
-  std::ifstream in(RTSIM_SOURCE_DIR "/model/SIM.md");
+  std::ifstream in(RTSIM_SOURCE_DIR "/model/SIM-REFERENCE.md");
   std::stringstream doc;
   doc << in.rdbuf();
   std::vector<HwConfigKey> keys = hw_config_keys();
   EXPECT_GT(keys.size(), 40u);
   for (const HwConfigKey& k : keys) {
     EXPECT_FALSE(k.description.empty()) << k.key;
-    EXPECT_NE(doc.str().find("`" + k.key + "`"), std::string::npos) << k.key << " in SIM.md";
+    EXPECT_NE(doc.str().find("`" + k.key + "`"), std::string::npos)
+        << k.key << " in SIM-REFERENCE.md";
   }
 }
 
