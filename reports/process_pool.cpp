@@ -1,6 +1,7 @@
 #include "reports/process_pool.h"
 
 #include <fcntl.h>
+#include <sched.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -121,6 +122,10 @@ CommandOutput run_command(const std::vector<std::string>& argv) {
 }
 
 uint32_t local_cores() {
+  // The CPUs this process may run on: a taskset, container or Slurm cpuset gives fewer than the
+  // machine has, and points beyond them only take turns.
+  cpu_set_t cpus;
+  if (sched_getaffinity(0, sizeof cpus, &cpus) == 0) return uint32_t(std::max(1, CPU_COUNT(&cpus)));
   return std::max(1u, std::thread::hardware_concurrency());
 }
 

@@ -40,7 +40,7 @@ struct CommandOutput {
 // Runs argv (argv[0] a full path) to its end and returns what it printed.
 CommandOutput run_command(const std::vector<std::string>& argv);
 
-// Local cores (at least 1).
+// Local cores (at least 1): the CPUs this process may run on (its affinity mask).
 uint32_t local_cores();
 
 // Runs every job, at most `parallel` at once; done(index, exit code, wall seconds) is called in
