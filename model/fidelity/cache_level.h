@@ -12,6 +12,7 @@
 // from the roofline of analytic_time.h.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "model/bvh/two_level.h"
@@ -21,8 +22,17 @@
 
 namespace rtsim {
 
-// bounds (optional) receives every resource's lower bound.
+// Sees what the RT units' L1s send to the L2, block by block (the L2's block: its sector, or its
+// line), in the order the walk sends it: reads of the blocks the L1s missed, and writes (the
+// L1s' write-backs of stack spills, or every spill with a write-through L1).
+class L2ReferenceSink {
+ public:
+  virtual ~L2ReferenceSink() = default;
+  virtual void reference(uint64_t addr, bool write) = 0;
+};
+
+// bounds (optional) receives every resource's lower bound; sink (optional) the L2's references.
 FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std::string& stream,
-                               AnalyticTime* bounds = nullptr);
+                               AnalyticTime* bounds = nullptr, L2ReferenceSink* sink = nullptr);
 
 }  // namespace rtsim
