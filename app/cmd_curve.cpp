@@ -14,6 +14,7 @@
 #include "app/commands.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/cache_curve.h"
+#include "model/sc/sim_report.h"
 #include "reports/charts.h"
 #include "reports/curve_report.h"
 #include "reports/phase_progress.h"
