@@ -44,11 +44,14 @@ uint64_t parse_size(const std::string& text, const std::string& option) {
     used = 0;
   }
   std::string unit = text.substr(used);
-  uint64_t scale = unit.empty() ? 1 : unit == "K" ? 1 << 10 : unit == "M" ? 1 << 20
-                                   : unit == "G"  ? 1 << 30 : 0;
+  uint64_t scale = unit.empty()  ? 1
+                   : unit == "K" ? 1 << 10
+                   : unit == "M" ? 1 << 20
+                   : unit == "G" ? 1 << 30
+                                 : 0;
   if (used == 0 || scale == 0 || value == 0)
-    throw InputError(fmt::format("curve: {}: '{}' is not a size (256K, 4M, 1G or bytes)", option,
-                                 text));
+    throw InputError(
+        fmt::format("curve: {}: '{}' is not a size (256K, 4M, 1G or bytes)", option, text));
   return value * scale;
 }
 
@@ -107,7 +110,8 @@ int run_curve(const CurveOptions& o) {
     if (curve.points[i].ways == request.ways.front()) first.push_back(i);
   std::vector<size_t> runs;
   if (at_knee) {
-    auto k = size_t(std::find(first.begin(), first.end(), curve_knee(curve, first)) - first.begin());
+    auto k =
+        size_t(std::find(first.begin(), first.end(), curve_knee(curve, first)) - first.begin());
     for (size_t i = k > 0 ? k - 1 : 0; i <= std::min(k + 1, first.size() - 1); ++i)
       runs.push_back(first[i]);
   }

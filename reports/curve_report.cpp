@@ -58,7 +58,8 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
   double rays = double(std::max<uint64_t>(curve.rays, 1));
   std::map<uint32_t, std::vector<size_t>> by_ways;
   for (size_t i = 0; i < curve.points.size(); ++i) by_ways[curve.points[i].ways].push_back(i);
-  nlohmann::ordered_json knees = nlohmann::ordered_json::array(), points = nlohmann::ordered_json::array();
+  nlohmann::ordered_json knees = nlohmann::ordered_json::array(),
+                         points = nlohmann::ordered_json::array();
   std::vector<bool> knee(curve.points.size(), false);
   for (const auto& [ways, indices] : by_ways) {
     size_t k = curve_knee(curve, indices);
@@ -79,7 +80,8 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
                                 {"dram_bytes_per_ray_ci95", p.dram_bytes_ci95 / rays},
                                 {"knee", bool(knee[i])},
                                 {"cycles_from", cycles_from_name(p.cycles_from)}};
-    j["cycles"] = p.cycles_from == CurvePoint::Cycles::Unknown ? nlohmann::json() : nlohmann::json(p.cycles);
+    j["cycles"] =
+        p.cycles_from == CurvePoint::Cycles::Unknown ? nlohmann::json() : nlohmann::json(p.cycles);
     j["cycle_run"] = p.has_cycle_run ? cycle_run_json(p, rays) : nlohmann::ordered_json();
     points.push_back(j);
   }
@@ -89,11 +91,12 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
                          ? fmt::format("miniature caches, 1 line in {}", curve.sample_rate)
                          : std::string("exact LRU stack distances per set")},
           {"sample_rate", curve.sample_rate},
-          {"pass", {{"rays", curve.rays},
-                    {"l2_reads", curve.l2_reads},
-                    {"l2_writes", curve.l2_writes},
-                    {"block_bytes", curve.block_bytes},
-                    {"cpu_seconds", curve.cpu_seconds}}},
+          {"pass",
+           {{"rays", curve.rays},
+            {"l2_reads", curve.l2_reads},
+            {"l2_writes", curve.l2_writes},
+            {"block_bytes", curve.block_bytes},
+            {"cpu_seconds", curve.cpu_seconds}}},
           {"knees", knees},
           {"points", points}};
 }
@@ -112,15 +115,16 @@ std::string curve_table(const nlohmann::ordered_json& doc, bool markdown) {
     }
     const auto& run = p["cycle_run"];
     bool ran = !run.is_null();
-    rows.push_back(
-        {size_text(p["capacity_bytes"].get<uint64_t>()), std::to_string(p["ways"].get<uint32_t>()),
-         miss, dram, p["knee"].get<bool>() ? "knee" : "",
-         p["cycles"].is_null() ? "-" : fmt::format("{:.0f}", p["cycles"].get<double>()),
-         p["cycles_from"].get<std::string>(), ran ? percent(run["miss_ratio"], 100, "{:.2f}%") : "-",
-         ran ? percent(run["dram_bytes_per_ray"], 1, "{:.1f}") : "-",
-         ran ? percent(run["miss_ratio_error_pp"], 1, "{:+.2f} pp") : "-",
-         ran ? percent(run["dram_bytes_error"], 100, "{:+.2f}%") : "-",
-         ran ? percent(run["interpolation_error"], 100, "{:+.2f}%") : "-"});
+    rows.push_back({size_text(p["capacity_bytes"].get<uint64_t>()),
+                    std::to_string(p["ways"].get<uint32_t>()), miss, dram,
+                    p["knee"].get<bool>() ? "knee" : "",
+                    p["cycles"].is_null() ? "-" : fmt::format("{:.0f}", p["cycles"].get<double>()),
+                    p["cycles_from"].get<std::string>(),
+                    ran ? percent(run["miss_ratio"], 100, "{:.2f}%") : "-",
+                    ran ? percent(run["dram_bytes_per_ray"], 1, "{:.1f}") : "-",
+                    ran ? percent(run["miss_ratio_error_pp"], 1, "{:+.2f} pp") : "-",
+                    ran ? percent(run["dram_bytes_error"], 100, "{:+.2f}%") : "-",
+                    ran ? percent(run["interpolation_error"], 100, "{:+.2f}%") : "-"});
   }
   std::vector<size_t> width(rows[0].size(), 0);
   for (const auto& r : rows)
@@ -128,8 +132,7 @@ std::string curve_table(const nlohmann::ordered_json& doc, bool markdown) {
   std::string out;
   for (size_t i = 0; i < rows.size(); ++i) {
     for (size_t c = 0; c < rows[i].size(); ++c)
-      out += markdown ? "| " + rows[i][c] + " "
-                      : fmt::format("{:<{}}  ", rows[i][c], width[c]);
+      out += markdown ? "| " + rows[i][c] + " " : fmt::format("{:<{}}  ", rows[i][c], width[c]);
     out += markdown ? "|\n" : "\n";
     if (markdown && i == 0) {
       for (size_t c = 0; c < rows[i].size(); ++c) out += "|---";
@@ -150,16 +153,15 @@ std::string curve_csv(const nlohmann::ordered_json& doc) {
   for (const auto& p : doc["points"]) {
     const auto& run = p["cycle_run"];
     auto of_run = [&](const char* key) { return run.is_null() ? std::string() : number(run[key]); };
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
-                       p["capacity_bytes"].get<uint64_t>(), p["ways"].get<uint32_t>(),
-                       p["sets_per_slice"].get<uint64_t>(), p["l2_reads"].get<uint64_t>(),
-                       number(p["misses"]), number(p["writebacks"]), number(p["miss_ratio"]),
-                       number(p["miss_ratio_ci95"]), number(p["dram_bytes_per_ray"]),
-                       number(p["dram_bytes_per_ray_ci95"]), p["knee"].get<bool>() ? 1 : 0,
-                       number(p["cycles"]), p["cycles_from"].get<std::string>(),
-                       of_run("miss_ratio"), of_run("dram_bytes_per_ray"),
-                       of_run("miss_ratio_error_pp"), of_run("dram_bytes_error"),
-                       of_run("interpolation_error"));
+    out += fmt::format(
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
+        p["capacity_bytes"].get<uint64_t>(), p["ways"].get<uint32_t>(),
+        p["sets_per_slice"].get<uint64_t>(), p["l2_reads"].get<uint64_t>(), number(p["misses"]),
+        number(p["writebacks"]), number(p["miss_ratio"]), number(p["miss_ratio_ci95"]),
+        number(p["dram_bytes_per_ray"]), number(p["dram_bytes_per_ray_ci95"]),
+        p["knee"].get<bool>() ? 1 : 0, number(p["cycles"]), p["cycles_from"].get<std::string>(),
+        of_run("miss_ratio"), of_run("dram_bytes_per_ray"), of_run("miss_ratio_error_pp"),
+        of_run("dram_bytes_error"), of_run("interpolation_error"));
   }
   return out;
 }

@@ -41,8 +41,8 @@ class CurveSink : public L2ReferenceSink {
     for (uint32_t ways : request.ways)
       for (uint64_t capacity : request.capacities) {
         if (request.sample_rate > 1) {
-          minis.push_back(std::make_unique<MiniCache>(l2_at(c, capacity, ways),
-                                                      c.l2_layout.slices, request.sample_rate));
+          minis.push_back(std::make_unique<MiniCache>(l2_at(c, capacity, ways), c.l2_layout.slices,
+                                                      request.sample_rate));
           continue;
         }
         sets.sets_per_slice = sets_per_slice(c, capacity, ways);

@@ -38,9 +38,9 @@ struct CurvePoint {
   uint64_t capacity = 0;  // bytes
   uint32_t ways = 0;
   uint64_t sets_per_slice = 0;
-  uint64_t reads = 0;        // L2 block reads (exact: every reference is counted)
-  double misses = 0;         // block reads that miss (sampled: estimated)
-  double writebacks = 0;     // dirty blocks written to DRAM
+  uint64_t reads = 0;     // L2 block reads (exact: every reference is counted)
+  double misses = 0;      // block reads that miss (sampled: estimated)
+  double writebacks = 0;  // dirty blocks written to DRAM
   double miss_ratio = 0, miss_ratio_ci95 = 0;
   double dram_bytes = 0, dram_bytes_ci95 = 0;  // fetched plus written back
   // Cycles: simulated by the full model here, interpolated from the nearest simulated points,

@@ -101,7 +101,8 @@ MiniEstimate MiniCache::estimate(bool with_writebacks) const {
   if (sx == 0) return {};
   long double r = (long double)sy / sx;
   long double ss = n > 1 ? (syy - 2 * r * sxy + r * r * sxx) / (n - 1) : 0;
-  long double variance = (1 - 1.0L / rate_) * std::max<long double>(ss, 0) * n / ((long double)sx * sx);
+  long double variance =
+      (1 - 1.0L / rate_) * std::max<long double>(ss, 0) * n / ((long double)sx * sx);
   return {double(r), double(1.96L * std::sqrt(variance))};
 }
 

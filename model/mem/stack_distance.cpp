@@ -9,7 +9,9 @@ namespace rtsim {
 
 namespace {
 
-bool power_of_two(uint64_t v) { return v && !(v & (v - 1)); }
+bool power_of_two(uint64_t v) {
+  return v && !(v & (v - 1));
+}
 
 }  // namespace
 
@@ -49,8 +51,8 @@ void LruStackSets::drop(const Entry& entry) {
 void LruStackSets::reference(uint64_t addr, bool write) {
   uint64_t line = addr >> line_shift_;
   uint32_t block = uint32_t((addr >> block_shift_) & (blocks_per_line_ - 1));
-  uint64_t set = slice_of_line(line, sets_.slices) * sets_.sets_per_slice +
-                 line % sets_.sets_per_slice;
+  uint64_t set =
+      slice_of_line(line, sets_.slices) * sets_.sets_per_slice + line % sets_.sets_per_slice;
   Entry* stack = &stacks_[set * max_ways_];
   uint32_t held = filled_[set], depth = 0;
   while (depth < held && stack[depth].line != line) ++depth;

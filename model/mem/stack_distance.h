@@ -28,10 +28,10 @@ namespace rtsim {
 
 // Where the lines of the L2 live: slices and sets per slice; blocks are sectors of lines.
 struct L2Sets {
-  uint32_t line_bytes = 128;     // bytes: line size, a power of two
-  uint32_t block_bytes = 32;     // bytes: what a miss fetches (a sector, or the line)
-  uint32_t slices = 1;           // count: address-hashed slices
-  uint64_t sets_per_slice = 1;   // count: sets in each slice
+  uint32_t line_bytes = 128;    // bytes: line size, a power of two
+  uint32_t block_bytes = 32;    // bytes: what a miss fetches (a sector, or the line)
+  uint32_t slices = 1;          // count: address-hashed slices
+  uint64_t sets_per_slice = 1;  // count: sets in each slice
 };
 
 class LruStackSets {

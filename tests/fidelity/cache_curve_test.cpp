@@ -43,7 +43,7 @@ TEST(CacheCurve, RefusesCapacitiesWithoutWholeSets) {
   HwConfig config = load_hw_config("", {"l2.slices=4", "l2.line_bytes=128", "l2.ways=16"});
   EXPECT_EQ(curve_request_problem(config, {{8192 * 4}, {16}, 1}), "");
   EXPECT_NE(curve_request_problem(config, {{8192 * 3 + 128}, {16}, 1}), "");
-  EXPECT_NE(curve_request_problem(config, {{4096}, {16}, 1}), "");  // under one set a slice
+  EXPECT_NE(curve_request_problem(config, {{4096}, {16}, 1}), "");       // under one set a slice
   EXPECT_NE(curve_request_problem(config, {{8192 * 4}, {16}, 32}), "");  // 16 sets, 1 in 32
 }
 
