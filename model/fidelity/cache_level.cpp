@@ -166,6 +166,11 @@ class CacheWalk {
     uint64_t issues = (std::max<uint32_t>(r.tests, 1) + tests.issue_width - 1) / tests.issue_width;
     (node ? w.box_issues : leaf ? w.triangle_issues : w.transform_issues) += issues;
     lane.latency += tests.latency + double(issues - 1) + c_.rt.control_latency;
+    double texels = 0;  // any-hit calls read their texels after the test, all at once
+    for (uint64_t addr : s.texels)
+      texels = std::max(texels, read(unit, lane, addr, c_.rt.anyhit.read_bytes));
+    s.texels.clear();
+    lane.latency += texels;
     w.steps++;
     if (uint32_t out = lane.stack.settle(kept, uint32_t(s.stack.size()), stack.entries))
       write(unit,

@@ -5,8 +5,10 @@
 // round, so the caches see the interleaving of many rays in flight as the hardware does. A
 // warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
 // per-ray traversal here (their scheduling changes the order, which only the cycle level has).
-// Stack spills and refills follow the on-chip depth roughly (entries beyond rt.stack.entries
-// spill; an empty on-chip stack with spilled entries refills one entry through the L1).
+// Any-hit calls read their texels through the L1 after the triangle test, as the cycle model's
+// RT core does. Stack spills and refills follow the on-chip depth roughly (entries beyond
+// rt.stack.entries spill; an empty on-chip stack with spilled entries refills one entry
+// through the L1).
 // Each ray's latency is the sum over its steps of the memory latency of its fetch (L1 hit, L2
 // hit, or DRAM), the test unit latency and issues, and the control latency; the cycles come
 // from the roofline of analytic_time.h.
