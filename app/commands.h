@@ -24,6 +24,7 @@ void add_sim_command(CLI::App& app, int& exit_code);
 void add_bench_sim_command(CLI::App& app, int& exit_code);
 void add_multi_device_command(CLI::App& app, int& exit_code);
 void add_speed_vs_error_command(CLI::App& app, int& exit_code);
+void add_curve_command(CLI::App& app, int& exit_code);
 void add_run_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);

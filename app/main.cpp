@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   rtsim::app::add_bench_sim_command(app, exit_code);
   rtsim::app::add_multi_device_command(app, exit_code);
   rtsim::app::add_speed_vs_error_command(app, exit_code);
+  rtsim::app::add_curve_command(app, exit_code);
   rtsim::app::add_run_command(app, exit_code);
   rtsim::app::add_report_command(app, exit_code);
   rtsim::app::add_sweep_command(app, exit_code);

@@ -25,6 +25,31 @@ struct Lane {
   CostTotals cost;
 };
 
+// Between the L1s and the L2: tells the sink each block the L1s send, then passes it on.
+class L2Tap : public MemoryTarget {
+ public:
+  L2Tap(Cache& l2, L2ReferenceSink* sink) : l2_(l2), sink_(sink) {}
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+             ReadCharge& charge) override {
+    tell(addr, bytes, false);
+    return l2_.read(addr, bytes, at, client, token, charge);
+  }
+  void write(uint64_t addr, uint32_t bytes, Cycle at) override {
+    tell(addr, bytes, true);
+    l2_.write(addr, bytes, at);
+  }
+
+ private:
+  void tell(uint64_t addr, uint32_t bytes, bool write) {
+    if (!sink_) return;
+    uint64_t block = l2_.block_bytes();
+    for (uint64_t b = addr / block; b <= (addr + std::max<uint32_t>(bytes, 1) - 1) / block; ++b)
+      sink_->reference(b * block, write);
+  }
+  Cache& l2_;
+  L2ReferenceSink* sink_;
+};
+
 struct Warp {
   std::vector<Lane> lanes;
   uint32_t live = 0;
@@ -33,14 +58,15 @@ struct Warp {
 
 class CacheWalk {
  public:
-  CacheWalk(const HwConfig& config, BvhView image)
+  CacheWalk(const HwConfig& config, BvhView image, L2ReferenceSink* sink)
       : c_(config),
         traversal_(image),
         dram_(config.dram),
         dram_target_(dram_),
-        l2_(config.l2, &dram_target_) {
+        l2_(config.l2, &dram_target_),
+        tap_(l2_, sink) {
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
-      l1_.push_back(std::make_unique<Cache>(l1_as_built(c_), &l2_, CacheRole::L1));
+      l1_.push_back(std::make_unique<Cache>(l1_as_built(c_), &tap_, CacheRole::L1));
       units_.emplace_back(c_.rt.warps);
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }
@@ -140,6 +166,11 @@ class CacheWalk {
     uint64_t issues = (std::max<uint32_t>(r.tests, 1) + tests.issue_width - 1) / tests.issue_width;
     (node ? w.box_issues : leaf ? w.triangle_issues : w.transform_issues) += issues;
     lane.latency += tests.latency + double(issues - 1) + c_.rt.control_latency;
+    double texels = 0;  // any-hit calls read their texels after the test, all at once
+    for (uint64_t addr : s.texels)
+      texels = std::max(texels, read(unit, lane, addr, c_.rt.anyhit.read_bytes));
+    s.texels.clear();
+    lane.latency += texels;
     w.steps++;
     if (uint32_t out = lane.stack.settle(kept, uint32_t(s.stack.size()), stack.entries))
       write(unit,
@@ -164,6 +195,7 @@ class CacheWalk {
   Dram dram_;
   DramTarget dram_target_;
   Cache l2_;
+  L2Tap tap_;
   std::vector<std::unique_ptr<Cache>> l1_;
   std::vector<std::vector<Warp>> units_;
   std::vector<UnitWork> work_;
@@ -175,12 +207,12 @@ class CacheWalk {
 }  // namespace
 
 FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std::string& stream,
-                               AnalyticTime* bounds) {
+                               AnalyticTime* bounds, L2ReferenceSink* sink) {
   HostTimer timer;
   RayStreamReader reader(stream);
   HwConfig analysed = config;  // a banked DRAM as its bandwidth and unloaded latency
   analysed.dram = dram_for_analysis(config);
-  CacheWalk walk(analysed, image);
+  CacheWalk walk(analysed, image, sink);
   walk.run(reader);
   FidelityResult result;
   result.level = FidelityLevel::CacheLevel;

@@ -5,13 +5,16 @@
 // round, so the caches see the interleaving of many rays in flight as the hardware does. A
 // warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
 // per-ray traversal here (their scheduling changes the order, which only the cycle level has).
-// Stack spills and refills follow the on-chip depth roughly (entries beyond rt.stack.entries
-// spill; an empty on-chip stack with spilled entries refills one entry through the L1).
+// Any-hit calls read their texels through the L1 after the triangle test, as the cycle model's
+// RT core does. Stack spills and refills follow the on-chip depth roughly (entries beyond
+// rt.stack.entries spill; an empty on-chip stack with spilled entries refills one entry
+// through the L1).
 // Each ray's latency is the sum over its steps of the memory latency of its fetch (L1 hit, L2
 // hit, or DRAM), the test unit latency and issues, and the control latency; the cycles come
 // from the roofline of analytic_time.h.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "model/bvh/two_level.h"
@@ -21,8 +24,17 @@
 
 namespace rtsim {
 
-// bounds (optional) receives every resource's lower bound.
+// Sees what the RT units' L1s send to the L2, block by block (the L2's block: its sector, or its
+// line), in the order the walk sends it: reads of the blocks the L1s missed, and writes (the
+// L1s' write-backs of stack spills, or every spill with a write-through L1).
+class L2ReferenceSink {
+ public:
+  virtual ~L2ReferenceSink() = default;
+  virtual void reference(uint64_t addr, bool write) = 0;
+};
+
+// bounds (optional) receives every resource's lower bound; sink (optional) the L2's references.
 FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std::string& stream,
-                               AnalyticTime* bounds = nullptr);
+                               AnalyticTime* bounds = nullptr, L2ReferenceSink* sink = nullptr);
 
 }  // namespace rtsim

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/mem/slice_hash.h"
+
 namespace rtsim {
 
 namespace {
@@ -57,9 +59,7 @@ uint32_t SharedCacheModule::connect(std::function<void()> on_response) {
 }
 
 uint32_t SharedCacheModule::slice_of(uint64_t addr) const {
-  if (slices_.size() == 1) return 0;
-  uint64_t h = (addr >> line_shift_) * 0x9e3779b97f4a7c15ull;  // Fibonacci hashing of the line
-  return uint32_t((h >> 32) % slices_.size());
+  return slice_of_line(addr >> line_shift_, uint32_t(slices_.size()));
 }
 
 uint32_t SharedCacheModule::warm(uint64_t addr, uint32_t bytes, bool write) {

@@ -1,0 +1,180 @@
+// rtsim curve STREAM --config HW.toml --l2 256K..64M: the L2's miss ratio and DRAM bytes per ray
+// at every capacity (and associativity) from one functional pass over the stream
+// (model/fidelity/CURVE.md), its knee, and with --simulate the full model's cycles at a few
+// capacities, the others interpolated. With -o DIR it writes curve.{json,csv,md}, the chart
+// curve.png and config.toml.
+#include <algorithm>
+#include <cctype>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "app/commands.h"
+#include "model/config/hw_config.h"
+#include "model/fidelity/cache_curve.h"
+#include "model/sc/sim_report.h"
+#include "reports/charts.h"
+#include "reports/curve_report.h"
+#include "reports/phase_progress.h"
+#include "traces/error.h"
+#include "traces/output_file.h"
+#include "traces/stream.h"
+#include "workloads/scene.h"
+
+namespace rtsim::app {
+namespace {
+
+struct CurveOptions {
+  std::string stream, config, output, scene, l2 = "256K..64M", simulate;
+  std::vector<std::string> sets;
+  std::vector<uint32_t> ways;
+  uint32_t sample_rate = 1;
+  bool no_charts = false;
+};
+
+// "256K", "4M", "1G" or a number of bytes.
+uint64_t parse_size(const std::string& text, const std::string& option) {
+  size_t used = 0;
+  uint64_t value = 0;
+  try {
+    value = std::stoull(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string unit = text.substr(used);
+  uint64_t scale = unit.empty()  ? 1
+                   : unit == "K" ? 1 << 10
+                   : unit == "M" ? 1 << 20
+                   : unit == "G" ? 1 << 30
+                                 : 0;
+  if (used == 0 || scale == 0 || value == 0)
+    throw InputError(
+        fmt::format("curve: {}: '{}' is not a size (256K, 4M, 1G or bytes)", option, text));
+  return value * scale;
+}
+
+// "A..B": A, 2A, 4A, ... up to B; or "A,B,C".
+std::vector<uint64_t> parse_sizes(const std::string& text, const std::string& option) {
+  std::vector<uint64_t> out;
+  size_t range = text.find("..");
+  if (range != std::string::npos) {
+    uint64_t from = parse_size(text.substr(0, range), option);
+    uint64_t to = parse_size(text.substr(range + 2), option);
+    if (to < from) throw InputError(fmt::format("curve: {}: '{}' runs backwards", option, text));
+    for (uint64_t c = from; c <= to; c *= 2) out.push_back(c);
+    return out;
+  }
+  for (size_t at = 0; at <= text.size();) {
+    size_t comma = std::min(text.find(',', at), text.size());
+    out.push_back(parse_size(text.substr(at, comma - at), option));
+    at = comma + 1;
+  }
+  return out;
+}
+
+int run_curve(const CurveOptions& o) {
+  HwConfig config = load_hw_config(o.config, o.sets);
+  CurveRequest request;
+  request.capacities = parse_sizes(o.l2, "--l2");
+  request.ways = o.ways.empty() ? std::vector<uint32_t>{config.l2.ways} : o.ways;
+  request.sample_rate = o.sample_rate;
+  bool at_knee = o.simulate == "knee";
+  std::vector<uint64_t> simulate;
+  if (!o.simulate.empty() && !at_knee) simulate = parse_sizes(o.simulate, "--simulate");
+  for (uint64_t c : simulate) request.capacities.push_back(c);  // simulated points are points
+  std::sort(request.capacities.begin(), request.capacities.end());
+  request.capacities.erase(std::unique(request.capacities.begin(), request.capacities.end()),
+                           request.capacities.end());
+  std::string problem = curve_request_problem(config, request);
+  if (!problem.empty()) throw InputError(fmt::format("curve: {}: {}", o.config, problem));
+  if (!o.output.empty()) {
+    create_output_folder(o.output);
+    lock_output_folder(o.output, "rtsim curve");
+  }
+  RayStreamReader reader(o.stream);
+  Scene scene = load_stream_scene(o.stream, reader.header(), o.scene);
+  TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, false);
+  BvhView image(bvh);
+  fmt::print(stderr, "curve: one pass over {} rays: {} capacities x {} associativities ({})\n",
+             reader.header().total_rays(), request.capacities.size(), request.ways.size(),
+             o.sample_rate > 1 ? fmt::format("miniature caches, 1 line in {}", o.sample_rate)
+                               : std::string("LRU stacks per set"));
+  CacheCurve curve = run_cache_curve(config, image, o.stream, request);
+  fmt::print(stderr, "curve: pass done in {:.2f} s CPU ({} L2 reads, {} writes)\n",
+             curve.cpu_seconds, curve.l2_reads, curve.l2_writes);
+
+  std::vector<size_t> first;  // the points of the first associativity: the ones simulated
+  for (size_t i = 0; i < curve.points.size(); ++i)
+    if (curve.points[i].ways == request.ways.front()) first.push_back(i);
+  std::vector<size_t> runs;
+  if (at_knee) {
+    auto k =
+        size_t(std::find(first.begin(), first.end(), curve_knee(curve, first)) - first.begin());
+    for (size_t i = k > 0 ? k - 1 : 0; i <= std::min(k + 1, first.size() - 1); ++i)
+      runs.push_back(first[i]);
+  }
+  for (size_t i : first)
+    if (std::count(simulate.begin(), simulate.end(), curve.points[i].capacity)) runs.push_back(i);
+  for (size_t n = 0; n < runs.size(); ++n) {
+    CurvePoint& p = curve.points[runs[n]];
+    fmt::print(stderr, "curve: full model at {} bytes, {} ways ({} of {})\n", p.capacity, p.ways,
+               n + 1, runs.size());
+    p.cycle_run = run_cycle_point(config, image, o.stream, p.capacity, p.ways);
+    p.has_cycle_run = true;
+  }
+  fill_cycles(curve, first);
+
+  nlohmann::ordered_json context = {{"stream", o.stream},
+                                    {"scene", reader.header().scene_source},
+                                    {"rays", curve.rays},
+                                    {"config", config.name},
+                                    {"config_file", o.config},
+                                    {"sets", o.sets},
+                                    {"l2_slices", config.l2_layout.slices},
+                                    {"l2_line_bytes", config.l2.line_bytes}};
+  nlohmann::ordered_json doc = reports::curve_json(curve, context);
+  fmt::print("{}", reports::curve_table(doc, false));
+  if (o.output.empty()) return 0;
+  write_file_atomic(o.output + "/curve.json", doc.dump(2) + "\n");
+  write_file_atomic(o.output + "/curve.csv", reports::curve_csv(doc));
+  write_file_atomic(o.output + "/curve.md", reports::curve_markdown(doc));
+  write_file_atomic(o.output + "/config.toml", resolved_toml(config));
+  if (!o.no_charts) {
+    reports::ChartRun chart =
+        reports::run_chart_script("curve_chart.py", {o.output + "/curve.json", o.output});
+    if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+  }
+  fmt::print("\nresults in {}\n", o.output);
+  return 0;
+}
+
+}  // namespace
+
+void add_curve_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "curve", "L2 miss ratio and DRAM bytes per ray at every capacity from one functional pass");
+  auto o = std::make_shared<CurveOptions>();
+  cmd->add_option("stream", o->stream, "Ray stream (.rays)")->required();
+  cmd->add_option("--config", o->config, "Hardware config (.toml; see configs/)");
+  cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
+  cmd->add_option("--scene", o->scene, "Scene file or built-in (default: stream header)");
+  cmd->add_option("--l2", o->l2, "L2 capacities: A..B (A, 2A, 4A, ... B) or A,B,C (K, M, G)")
+      ->capture_default_str();
+  cmd->add_option("--ways", o->ways, "L2 associativities (default: the config's)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 254));
+  cmd->add_option("--sample-rate", o->sample_rate,
+                  "1: exact LRU stacks; R: miniature caches of 1 line in R (with 95% intervals)")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  cmd->add_option("--simulate", o->simulate,
+                  "Run the full model at these capacities (A,B or A..B), or at 'knee' and its "
+                  "two neighbours; the other points' cycles are interpolated");
+  cmd->add_option("-o,--output", o->output, "Folder for curve.json, .csv, .md, .png");
+  cmd->add_flag("--no-charts", o->no_charts, "Skip the chart");
+  cmd->callback([o, &exit_code] { exit_code = run_curve(*o); });
+}
+
+}  // namespace rtsim::app

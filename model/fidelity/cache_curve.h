@@ -1,0 +1,85 @@
+// The L2's miss-ratio curve from one functional pass (model/fidelity/CURVE.md): the cache
+// level's walk (cache_level.h: the traversal, the RT units' L1s as configured, stack spills and
+// refills) sends its L2 references to one LRU stack per set count (model/mem/stack_distance.h,
+// Mattson's algorithm per set: every associativity at that set count at once), or, sampled, to
+// a miniature cache per point (model/mem/mini_cache.h, SHARDS). Each point is an L2 of the
+// config's line, sectors, slices and policy at one capacity and associativity: its block reads,
+// misses, write-backs and DRAM bytes, as the cycle model's L2 counts them with no timing (an
+// MSHR merge is a hit here). The knee is the point farthest below the chord from the first point
+// to the last on log2(capacity) against DRAM bytes per ray (Satopaa et al., "Finding a
+// 'Kneedle' in a Haystack", ICDCS workshops 2011). Cycles come from the full model at a few
+// points (run_cycle_points) and are interpolated between them (fill_cycles).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "model/bvh/two_level.h"
+#include "model/config/hw_config.h"
+
+namespace rtsim {
+
+struct CurveRequest {
+  std::vector<uint64_t> capacities;  // bytes: the whole L2, all slices
+  std::vector<uint32_t> ways;        // associativities (default: the config's)
+  uint32_t sample_rate = 1;          // 1: exact stacks; R > 1: miniature caches of 1 line in R
+};
+
+// The full model at one capacity, for the points simulated both ways.
+struct CyclePoint {
+  double cycles = 0;
+  uint64_t l2_accesses = 0, l2_misses = 0, l2_merges = 0, read_bytes = 0, writeback_bytes = 0;
+  double cpu_seconds = 0;
+};
+
+struct CurvePoint {
+  uint64_t capacity = 0;  // bytes
+  uint32_t ways = 0;
+  uint64_t sets_per_slice = 0;
+  uint64_t reads = 0;     // L2 block reads (exact: every reference is counted)
+  double misses = 0;      // block reads that miss (sampled: estimated)
+  double writebacks = 0;  // dirty blocks written to DRAM
+  double miss_ratio = 0, miss_ratio_ci95 = 0;
+  double dram_bytes = 0, dram_bytes_ci95 = 0;  // fetched plus written back
+  // Cycles: simulated by the full model here, interpolated from the nearest simulated points,
+  // or extrapolated past them; unknown without simulated points.
+  enum class Cycles : uint8_t { Unknown, Simulated, Interpolated, Extrapolated } cycles_from{};
+  double cycles = 0;
+  bool has_cycle_run = false;
+  CyclePoint cycle_run;  // when has_cycle_run
+  // A simulated point between two others: its cycles interpolated from them, as if it had not
+  // been simulated (the interpolation's measured error).
+  bool has_check = false;
+  double cycles_check = 0;
+};
+
+struct CacheCurve {
+  uint64_t rays = 0, l2_reads = 0, l2_writes = 0;
+  uint32_t block_bytes = 0, sample_rate = 1;
+  std::vector<CurvePoint> points;  // by ways, then capacity
+  double cpu_seconds = 0;          // of the pass
+};
+
+// Why the request cannot be answered for this config (empty if it can): capacities that give no
+// whole number of sets per slice, associativities out of range, a rate the sets do not divide
+// by, a config whose L2 traffic the pass does not see (the shader model's shading reads).
+std::string curve_request_problem(const HwConfig& config, const CurveRequest& request);
+
+// The pass: the cache level's walk over the stream, every point counted on the way.
+CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::string& stream,
+                           const CurveRequest& request);
+
+// Index of the knee among the points of one associativity (indices into curve.points).
+size_t curve_knee(const CacheCurve& curve, const std::vector<size_t>& points);
+
+// The full model with the L2 at this capacity and associativity, in a forked child.
+CyclePoint run_cycle_point(const HwConfig& config, BvhView image, const std::string& stream,
+                           uint64_t capacity, uint32_t ways);
+
+// Cycles of every point from those with a cycle run, linear in the curve's DRAM bytes: between
+// the two simulated points around it (in capacity), or past the outermost two; each point's
+// cycles_from says which. Needs two simulated points; sets has_check where it can.
+void fill_cycles(CacheCurve& curve, const std::vector<size_t>& points);
+
+}  // namespace rtsim

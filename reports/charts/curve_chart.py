@@ -1,0 +1,66 @@
+#!/usr/bin/python3
+"""Chart of `rtsim curve`.
+
+Usage: curve_chart.py CURVE.json OUTDIR  -- writes OUTDIR/curve.png.
+Left: DRAM bytes per ray against L2 capacity (log axis), one line per associativity, the 95%
+interval when sampled, the knee marked, and the full model's DRAM bytes where it ran. Right:
+cycles where known: simulated points filled, interpolated and extrapolated ones hollow.
+"""
+import json
+import os
+import sys
+
+import chart_style
+
+
+def main(path, outdir):
+    doc = json.load(open(path))
+    fig, (left, right) = chart_style.new(11, 4, ncols=2)
+    ways = sorted({p["ways"] for p in doc["points"]})
+    for w in ways:
+        pts = sorted((p for p in doc["points"] if p["ways"] == w), key=lambda p: p["capacity_bytes"])
+        x = [p["capacity_bytes"] / 1024 for p in pts]
+        y = [p["dram_bytes_per_ray"] for p in pts]
+        ci = [p["dram_bytes_per_ray_ci95"] for p in pts]
+        line = left.errorbar(x, y, yerr=ci if any(ci) else None, marker="o", ms=4, capsize=3,
+                             label="curve, %d ways" % w)
+        for p in pts:
+            if p["knee"]:
+                left.annotate("knee", (p["capacity_bytes"] / 1024, p["dram_bytes_per_ray"]),
+                              textcoords="offset points", xytext=(6, 8), fontsize=8,
+                              arrowprops={"arrowstyle": "->", "lw": 0.8})
+        runs = [p for p in pts if p["cycle_run"]]
+        if runs:
+            left.plot([p["capacity_bytes"] / 1024 for p in runs],
+                      [p["cycle_run"]["dram_bytes_per_ray"] for p in runs], "x", ms=8,
+                      color=line[0].get_color(), label="full model, %d ways" % w)
+        known = [p for p in pts if p["cycles"] is not None]
+        for kind, style in (("simulated", "o"), ("interpolated", "o"), ("extrapolated", "s")):
+            sel = [p for p in known if p["cycles_from"] == kind]
+            if sel:
+                right.plot([p["capacity_bytes"] / 1024 for p in sel], [p["cycles"] for p in sel],
+                           style, ms=6, label="%s, %d ways" % (kind, w),
+                           fillstyle="full" if kind == "simulated" else "none")
+        if known:
+            right.plot([p["capacity_bytes"] / 1024 for p in known], [p["cycles"] for p in known],
+                       "-", lw=0.8, color="#777777")
+    for ax in (left, right):
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel("L2 capacity (KiB)")
+    left.set_ylabel("DRAM bytes per ray")
+    left.set_title("DRAM bytes per ray (%s)" % doc["method"])
+    left.legend(fontsize=7)
+    right.set_ylabel("cycles")
+    right.set_title("cycles: full model where simulated, else interpolated")
+    if right.lines:
+        right.legend(fontsize=7)
+    ctx = doc["context"]
+    fig.suptitle("%s on %s: %d rays" % (os.path.basename(ctx["stream"]), ctx["config"],
+                                         ctx["rays"]))
+    chart_style.save(fig, os.path.join(outdir, "curve.png"))
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 3:
+        sys.exit(__doc__)
+    main(sys.argv[1], sys.argv[2])

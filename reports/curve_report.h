@@ -1,0 +1,20 @@
+// What `rtsim curve` writes (model/fidelity/CURVE.md): the curve as JSON (schema rtsim.curve/1),
+// CSV, a terminal or Markdown table, from the pass's CacheCurve; the chart is
+// reports/charts/curve_chart.py over the JSON.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "model/fidelity/cache_curve.h"
+
+namespace rtsim::reports {
+
+// context: what was run (stream, scene, config, ...), copied into the document.
+nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::ordered_json& context);
+std::string curve_table(const nlohmann::ordered_json& doc, bool markdown);
+std::string curve_csv(const nlohmann::ordered_json& doc);
+std::string curve_markdown(const nlohmann::ordered_json& doc);
+
+}  // namespace rtsim::reports
