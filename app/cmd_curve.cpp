@@ -88,7 +88,9 @@ int run_curve(const CurveOptions& o) {
   request.capacities.erase(std::unique(request.capacities.begin(), request.capacities.end()),
                            request.capacities.end());
   std::string problem = curve_request_problem(config, request);
-  if (!problem.empty()) throw InputError(fmt::format("curve: {}: {}", o.config, problem));
+  if (!problem.empty())
+    throw InputError(
+        fmt::format("curve: {}: {}", o.config.empty() ? "the default config" : o.config, problem));
   if (!o.output.empty()) {
     create_output_folder(o.output);
     lock_output_folder(o.output, "rtsim curve");
