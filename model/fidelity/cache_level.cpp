@@ -41,7 +41,6 @@ class L2Tap : public MemoryTarget {
 
  private:
   void tell(uint64_t addr, uint32_t bytes, bool write) {
-    if (!sink_) return;
     uint64_t block = l2_.block_bytes();
     for (uint64_t b = addr / block; b <= (addr + std::max<uint32_t>(bytes, 1) - 1) / block; ++b)
       sink_->reference(b * block, write);
@@ -66,7 +65,9 @@ class CacheWalk {
         l2_(config.l2, &dram_target_),
         tap_(l2_, sink) {
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
-      l1_.push_back(std::make_unique<Cache>(l1_as_built(c_), &tap_, CacheRole::L1));
+      // The tap only when a sink listens: an L1 miss otherwise goes straight to the L2.
+      MemoryTarget* below = sink ? static_cast<MemoryTarget*>(&tap_) : &l2_;
+      l1_.push_back(std::make_unique<Cache>(l1_as_built(c_), below, CacheRole::L1));
       units_.emplace_back(c_.rt.warps);
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }

@@ -90,17 +90,6 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   for (uint32_t i = 0; i < config.mshrs; ++i) free_mshrs_.push(0);
 }
 
-template <class T>
-uint32_t Cache::take(std::vector<T>& pool, std::vector<uint32_t>& free) {
-  if (free.empty()) {
-    pool.emplace_back();
-    return uint32_t(pool.size() - 1);
-  }
-  uint32_t id = free.back();
-  free.pop_back();
-  return id;
-}
-
 Cycle Cache::admit(uint64_t line, uint64_t bytes, Cycle at) {
   Cycle start = at;
   if (config_.bank_ports > 0) {
@@ -327,7 +316,7 @@ void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t rep
     return;
   }
   if (caller.request == kNone) {
-    caller.request = take(requests_, free_requests_);
+    caller.request = take_slot(requests_, free_requests_);
     requests_[caller.request] = Request{caller.client, caller.token, 0, 0, {}};
   }
   requests_[caller.request].blocks++;
@@ -335,7 +324,7 @@ void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t rep
 }
 
 void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
-  uint32_t id = take(waiters_, free_waiters_);
+  uint32_t id = take_slot(waiters_, free_waiters_);
   waiters_[id] = waiter;
   Miss& m = misses_[miss];
   (m.first == kNone ? m.first : waiters_[m.last].next) = id;
@@ -347,7 +336,7 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   stats_.bytes_below += block_bytes();
   if (role_ == CacheRole::L2) charge.dram_bytes += block_bytes();
   Cycle send = at + config_.hit_latency;
-  uint32_t id = take(misses_, free_misses_);
+  uint32_t id = take_slot(misses_, free_misses_);
   Block& b = block_at(set, way, block);
   b = Block{kPending, id, 0, true, false};
   Miss& m = misses_[id];

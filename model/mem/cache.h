@@ -37,6 +37,7 @@
 
 #include "model/mem/memory_level.h"
 #include "model/mem/replacement.h"
+#include "model/mem/slot_pool.h"
 
 namespace rtsim {
 
@@ -228,8 +229,6 @@ class Cache : public MemoryTarget, private ReadClient {
   Block& block_at(uint32_t set, uint32_t way, uint64_t block) {
     return blocks_[block_index(set, way, block)];
   }
-  template <class T>
-  static uint32_t take(std::vector<T>& pool, std::vector<uint32_t>& free);
 
   // Set and tag of a line number: shifts and masks for a power-of-two set count (divisions
   // are slow on the hot path), divisions otherwise.

@@ -91,12 +91,13 @@ class MemoryTarget {
 
 // A memory that holds a queue and answers reads later (the banked DRAM below the shared L2):
 // requests come in non-decreasing `at`; a read's data cycle is reported through
-// client->read_done(token, ready, {}), never during the request call. Writes are posted.
+// read_done(token, ready, {}) of the one client given to answer_to (before the first read),
+// never during the request call. Writes are posted.
 class QueuedMemory {
  public:
   virtual ~QueuedMemory() = default;
-  virtual void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, ReadClient* client,
-                       uint64_t token) = 0;
+  virtual void answer_to(ReadClient& client) = 0;
+  virtual void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, uint64_t token) = 0;
 };
 
 class MemoryLevel {

@@ -44,8 +44,7 @@ tlm::tlm_sync_enum BankedDramModule::nb_transport_fw(tlm::tlm_generic_payload& t
 }
 
 void BankedDramModule::request(uint64_t addr, uint32_t bytes, bool write, Cycle at,
-                               ReadClient* client, uint64_t token) {
-  if (!write) client_ = client;
+                               uint64_t token) {
   controller_.enqueue(token, addr, bytes, write, at);
   arm();
 }

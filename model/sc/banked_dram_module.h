@@ -47,8 +47,8 @@ class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
   uint32_t max_response_lead() const;
   Cycle next_event() const { return controller_.next_event(); }
   // By call (QueuedMemory); a module takes its requests by call or through `in`, not both.
-  void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, ReadClient* client,
-               uint64_t token) override;
+  void answer_to(ReadClient& client) override { client_ = &client; }
+  void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, uint64_t token) override;
 
  private:
   tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
@@ -62,7 +62,7 @@ class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
   uint32_t slack_ = 0;      // cycles a decision may be taken late
   Cycle armed_ = kPending;  // the cycle wake_ is notified for
   std::vector<DramReadDone> done_;
-  ReadClient* client_ = nullptr;  // by call: whom reads answer (one requester, the L2)
+  ReadClient* client_ = nullptr;  // by call: whom reads answer (null: through `in`)
 };
 
 }  // namespace rtsim

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "model/mem/slice_hash.h"
+#include "model/mem/slot_pool.h"
 
 namespace rtsim {
 
@@ -95,6 +96,7 @@ void SharedCacheModule::use_timed_memory(uint32_t lead) {
 
 void SharedCacheModule::connect_memory(QueuedMemory& memory, uint32_t lead) {
   memory_ = &memory;
+  memory.answer_to(answers_);
   use_timed_memory(lead);
 }
 
@@ -178,40 +180,30 @@ void SharedCacheModule::serve_window() {
 void SharedCacheModule::run_job(const Job& job, Cycle at) {
   switch (job.kind) {
     case JobKind::Read: {
-      // The slice reports a miss's data later, never during the read: the record is kept under
-      // the id its read was given only if it missed.
-      uint32_t id = free_missed_.empty() ? uint32_t(missed_.size()) : free_missed_.back();
+      // The slice reports a miss's data later (never during the read) under the record's id.
+      uint32_t id = take_slot(missed_, free_missed_);
       ReadCharge charge;
       Cycle ready = slices_[job.slice]->read(job.addr, job.bytes, at, this, id, charge);
-      if (ready != kPending) return respond(job, ready, charge);
-      if (id == missed_.size()) {
-        missed_.push_back({job, charge});
-      } else {
-        free_missed_.pop_back();
+      if (ready == kPending) {
         missed_[id] = {job, charge};
+        return;
       }
-      return;
+      free_missed_.push_back(id);
+      return respond(job, ready, charge);
     }
     case JobKind::Write: return slices_[job.slice]->write(job.addr, job.bytes, at);
     case JobKind::DramRead: {
       if (memory_) {
-        uint32_t read;
-        if (free_below_reads_.empty()) {
-          read = uint32_t(below_reads_.size());
-          below_reads_.push_back({job.client, job.token});
-        } else {
-          read = free_below_reads_.back();
-          free_below_reads_.pop_back();
-          below_reads_[read] = {job.client, job.token};
-        }
-        return memory_->request(job.addr, job.bytes, false, at, &answers_, read);
+        uint32_t read = take_slot(below_reads_, free_below_reads_);
+        below_reads_[read] = {job.client, job.token};
+        return memory_->request(job.addr, job.bytes, false, at, read);
       }
       if (timed_below_) return send_timed(job, at);
       Cycle ready = send_below(tlm::TLM_READ_COMMAND, job.addr, job.bytes, at);
       return job.client->read_done(job.token, ready, {});
     }
     case JobKind::DramWrite:
-      if (memory_) return memory_->request(job.addr, job.bytes, true, at, nullptr, 0);
+      if (memory_) return memory_->request(job.addr, job.bytes, true, at, 0);
       if (timed_below_) return send_timed(job, at);
       send_below(tlm::TLM_WRITE_COMMAND, job.addr, job.bytes, at);
       return;
