@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <memory>
+#include <queue>
+#include <tuple>
 
 #include "model/mem/cache.h"
 #include "model/mem/dram.h"
@@ -52,7 +54,17 @@ class L2Tap : public MemoryTarget {
 struct Warp {
   std::vector<Lane> lanes;
   uint32_t live = 0;
+  double start = 0;    // the clock its rays started at
   double slowest = 0;  // latency of its slowest ray so far
+};
+
+// A lane's next step, at its clock; ties go by unit, then slot.
+struct Turn {
+  double clock;
+  uint32_t unit, slot;
+  bool operator>(const Turn& o) const {
+    return std::tie(clock, unit, slot) > std::tie(o.clock, o.unit, o.slot);
+  }
 };
 
 class CacheWalk {
@@ -74,21 +86,27 @@ class CacheWalk {
     work_.resize(c_.rt_units);
   }
 
+  // Steps in the order of the lanes' own clocks (a warp's start plus its ray's latency so far),
+  // so a ray whose fetch went to the L2 or DRAM steps again only after the rays that hit in
+  // the L1 have taken the steps they fit in that time, as in the cycle model.
   void run(RayStreamReader& reader) {
     for (uint32_t u = 0; u < c_.rt_units; ++u)
-      for (Warp& w : units_[u]) fill(w, reader);
-    while (live_ > 0) {
-      for (uint32_t u = 0; u < c_.rt_units; ++u)
-        for (uint32_t w = 0; w < c_.rt.warps; ++w) {
-          Warp& warp = units_[u][w];
-          for (uint32_t l = 0; l < c_.rt.warp_size; ++l)
-            if (warp.lanes[l].live) step(u, warp, warp.lanes[l], w * c_.rt.warp_size + l);
-          if (warp.live == 0) {
-            work_[u].warp_cycles += warp.slowest;
-            warp.slowest = 0;
-            fill(warp, reader);
-          }
-        }
+      for (uint32_t w = 0; w < c_.rt.warps; ++w) start(u, w, reader);
+    while (!turns_.empty()) {
+      Turn t = turns_.top();
+      turns_.pop();
+      uint32_t w = t.slot / c_.rt.warp_size;
+      Warp& warp = units_[t.unit][w];
+      Lane& lane = warp.lanes[t.slot % c_.rt.warp_size];
+      step(t.unit, warp, lane, t.slot);
+      if (lane.live) {
+        turns_.push({warp.start + lane.latency, t.unit, t.slot});
+      } else if (warp.live == 0) {
+        work_[t.unit].warp_cycles += warp.slowest;
+        warp.start += warp.slowest;
+        warp.slowest = 0;
+        start(t.unit, w, reader);
+      }
     }
   }
 
@@ -97,6 +115,15 @@ class CacheWalk {
   uint64_t dram_bytes() const { return dram_bytes_; }
 
  private:
+  // Fills warp w of the unit with new rays and schedules their first steps.
+  void start(uint32_t unit, uint32_t w, RayStreamReader& reader) {
+    Warp& warp = units_[unit][w];
+    fill(warp, reader);
+    for (uint32_t l = 0; l < c_.rt.warp_size; ++l)
+      if (warp.lanes[l].live)
+        turns_.push({warp.start + warp.lanes[l].latency, unit, w * c_.rt.warp_size + l});
+  }
+
   void fill(Warp& warp, RayStreamReader& reader) {
     for (Lane& lane : warp.lanes) {
       if (!reader.next(lane.ray)) break;
@@ -106,7 +133,6 @@ class CacheWalk {
       lane.latency = c_.rt.setup_latency;
       lane.cost = {};
       warp.live++;
-      live_++;
     }
   }
 
@@ -182,7 +208,6 @@ class CacheWalk {
   void retire(Warp& warp, Lane& lane) {
     lane.live = false;
     warp.live--;
-    live_--;
     warp.slowest = std::max(warp.slowest, lane.latency);
     lane.cost.rays = 1;
     lane.cost.nodes = lane.state.counters.trav_nodes;
@@ -201,7 +226,8 @@ class CacheWalk {
   std::vector<std::vector<Warp>> units_;
   std::vector<UnitWork> work_;
   std::array<CostTotals, kRayTypeCount> by_type_{};
-  uint64_t live_ = 0, dram_bytes_ = 0;
+  std::priority_queue<Turn, std::vector<Turn>, std::greater<Turn>> turns_;
+  uint64_t dram_bytes_ = 0;
   Cycle now_ = 0;
 };
 

@@ -1,9 +1,11 @@
 // Fidelity level 2, cache-level: the rays of the stream run through the traversal unit with
 // the real cache and DRAM models of model/mem (same sizes, lines, ways and replacement as the
 // config), but without the SystemC timing model. Rays are dealt to the RT units a warp at a
-// time; each unit holds warps x warp_size rays and every ray in flight takes one step per
-// round, so the caches see the interleaving of many rays in flight as the hardware does. A
-// warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
+// time; each unit holds warps x warp_size rays, and the rays in flight step in the order of their
+// own clocks (their warp's start plus the latency of their steps so far, below), so the caches
+// see the interleaving of many rays in flight as the hardware does: a ray whose fetch went to
+// DRAM steps again only after the rays that hit in the L1 took the steps that fit in that time.
+// A warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
 // per-ray traversal here (their scheduling changes the order, which only the cycle level has).
 // Any-hit calls read their texels through the L1 after the triangle test, as the cycle model's
 // RT core does. Stack spills and refills follow the on-chip depth roughly (entries beyond

@@ -180,16 +180,14 @@ void SharedCacheModule::serve_window() {
 void SharedCacheModule::run_job(const Job& job, Cycle at) {
   switch (job.kind) {
     case JobKind::Read: {
-      // The slice reports a miss's data later (never during the read) under the record's id.
-      uint32_t id = take_slot(missed_, free_missed_);
+      // The slice reports a miss's data later (never during the read) under the id of the
+      // record it then takes (the slot take_slot gives next: nothing takes one during the read).
+      auto id = uint32_t(free_missed_.empty() ? missed_.size() : free_missed_.back());
       ReadCharge charge;
       Cycle ready = slices_[job.slice]->read(job.addr, job.bytes, at, this, id, charge);
-      if (ready == kPending) {
-        missed_[id] = {job, charge};
-        return;
-      }
-      free_missed_.push_back(id);
-      return respond(job, ready, charge);
+      if (ready != kPending) return respond(job, ready, charge);
+      missed_[take_slot(missed_, free_missed_)] = {job, charge};
+      return;
     }
     case JobKind::Write: return slices_[job.slice]->write(job.addr, job.bytes, at);
     case JobKind::DramRead: {

@@ -71,6 +71,28 @@ TEST_F(FidelityLevels, CacheLevelHasMemoryFiguresAndARooflineTime) {
   EXPECT_NE(r.time_model.find(bounds.bound), std::string::npos) << r.time_model;
 }
 
+// The L2's references, in the order the walk sends them.
+struct RecordedOrder : L2ReferenceSink {
+  void reference(uint64_t addr, bool write) override { order.push_back(addr * 2 + write); }
+  std::vector<uint64_t> order;
+};
+
+TEST_F(FidelityLevels, CacheLevelStepsRaysInTheOrderOfTheirClocks) {
+  auto order = [&](uint32_t dram_latency) {
+    HwConfig c = *config_;
+    c.dram_model = DramModel::Simple;
+    c.dram.latency = dram_latency;
+    RecordedOrder sink;
+    run_cache_level(c, *image_, *stream_, nullptr, &sink);
+    return sink.order;
+  };
+  std::vector<uint64_t> fast = order(10), slow = order(100000);
+  EXPECT_EQ(fast, order(10)) << "the same clocks give the same order";
+  // A ray that missed to DRAM steps again later when DRAM is slower; round-robin steps would
+  // not depend on latency at all.
+  EXPECT_NE(fast, slow);
+}
+
 TEST_F(FidelityLevels, WindowsLandNearTheFullModel) {
   FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, *config_, *image_, *stream_);
   LevelRequest sampled{FidelityLevel::Sampled, {}};
