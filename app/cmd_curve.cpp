@@ -2,7 +2,8 @@
 // at every capacity (and associativity) from one functional pass over the stream
 // (model/fidelity/CURVE.md), its knee, and with --simulate the full model's cycles at a few
 // capacities, the others interpolated. With -o DIR it writes curve.{json,csv,md}, the chart
-// curve.png and config.toml.
+// curve.png and config.toml. With --l1 A,B,C: one pass and curve per L1 size (the L2's
+// references depend on the L1s), each in DIR/l1-SIZE/, and the family in curve-l1.{md,png}.
 #include <algorithm>
 #include <cctype>
 #include <memory>
@@ -27,7 +28,7 @@ namespace rtsim::app {
 namespace {
 
 struct CurveOptions {
-  std::string stream, config, output, scene, l2 = "256K..64M", simulate;
+  std::string stream, config, output, scene, l2 = "256K..64M", simulate, l1;
   std::vector<std::string> sets;
   std::vector<uint32_t> ways;
   uint32_t sample_rate = 1;
@@ -74,23 +75,104 @@ std::vector<uint64_t> parse_sizes(const std::string& text, const std::string& op
   return out;
 }
 
+// "32 KiB", or bytes: a folder's name part ("32K").
+std::string size_name(uint64_t bytes) {
+  if (bytes % (1 << 20) == 0) return std::to_string(bytes >> 20) + "M";
+  if (bytes % (1 << 10) == 0) return std::to_string(bytes >> 10) + "K";
+  return std::to_string(bytes);
+}
+
+struct CurveInputs {
+  const CurveOptions& options;
+  const std::string& scene_source;
+  BvhView image;
+  std::vector<uint64_t> simulate;  // capacities the full model runs at (besides the knee's)
+};
+
+// One pass over the stream on `config`, the full model at the chosen points, and the curve as
+// JSON (rtsim.curve/1).
+nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& request,
+                                const CurveInputs& in) {
+  const CurveOptions& o = in.options;
+  fmt::print(stderr, "curve: one pass, L1 {} bytes: {} capacities x {} associativities ({})\n",
+             config.l1.size_bytes, request.capacities.size(), request.ways.size(),
+             o.sample_rate > 1 ? fmt::format("miniature caches, 1 line in {}", o.sample_rate)
+                               : std::string("LRU stacks per set"));
+  CacheCurve curve = run_cache_curve(config, in.image, o.stream, request);
+  fmt::print(stderr, "curve: pass over {} rays done in {:.2f} s CPU ({} L2 reads, {} writes)\n",
+             curve.rays, curve.cpu_seconds, curve.l2_reads, curve.l2_writes);
+
+  std::vector<size_t> first;  // the points of the first associativity: the ones simulated
+  for (size_t i = 0; i < curve.points.size(); ++i)
+    if (curve.points[i].ways == request.ways.front()) first.push_back(i);
+  std::vector<size_t> runs;
+  if (o.simulate == "knee") {
+    auto k =
+        size_t(std::find(first.begin(), first.end(), curve_knee(curve, first)) - first.begin());
+    for (size_t i = k > 0 ? k - 1 : 0; i <= std::min(k + 1, first.size() - 1); ++i)
+      runs.push_back(first[i]);
+  }
+  for (size_t i : first)
+    if (std::count(in.simulate.begin(), in.simulate.end(), curve.points[i].capacity))
+      runs.push_back(i);
+  for (size_t n = 0; n < runs.size(); ++n) {
+    CurvePoint& p = curve.points[runs[n]];
+    fmt::print(stderr, "curve: full model at {} bytes, {} ways ({} of {})\n", p.capacity, p.ways,
+               n + 1, runs.size());
+    p.cycle_run = run_cycle_point(config, in.image, o.stream, p.capacity, p.ways);
+    p.has_cycle_run = true;
+  }
+  fill_cycles(curve, first);
+
+  nlohmann::ordered_json context = {{"stream", o.stream},
+                                    {"scene", in.scene_source},
+                                    {"rays", curve.rays},
+                                    {"config", config.name},
+                                    {"config_file", o.config},
+                                    {"sets", o.sets},
+                                    {"l1_bytes", config.l1.size_bytes},
+                                    {"l2_slices", config.l2_layout.slices},
+                                    {"l2_line_bytes", config.l2.line_bytes}};
+  return reports::curve_json(curve, context);
+}
+
+void write_curve(const std::string& dir, const nlohmann::ordered_json& doc,
+                 const HwConfig& config, bool charts) {
+  write_file_atomic(dir + "/curve.json", doc.dump(2) + "\n");
+  write_file_atomic(dir + "/curve.csv", reports::curve_csv(doc));
+  write_file_atomic(dir + "/curve.md", reports::curve_markdown(doc));
+  write_file_atomic(dir + "/config.toml", resolved_toml(config));
+  if (!charts) return;
+  reports::ChartRun chart = reports::run_chart_script("curve_chart.py", {dir, dir + "/curve.json"});
+  if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+}
+
 int run_curve(const CurveOptions& o) {
   HwConfig config = load_hw_config(o.config, o.sets);
+  std::string where = o.config.empty() ? "the default config" : o.config;
   CurveRequest request;
   request.capacities = parse_sizes(o.l2, "--l2");
   request.ways = o.ways.empty() ? std::vector<uint32_t>{config.l2.ways} : o.ways;
   request.sample_rate = o.sample_rate;
-  bool at_knee = o.simulate == "knee";
   std::vector<uint64_t> simulate;
-  if (!o.simulate.empty() && !at_knee) simulate = parse_sizes(o.simulate, "--simulate");
+  if (!o.simulate.empty() && o.simulate != "knee") simulate = parse_sizes(o.simulate, "--simulate");
   for (uint64_t c : simulate) request.capacities.push_back(c);  // simulated points are points
   std::sort(request.capacities.begin(), request.capacities.end());
   request.capacities.erase(std::unique(request.capacities.begin(), request.capacities.end()),
                            request.capacities.end());
   std::string problem = curve_request_problem(config, request);
-  if (!problem.empty())
-    throw InputError(
-        fmt::format("curve: {}: {}", o.config.empty() ? "the default config" : o.config, problem));
+  if (!problem.empty()) throw InputError(fmt::format("curve: {}: {}", where, problem));
+  std::vector<HwConfig> configs;  // one per L1 size
+  for (uint64_t size : o.l1.empty() ? std::vector<uint64_t>{config.l1.size_bytes}
+                                    : parse_sizes(o.l1, "--l1")) {
+    HwConfig c = config;
+    c.l1.size_bytes = size;
+    problem = cache_config_problem(c.l1);
+    if (!problem.empty())
+      throw InputError(fmt::format("curve: --l1: {} bytes: {}", size, problem));
+    configs.push_back(c);
+  }
+  bool family = !o.l1.empty();
   if (!o.output.empty()) {
     create_output_folder(o.output);
     lock_output_folder(o.output, "rtsim curve");
@@ -98,55 +180,31 @@ int run_curve(const CurveOptions& o) {
   RayStreamReader reader(o.stream);
   Scene scene = load_stream_scene(o.stream, reader.header(), o.scene);
   TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, false);
-  BvhView image(bvh);
-  fmt::print(stderr, "curve: one pass over {} rays: {} capacities x {} associativities ({})\n",
-             reader.header().total_rays(), request.capacities.size(), request.ways.size(),
-             o.sample_rate > 1 ? fmt::format("miniature caches, 1 line in {}", o.sample_rate)
-                               : std::string("LRU stacks per set"));
-  CacheCurve curve = run_cache_curve(config, image, o.stream, request);
-  fmt::print(stderr, "curve: pass done in {:.2f} s CPU ({} L2 reads, {} writes)\n",
-             curve.cpu_seconds, curve.l2_reads, curve.l2_writes);
+  CurveInputs in{o, reader.header().scene_source, BvhView(bvh), simulate};
 
-  std::vector<size_t> first;  // the points of the first associativity: the ones simulated
-  for (size_t i = 0; i < curve.points.size(); ++i)
-    if (curve.points[i].ways == request.ways.front()) first.push_back(i);
-  std::vector<size_t> runs;
-  if (at_knee) {
-    auto k =
-        size_t(std::find(first.begin(), first.end(), curve_knee(curve, first)) - first.begin());
-    for (size_t i = k > 0 ? k - 1 : 0; i <= std::min(k + 1, first.size() - 1); ++i)
-      runs.push_back(first[i]);
+  std::vector<nlohmann::ordered_json> docs;
+  std::vector<std::string> files;  // their curve.json
+  for (const HwConfig& c : configs) {
+    nlohmann::ordered_json& doc = docs.emplace_back(curve_on(c, request, in));
+    if (family) fmt::print("L1 {}:\n", size_name(c.l1.size_bytes));
+    fmt::print("{}", reports::curve_table(doc, false));
+    if (family) fmt::print("\n");
+    if (o.output.empty()) continue;
+    std::string dir = family ? o.output + "/l1-" + size_name(c.l1.size_bytes) : o.output;
+    if (family) create_output_folder(dir);
+    write_curve(dir, doc, c, !o.no_charts);
+    files.push_back(dir + "/curve.json");
   }
-  for (size_t i : first)
-    if (std::count(simulate.begin(), simulate.end(), curve.points[i].capacity)) runs.push_back(i);
-  for (size_t n = 0; n < runs.size(); ++n) {
-    CurvePoint& p = curve.points[runs[n]];
-    fmt::print(stderr, "curve: full model at {} bytes, {} ways ({} of {})\n", p.capacity, p.ways,
-               n + 1, runs.size());
-    p.cycle_run = run_cycle_point(config, image, o.stream, p.capacity, p.ways);
-    p.has_cycle_run = true;
-  }
-  fill_cycles(curve, first);
-
-  nlohmann::ordered_json context = {{"stream", o.stream},
-                                    {"scene", reader.header().scene_source},
-                                    {"rays", curve.rays},
-                                    {"config", config.name},
-                                    {"config_file", o.config},
-                                    {"sets", o.sets},
-                                    {"l2_slices", config.l2_layout.slices},
-                                    {"l2_line_bytes", config.l2.line_bytes}};
-  nlohmann::ordered_json doc = reports::curve_json(curve, context);
-  fmt::print("{}", reports::curve_table(doc, false));
   if (o.output.empty()) return 0;
-  write_file_atomic(o.output + "/curve.json", doc.dump(2) + "\n");
-  write_file_atomic(o.output + "/curve.csv", reports::curve_csv(doc));
-  write_file_atomic(o.output + "/curve.md", reports::curve_markdown(doc));
-  write_file_atomic(o.output + "/config.toml", resolved_toml(config));
-  if (!o.no_charts) {
-    reports::ChartRun chart =
-        reports::run_chart_script("curve_chart.py", {o.output + "/curve.json", o.output});
-    if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+  if (family) {
+    write_file_atomic(o.output + "/curve-l1.md", reports::curve_family_markdown(docs));
+    write_file_atomic(o.output + "/config.toml", resolved_toml(config));
+    if (!o.no_charts) {
+      std::vector<std::string> args = {o.output};
+      args.insert(args.end(), files.begin(), files.end());
+      reports::ChartRun chart = reports::run_chart_script("curve_chart.py", args);
+      if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+    }
   }
   fmt::print("\nresults in {}\n", o.output);
   return 0;
@@ -164,6 +222,9 @@ void add_curve_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--scene", o->scene, "Scene file or built-in (default: stream header)");
   cmd->add_option("--l2", o->l2, "L2 capacities: A..B (A, 2A, 4A, ... B) or A,B,C (K, M, G)")
       ->capture_default_str();
+  cmd->add_option("--l1", o->l1,
+                  "L1 sizes per RT unit (A..B or A,B,C): one pass and curve each, in "
+                  "DIR/l1-SIZE/, the family in curve-l1.md and .png (default: the config's L1)");
   cmd->add_option("--ways", o->ways, "L2 associativities (default: the config's)")
       ->delimiter(',')
       ->check(CLI::Range(1, 254));

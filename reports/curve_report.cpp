@@ -181,4 +181,31 @@ std::string curve_markdown(const nlohmann::ordered_json& doc) {
   return out;
 }
 
+std::string curve_family_markdown(const std::vector<nlohmann::ordered_json>& docs) {
+  const auto& ctx = docs.front()["context"];
+  std::string out = fmt::format(
+      "# L2 curves by L1 size: {} on {}\n\n{} rays; one functional pass per L1 size (the L2's "
+      "references depend on the L1s); each size's full table in l1-SIZE/curve.md.\n\n"
+      "| L1 | L2 | ways | miss ratio | DRAM B/ray | knee | cycles | cycles from |\n"
+      "|---|---|---|---|---|---|---|---|\n",
+      ctx["stream"].get<std::string>(), ctx["config"].get<std::string>(),
+      ctx["rays"].get<uint64_t>());
+  for (const auto& doc : docs) {
+    uint32_t ways = doc["points"][0]["ways"].get<uint32_t>();
+    for (const auto& p : doc["points"]) {
+      if (p["ways"].get<uint32_t>() != ways) continue;
+      out += fmt::format(
+          "| {} | {} | {} | {:.2f}% | {:.1f} | {} | {} | {} |\n",
+          size_text(doc["context"]["l1_bytes"].get<uint64_t>()),
+          size_text(p["capacity_bytes"].get<uint64_t>()), ways,
+          100 * p["miss_ratio"].get<double>(), p["dram_bytes_per_ray"].get<double>(),
+          p["knee"].get<bool>() ? "knee" : "",
+          p["cycles"].is_null() ? "-" : fmt::format("{:.0f}", p["cycles"].get<double>()),
+          p["cycles_from"].get<std::string>());
+    }
+  }
+  out += "\n![curves](curve-l1.png)\n\nColumns: model/fidelity/CURVE.md.\n";
+  return out;
+}
+
 }  // namespace rtsim::reports

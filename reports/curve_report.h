@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -16,5 +17,8 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
 std::string curve_table(const nlohmann::ordered_json& doc, bool markdown);
 std::string curve_csv(const nlohmann::ordered_json& doc);
 std::string curve_markdown(const nlohmann::ordered_json& doc);
+// The curves of several L1 sizes (`rtsim curve --l1`, one document each): one table of their
+// first associativity's points, L1 by L1, and the chart curve-l1.png.
+std::string curve_family_markdown(const std::vector<nlohmann::ordered_json>& docs);
 
 }  // namespace rtsim::reports

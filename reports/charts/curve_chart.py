@@ -1,10 +1,13 @@
 #!/usr/bin/python3
 """Chart of `rtsim curve`.
 
-Usage: curve_chart.py CURVE.json OUTDIR  -- writes OUTDIR/curve.png.
+Usage: curve_chart.py OUTDIR CURVE.json  -- writes OUTDIR/curve.png.
 Left: DRAM bytes per ray against L2 capacity (log axis), one line per associativity, the 95%
 interval when sampled, the knee marked, and the full model's DRAM bytes where it ran. Right:
 cycles where known: simulated points filled, interpolated and extrapolated ones hollow.
+       curve_chart.py OUTDIR CURVE.json CURVE.json...  -- the curves of several L1 sizes
+(`rtsim curve --l1`): OUTDIR/curve-l1.png, DRAM bytes per ray and cycles against L2 capacity,
+one line per L1 size (the first associativity), knees marked.
 """
 import json
 import os
@@ -60,7 +63,44 @@ def main(path, outdir):
     chart_style.save(fig, os.path.join(outdir, "curve.png"))
 
 
+def family(outdir, paths):
+    docs = [json.load(open(p)) for p in paths]
+    fig, (left, right) = chart_style.new(11, 4, ncols=2)
+    for doc in docs:
+        first = doc["points"][0]["ways"]
+        pts = sorted((p for p in doc["points"] if p["ways"] == first),
+                     key=lambda p: p["capacity_bytes"])
+        label = "L1 %d KiB" % (doc["context"]["l1_bytes"] // 1024)
+        x = [p["capacity_bytes"] / 1024 for p in pts]
+        line = left.plot(x, [p["dram_bytes_per_ray"] for p in pts], "o-", ms=4, label=label)
+        for p in pts:
+            if p["knee"]:
+                left.plot(p["capacity_bytes"] / 1024, p["dram_bytes_per_ray"], "*", ms=12,
+                          color=line[0].get_color())
+        known = [p for p in pts if p["cycles"] is not None]
+        if known:
+            right.plot([p["capacity_bytes"] / 1024 for p in known], [p["cycles"] for p in known],
+                       "o-", ms=4, color=line[0].get_color(), label=label)
+    for ax in (left, right):
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel("L2 capacity (KiB)")
+    left.set_ylabel("DRAM bytes per ray")
+    left.set_title("DRAM bytes per ray by L1 size (stars: knees)")
+    left.legend(fontsize=7)
+    right.set_ylabel("cycles")
+    right.set_title("cycles: simulated or interpolated")
+    if right.lines:
+        right.legend(fontsize=7)
+    ctx = docs[0]["context"]
+    fig.suptitle("%s on %s: %d rays" % (os.path.basename(ctx["stream"]), ctx["config"],
+                                         ctx["rays"]))
+    chart_style.save(fig, os.path.join(outdir, "curve-l1.png"))
+
+
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) < 3:
         sys.exit(__doc__)
-    main(sys.argv[1], sys.argv[2])
+    if len(sys.argv) == 3:
+        main(sys.argv[2], sys.argv[1])
+    else:
+        family(sys.argv[1], sys.argv[2:])
