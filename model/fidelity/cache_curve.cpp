@@ -106,7 +106,13 @@ std::string curve_request_problem(const HwConfig& c, const CurveRequest& request
 CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::string& stream,
                            const CurveRequest& request) {
   CurveSink sink(config, request);
-  FidelityResult walk = run_cache_level(config, image, stream, nullptr, &sink);
+  // The walk's clocks (the order of its references) come from an L2 of the smallest capacity:
+  // there capacity misses are many and the order decides them; at large capacities misses are
+  // mostly cold and the order hardly matters (model/fidelity/CURVE.md).
+  HwConfig walked = config;
+  walked.l2 = l2_at(config, *std::min_element(request.capacities.begin(), request.capacities.end()),
+                    request.ways.front());
+  FidelityResult walk = run_cache_level(walked, image, stream, nullptr, &sink);
   for (auto& [sets, stack] : sink.stacks) stack->finish();
   CacheCurve curve;
   curve.rays = walk.rays;

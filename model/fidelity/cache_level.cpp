@@ -84,6 +84,9 @@ class CacheWalk {
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }
     work_.resize(c_.rt_units);
+    mshr_free_.resize(c_.rt_units);
+    for (auto& unit : mshr_free_)
+      for (uint32_t i = 0; i < c_.l1.mshrs; ++i) unit.push(0);
   }
 
   // Steps in the order of the lanes' own clocks (a warp's start plus its ray's latency so far),
@@ -98,6 +101,7 @@ class CacheWalk {
       uint32_t w = t.slot / c_.rt.warp_size;
       Warp& warp = units_[t.unit][w];
       Lane& lane = warp.lanes[t.slot % c_.rt.warp_size];
+      clock_ = t.clock;
       step(t.unit, warp, lane, t.slot);
       if (lane.live) {
         turns_.push({warp.start + lane.latency, t.unit, t.slot});
@@ -151,11 +155,22 @@ class CacheWalk {
     uint64_t below = b2.bytes_below - a2.bytes_below;
     lane.cost.dram_bytes += below;
     dram_bytes_ += below + b2.writeback_bytes - a2.writeback_bytes;
-    double latency = c_.l1.hit_latency;
-    if (b1.misses > a1.misses) latency += c_.l2.hit_latency;
+    uint64_t missed = b1.misses - a1.misses;
+    if (missed == 0) return c_.l1.hit_latency;
+    double below_latency = c_.l2.hit_latency;
     if (b2.misses > a2.misses)
-      latency += c_.dram.latency + double(l2_.block_bytes()) / c_.dram.bytes_per_cycle;
-    return latency;
+      below_latency += c_.dram.latency + double(l2_.block_bytes()) / c_.dram.bytes_per_cycle;
+    // Each missed block takes one of the unit's L1 MSHRs after the tag check, waiting for the
+    // first to free if all are busy, and holds it until its data is back.
+    auto& mshrs = mshr_free_[unit];
+    double done = 0;
+    for (uint64_t i = 0; i < missed; ++i) {
+      double start = std::max(clock_ + c_.l1.hit_latency, mshrs.top());
+      mshrs.pop();
+      mshrs.push(start + below_latency);
+      done = std::max(done, start + below_latency);
+    }
+    return done - clock_;
   }
 
   // A spill through the unit's L1; the DRAM bytes of write-backs count with the run only.
@@ -228,6 +243,9 @@ class CacheWalk {
   std::array<CostTotals, kRayTypeCount> by_type_{};
   std::priority_queue<Turn, std::vector<Turn>, std::greater<Turn>> turns_;
   uint64_t dram_bytes_ = 0;
+  // Per unit: the clocks its L1 MSHRs are free from, earliest first.
+  std::vector<std::priority_queue<double, std::vector<double>, std::greater<double>>> mshr_free_;
+  double clock_ = 0;  // the clock of the step being taken
   Cycle now_ = 0;
 };
 

@@ -4,16 +4,17 @@
 // time; each unit holds warps x warp_size rays, and the rays in flight step in the order of their
 // own clocks (their warp's start plus the latency of their steps so far, below), so the caches
 // see the interleaving of many rays in flight as the hardware does: a ray whose fetch went to
-// DRAM steps again only after the rays that hit in the L1 took the steps that fit in that time.
-// A warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
+// DRAM steps again only after the rays that hit in the L1 took the steps that fit in that time;
+// a block that misses in the L1 waits for one of its MSHRs when all are busy, as in the cycle
+// model. A warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
 // per-ray traversal here (their scheduling changes the order, which only the cycle level has).
 // Any-hit calls read their texels through the L1 after the triangle test, as the cycle model's
 // RT core does. Stack spills and refills follow the on-chip depth roughly (entries beyond
 // rt.stack.entries spill; an empty on-chip stack with spilled entries refills one entry
 // through the L1).
-// Each ray's latency is the sum over its steps of the memory latency of its fetch (L1 hit, L2
-// hit, or DRAM), the test unit latency and issues, and the control latency; the cycles come
-// from the roofline of analytic_time.h.
+// Each ray's latency is the sum over its steps of the memory latency of its fetch (L1 hit, or
+// the wait for an L1 MSHR and the L2 hit or DRAM), the test unit latency and issues, and the
+// control latency; the cycles come from the roofline of analytic_time.h.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
-// The cache curve (model/fidelity/cache_curve.h): on a small stream its point at the configured
-// L2 is the cache level's own L2, count for count, and the curve never rises with capacity; the
+// The cache curve (model/fidelity/cache_curve.h): on a small stream its point at the walk's L2
+// (the smallest capacity) is the cache level's own L2 there, count for count, and the curve never rises with capacity; the
 // knee and the interpolated cycles follow their rules on hand-made points.
 #include "model/fidelity/cache_curve.h"
 
@@ -14,21 +14,22 @@
 namespace rtsim {
 namespace {
 
-TEST(CacheCurve, PointAtTheConfiguredL2IsTheCacheLevelsL2) {
+TEST(CacheCurve, PointAtTheWalksL2IsTheCacheLevelsL2) {
   std::string stream = test::small_stream("grid:2000", 20000);
   Scene scene = load_scene("grid:2000");
   // One slice, as the cache level's L2 has; small enough that capacity misses matter.
   HwConfig config = load_hw_config(
       "", {"l2.slices=1", "l2.size_bytes=16384", "l2.sector_bytes=32", "rt.l1.size_bytes=4096"});
   BvhImage image = build_bvh_image(scene.mesh, config.bvh);
-  CurveRequest request{{4096, 8192, 16384, 65536, 262144}, {config.l2.ways}, 1};
+  // The walk's L2 is the smallest capacity: here the configured one.
+  CurveRequest request{{16384, 32768, 65536, 131072, 262144}, {config.l2.ways}, 1};
   ASSERT_EQ(curve_request_problem(config, request), "");
   CacheCurve curve = run_cache_curve(config, image, stream, request);
   FidelityResult level = run_cache_level(config, image, stream);
   std::filesystem::remove(stream);
 
   ASSERT_EQ(curve.points.size(), 5u);
-  const CurvePoint& at_config = curve.points[2];
+  const CurvePoint& at_config = curve.points[0];
   ASSERT_EQ(at_config.capacity, 16384u);
   // The walk's L2 never merges (its reads are far apart), so its misses are accesses - hits.
   EXPECT_DOUBLE_EQ(at_config.misses * curve.block_bytes, level.dram_bytes.value);
