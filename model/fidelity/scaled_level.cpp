@@ -1,6 +1,7 @@
 #include "model/fidelity/scaled_level.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <deque>
 #include <functional>
@@ -175,6 +176,16 @@ std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& c
       sampled / 1048576, k, k * sampled / 1048576, double(config.size_bytes) / 1048576);
 }
 
+// A block's fetch at the L2 with no other load: its tag check, the DRAM's unloaded latency and
+// the block's transfer. The absent units' first fetches are taken to last that long until the
+// L2 has measured fetches of its own.
+Cycle unloaded_fetch_cycles(const HwConfig& config) {
+  DramConfig dram = dram_for_analysis(config);
+  double transfer =
+      dram.bytes_per_cycle > 0 ? double(block_bytes(config.l2)) / dram.bytes_per_cycle : 0;
+  return config.l2.hit_latency + dram.latency + Cycle(std::ceil(transfer));
+}
+
 }  // namespace
 
 std::vector<uint64_t> scale_model_warps(uint64_t warps, uint32_t rate, uint32_t units,
@@ -233,7 +244,7 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   if (warmed)
     source.warm(sim);
   else
-    sim.share_l2_first_references(model.machine_share);
+    sim.share_l2_first_references(model.machine_share, unloaded_fetch_cycles(config));
   sim.run();
 
   FidelityResult r;

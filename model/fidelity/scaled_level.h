@@ -22,7 +22,12 @@
 // Scale-up: counts by the rate (stream rays over simulated rays). Cold (compulsory) L2 misses
 // happen once per line however many units share the L2, so they are not scaled: DRAM bytes =
 // k x simulated - (k - 1) x cold bytes, and the L2's hits gain (k - 1) x cold misses. Per ray
-// type, cold misses are shared out in proportion to the type's L2 misses.
+// type, cold misses are shared out in proportion to the type's L2 misses. An absent unit's
+// first fetch of a block is in flight, in the L2 (Cache::share_first_references), for the mean
+// latency of the L2's own fetches (the unloaded fetch latency until one is measured): reads in
+// that window merge, neither hit nor miss, as in the full machine, and the merges scale by the
+// rate with the other counts. Without it those reads hit and the L2 hit rate read high by most
+// of the full machine's merges on first fetches (pica, desktop: its interval held on no seed).
 //
 // Intervals (systematic.h): the sampling error of choosing warps, from the successive
 // differences of neighbouring sampled warps; cycles take the relative interval of the warps'

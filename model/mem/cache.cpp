@@ -277,7 +277,9 @@ Cycle Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
     stats_.absent_fills++;
     (l1 ? charge.l1_hits : charge.l2_hits)++;
     if (way == kNone) way = allocate(set, tag_of(line), at);
-    block_at(set, way, block) = Block{hit_ready, kNone, 0, true, false};
+    // The absent client's fetch is in flight for a fetch's mean latency: reads until then merge.
+    Cycle fetched = at + mean_fetch_cycles();
+    block_at(set, way, block) = Block{std::max(hit_ready, fetched), kNone, 0, true, false};
     return hit_ready;
   }
   if (first) stats_.cold_misses++;
@@ -361,6 +363,7 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
     return kPending;
   }
   // Answered at once: the block is in flight until `ready`, and so is its MSHR.
+  note_fetch(misses_[id], ready);
   charge += misses_[id].charge;
   Block& filled = block_at(set, way, block);
   filled.ready = ready;
@@ -382,6 +385,7 @@ Cycle Cache::issue(uint32_t miss, Cycle at) {
 void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   auto id = uint32_t(token);
   Miss& m = misses_[id];
+  note_fetch(m, ready);
   Block& b = block_at(m.set, m.way, m.block);
   if (b.valid && b.ready == kPending && b.miss == id) {
     b.ready = ready;

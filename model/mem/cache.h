@@ -128,9 +128,16 @@ class Cache : public MemoryTarget, private ReadClient {
   // For a scale model (model/fidelity/scaled_level.h): this cache stands in for a shared cache
   // of which the simulation drives only `own_share` of the clients. The first reference to a
   // block then goes below with probability own_share (decided by a hash of its address);
-  // otherwise one of the absent clients fetched it earlier, and it is a hit (absent_fills).
-  void share_first_references(double own_share) {
+  // otherwise one of the absent clients fetched it, and it is a hit (absent_fills). That fetch
+  // is taken to be in flight from the first reference for as long as this cache's own fetches
+  // have taken on average (from a request's arrival to its data; `first_fetch_cycles` until one
+  // has been answered): reads of the block until then merge into it (mshr_merges), are ready when
+  // it ends and are no hits, as the requests of the full machine's clients that arrive while a
+  // block's first fetch is in flight. (Without this window they all hit, and the scale model's
+  // hit rate read high by about the full machine's merges on first fetches.)
+  void share_first_references(double own_share, Cycle first_fetch_cycles = 0) {
     own_share_ = own_share;
+    first_fetch_cycles_ = first_fetch_cycles;
     track_cold_ = true;
   }
   const CacheStats& stats() const { return stats_; }
@@ -212,6 +219,16 @@ class Cache : public MemoryTarget, private ReadClient {
   void used_prefetch(Block& b, Cycle at);  // a read's first use of a prefetched block
   // Counts a merge into the in-flight block; returns its replay cycles (past the merge limit).
   uint32_t merge(Block& b);
+  // A fetch's latency, from its request's arrival (before the tag check) to its data, summed
+  // for the absent fills' window (share_first_references).
+  void note_fetch(const Miss& m, Cycle ready) {
+    fetch_cycles_ += ready - (m.send - config_.hit_latency);
+    fetches_++;
+  }
+  // The mean of those latencies so far (first_fetch_cycles_ until one is known).
+  Cycle mean_fetch_cycles() const {
+    return fetches_ ? fetch_cycles_ / fetches_ : first_fetch_cycles_;
+  }
   void wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t replay);
   void add_waiter(uint32_t miss, const Waiter& waiter);
   [[gnu::always_inline]] Cycle miss(uint64_t block, uint32_t set, uint32_t way, Cycle at,
@@ -284,6 +301,8 @@ class Cache : public MemoryTarget, private ReadClient {
   std::unordered_map<uint64_t, std::array<uint64_t, (1u << kPageShift) / 64>> held_pages_;
   bool track_cold_ = false;
   double own_share_ = 1.0;
+  uint64_t fetch_cycles_ = 0, fetches_ = 0;  // see note_fetch
+  Cycle first_fetch_cycles_ = 0;
   CacheStats stats_;
 };
 

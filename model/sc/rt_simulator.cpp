@@ -154,8 +154,8 @@ std::array<ReadCounts, kRayTypeCount> RtSimulator::shading_reads() const {
   return sum.reads;
 }
 
-void RtSimulator::share_l2_first_references(double own_share) {
-  l2_->share_first_references(own_share);
+void RtSimulator::share_l2_first_references(double own_share, Cycle first_fetch_cycles) {
+  l2_->share_first_references(own_share, first_fetch_cycles);
 }
 
 Cycle RtSimulator::cycles() const {

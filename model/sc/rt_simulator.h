@@ -63,8 +63,9 @@ class RtSimulator {
   // from the first measured ray on.
   std::array<ReadCounts, kRayTypeCount> shading_reads() const;
   // Before run(): the L2 stands in for that of a machine of which this one has own_share of the
-  // RT units (Cache::share_first_references).
-  void share_l2_first_references(double own_share);
+  // RT units, whose fetches are taken to last first_fetch_cycles until the L2 has measured its
+  // own (Cache::share_first_references).
+  void share_l2_first_references(double own_share, Cycle first_fetch_cycles);
   // During run(): an access of an RT unit this machine leaves out reaches its L2 (Cache::warm);
   // returns the blocks it fetched.
   uint32_t warm_l2(uint64_t addr, uint32_t bytes, bool write = false) {

@@ -85,8 +85,8 @@ void SharedCacheModule::track_cold_misses(uint64_t dense_begin, uint64_t dense_e
   for (auto& slice : slices_) slice->track_cold_misses(dense_begin, dense_end);
 }
 
-void SharedCacheModule::share_first_references(double own_share) {
-  for (auto& slice : slices_) slice->share_first_references(own_share);
+void SharedCacheModule::share_first_references(double own_share, Cycle first_fetch_cycles) {
+  for (auto& slice : slices_) slice->share_first_references(own_share, first_fetch_cycles);
 }
 
 void SharedCacheModule::use_timed_memory(uint32_t lead) {

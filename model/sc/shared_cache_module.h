@@ -100,7 +100,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   const Crossbar& crossbar() const { return crossbar_; }
   void track_cold_misses(uint64_t dense_begin = 0, uint64_t dense_end = 0);  // Cache's
   bool tracks_cold_misses() const { return slices_[0]->tracks_cold_misses(); }
-  void share_first_references(double own_share);
+  void share_first_references(double own_share, Cycle first_fetch_cycles);  // Cache's
   // Cache::warm on each line's slice, now: accesses of RT units the simulation does not drive.
   uint32_t warm(uint64_t addr, uint32_t bytes, bool write);
   size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served

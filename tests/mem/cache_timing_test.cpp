@@ -153,6 +153,45 @@ TEST(CacheTiming, AbsentSharersServeTheirShareOfFirstReferences) {
   EXPECT_EQ(half.stats().cold_misses + half.stats().absent_fills, 1000u) << "only first ones";
 }
 
+// Reads lines from `line` on at cycle `at`, each a first reference, until one is of the wanted
+// kind (fetched here: a miss; otherwise an absent fill); returns its address.
+uint64_t first_reference_of_kind(Cache& cache, uint64_t& line, Cycle at, bool fetched_here) {
+  for (;; ++line) {
+    uint64_t misses = cache.stats().misses;
+    cache.read(line * 64, 64, at);
+    if ((cache.stats().misses > misses) == fetched_here) return line++ * 64;
+  }
+}
+
+TEST(CacheTiming, AnAbsentSharersFetchIsInFlightForAFetchsMeanLatency) {
+  test::MockMemory mem(100);
+  CacheConfig config = small_cache();
+  config.size_bytes = 1 << 20;
+  config.mshrs = 64;
+  Cache cache(config, &mem);
+  cache.share_first_references(0.5);
+  uint64_t line = 0;
+  uint64_t early = first_reference_of_kind(cache, line, 0, false);
+  EXPECT_EQ(cache.read(early, 64, 1), 5u) << "with no fetch done yet, an absent fill is there";
+  first_reference_of_kind(cache, line, 0, true);  // a fetch here: 104 cycles from its request
+  uint64_t absent = first_reference_of_kind(cache, line, 1000, false);
+  CacheStats before = cache.stats();
+  EXPECT_EQ(cache.read(absent, 64, 1050), 1104u) << "the absent fetch is in flight: it merges";
+  EXPECT_EQ(cache.read(absent, 64, 1103), 1107u) << "merged at 1103, after its own tag check";
+  EXPECT_EQ(cache.stats().mshr_merges, before.mshr_merges + 2);
+  EXPECT_EQ(cache.stats().hits, before.hits);
+  EXPECT_EQ(cache.read(absent, 64, 1104), 1108u) << "from the fetch's latency on, a plain hit";
+  EXPECT_EQ(cache.stats().hits, before.hits + 1);
+  EXPECT_EQ(cache.stats().misses, before.misses) << "an absent fill never goes below";
+  Cache primed(config, &mem);
+  primed.share_first_references(0.5, 60);  // a fetch is taken to last 60 cycles until measured
+  EXPECT_EQ(primed.read(0, 64, 0), 4u) << "line 0 is an absent fill";
+  EXPECT_EQ(primed.read(0, 64, 59), 63u);
+  EXPECT_EQ(primed.stats().mshr_merges, 1u) << "at 59 the absent fetch is still in flight";
+  EXPECT_EQ(primed.read(0, 64, 60), 64u);
+  EXPECT_EQ(primed.stats().hits, 2u) << "from 60 on, a hit";
+}
+
 TEST(CacheTiming, WarmingFillsWithoutCountingAndEvictsAsAMiss) {
   test::MockMemory mem(10);
   Cache cache(small_cache(), &mem);  // 8 sets of 2 ways: lines 512 bytes apart share a set
