@@ -220,8 +220,9 @@ class Cache : public MemoryTarget, private ReadClient {
   // Counts a merge into the in-flight block; returns its replay cycles (past the merge limit).
   uint32_t merge(Block& b);
   // A fetch's latency, from its request's arrival (before the tag check) to its data, summed
-  // for the absent fills' window (share_first_references).
+  // for the absent fills' window (share_first_references; only a scale model's cache needs it).
   void note_fetch(const Miss& m, Cycle ready) {
+    if (own_share_ == 1.0) return;
     fetch_cycles_ += ready - (m.send - config_.hit_latency);
     fetches_++;
   }
