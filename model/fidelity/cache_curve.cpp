@@ -74,9 +74,6 @@ double cycles_along(const CurvePoint& p, const CurvePoint& a, const CurvePoint& 
 }  // namespace
 
 std::string curve_request_problem(const HwConfig& c, const CurveRequest& request) {
-  if (c.shader.model != ShaderModel::None)
-    return "shader.model: the curve's pass has no shader model (its shading reads are not in "
-           "the L2's stream); use shader.model = \"none\"";
   if (c.rt.mode != TraversalMode::DepthFirst)
     return "rt.mode: the curve's pass runs rays depth-first, as the cache level does; use "
            "rt.mode = \"depth_first\"";

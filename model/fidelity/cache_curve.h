@@ -63,7 +63,7 @@ struct CacheCurve {
 
 // Why the request cannot be answered for this config (empty if it can): capacities that give no
 // whole number of sets per slice, associativities out of range, a rate the sets do not divide
-// by, a config whose L2 traffic the pass does not see (the shader model's shading reads).
+// by, a traversal mode whose order the pass does not run (treelet queues, packets).
 std::string curve_request_problem(const HwConfig& config, const CurveRequest& request);
 
 // The pass: the cache level's walk over the stream, every point counted on the way.

@@ -8,6 +8,7 @@
 #include "model/mem/cache.h"
 #include "model/mem/dram.h"
 #include "model/sched/hardware_stack.h"
+#include "model/sched/shader_core.h"
 #include "model/units/traversal.h"
 #include "traces/stream.h"
 
@@ -53,6 +54,7 @@ class L2Tap : public MemoryTarget {
 
 struct Warp {
   std::vector<Lane> lanes;
+  std::vector<Ray> hits;  // with the shader model: its rays that hit, in the order they retired
   uint32_t live = 0;
   double start = 0;    // the clock its rays started at
   double slowest = 0;  // latency of its slowest ray so far
@@ -106,6 +108,7 @@ class CacheWalk {
       if (lane.live) {
         turns_.push({warp.start + lane.latency, t.unit, t.slot});
       } else if (warp.live == 0) {
+        shade(t.unit, warp);
         work_[t.unit].warp_cycles += warp.slowest;
         warp.start += warp.slowest;
         warp.slowest = 0;
@@ -140,20 +143,20 @@ class CacheWalk {
     }
   }
 
-  // One read through the unit's L1; charges the lane and returns the latency of the data.
-  double read(uint32_t unit, Lane& lane, uint64_t addr, uint32_t bytes) {
+  // One read through the unit's L1; charges `cost` and returns the latency of the data.
+  double read(uint32_t unit, CostTotals& cost, uint64_t addr, uint32_t bytes) {
     Cache& l1 = *l1_[unit];
     CacheStats a1 = l1.stats(), a2 = l2_.stats();
     now_ += kReadGap;
     l1.read(addr, bytes, now_);
     const CacheStats& b1 = l1.stats();
     const CacheStats& b2 = l2_.stats();
-    lane.cost.l1_accesses += b1.accesses - a1.accesses;
-    lane.cost.l1_hits += b1.hits - a1.hits;
-    lane.cost.l2_accesses += b2.accesses - a2.accesses;
-    lane.cost.l2_hits += b2.hits - a2.hits;
+    cost.l1_accesses += b1.accesses - a1.accesses;
+    cost.l1_hits += b1.hits - a1.hits;
+    cost.l2_accesses += b2.accesses - a2.accesses;
+    cost.l2_hits += b2.hits - a2.hits;
     uint64_t below = b2.bytes_below - a2.bytes_below;
-    lane.cost.dram_bytes += below;
+    cost.dram_bytes += below;
     dram_bytes_ += below + b2.writeback_bytes - a2.writeback_bytes;
     uint64_t missed = b1.misses - a1.misses;
     if (missed == 0) return c_.l1.hit_latency;
@@ -187,7 +190,8 @@ class CacheWalk {
     uint32_t context = unit * c_.rt.warps * c_.rt.warp_size + slot;
     if (lane.stack.refill(1) > 0)  // a step pops one entry
       lane.latency += read(
-          unit, lane, HardwareStack::entry_address(context, lane.stack.spilled, stack.entry_bytes),
+          unit, lane.cost,
+          HardwareStack::entry_address(context, lane.stack.spilled, stack.entry_bytes),
           stack.entry_bytes);
     auto kept = uint32_t(std::max<size_t>(s.stack.size(), 1) - 1);
     s.accesses.clear();
@@ -201,7 +205,7 @@ class CacheWalk {
       const MemoryAccess& first = s.accesses[r.first_access];
       const MemoryAccess& last = s.accesses[r.first_access + r.access_count - 1];
       lane.latency +=
-          read(unit, lane, first.address, uint32_t(last.address + last.bytes - first.address));
+          read(unit, lane.cost, first.address, uint32_t(last.address + last.bytes - first.address));
     }
     bool node = r.kind == StepKind::Node, leaf = r.kind == StepKind::Leaf;
     const TestUnitConfig& tests = node ? c_.rt.box : leaf ? c_.rt.triangle : c_.rt.transform;
@@ -210,7 +214,7 @@ class CacheWalk {
     lane.latency += tests.latency + double(issues - 1) + c_.rt.control_latency;
     double texels = 0;  // any-hit calls read their texels after the test, all at once
     for (uint64_t addr : s.texels)
-      texels = std::max(texels, read(unit, lane, addr, c_.rt.anyhit.read_bytes));
+      texels = std::max(texels, read(unit, lane.cost, addr, c_.rt.anyhit.read_bytes));
     s.texels.clear();
     lane.latency += texels;
     w.steps++;
@@ -220,7 +224,21 @@ class CacheWalk {
             out * stack.entry_bytes);
   }
 
+  // With the shader model, hit shading reads each hit's bytes through the unit's L1 when the
+  // warp's last ray is done, as the cycle model's ShaderCore does (shader_core.h).
+  void shade(uint32_t unit, Warp& warp) {
+    const ShaderConfig& shader = c_.shader;
+    CostTotals cost;  // no ray's
+    for (const Ray& ray : warp.hits)
+      read(unit, cost, shading_address(ray.frame, ray.pixel, shader.bytes_per_hit),
+           shader.bytes_per_hit);
+    warp.hits.clear();
+  }
+
   void retire(Warp& warp, Lane& lane) {
+    if (c_.shader.model != ShaderModel::None && c_.shader.bytes_per_hit > 0 &&
+        lane.state.prim != kNoHit)
+      warp.hits.push_back(lane.ray);
     lane.live = false;
     warp.live--;
     warp.slowest = std::max(warp.slowest, lane.latency);

@@ -9,6 +9,7 @@
 
 #include "model/bvh/bvh_image.h"
 #include "model/fidelity/cache_level.h"
+#include "model/mem/memory_level.h"
 #include "tests/fidelity/fidelity_test_util.h"
 
 namespace rtsim {
@@ -38,6 +39,33 @@ TEST(CacheCurve, PointAtTheWalksL2IsTheCacheLevelsL2) {
   for (size_t i = 1; i < curve.points.size(); ++i)
     EXPECT_LE(curve.points[i].dram_bytes, curve.points[i - 1].dram_bytes) << i;
   EXPECT_EQ(curve.rays, 20000u);
+}
+
+// Counts the L2 references to the shading region.
+struct ShadingReferences : L2ReferenceSink {
+  void reference(uint64_t addr, bool) override { count += addr >= kShadingBase && addr < kTextureBase; }
+  uint64_t count = 0;
+};
+
+TEST(CacheCurve, HitShadingReadsJoinTheL2Stream) {
+  std::string stream = test::small_stream("grid:2000", 20000);
+  Scene scene = load_scene("grid:2000");
+  auto shading = [&](const std::string& model) {
+    HwConfig config = load_hw_config("", {"shader.model=" + model});
+    BvhImage image = build_bvh_image(scene.mesh, config.bvh);
+    EXPECT_EQ(curve_request_problem(config, {{65536}, {config.l2.ways}, 1}), "");
+    ShadingReferences sink;
+    FidelityResult r = run_cache_level(config, image, stream, nullptr, &sink);
+    return std::make_pair(sink.count, r.rays);
+  };
+  auto [none, rays] = shading("none");
+  uint64_t simt = shading("simt").first;
+  std::filesystem::remove(stream);
+  EXPECT_EQ(none, 0u);
+  // Each hit reads its pixel's 64 bytes (one L1 line) when its warp is done; the L1 sends on
+  // those no ray of the frame brought in before.
+  EXPECT_GT(simt, 0u);
+  EXPECT_LE(simt, rays);
 }
 
 TEST(CacheCurve, RefusesCapacitiesWithoutWholeSets) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include "scene_test_util.h"
 
@@ -60,8 +61,10 @@ TEST(SceneImport, ObjWithMtlGivesObjectsAndMaterials) {
 // A flattened scene kept as its instances (for instance masks and motion): every flat triangle,
 // material and object as before, the fingerprint of the file it came from.
 TEST(SceneImport, AFlattenedSceneKeptAsInstancesKeepsItsFlatIds) {
-  Scene flat = load_scene(std::string(RTSIM_SOURCE_DIR) +
-                          "/../shared/scenes/cornell-box/CornellBox-Original.obj");
+  std::string path =
+      std::string(RTSIM_SOURCE_DIR) + "/../shared/scenes/cornell-box/CornellBox-Original.obj";
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " absent (no ../shared here)";
+  Scene flat = load_scene(path);
   ASSERT_TRUE(flat.flattened());
   ASSERT_GT(flat.instanced.instances.size(), 1u);
   Scene kept = flat;
