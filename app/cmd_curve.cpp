@@ -75,13 +75,6 @@ std::vector<uint64_t> parse_sizes(const std::string& text, const std::string& op
   return out;
 }
 
-// "32 KiB", or bytes: a folder's name part ("32K").
-std::string size_name(uint64_t bytes) {
-  if (bytes % (1 << 20) == 0) return std::to_string(bytes >> 20) + "M";
-  if (bytes % (1 << 10) == 0) return std::to_string(bytes >> 10) + "K";
-  return std::to_string(bytes);
-}
-
 struct CurveInputs {
   const CurveOptions& options;
   const std::string& scene_source;
@@ -136,15 +129,19 @@ nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& requ
   return reports::curve_json(curve, context);
 }
 
+// curve_chart.py OUTDIR CURVE.json...: one curve's chart, or the family's.
+void draw(const std::vector<std::string>& args) {
+  reports::ChartRun chart = reports::run_chart_script("curve_chart.py", args);
+  if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+}
+
 void write_curve(const std::string& dir, const nlohmann::ordered_json& doc,
                  const HwConfig& config, bool charts) {
   write_file_atomic(dir + "/curve.json", doc.dump(2) + "\n");
   write_file_atomic(dir + "/curve.csv", reports::curve_csv(doc));
   write_file_atomic(dir + "/curve.md", reports::curve_markdown(doc));
   write_file_atomic(dir + "/config.toml", resolved_toml(config));
-  if (!charts) return;
-  reports::ChartRun chart = reports::run_chart_script("curve_chart.py", {dir, dir + "/curve.json"});
-  if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+  if (charts) draw({dir, dir + "/curve.json"});
 }
 
 int run_curve(const CurveOptions& o) {
@@ -186,11 +183,11 @@ int run_curve(const CurveOptions& o) {
   std::vector<std::string> files;  // their curve.json
   for (const HwConfig& c : configs) {
     nlohmann::ordered_json& doc = docs.emplace_back(curve_on(c, request, in));
-    if (family) fmt::print("L1 {}:\n", size_name(c.l1.size_bytes));
+    if (family) fmt::print("L1 {}:\n", reports::size_text(c.l1.size_bytes, true));
     fmt::print("{}", reports::curve_table(doc, false));
     if (family) fmt::print("\n");
     if (o.output.empty()) continue;
-    std::string dir = family ? o.output + "/l1-" + size_name(c.l1.size_bytes) : o.output;
+    std::string dir = family ? o.output + "/l1-" + reports::size_text(c.l1.size_bytes, true) : o.output;
     if (family) create_output_folder(dir);
     write_curve(dir, doc, c, !o.no_charts);
     files.push_back(dir + "/curve.json");
@@ -200,10 +197,8 @@ int run_curve(const CurveOptions& o) {
     write_file_atomic(o.output + "/curve-l1.md", reports::curve_family_markdown(docs));
     write_file_atomic(o.output + "/config.toml", resolved_toml(config));
     if (!o.no_charts) {
-      std::vector<std::string> args = {o.output};
-      args.insert(args.end(), files.begin(), files.end());
-      reports::ChartRun chart = reports::run_chart_script("curve_chart.py", args);
-      if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+      files.insert(files.begin(), o.output);
+      draw(files);
     }
   }
   fmt::print("\nresults in {}\n", o.output);

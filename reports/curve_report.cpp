@@ -20,12 +20,6 @@ const char* cycles_from_name(CurvePoint::Cycles from) {
   return "unknown";
 }
 
-std::string size_text(uint64_t bytes) {
-  if (bytes % (1 << 20) == 0) return fmt::format("{} MiB", bytes >> 20);
-  if (bytes % (1 << 10) == 0) return fmt::format("{} KiB", bytes >> 10);
-  return fmt::format("{} B", bytes);
-}
-
 // The full model's run at a point, and the curve's error against it.
 nlohmann::ordered_json cycle_run_json(const CurvePoint& p, double rays) {
   const CyclePoint& c = p.cycle_run;
@@ -53,6 +47,14 @@ std::string percent(const nlohmann::json& v, double scale, const char* format) {
 }
 
 }  // namespace
+
+std::string size_text(uint64_t bytes, bool compact) {
+  const char* mib = compact ? "M" : " MiB";
+  const char* kib = compact ? "K" : " KiB";
+  if (bytes % (1 << 20) == 0) return fmt::format("{}{}", bytes >> 20, mib);
+  if (bytes % (1 << 10) == 0) return fmt::format("{}{}", bytes >> 10, kib);
+  return compact ? std::to_string(bytes) : fmt::format("{} B", bytes);
+}
 
 nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::ordered_json& context) {
   double rays = double(std::max<uint64_t>(curve.rays, 1));

@@ -12,6 +12,8 @@
 
 namespace rtsim::reports {
 
+// "32 KiB", "4 MiB", "100 B"; compact: "32K", "4M", "100", as the command's options take them.
+std::string size_text(uint64_t bytes, bool compact = false);
 // context: what was run (stream, scene, config, ...), copied into the document.
 nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::ordered_json& context);
 std::string curve_table(const nlohmann::ordered_json& doc, bool markdown);

@@ -90,6 +90,11 @@ nlohmann::ordered_json resolved_json(const HwConfig& config);
 // the simple model; with the banked one, its peak bandwidth and the unloaded latency of a read
 // to a closed bank (tRCD + tCL + a burst, and controller_latency).
 DramConfig dram_for_analysis(const HwConfig& config);
+// Cycles of a read of `bytes` from such a DRAM with nothing else queued: its latency and the
+// transfer (none without a bandwidth limit).
+inline double unloaded_dram_read(const DramConfig& dram, uint32_t bytes) {
+  return dram.latency + (dram.bytes_per_cycle > 0 ? double(bytes) / dram.bytes_per_cycle : 0.0);
+}
 
 // Why the combination is impossible (empty if fine), naming the section.
 std::string hw_config_problem(const HwConfig& config);

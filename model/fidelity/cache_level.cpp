@@ -54,7 +54,7 @@ class L2Tap : public MemoryTarget {
 
 struct Warp {
   std::vector<Lane> lanes;
-  std::vector<Ray> hits;  // with the shader model: its rays that hit, in the order they retired
+  std::vector<uint64_t> shading;  // with the shader model: its hits' shading reads, in order
   uint32_t live = 0;
   double start = 0;    // the clock its rays started at
   double slowest = 0;  // latency of its slowest ray so far
@@ -162,7 +162,7 @@ class CacheWalk {
     if (missed == 0) return c_.l1.hit_latency;
     double below_latency = c_.l2.hit_latency;
     if (b2.misses > a2.misses)
-      below_latency += c_.dram.latency + double(l2_.block_bytes()) / c_.dram.bytes_per_cycle;
+      below_latency += unloaded_dram_read(c_.dram, l2_.block_bytes());
     // Each missed block takes one of the unit's L1 MSHRs after the tag check, waiting for the
     // first to free if all are busy, and holds it until its data is back.
     auto& mshrs = mshr_free_[unit];
@@ -227,18 +227,15 @@ class CacheWalk {
   // With the shader model, hit shading reads each hit's bytes through the unit's L1 when the
   // warp's last ray is done, as the cycle model's ShaderCore does (shader_core.h).
   void shade(uint32_t unit, Warp& warp) {
-    const ShaderConfig& shader = c_.shader;
     CostTotals cost;  // no ray's
-    for (const Ray& ray : warp.hits)
-      read(unit, cost, shading_address(ray.frame, ray.pixel, shader.bytes_per_hit),
-           shader.bytes_per_hit);
-    warp.hits.clear();
+    for (uint64_t addr : warp.shading) read(unit, cost, addr, c_.shader.bytes_per_hit);
+    warp.shading.clear();
   }
 
   void retire(Warp& warp, Lane& lane) {
-    if (c_.shader.model != ShaderModel::None && c_.shader.bytes_per_hit > 0 &&
-        lane.state.prim != kNoHit)
-      warp.hits.push_back(lane.ray);
+    const ShaderConfig& shader = c_.shader;
+    if (shader.model != ShaderModel::None && shader.bytes_per_hit > 0 && lane.state.prim != kNoHit)
+      warp.shading.push_back(shading_address(lane.ray.frame, lane.ray.pixel, shader.bytes_per_hit));
     lane.live = false;
     warp.live--;
     warp.slowest = std::max(warp.slowest, lane.latency);

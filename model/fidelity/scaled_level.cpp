@@ -180,10 +180,8 @@ std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& c
 // the block's transfer. The absent units' first fetches are taken to last that long until the
 // L2 has measured fetches of its own.
 Cycle unloaded_fetch_cycles(const HwConfig& config) {
-  DramConfig dram = dram_for_analysis(config);
-  double transfer =
-      dram.bytes_per_cycle > 0 ? double(block_bytes(config.l2)) / dram.bytes_per_cycle : 0;
-  return config.l2.hit_latency + dram.latency + Cycle(std::ceil(transfer));
+  return config.l2.hit_latency +
+         Cycle(std::ceil(unloaded_dram_read(dram_for_analysis(config), block_bytes(config.l2))));
 }
 
 }  // namespace
