@@ -326,11 +326,28 @@ void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t rep
 }
 
 void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
+  Miss& m = misses_[miss];
+  if (!m.waited) {
+    m.first = waiter;
+    m.waited = true;
+    return;
+  }
   uint32_t id = take_slot(waiters_, free_waiters_);
   waiters_[id] = waiter;
-  Miss& m = misses_[miss];
-  (m.first == kNone ? m.first : waiters_[m.last].next) = id;
+  (m.more == kNone ? m.more : waiters_[m.last].next) = id;
   m.last = id;
+}
+
+uint32_t Cache::take_waiting() {
+  uint32_t miss = waiting_[waiting_next_++];
+  if (waiting_next_ == waiting_.size()) {
+    waiting_.clear();
+    waiting_next_ = 0;
+  } else if (waiting_next_ >= 4096 && waiting_next_ * 2 >= waiting_.size()) {
+    waiting_.erase(waiting_.begin(), waiting_.begin() + long(waiting_next_));  // taken ones
+    waiting_next_ = 0;
+  }
+  return miss;
 }
 
 inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
@@ -348,11 +365,12 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   m.send = send;
   m.charge = {};
   m.prefetch = !caller.client;
-  m.first = m.last = kNone;
+  m.waited = false;
+  m.more = m.last = kNone;
   // The MSHR free first; with none whose end is known, wait until one's end is reported.
   if (free_mshrs_.empty()) {
     wait_for(id, caller, 0, 0);
-    waiting_.push_back(id);
+    add_waiting(id);
     return kPending;
   }
   Cycle start = std::max(send, free_mshrs_.top());
@@ -397,22 +415,25 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
     first += charge;
   }
   // Completing a waiter only notifies its client; nothing here adds a waiter or a miss.
-  uint32_t head = m.first;
-  for (uint32_t w = head; w != kNone;) {
-    Waiter waiter = waiters_[w];
-    free_waiters_.push_back(w);
-    waiter.client->read_done(waiter.token, std::max(ready + waiter.replay, waiter.earliest),
-                             w == head ? first : ReadCharge{});
-    w = waiter.next;
+  if (m.waited) {
+    Waiter head = m.first;
+    uint32_t w = m.more;
+    head.client->read_done(head.token, std::max(ready + head.replay, head.earliest), first);
+    while (w != kNone) {
+      Waiter waiter = waiters_[w];
+      free_waiters_.push_back(w);
+      waiter.client->read_done(waiter.token, std::max(ready + waiter.replay, waiter.earliest),
+                               ReadCharge{});
+      w = waiter.next;
+    }
   }
   free_misses_.push_back(id);
   // Its MSHR is free from `ready`: for the first miss waiting for one, or for later misses.
-  if (waiting_.empty()) {
+  if (!any_waiting()) {
     free_mshrs_.push(ready);
     return;
   }
-  uint32_t next = waiting_.front();
-  waiting_.pop_front();
+  uint32_t next = take_waiting();
   Cycle next_ready = issue(next, std::max(ready, misses_[next].send));
   if (next_ready != kPending) read_done(next, next_ready, {});
 }

@@ -28,7 +28,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <queue>
 #include <string>
@@ -171,8 +170,12 @@ class Cache : public MemoryTarget, private ReadClient {
     uint32_t set = 0, way = 0;
     Cycle send = 0;         // the cycle it may go below (after the tag check)
     bool prefetch = false;  // made by a prefetch: its cost is charged to no read
+    bool waited = false;    // `first` holds a waiter
     ReadCharge charge;
-    uint32_t first = kNone, last = kNone;  // its waiters, in order: the first made the miss
+    // Its waiters in order: the first (the one that made the miss, unless a prefetch did) kept
+    // here, as most misses have no other; the others in waiters_, listed from `more`.
+    Waiter first{};
+    uint32_t more = kNone, last = kNone;
   };
   // A read of several blocks that waits: its client, and the blocks it still waits for. Its
   // blocks' misses report to join_, which completes the read with the last of them.
@@ -278,7 +281,13 @@ class Cache : public MemoryTarget, private ReadClient {
   std::vector<Waiter> waiters_;  // the waiters of all misses, in lists through Waiter::next
   std::vector<uint32_t> free_waiters_;
   std::vector<uint32_t> free_misses_;
-  std::deque<uint32_t> waiting_;  // misses for which every MSHR's end was unknown
+  // Misses for which every MSHR's end was unknown, first come first: waiting_[waiting_next_]
+  // on (add_waiting, take_waiting).
+  std::vector<uint32_t> waiting_;
+  size_t waiting_next_ = 0;
+  void add_waiting(uint32_t miss) { waiting_.push_back(miss); }
+  bool any_waiting() const { return waiting_next_ < waiting_.size(); }
+  uint32_t take_waiting();
   std::vector<Request> requests_;
   std::vector<uint32_t> free_requests_;
   Join join_{*this};
