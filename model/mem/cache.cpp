@@ -86,7 +86,7 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   filled_.assign(sets_, 0);
   blocks_.resize(tags_.size() << sector_shift_);
   banks_.resize(config.banks);
-  policy_ = make_replacement_policy(config.replacement, sets_, config.ways);
+  policy_ = *make_replacement_policy(config.replacement, sets_, config.ways);
   for (uint32_t i = 0; i < config.mshrs; ++i) free_mshrs_.push(0);
 }
 
@@ -191,7 +191,7 @@ uint32_t Cache::warm(uint64_t addr, uint32_t bytes, Cycle at, bool write) {
     if (way == kNone)
       way = allocate(set, tag_of(line), at);
     else
-      policy_->touch(set, way);
+      policy_.touch(set, way);
     bool dirty = write && config_.write_back;
     for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block) {
       Block& b = block_at(set, way, block);
@@ -248,7 +248,7 @@ inline Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCha
   Cycle hit_ready = at + config_.hit_latency;
 
   if (way != kNone) {
-    policy_->touch(set, way);
+    policy_.touch(set, way);
     Block& b = block_at(set, way, block);
     if (b.prefetched) used_prefetch(b, at);
     if (b.valid && (b.ready == kPending || b.ready > at)) {
@@ -295,7 +295,7 @@ void Cache::write_block(uint64_t block, Cycle at) {
   uint32_t set = set_of(line);
   uint32_t way = find(set, tag_of(line));
   if (way == kNone) way = allocate(set, tag_of(line), at);
-  policy_->touch(set, way);
+  policy_.touch(set, way);
   Block& b = block_at(set, way, block);
   if (!b.valid) {
     stats_.write_misses++;
@@ -452,7 +452,7 @@ uint32_t Cache::allocate(uint32_t set, uint64_t tag, Cycle at) {
   // Lines are never invalidated, so a set's ways fill in order: the first free one is next.
   uint32_t victim = filled_[set] < config_.ways ? filled_[set]++ : config_.ways;
   if (victim == config_.ways) {
-    victim = policy_->victim(set);
+    victim = policy_.victim(set);
     stats_.evictions++;
     uint64_t old_line = ways[victim] * sets_ + set;
     Block* blocks = &blocks_[(size_t(set) * config_.ways + victim) << sector_shift_];
@@ -468,7 +468,7 @@ uint32_t Cache::allocate(uint32_t set, uint64_t tag, Cycle at) {
     }
   }
   ways[victim] = tag;
-  policy_->insert(set, victim);
+  policy_.insert(set, victim);
   return victim;
 }
 

@@ -273,7 +273,7 @@ class Cache : public MemoryTarget, private ReadClient {
   std::vector<Block> blocks_;     // tags_ x blocks per line
   std::vector<Bank> banks_;
   double port_free_ = 0;  // cycle (fractional) the data port is free from
-  std::unique_ptr<ReplacementPolicy> policy_;
+  ReplacementPolicy policy_;
   // The cycles the MSHRs not holding a miss are free from, earliest first. An MSHR whose miss
   // has not learnt its data's cycle is in none of them.
   std::priority_queue<Cycle, std::vector<Cycle>, std::greater<Cycle>> free_mshrs_;

@@ -14,6 +14,7 @@ namespace rtsim {
 class ReplacementPolicy {
  public:
   enum class Kind : uint8_t { Lru, Fifo, Random };
+  ReplacementPolicy() = default;  // of no set: for a cache to assign one once it knows its sets
   ReplacementPolicy(Kind kind, uint32_t sets, uint32_t ways, uint64_t seed);
 
   // A hit on (set, way).
@@ -28,11 +29,11 @@ class ReplacementPolicy {
   uint32_t victim(uint32_t set);
 
  private:
-  Kind kind_;
-  uint32_t ways_;
+  Kind kind_ = Kind::Lru;
+  uint32_t ways_ = 0;
   std::vector<uint64_t> stamps_;
   uint64_t clock_ = 0;
-  uint64_t state_;  // random: the xorshift state
+  uint64_t state_ = 1;  // random: the xorshift state
 };
 
 // "lru", "fifo" or "random" (seeded, deterministic); nullptr for an unknown name.
