@@ -109,6 +109,26 @@ TEST(CacheTiming, MissesWaitingForMshrsOfUnknownEndLeaveWhenOneIsReported) {
   EXPECT_EQ(charge.dram_bytes, 3u * 64) << "as the L2, it charges what it fetches";
 }
 
+TEST(CacheTiming, MissesWaitingForAnMshrGoBelowInTheOrderTheyCame) {
+  test::MockMemory mem(0, true);
+  test::RecordingClient client;
+  CacheConfig config = small_cache();
+  config.mshrs = 1;
+  Cache cache(config, &mem);
+  ReadCharge charge;
+  // More waiting misses than the waiting queue keeps before it drops the ones already taken.
+  const uint32_t misses = 10000;
+  for (uint32_t i = 0; i < misses; ++i) cache.read(uint64_t(i) * 64, 64, i, &client, i, charge);
+  ASSERT_EQ(mem.requests.size(), 1u) << "one MSHR, whose end is not known yet";
+  for (uint32_t i = 0; i < misses; ++i) {
+    ASSERT_EQ(mem.requests.size(), i + 1u);
+    EXPECT_EQ(mem.requests[i].addr, uint64_t(i) * 64) << "miss " << i << " went below out of order";
+    mem.answer(i, 1000 + i);
+  }
+  ASSERT_EQ(client.done.size(), misses);
+  for (uint32_t i = 0; i < misses; ++i) EXPECT_EQ(client.done[i].token, i);
+}
+
 TEST(CacheTiming, RequestSpanningTwoLinesIsReadyWithTheLaterLine) {
   test::MockMemory mem(100);
   Cache cache(small_cache(), &mem);
