@@ -327,9 +327,8 @@ void Cache::wait_for(uint32_t miss, Caller& caller, Cycle earliest, uint32_t rep
 
 void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
   Miss& m = misses_[miss];
-  if (!m.waited) {
+  if (!m.first.client) {
     m.first = waiter;
-    m.waited = true;
     return;
   }
   uint32_t id = take_slot(waiters_, free_waiters_);
@@ -338,15 +337,16 @@ void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
   m.last = id;
 }
 
+void Cache::add_waiting(uint32_t miss) {
+  misses_[miss].next_waiting = kNone;
+  (waiting_last_ == kNone ? waiting_first_ : misses_[waiting_last_].next_waiting) = miss;
+  waiting_last_ = miss;
+}
+
 uint32_t Cache::take_waiting() {
-  uint32_t miss = waiting_[waiting_next_++];
-  if (waiting_next_ == waiting_.size()) {
-    waiting_.clear();
-    waiting_next_ = 0;
-  } else if (waiting_next_ >= 4096 && waiting_next_ * 2 >= waiting_.size()) {
-    waiting_.erase(waiting_.begin(), waiting_.begin() + long(waiting_next_));  // taken ones
-    waiting_next_ = 0;
-  }
+  uint32_t miss = waiting_first_;
+  waiting_first_ = misses_[miss].next_waiting;
+  if (waiting_first_ == kNone) waiting_last_ = kNone;
   return miss;
 }
 
@@ -365,7 +365,7 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   m.send = send;
   m.charge = {};
   m.prefetch = !caller.client;
-  m.waited = false;
+  m.first.client = nullptr;
   m.more = m.last = kNone;
   // The MSHR free first; with none whose end is known, wait until one's end is reported.
   if (free_mshrs_.empty()) {
@@ -415,7 +415,7 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
     first += charge;
   }
   // Completing a waiter only notifies its client; nothing here adds a waiter or a miss.
-  if (m.waited) {
+  if (m.first.client) {
     Waiter head = m.first;
     uint32_t w = m.more;
     head.client->read_done(head.token, std::max(ready + head.replay, head.earliest), first);
@@ -429,7 +429,7 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   }
   free_misses_.push_back(id);
   // Its MSHR is free from `ready`: for the first miss waiting for one, or for later misses.
-  if (!any_waiting()) {
+  if (waiting_first_ == kNone) {
     free_mshrs_.push(ready);
     return;
   }

@@ -28,7 +28,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <queue>
 #include <string>
 #include <unordered_map>
@@ -170,12 +169,13 @@ class Cache : public MemoryTarget, private ReadClient {
     uint32_t set = 0, way = 0;
     Cycle send = 0;         // the cycle it may go below (after the tag check)
     bool prefetch = false;  // made by a prefetch: its cost is charged to no read
-    bool waited = false;    // `first` holds a waiter
     ReadCharge charge;
     // Its waiters in order: the first (the one that made the miss, unless a prefetch did) kept
-    // here, as most misses have no other; the others in waiters_, listed from `more`.
+    // here, as most misses have no other (client null: none yet); the others in waiters_,
+    // listed from `more`.
     Waiter first{};
     uint32_t more = kNone, last = kNone;
+    uint32_t next_waiting = kNone;  // the next miss waiting for an MSHR after it
   };
   // A read of several blocks that waits: its client, and the blocks it still waits for. Its
   // blocks' misses report to join_, which completes the read with the last of them.
@@ -281,12 +281,10 @@ class Cache : public MemoryTarget, private ReadClient {
   std::vector<Waiter> waiters_;  // the waiters of all misses, in lists through Waiter::next
   std::vector<uint32_t> free_waiters_;
   std::vector<uint32_t> free_misses_;
-  // Misses for which every MSHR's end was unknown, first come first: waiting_[waiting_next_]
-  // on (add_waiting, take_waiting).
-  std::vector<uint32_t> waiting_;
-  size_t waiting_next_ = 0;
-  void add_waiting(uint32_t miss) { waiting_.push_back(miss); }
-  bool any_waiting() const { return waiting_next_ < waiting_.size(); }
+  // Misses for which every MSHR's end was unknown, first come first: a list through
+  // Miss::next_waiting from waiting_first_ to waiting_last_ (kNone: empty).
+  uint32_t waiting_first_ = kNone, waiting_last_ = kNone;
+  void add_waiting(uint32_t miss);
   uint32_t take_waiting();
   std::vector<Request> requests_;
   std::vector<uint32_t> free_requests_;

@@ -20,13 +20,13 @@ uint32_t ReplacementPolicy::victim(uint32_t set) {
   return uint32_t(std::min_element(first, first + ways_) - first);
 }
 
-std::unique_ptr<ReplacementPolicy> make_replacement_policy(const std::string& name, uint32_t sets,
-                                                           uint32_t ways, uint64_t seed) {
+std::optional<ReplacementPolicy> make_replacement_policy(const std::string& name, uint32_t sets,
+                                                         uint32_t ways, uint64_t seed) {
   using Kind = ReplacementPolicy::Kind;
-  if (name == "lru") return std::make_unique<ReplacementPolicy>(Kind::Lru, sets, ways, seed);
-  if (name == "fifo") return std::make_unique<ReplacementPolicy>(Kind::Fifo, sets, ways, seed);
-  if (name == "random") return std::make_unique<ReplacementPolicy>(Kind::Random, sets, ways, seed);
-  return nullptr;
+  if (name == "lru") return ReplacementPolicy(Kind::Lru, sets, ways, seed);
+  if (name == "fifo") return ReplacementPolicy(Kind::Fifo, sets, ways, seed);
+  if (name == "random") return ReplacementPolicy(Kind::Random, sets, ways, seed);
+  return std::nullopt;
 }
 
 std::vector<std::string> replacement_policy_names() {

@@ -5,7 +5,7 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,9 +36,9 @@ class ReplacementPolicy {
   uint64_t state_ = 1;  // random: the xorshift state
 };
 
-// "lru", "fifo" or "random" (seeded, deterministic); nullptr for an unknown name.
-std::unique_ptr<ReplacementPolicy> make_replacement_policy(const std::string& name, uint32_t sets,
-                                                           uint32_t ways, uint64_t seed = 1);
+// "lru", "fifo" or "random" (seeded, deterministic); none for an unknown name.
+std::optional<ReplacementPolicy> make_replacement_policy(const std::string& name, uint32_t sets,
+                                                         uint32_t ways, uint64_t seed = 1);
 std::vector<std::string> replacement_policy_names();
 
 }  // namespace rtsim

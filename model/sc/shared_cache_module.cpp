@@ -181,8 +181,8 @@ void SharedCacheModule::run_job(const Job& job, Cycle at) {
   switch (job.kind) {
     case JobKind::Read: {
       // The slice reports a miss's data later (never during the read) under the id of the
-      // record it then takes (the slot take_slot gives next: nothing takes one during the read).
-      auto id = uint32_t(free_missed_.empty() ? missed_.size() : free_missed_.back());
+      // record it then takes (nothing takes one during the read).
+      uint32_t id = next_slot(missed_, free_missed_);
       ReadCharge charge;
       Cycle ready = slices_[job.slice]->read(job.addr, job.bytes, at, this, id, charge);
       if (ready != kPending) return respond(job, ready, charge);

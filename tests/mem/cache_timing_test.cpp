@@ -116,7 +116,6 @@ TEST(CacheTiming, MissesWaitingForAnMshrGoBelowInTheOrderTheyCame) {
   config.mshrs = 1;
   Cache cache(config, &mem);
   ReadCharge charge;
-  // More waiting misses than the waiting queue keeps before it drops the ones already taken.
   const uint32_t misses = 10000;
   for (uint32_t i = 0; i < misses; ++i) cache.read(uint64_t(i) * 64, 64, i, &client, i, charge);
   ASSERT_EQ(mem.requests.size(), 1u) << "one MSHR, whose end is not known yet";
