@@ -120,20 +120,27 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, u
   stats_.bytes_read += bytes;
   if (addr >= kLocalMemoryBase) stats_.local_reads++;
   Caller caller{client, token, last > first, kNone};
-  if (!caller.several_blocks)
-    return read_block(first, admits_ ? admit(first >> sector_shift_, bytes, at) : at, caller,
+  if (!caller.several_blocks) {
+    Place p = look_up(first >> sector_shift_);
+    return read_block(first, p, admits_ ? admit(first >> sector_shift_, bytes, at) : at, caller,
                       charge);
-  // Block by block, the hot path (a node's several lines); a line's first block takes its bank
-  // and port for the part of the read inside the line.
-  Cycle ready = at, start = at;
-  for (uint64_t block = first; block <= last; ++block) {
-    uint64_t line = block >> sector_shift_;
-    if (admits_ && (block == first || (block & sector_mask_) == 0)) {
-      uint64_t begin = std::max(addr, line << line_shift_);
-      start = admit(line, std::min(addr + bytes, (line + 1) << line_shift_) - begin, at);
+  }
+  // Line by line, the hot path (a node's several lines); a line takes its bank and port for the
+  // part of the read inside it.
+  Cycle ready = at;
+  for (uint64_t line = first >> sector_shift_; line <= last >> sector_shift_; ++line) {
+    uint64_t begin = std::max(first, line << sector_shift_);
+    uint64_t end = std::min(last, ((line + 1) << sector_shift_) - 1);
+    Cycle start = at;
+    if (admits_) {
+      uint64_t from = std::max(addr, line << line_shift_);
+      start = admit(line, std::min(addr + bytes, (line + 1) << line_shift_) - from, at);
     }
-    Cycle r = read_block(block, start, caller, charge);
-    if (r != kPending) ready = std::max(ready, r);
+    Place p = look_up(line);
+    for (uint64_t block = begin; block <= end; ++block) {
+      Cycle r = read_block(block, p, start, caller, charge);
+      if (r != kPending) ready = std::max(ready, r);
+    }
   }
   if (caller.request == kNone) return ready;
   Request& q = requests_[caller.request];  // its blocks complete later, never during this call
@@ -238,18 +245,22 @@ uint32_t Cache::merge(Block& b) {
   return 0;
 }
 
-inline Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge) {
+inline Cache::Place Cache::look_up(uint64_t line) {
+  Place p{set_of(line), kNone};
+  p.way = find(p.set, tag_of(line));
+  if (p.way != kNone) policy_.touch(p.set, p.way);
+  return p;
+}
+
+inline Cycle Cache::read_block(uint64_t block, Place& p, Cycle at, Caller& caller,
+                               ReadCharge& charge) {
   stats_.accesses++;
   bool l1 = role_ == CacheRole::L1;
   (l1 ? charge.l1_accesses : charge.l2_accesses)++;
-  uint64_t line = block >> sector_shift_;
-  uint32_t set = set_of(line);
-  uint32_t way = find(set, tag_of(line));
   Cycle hit_ready = at + config_.hit_latency;
 
-  if (way != kNone) {
-    policy_.touch(set, way);
-    Block& b = block_at(set, way, block);
+  if (p.way != kNone) {
+    Block& b = block_at(p.set, p.way, block);
     if (b.prefetched) used_prefetch(b, at);
     if (b.valid && (b.ready == kPending || b.ready > at)) {
       uint32_t replay = merge(b);
@@ -263,10 +274,10 @@ inline Cycle Cache::read_block(uint64_t block, Cycle at, Caller& caller, ReadCha
       return hit_ready;
     }
   }
-  return read_absent(block, set, way, at, caller, charge);
+  return read_absent(block, p.set, p.way, at, caller, charge);
 }
 
-Cycle Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
+Cycle Cache::read_absent(uint64_t block, uint32_t set, uint32_t& way, Cycle at, Caller& caller,
                          ReadCharge& charge) {
   bool l1 = role_ == CacheRole::L1;
   uint64_t line = block >> sector_shift_;

@@ -212,11 +212,18 @@ class Cache : public MemoryTarget, private ReadClient {
     for (uint64_t line = addr >> line_shift_; line <= (end - 1) >> line_shift_; ++line)
       f(line, std::max(addr, line << line_shift_), std::min(end, (line + 1) << line_shift_));
   }
-  // A block's ready cycle, or kPending once the caller waits for it.
-  Cycle read_block(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge);
-  // read_block's path for a block absent from its line (way: the line's, or kNone): the miss
-  // (kept out of line, so the hit path stays short).
-  [[gnu::noinline]] Cycle read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
+  struct Place {  // a line's set, and its way (kNone: absent)
+    uint32_t set, way;
+  };
+  // Where `line` is, touched for the replacement policy: once for all of a read's blocks in the
+  // line, which keeps the order of lines' last uses (all that LRU compares) the same.
+  Place look_up(uint64_t line);
+  // A block's ready cycle, or kPending once the caller waits for it; p.way becomes the way the
+  // line is given if the read allocates it.
+  Cycle read_block(uint64_t block, Place& p, Cycle at, Caller& caller, ReadCharge& charge);
+  // read_block's path for a block absent from its line: the miss (kept out of line, so the hit
+  // path stays short).
+  [[gnu::noinline]] Cycle read_absent(uint64_t block, uint32_t set, uint32_t& way, Cycle at,
                                       Caller& caller, ReadCharge& charge);
   void write_block(uint64_t block, Cycle at);
   void used_prefetch(Block& b, Cycle at);  // a read's first use of a prefetched block
