@@ -127,20 +127,19 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, u
   }
   // Line by line, the hot path (a node's several lines); a line takes its bank and port for the
   // part of the read inside it.
-  Cycle ready = at;
-  for (uint64_t line = first >> sector_shift_; line <= last >> sector_shift_; ++line) {
-    uint64_t begin = std::max(first, line << sector_shift_);
-    uint64_t end = std::min(last, ((line + 1) << sector_shift_) - 1);
-    Cycle start = at;
-    if (admits_) {
-      uint64_t from = std::max(addr, line << line_shift_);
-      start = admit(line, std::min(addr + bytes, (line + 1) << line_shift_) - from, at);
+  Cycle ready = at, start = at;
+  Place p{};
+  for (uint64_t block = first; block <= last; ++block) {
+    if ((block & sector_mask_) == 0 || block == first) {  // a line's first block
+      uint64_t line = block >> sector_shift_;
+      if (admits_) {
+        uint64_t begin = std::max(addr, line << line_shift_);
+        start = admit(line, std::min(addr + bytes, (line + 1) << line_shift_) - begin, at);
+      }
+      p = look_up(line);
     }
-    Place p = look_up(line);
-    for (uint64_t block = begin; block <= end; ++block) {
-      Cycle r = read_block(block, p, start, caller, charge);
-      if (r != kPending) ready = std::max(ready, r);
-    }
+    Cycle r = read_block(block, p, start, caller, charge);
+    if (r != kPending) ready = std::max(ready, r);
   }
   if (caller.request == kNone) return ready;
   Request& q = requests_[caller.request];  // its blocks complete later, never during this call
@@ -274,30 +273,30 @@ inline Cycle Cache::read_block(uint64_t block, Place& p, Cycle at, Caller& calle
       return hit_ready;
     }
   }
-  return read_absent(block, p.set, p.way, at, caller, charge);
+  Absent a = read_absent(block, p.set, p.way, at, caller, charge);
+  p.way = a.way;
+  return a.ready;
 }
 
-Cycle Cache::read_absent(uint64_t block, uint32_t set, uint32_t& way, Cycle at, Caller& caller,
-                         ReadCharge& charge) {
+Cache::Absent Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
+                                 Caller& caller, ReadCharge& charge) {
   bool l1 = role_ == CacheRole::L1;
-  uint64_t line = block >> sector_shift_;
+  if (way == kNone) way = allocate(set, tag_of(block >> sector_shift_), at);
   Cycle hit_ready = at + config_.hit_latency;
   bool first = track_cold_ && first_reference(block);
   if (first && own_share_ < 1.0 && !fetched_here(block, own_share_)) {
     stats_.hits++;
     stats_.absent_fills++;
     (l1 ? charge.l1_hits : charge.l2_hits)++;
-    if (way == kNone) way = allocate(set, tag_of(line), at);
     // The absent client's fetch is in flight for a fetch's mean latency: reads until then merge.
     Cycle fetched = at + mean_fetch_cycles();
     block_at(set, way, block) = Block{std::max(hit_ready, fetched), kNone, 0, true, false};
-    return hit_ready;
+    return {hit_ready, way};
   }
   if (first) stats_.cold_misses++;
   if ((block << block_shift_) >= kLocalMemoryBase) stats_.local_misses++;
-  if (way == kNone) way = allocate(set, tag_of(line), at);
   stats_.misses++;
-  return miss(block, set, way, at, caller, charge);
+  return {miss(block, set, way, at, caller, charge), way};
 }
 
 void Cache::write_block(uint64_t block, Cycle at) {

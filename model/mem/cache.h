@@ -218,13 +218,17 @@ class Cache : public MemoryTarget, private ReadClient {
   // Where `line` is, touched for the replacement policy: once for all of a read's blocks in the
   // line, which keeps the order of lines' last uses (all that LRU compares) the same.
   Place look_up(uint64_t line);
-  // A block's ready cycle, or kPending once the caller waits for it; p.way becomes the way the
-  // line is given if the read allocates it.
+  // A block's ready cycle, or kPending once the caller waits for it; an absent line is given a
+  // way (p.way).
   Cycle read_block(uint64_t block, Place& p, Cycle at, Caller& caller, ReadCharge& charge);
-  // read_block's path for a block absent from its line: the miss (kept out of line, so the hit
-  // path stays short).
-  [[gnu::noinline]] Cycle read_absent(uint64_t block, uint32_t set, uint32_t& way, Cycle at,
-                                      Caller& caller, ReadCharge& charge);
+  struct Absent {
+    Cycle ready;   // read_block's answer
+    uint32_t way;  // the line's way, given to it if it had none
+  };
+  // read_block's path for a block absent from its line (way: the line's, or kNone): the miss
+  // (kept out of line, so the hit path stays short).
+  [[gnu::noinline]] Absent read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
+                                       Caller& caller, ReadCharge& charge);
   void write_block(uint64_t block, Cycle at);
   void used_prefetch(Block& b, Cycle at);  // a read's first use of a prefetched block
   // Counts a merge into the in-flight block; returns its replay cycles (past the merge limit).

@@ -23,10 +23,7 @@ Link::Link(double bytes_per_cycle) : capacity_(bytes_per_cycle) {
   if (capacity_ > 0) calendar_.resize(kCalendarCycles);
 }
 
-Cycle Link::transfer(Cycle at, uint32_t bytes) {
-  stats_.transfers++;
-  stats_.bytes += bytes;
-  if (capacity_ <= 0) return at;
+Cycle Link::search(Cycle at, uint32_t bytes) {
   double left = std::max<double>(bytes, 1e-9);
   Cycle cycle = at;
   bool started = false;

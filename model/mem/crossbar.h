@@ -51,10 +51,23 @@ class Link {
   static constexpr uint32_t kCalendarCycles = 1u << 12;
   explicit Link(double bytes_per_cycle);
   // Books `bytes` from cycle `at` on; returns the cycle the last byte passes.
-  Cycle transfer(Cycle at, uint32_t bytes);
+  Cycle transfer(Cycle at, uint32_t bytes) {
+    stats_.transfers++;
+    stats_.bytes += bytes;
+    if (capacity_ <= 0) return at;
+    // Most transfers fit in their first cycle: the same booking as the search's first step.
+    Slot& slot = calendar_[at & (kCalendarCycles - 1)];
+    if (slot.cycle == kPending || slot.cycle < at) slot = Slot{at, 0};
+    if (slot.cycle == at && bytes > 0 && capacity_ - slot.used >= bytes) {
+      slot.used += bytes;
+      return at;
+    }
+    return search(at, bytes);
+  }
   const LinkStats& stats() const { return stats_; }
 
  private:
+  Cycle search(Cycle at, uint32_t bytes);  // transfer's general case, from the start
   struct Slot {
     Cycle cycle = kPending;  // the cycle this entry counts for (kPending: none yet)
     double used = 0;         // bytes booked in it

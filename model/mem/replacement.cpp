@@ -1,7 +1,5 @@
 #include "model/mem/replacement.h"
 
-#include <algorithm>
-
 namespace rtsim {
 
 ReplacementPolicy::ReplacementPolicy(Kind kind, uint32_t sets, uint32_t ways, uint64_t seed)
@@ -9,15 +7,11 @@ ReplacementPolicy::ReplacementPolicy(Kind kind, uint32_t sets, uint32_t ways, ui
   if (kind != Kind::Random) stamps_.assign(size_t(sets) * ways, 0);
 }
 
-uint32_t ReplacementPolicy::victim(uint32_t set) {
-  if (kind_ == Kind::Random) {
-    state_ ^= state_ << 13;
-    state_ ^= state_ >> 7;
-    state_ ^= state_ << 17;
-    return uint32_t(state_ % ways_);
-  }
-  auto first = stamps_.begin() + long(size_t(set) * ways_);
-  return uint32_t(std::min_element(first, first + ways_) - first);
+uint32_t ReplacementPolicy::random_way() {
+  state_ ^= state_ << 13;
+  state_ ^= state_ >> 7;
+  state_ ^= state_ << 17;
+  return uint32_t(state_ % ways_);
 }
 
 std::optional<ReplacementPolicy> make_replacement_policy(const std::string& name, uint32_t sets,

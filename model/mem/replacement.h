@@ -25,10 +25,18 @@ class ReplacementPolicy {
   void insert(uint32_t set, uint32_t way) {
     if (kind_ != Kind::Random) stamps_[size_t(set) * ways_ + way] = ++clock_;
   }
-  // The way to evict from a full set.
-  uint32_t victim(uint32_t set);
+  // The way to evict from a full set: the first with the oldest stamp.
+  uint32_t victim(uint32_t set) {
+    if (kind_ == Kind::Random) return random_way();
+    const uint64_t* stamps = &stamps_[size_t(set) * ways_];
+    uint32_t oldest = 0;
+    for (uint32_t w = 1; w < ways_; ++w)
+      if (stamps[w] < stamps[oldest]) oldest = w;
+    return oldest;
+  }
 
  private:
+  uint32_t random_way();
   Kind kind_ = Kind::Lru;
   uint32_t ways_ = 0;
   std::vector<uint64_t> stamps_;

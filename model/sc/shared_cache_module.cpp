@@ -236,7 +236,7 @@ void SharedCacheModule::read_done(uint64_t missed, Cycle ready, const ReadCharge
   respond(m.job, ready, m.charge);
 }
 
-void SharedCacheModule::respond(const Job& job, Cycle ready, const ReadCharge& charge) {
+inline void SharedCacheModule::respond(const Job& job, Cycle ready, const ReadCharge& charge) {
   Cycle arrived = crossbar_.to_unit(job.slice, job.port, ready, job.bytes);
   if (job.port < connected_.size()) {
     job.client->read_done(job.token, arrived, charge);

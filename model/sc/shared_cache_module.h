@@ -156,7 +156,7 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
   void serve();
   void serve_window();  // every job dated before served_until_, in order, at this stamp
   void run_job(const Job& job, Cycle at);
-  void respond(const Job& job, Cycle ready, const ReadCharge& charge);
+  [[gnu::always_inline]] void respond(const Job& job, Cycle ready, const ReadCharge& charge);
   void add_job(const Job& job, Cycle at);
   // A transaction below of `bytes` at `addr` (the data is a scratch buffer: timing only).
   void prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command, uint64_t addr,
