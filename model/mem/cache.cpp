@@ -125,12 +125,12 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, u
     return read_block(first, p, admits_ ? admit(first >> sector_shift_, bytes, at) : at, caller,
                       charge);
   }
-  // Line by line, the hot path (a node's several lines); a line takes its bank and port for the
-  // part of the read inside it.
+  // Block by block, the hot path (a node's several lines), looking each line up once, at the
+  // read's first block in it; a line takes its bank and port for the part of the read inside it.
   Cycle ready = at, start = at;
-  Place p{};
+  Place p{0, kNone};
   for (uint64_t block = first; block <= last; ++block) {
-    if ((block & sector_mask_) == 0 || block == first) {  // a line's first block
+    if ((block & sector_mask_) == 0 || block == first) {  // the read's first block in this line
       uint64_t line = block >> sector_shift_;
       if (admits_) {
         uint64_t begin = std::max(addr, line << line_shift_);

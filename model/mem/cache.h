@@ -215,8 +215,8 @@ class Cache : public MemoryTarget, private ReadClient {
   struct Place {  // a line's set, and its way (kNone: absent)
     uint32_t set, way;
   };
-  // Where `line` is, touched for the replacement policy: once for all of a read's blocks in the
-  // line, which keeps the order of lines' last uses (all that LRU compares) the same.
+  // Where `line` is; if present, touched once for all of a read's blocks in it (LRU compares
+  // only the order of lines' last uses).
   Place look_up(uint64_t line);
   // A block's ready cycle, or kPending once the caller waits for it; an absent line is given a
   // way (p.way).
@@ -225,8 +225,8 @@ class Cache : public MemoryTarget, private ReadClient {
     Cycle ready;   // read_block's answer
     uint32_t way;  // the line's way, given to it if it had none
   };
-  // read_block's path for a block absent from its line (way: the line's, or kNone): the miss
-  // (kept out of line, so the hit path stays short).
+  // read_block's path for a block absent from its line (way: the line's, or kNone): gives an
+  // absent line its way, then the miss (kept out of line, so the hit path stays short).
   [[gnu::noinline]] Absent read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
                                        Caller& caller, ReadCharge& charge);
   void write_block(uint64_t block, Cycle at);

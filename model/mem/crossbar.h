@@ -55,7 +55,8 @@ class Link {
     stats_.transfers++;
     stats_.bytes += bytes;
     if (capacity_ <= 0) return at;
-    // Most transfers fit in their first cycle: the same booking as the search's first step.
+    // Most transfers fit in their first cycle, unless a later cycle holds its entry: the same
+    // booking as the search's first step. A zero-byte transfer books a sliver (search).
     Slot& slot = calendar_[at & (kCalendarCycles - 1)];
     if (slot.cycle == kPending || slot.cycle < at) slot = Slot{at, 0};
     if (slot.cycle == at && bytes > 0 && capacity_ - slot.used >= bytes) {
@@ -67,7 +68,7 @@ class Link {
   const LinkStats& stats() const { return stats_; }
 
  private:
-  Cycle search(Cycle at, uint32_t bytes);  // transfer's general case, from the start
+  Cycle search(Cycle at, uint32_t bytes);  // books cycle by cycle from `at` (the general case)
   struct Slot {
     Cycle cycle = kPending;  // the cycle this entry counts for (kPending: none yet)
     double used = 0;         // bytes booked in it

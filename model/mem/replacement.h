@@ -28,7 +28,7 @@ class ReplacementPolicy {
   // The way to evict from a full set: the first with the oldest stamp.
   uint32_t victim(uint32_t set) {
     if (kind_ == Kind::Random) return random_way();
-    const uint64_t* stamps = &stamps_[size_t(set) * ways_];
+    const uint64_t* stamps = stamps_.data() + size_t(set) * ways_;
     uint32_t oldest = 0;
     for (uint32_t w = 1; w < ways_; ++w)
       if (stamps[w] < stamps[oldest]) oldest = w;
