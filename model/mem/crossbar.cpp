@@ -28,22 +28,19 @@ Cycle Link::search(Cycle at, uint32_t bytes) {
   Cycle cycle = at;
   bool started = false;
   for (;; ++cycle) {
-    Slot& slot = calendar_[cycle & (kCalendarCycles - 1)];
-    if (slot.cycle != cycle) {
-      if (slot.cycle != kPending && slot.cycle > cycle) {
-        stats_.calendar_conflicts++;
-        continue;
-      }
-      slot = Slot{cycle, 0};
+    Slot* slot = entry(cycle);
+    if (!slot) {
+      stats_.calendar_conflicts++;
+      continue;
     }
-    double room = capacity_ - slot.used;
+    double room = capacity_ - slot->used;
     if (room <= 1e-9) continue;
     if (!started) {
       stats_.stall_cycles += cycle - at;
       started = true;
     }
     double take = std::min(room, left);
-    slot.used += take;
+    slot->used += take;
     left -= take;
     if (left <= 1e-9) return cycle;
   }

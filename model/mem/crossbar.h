@@ -55,12 +55,11 @@ class Link {
     stats_.transfers++;
     stats_.bytes += bytes;
     if (capacity_ <= 0) return at;
-    // Most transfers fit in their first cycle, unless a later cycle holds its entry: the same
-    // booking as the search's first step. A zero-byte transfer books a sliver (search).
-    Slot& slot = calendar_[at & (kCalendarCycles - 1)];
-    if (slot.cycle == kPending || slot.cycle < at) slot = Slot{at, 0};
-    if (slot.cycle == at && bytes > 0 && capacity_ - slot.used >= bytes) {
-      slot.used += bytes;
+    // Most transfers fit in their first cycle: the search's first step, without the search. A
+    // zero-byte transfer books a sliver (search).
+    Slot* slot = entry(at);
+    if (slot && bytes > 0 && capacity_ - slot->used >= bytes) {
+      slot->used += bytes;
       return at;
     }
     return search(at, bytes);
@@ -68,11 +67,18 @@ class Link {
   const LinkStats& stats() const { return stats_; }
 
  private:
-  Cycle search(Cycle at, uint32_t bytes);  // books cycle by cycle from `at` (the general case)
   struct Slot {
     Cycle cycle = kPending;  // the cycle this entry counts for (kPending: none yet)
     double used = 0;         // bytes booked in it
   };
+  // The entry of `cycle` (reset if it held an earlier cycle), or nullptr if a later one holds it.
+  Slot* entry(Cycle cycle) {
+    Slot& slot = calendar_[cycle & (kCalendarCycles - 1)];
+    if (slot.cycle != kPending && slot.cycle > cycle) return nullptr;
+    if (slot.cycle != cycle) slot = Slot{cycle, 0};
+    return &slot;
+  }
+  Cycle search(Cycle at, uint32_t bytes);  // books cycle by cycle from `at` (the general case)
   double capacity_;
   std::vector<Slot> calendar_;
   LinkStats stats_;
