@@ -343,7 +343,7 @@ void Cache::add_waiter(uint32_t miss, const Waiter& waiter) {
   }
   uint32_t id = take_slot(waiters_, free_waiters_);
   waiters_[id] = waiter;
-  (m.more == kNone ? m.more : waiters_[m.last].next) = id;
+  (m.last == kNone ? m.first.next : waiters_[m.last].next) = id;
   m.last = id;
 }
 
@@ -370,13 +370,11 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   b = Block{kPending, id, 0, true, false};
   Miss& m = misses_[id];
   m.block = block;
-  m.set = set;
   m.way = way;
   m.send = send;
-  m.charge = {};
   m.prefetch = !caller.client;
   m.first.client = nullptr;
-  m.more = m.last = kNone;
+  m.first.next = m.last = kNone;
   // The MSHR free first; with none whose end is known, wait until one's end is reported.
   if (free_mshrs_.empty()) {
     wait_for(id, caller, 0, 0);
@@ -385,14 +383,15 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   }
   Cycle start = std::max(send, free_mshrs_.top());
   free_mshrs_.pop();
-  Cycle ready = issue(id, start);
+  ReadCharge below;
+  Cycle ready = issue(id, start, below);
   if (ready == kPending) {
     wait_for(id, caller, 0, 0);
     return kPending;
   }
   // Answered at once: the block is in flight until `ready`, and so is its MSHR.
   note_fetch(misses_[id], ready);
-  charge += misses_[id].charge;
+  charge += below;
   Block& filled = block_at(set, way, block);
   filled.ready = ready;
   filled.miss = kNone;
@@ -401,12 +400,16 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   return ready;
 }
 
-Cycle Cache::issue(uint32_t miss, Cycle at) {
-  Miss& m = misses_[miss];
+Cycle Cache::issue(uint32_t miss, Cycle at, ReadCharge& below) {
+  const Miss& m = misses_[miss];
   stats_.mshr_stall_cycles += at - m.send;
-  ReadCharge below;
   Cycle ready = below_->read(m.block << block_shift_, block_bytes(), at, this, miss, below);
-  misses_[miss].charge += below;
+  Miss& sent = misses_[miss];
+  sent.charged = ready == kPending && !below.empty();
+  if (sent.charged) {
+    if (charges_.size() < misses_.size()) charges_.resize(misses_.size());
+    charges_[miss] = below;
+  }
   return ready;
 }
 
@@ -414,20 +417,20 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   auto id = uint32_t(token);
   Miss& m = misses_[id];
   note_fetch(m, ready);
-  Block& b = block_at(m.set, m.way, m.block);
+  Block& b = block_at(set_of(m.block >> sector_shift_), m.way, m.block);
   if (b.valid && b.ready == kPending && b.miss == id) {
     b.ready = ready;
     b.miss = kNone;
   }
   ReadCharge first;  // what the miss cost below, for its first waiter (a prefetch's: nobody's)
   if (!m.prefetch) {
-    first = m.charge;
+    if (m.charged) first = charges_[id];
     first += charge;
   }
   // Completing a waiter only notifies its client; nothing here adds a waiter or a miss.
   if (m.first.client) {
     Waiter head = m.first;
-    uint32_t w = m.more;
+    uint32_t w = head.next;
     head.client->read_done(head.token, std::max(ready + head.replay, head.earliest), first);
     while (w != kNone) {
       Waiter waiter = waiters_[w];
@@ -444,8 +447,9 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
     return;
   }
   uint32_t next = take_waiting();
-  Cycle next_ready = issue(next, std::max(ready, misses_[next].send));
-  if (next_ready != kPending) read_done(next, next_ready, {});
+  ReadCharge below;
+  Cycle next_ready = issue(next, std::max(ready, misses_[next].send), below);
+  if (next_ready != kPending) read_done(next, next_ready, below);
 }
 
 void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charge) {

@@ -164,22 +164,25 @@ class Cache : public MemoryTarget, private ReadClient {
     uint32_t replay;  // cycles after the data (past the merge limit: a second lookup)
     uint32_t next;    // the next waiter of the same miss (kNone: the last)
   };
-  struct Miss {
+  // One host cache line: an L1 answer touches it long after the miss wrote it, and a unit keeps
+  // hundreds of them.
+  struct alignas(64) Miss {
     uint64_t block = 0;
-    uint32_t set = 0, way = 0;
-    Cycle send = 0;         // the cycle it may go below (after the tag check)
-    bool prefetch = false;  // made by a prefetch: its cost is charged to no read
-    ReadCharge charge;
+    Cycle send = 0;  // the cycle it may go below (after the tag check)
     // Its waiters in order: the first (the one that made the miss, unless a prefetch did) kept
     // here, as most misses have no other (client null: none yet); the others in waiters_,
-    // listed from `more`.
+    // listed from first.next to `last`.
     Waiter first{};
-    uint32_t more = kNone, last = kNone;
+    uint32_t last = kNone;
     uint32_t next_waiting = kNone;  // the next miss waiting for an MSHR after it
+    uint32_t way = 0;               // its line's (the set follows from the block)
+    bool prefetch = false;          // made by a prefetch: its cost is charged to no read
+    bool charged = false;  // the level below charged the read it has not answered: in charges_
   };
+  static_assert(sizeof(Miss) == 64, "a miss record is one host cache line");
   // A read of several blocks that waits: its client, and the blocks it still waits for. Its
   // blocks' misses report to join_, which completes the read with the last of them.
-  struct Request {
+  struct alignas(64) Request {  // in one host cache line, as a Miss
     ReadClient* client = nullptr;
     uint64_t token = 0;
     uint32_t blocks = 0;
@@ -248,8 +251,9 @@ class Cache : public MemoryTarget, private ReadClient {
   void add_waiter(uint32_t miss, const Waiter& waiter);
   [[gnu::always_inline]] Cycle miss(uint64_t block, uint32_t set, uint32_t way, Cycle at,
                                     Caller& caller, ReadCharge& charge);
-  // Sends a miss below at `at` (its MSHR taken); the below's answer: a cycle, or kPending.
-  Cycle issue(uint32_t miss, Cycle at);
+  // Sends a miss below at `at` (its MSHR taken); the below's answer: a cycle, or kPending. What
+  // the level below charged is in `below` if it answered, else kept for read_done.
+  Cycle issue(uint32_t miss, Cycle at, ReadCharge& below);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
   uint32_t find(uint32_t set, uint64_t tag) const;  // the way holding tag, or kNone
@@ -289,6 +293,9 @@ class Cache : public MemoryTarget, private ReadClient {
   // has not learnt its data's cycle is in none of them.
   std::priority_queue<Cycle, std::vector<Cycle>, std::greater<Cycle>> free_mshrs_;
   std::vector<Miss> misses_;
+  // What the level below charged a miss it answers later (Miss::charged; only a level that
+  // counts its accesses at once, another Cache, does), by miss.
+  std::vector<ReadCharge> charges_;
   std::vector<Waiter> waiters_;  // the waiters of all misses, in lists through Waiter::next
   std::vector<uint32_t> free_waiters_;
   std::vector<uint32_t> free_misses_;

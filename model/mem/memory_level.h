@@ -47,6 +47,7 @@ struct ReadCharge {
     add_charge(*this, o);
     return *this;
   }
+  bool empty() const { return !(l1_accesses | l1_hits | l2_accesses | l2_hits | dram_bytes); }
 };
 
 // What reads cost at each level of the memory hierarchy, summed.

@@ -86,15 +86,9 @@ RtCore::RtCore(uint32_t id, const RtCoreConfig& config, const TraversalUnit& tra
     throw std::invalid_argument("prefetch: the treelets' footprints are required");
   slots_.assign(size_t(config.warps) * config.warp_size, nullptr);
   warp_live_.assign(config.warps, 0);
-  issue_granted_.assign(slots_.size(), ~Cycle(0));
   for (uint32_t w = config.warps; w-- > 0;) free_warps_.push_back(w);
   for (uint32_t s = uint32_t(slots_.size()); s-- > 0;) free_slots_.push_back(s);
-  wait_.assign(slots_.size(), Wait::None);
-  pending_reads_.assign(slots_.size(), 0);
-  data_ready_.assign(slots_.size(), 0);
-  step_tests_.assign(slots_.size(), kNoTests);
-  step_calls_.assign(slots_.size(), 0);
-  step_kind_.assign(slots_.size(), StepKind::Done);
+  slot_state_.resize(slots_.size());
   lane_next_.resize(config.warp_size);
   if (config.mode == TraversalMode::Packet) {
     packet_unit_ = config.reorder.below > 0 ? config.reorder.min_width : config.warp_size;
@@ -145,13 +139,13 @@ Cycle RtCore::reserve_issue(Cycle now) {
 }
 
 bool RtCore::claim_issue(uint32_t item, Cycle now) {
-  if (issue_granted_[item] == now) {  // reserved earlier for this cycle
-    issue_granted_[item] = ~Cycle(0);
+  if (slot_state_[item].issue_granted == now) {  // reserved earlier for this cycle
+    slot_state_[item].issue_granted = ~Cycle(0);
     return true;
   }
   Cycle at = reserve_issue(now);
   if (at == now) return true;
-  issue_granted_[item] = at;
+  slot_state_[item].issue_granted = at;
   stats_.issue_stalls++;
   events_.push(at, item);
   return false;

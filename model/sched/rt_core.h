@@ -239,16 +239,19 @@ class RtCore : private ReadClient {
   EventQueue events_;
   std::vector<RayContext*> slots_;    // warps * warp_size
   std::vector<uint32_t> warp_live_;   // rays still in each warp (per-ray and packet modes)
-  std::vector<Cycle> issue_granted_;  // per slot (packet mode: per packet): a reserved issue
-  // Per item (slot, or packet in packet mode): what it waits for, reads not back, latest data.
-  std::vector<Wait> wait_;
-  std::vector<uint32_t> pending_reads_;
-  std::vector<Cycle> data_ready_;
-  // Per slot: the tests of the step waiting for its data (kNoTests: no step); per item: that
-  // step's kind.
+  // What traversal control keeps per slot, or per item (slot, or packet in packet mode), in one
+  // record per slot: a step touches one host cache line of it, not one per field.
   static constexpr uint32_t kNoTests = ~0u;
-  std::vector<uint32_t> step_tests_, step_calls_;
-  std::vector<StepKind> step_kind_;
+  struct SlotState {
+    Cycle issue_granted = ~Cycle(0);  // per item: a reserved issue cycle
+    Cycle data_ready = 0;             // per item: the latest data of its reads
+    uint32_t pending_reads = 0;       // per item: reads not back
+    uint32_t tests = kNoTests;  // per slot: the tests of the step waiting for its data (none)
+    uint32_t calls = 0;         // per slot: that step's any-hit calls
+    Wait wait = Wait::None;     // per item: what it waits for
+    StepKind kind = StepKind::Done;  // per item: the kind of the step waiting for its data
+  };
+  std::vector<SlotState> slot_state_;
   uint32_t waiting_reads_ = 0;
   Cycle data_event_ = kPending;
   std::vector<uint32_t> free_slots_;  // refilled by slot

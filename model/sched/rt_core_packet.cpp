@@ -71,14 +71,14 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
   Cycle data = now;
   uint32_t count = 0;
   for (uint32_t lane = 0; lane < width; ++lane) {
-    step_tests_[base + lane] = kNoTests;
+    slot_state_[base + lane].tests = kNoTests;
     if (!active(lane)) continue;
     RayContext& ray = *slots_[base + lane];
     StepResult step = traversal_.step(ray.state);
     check_kind(step, lane_next_[lane]);
     ++count;
     count_step(step.kind, ray.state);
-    step_tests_[base + lane] = step.tests ? step.tests : kNoTests;
+    slot_state_[base + lane].tests = step.tests ? step.tests : kNoTests;
     if (step.access_count > 0) {
       uint64_t addr = ray.state.accesses[step.first_access].address;
       if (std::find(warp_reads_.begin(), warp_reads_.end(), addr) == warp_reads_.end()) {
@@ -91,7 +91,7 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     settle(ray, lane_next_[lane].depth, 0, now);
     ray.state.accesses.clear();
   }
-  step_kind_[item] = kind;
+  slot_state_[item].kind = kind;
   progress_ += count;
   stats_.warp_steps++;
   stats_.active_lanes += count;
@@ -104,7 +104,7 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
 }
 
 void RtCore::reorder(uint32_t item, StepKind kind, Cycle now) {
-  if (pending_reads_[item] > 0)
+  if (slot_state_[item].pending_reads > 0)
     throw std::logic_error("RtCore: regrouping a packet with reads out");
   uint32_t base = item * packet_unit_, width = packet_width_[item];
   regroup_.clear();

@@ -40,7 +40,7 @@ Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bo
   stats_.fetches++;
   stats_.fetch_bytes += bytes;
   if (ready == kPending) {
-    pending_reads_[item_of(ray.slot)]++;
+    slot_state_[item_of(ray.slot)].pending_reads++;
     waiting_reads_++;
     stats_.waited_reads++;
   }
@@ -52,18 +52,18 @@ void RtCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   add_charge(slots_[slot]->cost, charge);
   charge_level(uint32_t(token >> 32), charge);
   uint32_t item = item_of(slot);
-  if (wait_[item] == Wait::State) add_charge(stats_.state, charge);
-  data_ready_[item] = std::max(data_ready_[item], ready);
+  if (slot_state_[item].wait == Wait::State) add_charge(stats_.state, charge);
+  slot_state_[item].data_ready = std::max(slot_state_[item].data_ready, ready);
   waiting_reads_--;
-  if (--pending_reads_[item] > 0) return;
-  Cycle at = data_ready_[item];
+  if (--slot_state_[item].pending_reads > 0) return;
+  Cycle at = slot_state_[item].data_ready;
   if (at < now_) {
     stats_.late_data++;
     stats_.late_cycles += now_ - at;
     at = now_;
   }
-  Wait wait = wait_[item];
-  wait_[item] = Wait::None;
+  Wait wait = slot_state_[item].wait;
+  slot_state_[item].wait = Wait::None;
   if (wait == Wait::Data) {
     at = test_step(item, at);  // the test units keep a calendar: booked here, in any order
   } else {
@@ -74,14 +74,14 @@ void RtCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
 }
 
 bool RtCore::wait_reads(uint32_t item, Wait wait, Cycle known_ready) {
-  if (pending_reads_[item] == 0) return false;
-  wait_[item] = wait;
-  data_ready_[item] = known_ready;
+  if (slot_state_[item].pending_reads == 0) return false;
+  slot_state_[item].wait = wait;
+  slot_state_[item].data_ready = known_ready;
   return true;
 }
 
 Cycle RtCore::test_step(uint32_t item, Cycle data) {
-  StepKind kind = step_kind_[item];
+  StepKind kind = slot_state_[item].kind;
   TestUnitPool& unit = kind == StepKind::Leaf   ? triangle_
                        : kind == StepKind::Node ? box_
                                                 : transform_;
@@ -90,9 +90,9 @@ Cycle RtCore::test_step(uint32_t item, Cycle data) {
   uint32_t count = packet ? packet_width_[item] : 1;
   Cycle done = data;
   for (uint32_t slot = first; slot < first + count; ++slot) {
-    if (step_tests_[slot] == kNoTests) continue;
-    done = std::max(done, call_anyhit(slot, unit.reserve(data, step_tests_[slot])));
-    step_tests_[slot] = kNoTests;
+    if (slot_state_[slot].tests == kNoTests) continue;
+    done = std::max(done, call_anyhit(slot, unit.reserve(data, slot_state_[slot].tests)));
+    slot_state_[slot].tests = kNoTests;
   }
   Cycle next = done + config_.control_latency;
   if (config_.mode != TraversalMode::Packet) slots_[item]->ready = next;
@@ -101,9 +101,9 @@ Cycle RtCore::test_step(uint32_t item, Cycle data) {
 }
 
 Cycle RtCore::call_anyhit(uint32_t slot, Cycle tested) {
-  uint32_t calls = step_calls_[slot];
+  uint32_t calls = slot_state_[slot].calls;
   if (calls == 0) return tested;
-  step_calls_[slot] = 0;
+  slot_state_[slot].calls = 0;
   Cycle answered = tested;
   for (uint32_t i = 0; i < calls; ++i) answered = shader_.reserve(answered, 1);
   stats_.anyhit_calls += calls;
@@ -114,7 +114,7 @@ Cycle RtCore::call_anyhit(uint32_t slot, Cycle tested) {
 
 void RtCore::read_texels(RayContext& ray, const StepResult& step, Cycle now, Cycle& known) {
   if (step.anyhit_calls == 0) return;  // call_anyhit left the slot's count at 0
-  step_calls_[ray.slot] = step.anyhit_calls;
+  slot_state_[ray.slot].calls = step.anyhit_calls;
   for (uint64_t addr : ray.state.texels) {
     Cycle ready = read(ray, addr, config_.anyhit.read_bytes, now);
     if (ready != kPending) known = std::max(known, ready);
@@ -232,8 +232,8 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   count_step(step.kind, ray.state);
   settle(ray, next.depth, visited_treelet, now);
   ray.state.accesses.clear();
-  step_tests_[slot] = step.tests ? step.tests : kNoTests;  // none: a masked instance
-  step_kind_[slot] = step.kind;
+  slot_state_[slot].tests = step.tests ? step.tests : kNoTests;  // none: a masked instance
+  slot_state_[slot].kind = step.kind;
   if (!wait_reads(slot, Wait::Data, known)) test_step(slot, known);
 }
 

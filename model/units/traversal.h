@@ -64,22 +64,21 @@ struct StackEntry {
 };
 
 // Everything one ray in flight holds. Reuse one state for many rays: begin() resets it and keeps
-// the vectors' capacity.
+// the vectors' capacity. What every step touches comes first, the second level's world-space
+// ray last: a timed run keeps thousands of states, and a step's host cache misses grow with
+// the lines it touches.
 struct TraversalState {
   PreparedRay ray;
   Query query = Query::ClosestHit;
   bool force_opaque = false;  // the ray's: no any-hit alpha tests
-  float t_hit = 0.0f;         // closest hit so far, or tmax (prepared-ray units)
-  uint32_t prim = kNoHit;     // triangle hit (also for any-hit queries)
+  bool done = true;
+  uint8_t mask = kAllInstances;  // the ray type's inclusion mask (two levels)
+  float t_hit = 0.0f;            // closest hit so far, or tmax (prepared-ray units)
+  uint32_t prim = kNoHit;        // triangle hit (also for any-hit queries)
   float u = 0.0f, v = 0.0f;
-  // Two levels: the level walked now and the ray's frame's top level, the world-space ray while
-  // in a BLAS, the instance being walked and the one hit, the ray type's inclusion mask.
+  // Two levels: the level walked now and the ray's frame's top level.
   const BvhImage* level = nullptr;
   const BvhImage* top = nullptr;
-  uint8_t mask = kAllInstances;
-  PreparedRay world;
-  float world_t_hit = 0.0f;  // the closest hit so far when the instance was entered
-  uint32_t instance = kNoHit, hit_instance = kNoHit;
   std::vector<StackEntry> stack;
   uint32_t max_stack = 0;  // deepest the stack got, in entries
   TraversalCounters counters;
@@ -87,7 +86,11 @@ struct TraversalState {
   // The texel addresses of its any-hit calls (alpha-tested candidates), in order; the shader
   // core reads them, not the traversal, so they are kept apart from `accesses`.
   std::vector<uint64_t> texels;
-  bool done = true;
+  // Two levels: the world-space ray while in a BLAS, the closest hit so far when the instance
+  // was entered, the instance being walked and the one hit.
+  PreparedRay world;
+  float world_t_hit = 0.0f;
+  uint32_t instance = kNoHit, hit_instance = kNoHit;
 };
 
 enum class StepKind : uint8_t { Node, Leaf, Instance, Done };
