@@ -29,17 +29,17 @@ struct RayCost {
 // What a unit touches at every step comes first, then the traversal state (its own hot part
 // first), so a step touches few host cache lines of the thousands of contexts in flight.
 struct alignas(64) RayContext {
-  Cycle ready = 0;              // earliest cycle of its next step (arrival, queue exit)
-  uint32_t unit = 0, slot = 0;  // where it runs now
-  StackResidency residency;     // its stack's entries on chip and spilled (hardware_stack.h)
-  uint32_t stack_region = 0;    // whose spill region holds its spilled entries (hardware_stack.h)
+  Cycle ready = 0;               // earliest cycle of its next step (arrival, queue exit)
+  uint32_t unit = 0, slot = 0;   // where it runs now
+  StackResidency residency;      // its stack's entries on chip and spilled (hardware_stack.h)
+  uint32_t stack_region = 0;     // whose spill region holds its spilled entries (hardware_stack.h)
   bool state_in_memory = false;  // queued with its state in memory (model/sched/ray_buffer.h)
   bool begun = false;            // ray setup done (TraversalUnit::begin)
   RayCost cost;
   TraversalState state;
   Ray ray;
-  uint64_t sequence = 0;  // position in the ray stream
-  uint32_t id = 0;        // index in the pool; in treelet mode names its stack spill region
+  uint64_t sequence = 0;     // position in the ray stream
+  uint32_t id = 0;           // index in the pool; in treelet mode names its stack spill region
   uint32_t shader_warp = 0;  // the SM's warp slot that traced it (shader_core.h)
   Cycle dispatched = 0;      // cycle the dispatcher handed the ray out
   Cycle handed = 0;          // cycle it was handed toward a unit: dispatch, or leaving the sorter

@@ -237,8 +237,8 @@ class RtCore : private ReadClient {
   TestUnitPool box_, triangle_, transform_, shader_;
   TreeletPrefetcher prefetcher_;
   EventQueue events_;
-  std::vector<RayContext*> slots_;    // warps * warp_size
-  std::vector<uint32_t> warp_live_;   // rays still in each warp (per-ray and packet modes)
+  std::vector<RayContext*> slots_;   // warps * warp_size
+  std::vector<uint32_t> warp_live_;  // rays still in each warp (per-ray and packet modes)
   // What traversal control keeps per slot, or per item (slot, or packet in packet mode), in one
   // record per slot: a step touches one host cache line of it, not one per field.
   static constexpr uint32_t kNoTests = ~0u;
@@ -246,10 +246,10 @@ class RtCore : private ReadClient {
     Cycle issue_granted = ~Cycle(0);  // per item: a reserved issue cycle
     Cycle data_ready = 0;             // per item: the latest data of its reads
     uint32_t pending_reads = 0;       // per item: reads not back
-    uint32_t tests = kNoTests;  // per slot: the tests of the step waiting for its data (none)
-    uint32_t calls = 0;         // per slot: that step's any-hit calls
-    Wait wait = Wait::None;     // per item: what it waits for
-    StepKind kind = StepKind::Done;  // per item: the kind of the step waiting for its data
+    uint32_t tests = kNoTests;        // per slot: the tests of the step waiting for its data
+    uint32_t calls = 0;               // per slot: that step's any-hit calls
+    Wait wait = Wait::None;           // per item: what it waits for
+    StepKind kind = StepKind::Done;   // per item: the kind of the step waiting for its data
   };
   std::vector<SlotState> slot_state_;
   uint32_t waiting_reads_ = 0;
