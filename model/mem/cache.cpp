@@ -147,6 +147,16 @@ Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, u
   return kPending;
 }
 
+void Cache::prime(uint64_t addr) const {
+  uint64_t block = addr >> block_shift_;
+  uint32_t set = set_of(block >> sector_shift_);
+  prefetch_span(&tags_[size_t(set) * config_.ways], config_.ways * sizeof(uint64_t), 64);
+  // The block of addr in each way: the ways' blocks of one sector lie a line's blocks apart.
+  size_t way_bytes = sizeof(Block) << sector_shift_;
+  prefetch_span(&blocks_[block_index(set, 0, block)], config_.ways * way_bytes,
+                std::max<size_t>(way_bytes, 64));
+}
+
 Cycle Cache::read(uint64_t addr, uint32_t bytes, Cycle at) {
   ReadCharge charge;
   Cycle ready = read(addr, bytes, at, nullptr, 0, charge);

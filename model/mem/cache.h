@@ -101,6 +101,9 @@ class Cache : public MemoryTarget, private ReadClient {
   // Throws std::invalid_argument for an impossible config (see cache_config_problem).
   Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role = CacheRole::L2);
 
+  // Asks the host to bring what a lookup of addr reads (its set's tags, and its block in each
+  // way) into its caches, for a lookup that comes later (a hint: changes nothing modelled).
+  void prime(uint64_t addr) const;
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
              ReadCharge& charge) override;
   // A read over levels that all answer at once (unit tests, the cache fidelity level).

@@ -12,6 +12,7 @@
 // Calls must arrive in non-decreasing `now`; the shared L2's module guarantees it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 namespace rtsim {
@@ -27,6 +28,15 @@ constexpr uint64_t kTextureBase = 0x6000'0000'0000ull;
 // What hit shading reads (G-buffer, textures, payload; model/sched/shader_core.h) lives at and
 // above this address, below textures.
 constexpr uint64_t kShadingBase = 0x5000'0000'0000ull;
+
+// Asks the host to bring [p, p + bytes) into its caches, a prefetch every `step` bytes: a hint
+// for a record the simulation reads later (a lookup, a step), which changes nothing it computes.
+// With thousands of requests and rays in flight, the records they touch have left the host's
+// caches by the time they are read; a hint given while other work runs hides that wait.
+inline void prefetch_span(const void* p, size_t bytes, size_t step) {
+  auto first = static_cast<const char*>(p);
+  for (const char* q = first; q < first + bytes; q += step) __builtin_prefetch(q);
+}
 
 // Adds one cost to another, field by field (a read's charge, a sum of them, a ray's cost).
 template <typename Cost, typename Charge>

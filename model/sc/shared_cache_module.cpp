@@ -130,6 +130,7 @@ void SharedCacheModule::request(uint32_t port, JobKind kind, uint64_t addr, uint
                            std::to_string(served_until_) +
                            " was served: its requester breaks the lookahead of " +
                            std::to_string(lookahead_) + " cycles");
+  slices_[job.slice]->prime(addr);
   add_job(job, arrives);
 }
 

@@ -234,6 +234,7 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   ray.state.accesses.clear();
   slot_state_[slot].tests = step.tests ? step.tests : kNoTests;  // none: a masked instance
   slot_state_[slot].kind = step.kind;
+  traversal_.prime(ray.state);
   if (!wait_reads(slot, Wait::Data, known)) test_step(slot, known);
 }
 

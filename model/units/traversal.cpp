@@ -1,5 +1,6 @@
 #include "model/units/traversal.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "model/bvh/node_format.h"
@@ -68,6 +69,18 @@ StepResult TraversalUnit::step(TraversalState& s) const {
   }
   s.done = true;
   return {};
+}
+
+void TraversalUnit::prime(const TraversalState& s) const {
+  if (s.stack.empty() || s.stack.back().count == kLeaveInstance) return;
+  const StackEntry& top = s.stack.back();
+  const BvhImage& level = *s.level;
+  constexpr size_t kMostBytes = 512;  // a wide node, or a leaf of a few triangles
+  if (top.count == 0)
+    prefetch_span(level.node_bytes(top.index), std::min<size_t>(level.node_size, kMostBytes), 64);
+  else
+    prefetch_span(level.triangle_bytes(top.index),
+                  std::min<size_t>(size_t(top.count) * level.triangle_stride, kMostBytes), 64);
 }
 
 StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry) const {

@@ -114,6 +114,9 @@ class TraversalUnit {
   void begin(TraversalState& state, const Ray& ray) const;
   // Visits the next node or leaf; Done (with no fetch) when the ray is finished.
   StepResult step(TraversalState& state) const;
+  // Asks the host to bring what the next step likely reads (the node or triangles on top of the
+  // stack) into its caches, for a step that comes later; changes nothing modelled.
+  void prime(const TraversalState& state) const;
   // The ray's answer as EmbreeScene::trace gives it: any-hit reports prim kAnyPrim, t = tmax.
   Hit result(const TraversalState& state, const Ray& ray) const;
   // begin, step until Done, result.
