@@ -213,7 +213,7 @@ uint32_t Cache::warm(uint64_t addr, uint32_t bytes, Cycle at, bool write) {
       Block& b = block_at(set, way, block);
       b.dirty = b.dirty || dirty;
       if (b.valid) continue;
-      b = Block{0, kNone, 0, true, dirty};
+      b = Block{0, kNone, 0, true, dirty, false};
       if (track_cold_) first_reference(block);
       fetched += !write && (block << block_shift_) < kLocalMemoryBase;
     }
@@ -230,10 +230,12 @@ bool Cache::contains(uint64_t addr) const {
 }
 
 uint32_t Cache::find(uint32_t set, uint64_t tag) const {
+  // Every way, without a branch on the tags (a set holds a line once): the way a hit is in is
+  // random, and a mispredicted exit costs the host more than scanning the rest.
   const uint64_t* ways = &tags_[size_t(set) * config_.ways];
-  for (uint32_t w = 0; w < config_.ways; ++w)
-    if (ways[w] == tag) return w;
-  return kNone;
+  uint32_t found = kNone;
+  for (uint32_t w = 0; w < config_.ways; ++w) found = ways[w] == tag ? w : found;
+  return found;
 }
 
 void Cache::track_cold_misses(uint64_t dense_begin, uint64_t dense_end) {
@@ -300,7 +302,7 @@ Cache::Absent Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cyc
     (l1 ? charge.l1_hits : charge.l2_hits)++;
     // The absent client's fetch is in flight for a fetch's mean latency: reads until then merge.
     Cycle fetched = at + mean_fetch_cycles();
-    block_at(set, way, block) = Block{std::max(hit_ready, fetched), kNone, 0, true, false};
+    block_at(set, way, block) = Block{std::max(hit_ready, fetched), kNone, 0, true, false, false};
     return {hit_ready, way};
   }
   if (first) stats_.cold_misses++;
@@ -319,7 +321,8 @@ void Cache::write_block(uint64_t block, Cycle at) {
   Block& b = block_at(set, way, block);
   if (!b.valid) {
     stats_.write_misses++;
-    b = Block{at, kNone, 0, true, false};  // a read from `at` on finds it, after its tag check
+    // A read from `at` on finds it, after its tag check.
+    b = Block{at, kNone, 0, true, false, false};
     if (track_cold_) first_reference(block);
   }
   b.dirty = config_.write_back;
@@ -377,7 +380,7 @@ inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, C
   Cycle send = at + config_.hit_latency;
   uint32_t id = take_slot(misses_, free_misses_);
   Block& b = block_at(set, way, block);
-  b = Block{kPending, id, 0, true, false};
+  b = Block{kPending, id, 0, true, false, false};
   Miss& m = misses_[id];
   m.block = block;
   m.way = way;

@@ -152,10 +152,12 @@ class Cache : public MemoryTarget, private ReadClient {
     Cycle ready = 0;        // kPending: its miss (below) has not learnt its data's cycle
     uint32_t miss = kNone;  // that miss, while ready is kPending
     uint16_t merges = 0;    // requests merged into its last miss
-    bool valid = false;
-    bool dirty = false;
-    bool prefetched = false;  // brought by a prefetch, not read since
+    // Bits, so that a block is 16 bytes (zero in Block{} and in the cache's arrays).
+    bool valid : 1;
+    bool dirty : 1;
+    bool prefetched : 1;  // brought by a prefetch, not read since
   };
+  static_assert(sizeof(Block) == 16, "a block record is 16 bytes: four to a host cache line");
   struct Bank {
     Cycle cycle = 0;    // the cycle its next lookup can start
     uint32_t used = 0;  // ports taken in that cycle
