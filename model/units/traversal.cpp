@@ -78,7 +78,7 @@ void TraversalUnit::prime(const TraversalState& s) const {
   constexpr size_t kMostBytes = 512;  // a wide node, or a leaf of a few triangles
   if (top.count == 0)
     prefetch_span(level.node_bytes(top.index), std::min<size_t>(level.node_size, kMostBytes), 64);
-  else
+  else if (!bvh_.two_level() || s.level != s.top)  // a leaf (at the top level: instances)
     prefetch_span(level.triangle_bytes(top.index),
                   std::min<size_t>(size_t(top.count) * level.triangle_stride, kMostBytes), 64);
 }
