@@ -28,10 +28,16 @@ class ReplacementPolicy {
   // The way to evict from a full set: the first with the oldest stamp.
   uint32_t victim(uint32_t set) {
     if (kind_ == Kind::Random) return random_way();
+    // Without a branch on the stamps, whose order is random (a mispredicted branch costs the
+    // host more than the compares).
     const uint64_t* stamps = stamps_.data() + size_t(set) * ways_;
     uint32_t oldest = 0;
-    for (uint32_t w = 1; w < ways_; ++w)
-      if (stamps[w] < stamps[oldest]) oldest = w;
+    uint64_t oldest_stamp = stamps[0];
+    for (uint32_t w = 1; w < ways_; ++w) {
+      bool older = stamps[w] < oldest_stamp;
+      oldest = older ? w : oldest;
+      oldest_stamp = older ? stamps[w] : oldest_stamp;
+    }
     return oldest;
   }
 
