@@ -165,10 +165,7 @@ RtCore::Next RtCore::peek(const TraversalState& s) const {
       continue;
     }
     if (e.tnear > t_hit * kSlabFarGrowth) continue;
-    StepKind kind = e.count == 0                          ? StepKind::Node
-                    : top && traversal_.bvh().two_level() ? StepKind::Instance
-                                                          : StepKind::Leaf;
-    return {true, kind, uint32_t(i)};
+    return {true, traversal_.kind_of(e, top), uint32_t(i)};
   }
   return {};
 }

@@ -64,8 +64,11 @@ StepResult TraversalUnit::step(TraversalState& s) const {
       continue;
     }
     if (entry.tnear > s.t_hit * kSlabFarGrowth) continue;
-    if (entry.count == 0) return visit_node(s, entry);
-    return bvh_.two_level() && s.level == s.top ? visit_instance(s, entry) : visit_leaf(s, entry);
+    switch (kind_of(entry, s.level == s.top)) {
+      case StepKind::Node: return visit_node(s, entry);
+      case StepKind::Instance: return visit_instance(s, entry);
+      default: return visit_leaf(s, entry);
+    }
   }
   s.done = true;
   return {};
@@ -76,9 +79,10 @@ void TraversalUnit::prime(const TraversalState& s) const {
   const StackEntry& top = s.stack.back();
   const BvhImage& level = *s.level;
   constexpr size_t kMostBytes = 512;  // a wide node, or a leaf of a few triangles
-  if (top.count == 0)
+  StepKind kind = kind_of(top, s.level == s.top);
+  if (kind == StepKind::Node)
     prefetch_span(level.node_bytes(top.index), std::min<size_t>(level.node_size, kMostBytes), 64);
-  else if (!bvh_.two_level() || s.level != s.top)  // a leaf (at the top level: instances)
+  else if (kind == StepKind::Leaf)
     prefetch_span(level.triangle_bytes(top.index),
                   std::min<size_t>(size_t(top.count) * level.triangle_stride, kMostBytes), 64);
 }

@@ -114,6 +114,13 @@ class TraversalUnit {
   void begin(TraversalState& state, const Ray& ray) const;
   // Visits the next node or leaf; Done (with no fetch) when the ray is finished.
   StepResult step(TraversalState& state) const;
+  // What a step makes of a stack entry (not a kLeaveInstance mark) in the level the ray is in
+  // (at_top: a two-level BVH's top level, whose leaves are instances).
+  StepKind kind_of(const StackEntry& entry, bool at_top) const {
+    return entry.count == 0             ? StepKind::Node
+           : at_top && bvh_.two_level() ? StepKind::Instance
+                                        : StepKind::Leaf;
+  }
   // Asks the host to bring what the next step likely reads (the node or triangles on top of the
   // stack) into its caches, for a step that comes later; changes nothing modelled.
   void prime(const TraversalState& state) const;
