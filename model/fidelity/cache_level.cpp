@@ -73,7 +73,7 @@ class CacheWalk {
  public:
   CacheWalk(const HwConfig& config, BvhView image, L2ReferenceSink* sink)
       : c_(config),
-        traversal_(image),
+        traversal_(image, without_fetch_list()),
         dram_(config.dram),
         dram_target_(dram_),
         l2_(config.l2, &dram_target_),
@@ -161,8 +161,7 @@ class CacheWalk {
     uint64_t missed = b1.misses - a1.misses;
     if (missed == 0) return c_.l1.hit_latency;
     double below_latency = c_.l2.hit_latency;
-    if (b2.misses > a2.misses)
-      below_latency += unloaded_dram_read(c_.dram, l2_.block_bytes());
+    if (b2.misses > a2.misses) below_latency += unloaded_dram_read(c_.dram, l2_.block_bytes());
     // Each missed block takes one of the unit's L1 MSHRs after the tag check, waiting for the
     // first to free if all are busy, and holds it until its data is back.
     auto& mshrs = mshr_free_[unit];
@@ -189,24 +188,18 @@ class CacheWalk {
     const StackConfig& stack = c_.rt.stack;
     uint32_t context = unit * c_.rt.warps * c_.rt.warp_size + slot;
     if (lane.stack.refill(1) > 0)  // a step pops one entry
-      lane.latency += read(
-          unit, lane.cost,
-          HardwareStack::entry_address(context, lane.stack.spilled, stack.entry_bytes),
-          stack.entry_bytes);
+      lane.latency +=
+          read(unit, lane.cost,
+               HardwareStack::entry_address(context, lane.stack.spilled, stack.entry_bytes),
+               stack.entry_bytes);
     auto kept = uint32_t(std::max<size_t>(s.stack.size(), 1) - 1);
-    s.accesses.clear();
     StepResult r = traversal_.step(s);
     if (r.kind == StepKind::Done) {
       retire(warp, lane);
       return;
     }
     UnitWork& w = work_[unit];
-    if (r.access_count > 0) {
-      const MemoryAccess& first = s.accesses[r.first_access];
-      const MemoryAccess& last = s.accesses[r.first_access + r.access_count - 1];
-      lane.latency +=
-          read(unit, lane.cost, first.address, uint32_t(last.address + last.bytes - first.address));
-    }
+    if (r.fetch_bytes > 0) lane.latency += read(unit, lane.cost, r.fetch_address, r.fetch_bytes);
     bool node = r.kind == StepKind::Node, leaf = r.kind == StepKind::Leaf;
     const TestUnitConfig& tests = node ? c_.rt.box : leaf ? c_.rt.triangle : c_.rt.transform;
     uint64_t issues = (std::max<uint32_t>(r.tests, 1) + tests.issue_width - 1) / tests.issue_width;

@@ -7,9 +7,7 @@ namespace rtsim {
 
 FidelityResult run_functional_level(BvhView image, const std::string& stream) {
   HostTimer timer;
-  TraversalConfig config;
-  config.record_accesses = false;
-  TraversalUnit unit(image, config);
+  TraversalUnit unit(image, without_fetch_list());
   TraversalState state;
   std::array<CostTotals, kRayTypeCount> by_type{};
   RayStreamReader reader(stream);

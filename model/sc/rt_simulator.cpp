@@ -27,7 +27,7 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
                          uint32_t height, RayRetireListener* listener, MemoryBinder bind_memory)
     : config_(config),
       clock_(clock_of(config)),
-      traversal_(bvh),
+      traversal_(bvh, without_fetch_list()),
       pool_(ray_slots(config)),
       collector_(width, height, config.rt.warp_size) {
   fanout_.add(&collector_);

@@ -231,7 +231,6 @@ void RtCore::install(RayContext* ray, uint32_t slot, Cycle now) {
   if (!ray->begun) {
     // Ray setup: the traversal state starts at the root, all of it on chip.
     traversal_.begin(ray->state, ray->ray);
-    ray->state.accesses.clear();
     stack_.start(*ray);
     ray->entry_treelet.assign(1, traversal_.bvh().root_treelet(ray->ray.frame));
     ray->begun = true;

@@ -79,8 +79,8 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     ++count;
     count_step(step.kind, ray.state);
     slot_state_[base + lane].tests = step.tests ? step.tests : kNoTests;
-    if (step.access_count > 0) {
-      uint64_t addr = ray.state.accesses[step.first_access].address;
+    if (step.fetch_bytes > 0) {
+      uint64_t addr = step.fetch_address;
       if (std::find(warp_reads_.begin(), warp_reads_.end(), addr) == warp_reads_.end()) {
         warp_reads_.push_back(addr);
         Cycle ready = fetch(ray, step, now);
@@ -89,7 +89,6 @@ void RtCore::on_packet(uint32_t item, Cycle now) {
     }
     read_texels(ray, step, now, data);
     settle(ray, lane_next_[lane].depth, 0, now);
-    ray.state.accesses.clear();
   }
   slot_state_[item].kind = kind;
   progress_ += count;

@@ -123,12 +123,8 @@ void RtCore::read_texels(RayContext& ray, const StepResult& step, Cycle now, Cyc
 }
 
 Cycle RtCore::fetch(RayContext& ray, const StepResult& step, Cycle now) {
-  if (step.access_count == 0) return now;
-  // A node is one record; a leaf's triangles are contiguous, so one read covers them.
-  const MemoryAccess& first = ray.state.accesses[step.first_access];
-  const MemoryAccess& last = ray.state.accesses[step.first_access + step.access_count - 1];
-  uint32_t bytes = uint32_t(last.address + last.bytes - first.address);
-  return read(ray, first.address, bytes, now);
+  if (step.fetch_bytes == 0) return now;
+  return read(ray, step.fetch_address, step.fetch_bytes, now);
 }
 
 bool RtCore::refill(RayContext& ray, const Next& next, Cycle now, Cycle& ready) {
@@ -231,7 +227,6 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   if (prefetch_node) prefetch(prefetcher_.on_node(visited_treelet), now);
   count_step(step.kind, ray.state);
   settle(ray, next.depth, visited_treelet, now);
-  ray.state.accesses.clear();
   slot_state_[slot].tests = step.tests ? step.tests : kNoTests;  // none: a masked instance
   slot_state_[slot].kind = step.kind;
   traversal_.prime(ray.state);

@@ -92,8 +92,10 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
   StepResult out{StepKind::Node, static_cast<uint32_t>(s.accesses.size()), 0, 0, 0};
   // Fetch the node.
   s.counters.trav_nodes++;
+  out.fetch_address = level.node_address(entry.index);
+  out.fetch_bytes = level.node_size;
   if (config_.record_accesses) {
-    record(s, level.node_address(entry.index), level.node_size, AccessKind::Node);
+    record(s, out.fetch_address, level.node_size, AccessKind::Node);
     out.access_count = 1;
   }
   NodeView node;
@@ -131,6 +133,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
   const BvhImage& level = *s.level;
   StepResult out{StepKind::Leaf, static_cast<uint32_t>(s.accesses.size()), 0, 0, 0};
   s.counters.trav_leaves++;
+  out.fetch_address = level.triangle_address(entry.index);
   for (uint32_t i = 0; i < entry.count; ++i) {
     uint32_t position = entry.index + i;
     // Fetch the triangle and test it against the range still open.
@@ -149,7 +152,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
       s.counters.trav_alpha_tests++;
       out.anyhit_calls++;
       TriangleAlpha::Lookup texel = level.alpha->look_up(prim, hit.u, hit.v);
-      if (config_.record_accesses) s.texels.push_back(kTextureBase + texel.texel_offset);
+      s.texels.push_back(kTextureBase + texel.texel_offset);
       if (!texel.opaque) continue;
     }
     // Keep the hit; the range now ends there.
@@ -167,6 +170,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
       break;
     }
   }
+  out.fetch_bytes = out.tests * level.triangle_stride;  // the triangles tested, in order
   return out;
 }
 

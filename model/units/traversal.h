@@ -31,8 +31,18 @@ namespace rtsim {
 
 struct TraversalConfig {
   float box_padding = 0x1p-20f;  // relative: box growth per |origin| + scene extent (ray_box.h)
-  bool record_accesses = true;   // keep each ray's fetch list for the timing model
+  // Keep each ray's fetch list, one entry per node, triangle or instance record (the cache
+  // level and L2 warming read it); a step's one contiguous read is in its StepResult either way.
+  bool record_accesses = true;
 };
+
+// The config of a unit whose users read each step's one read from its StepResult (the timing
+// models), with no fetch list to keep.
+inline TraversalConfig without_fetch_list() {
+  TraversalConfig config;
+  config.record_accesses = false;
+  return config;
+}
 
 // Per-ray counters under Embree's names.
 struct TraversalCounters {
@@ -98,10 +108,14 @@ enum class StepKind : uint8_t { Node, Leaf, Instance, Done };
 struct StepResult {
   StepKind kind = StepKind::Done;
   uint32_t first_access = 0;  // this step's fetches: state.accesses[first, first + count)
-  uint32_t access_count = 0;
+  uint32_t access_count = 0;  // (with record_accesses; else 0)
   uint32_t tests = 0;         // boxes (node) or triangles (leaf) tested; 1 transform (instance)
   uint32_t hits = 0;          // boxes entered, or triangles hit
   uint32_t anyhit_calls = 0;  // leaf: candidates on alpha-tested triangles (state.texels' last)
+  // The one read the step makes (a node; a leaf's triangles it tested, which lie together; an
+  // instance record); fetch_bytes 0: none.
+  uint64_t fetch_address = 0;
+  uint32_t fetch_bytes = 0;
 };
 
 class TraversalUnit {

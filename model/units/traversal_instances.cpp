@@ -9,9 +9,10 @@ namespace rtsim {
 StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& entry) const {
   StepResult out{StepKind::Instance, static_cast<uint32_t>(s.accesses.size()), 0, 1, 0};
   // Fetch the instance record.
+  out.fetch_address = s.top->triangle_address(entry.index);
+  out.fetch_bytes = kInstanceRecordBytes;
   if (config_.record_accesses) {
-    s.accesses.push_back(
-        {s.top->triangle_address(entry.index), kInstanceRecordBytes, AccessKind::Instance});
+    s.accesses.push_back({out.fetch_address, kInstanceRecordBytes, AccessKind::Instance});
     out.access_count = 1;
   }
   InstanceRecord r = read_instance_record(*s.top, entry.index);
