@@ -6,10 +6,13 @@
 // A timing wheel: events within kWheel cycles of the earliest pending cycle sit in per-cycle
 // FIFO arrays (constant time per event, and contiguous in memory: a linked list's nodes cost a
 // host cache miss per event); later ones wait in a heap and move onto the wheel as it turns. Events
-// must not be scheduled before the last cycle popped.
+// must not be scheduled before the last cycle popped. A cycle's first few ray slots lie in its
+// wheel slot itself, one host cache line: with thousands of rays in flight the wheel is cold when
+// it comes round, and a slot with its items elsewhere cost a second miss.
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <queue>
@@ -62,9 +65,22 @@ class Calendar {
   }
 
  private:
-  struct Slot {
-    std::vector<Item> items;  // the items of one cycle in order; items[next] is the first
-    uint32_t next = 0;
+  // The items of one cycle in order, the first kInline of them here (small items: a unit's ray
+  // slots; a request record takes more room than a slot has); item `next` is the first not yet
+  // taken.
+  static constexpr uint32_t kInline = 32 / sizeof(Item);
+  struct alignas(kInline > 0 ? 64 : alignof(std::vector<Item>)) Slot {
+    uint32_t next = 0, count = 0;
+    std::array<Item, kInline> first{};
+    std::vector<Item> more;  // items kInline on (keeps its capacity)
+    void push(const Item& item) {
+      if (count < kInline)
+        first[count] = item;
+      else
+        more.push_back(item);
+      count++;
+    }
+    const Item& operator[](uint32_t i) const { return i < kInline ? first[i] : more[i - kInline]; }
   };
   struct Far {
     Cycle cycle;
@@ -77,7 +93,7 @@ class Calendar {
   void append(Cycle cycle, const Item& item) {
     uint32_t slot = uint32_t(cycle % kWheel);
     occupied_[slot / 64] |= 1ull << (slot % 64);
-    slots_[slot].items.push_back(item);
+    slots_[slot].push(item);
     on_wheel_++;
   }
   // pop_before when the cursor's cycle has no event left: turns the wheel to the next one.
@@ -113,10 +129,10 @@ class Calendar {
   Event take_at_cursor() {  // the first event at the cursor's cycle, which has one
     uint32_t slot = uint32_t(cursor_ % kWheel);
     Slot& s = slots_[slot];
-    Event e{cursor_, s.items[s.next++]};
-    if (s.next == s.items.size()) {
-      s.items.clear();  // keeps its capacity for the cycles to come
-      s.next = 0;
+    Event e{cursor_, s[s.next++]};
+    if (s.next == s.count) {
+      s.more.clear();  // keeps its capacity for the cycles to come
+      s.next = s.count = 0;
       occupied_[slot / 64] &= ~(1ull << (slot % 64));
     }
     size_--;
