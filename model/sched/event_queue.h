@@ -65,10 +65,12 @@ class Calendar {
   }
 
  private:
-  // The items of one cycle in order, the first kInline of them here (small items: a unit's ray
-  // slots; a request record takes more room than a slot has); item `next` is the first not yet
-  // taken.
+  // The items of one cycle in order, the first kInline of them here, in the slot's host cache
+  // line (small items: a unit's ray slots; a request record is too big for it); item `next` is
+  // the first not yet taken.
   static constexpr uint32_t kInline = 32 / sizeof(Item);
+  // A host line of its own when it holds items (a 64-byte slot for the L2's records measured
+  // more host misses than their 40-byte one).
   struct alignas(kInline > 0 ? 64 : alignof(std::vector<Item>)) Slot {
     uint32_t next = 0, count = 0;
     std::array<Item, kInline> first{};

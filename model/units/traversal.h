@@ -31,8 +31,8 @@ namespace rtsim {
 
 struct TraversalConfig {
   float box_padding = 0x1p-20f;  // relative: box growth per |origin| + scene extent (ray_box.h)
-  // Keep each ray's fetch list, one entry per node, triangle or instance record (the cache
-  // level and L2 warming read it); a step's one contiguous read is in its StepResult either way.
+  // Keep each ray's fetch list, one entry per node, triangle or instance record (L2 warming
+  // reads it); a step's one contiguous read is in its StepResult either way.
   bool record_accesses = true;
 };
 
