@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "model/mem/way_search.h"
+
 namespace rtsim {
 namespace {
 
@@ -230,12 +232,7 @@ bool Cache::contains(uint64_t addr) const {
 }
 
 uint32_t Cache::find(uint32_t set, uint64_t tag) const {
-  // Every way, without a branch on the tags (a set holds a line once): the way a hit is in is
-  // random, and a mispredicted exit costs the host more than scanning the rest.
-  const uint64_t* ways = &tags_[size_t(set) * config_.ways];
-  uint32_t found = kNone;
-  for (uint32_t w = 0; w < config_.ways; ++w) found = ways[w] == tag ? w : found;
-  return found;
+  return find_way_(&tags_[size_t(set) * config_.ways], config_.ways, tag);
 }
 
 void Cache::track_cold_misses(uint64_t dense_begin, uint64_t dense_end) {

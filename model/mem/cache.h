@@ -36,6 +36,7 @@
 #include "model/mem/memory_level.h"
 #include "model/mem/replacement.h"
 #include "model/mem/slot_pool.h"
+#include "model/mem/way_search.h"
 
 namespace rtsim {
 
@@ -262,6 +263,7 @@ class Cache : public MemoryTarget, private ReadClient {
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
   uint32_t find(uint32_t set, uint64_t tag) const;  // the way holding tag, or kNone
+  WaySearch find_way_ = way_search();
   // Gives a way of the set to `tag`, evicting a victim (its dirty blocks written back at `at`).
   uint32_t allocate(uint32_t set, uint64_t tag, Cycle at);
   size_t block_index(uint32_t set, uint32_t way, uint64_t block) const {

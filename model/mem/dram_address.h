@@ -38,8 +38,10 @@ class DramAddressMap {
     uint32_t DramAddress::*field;  // the field it adds to
     uint32_t size;
     uint32_t scale;  // of its value in the field (column_high: column_low_ columns)
+    uint32_t shift;  // log2(size), if a power of two
   };
   std::vector<Digit> digits_;  // least significant first
+  bool powers_of_two_ = true;  // every digit's size
   uint32_t burst_shift_;
   uint32_t column_low_ = 1;  // interleave: bursts of a row in one channel before the next
   bool hashed_ = false;      // xor

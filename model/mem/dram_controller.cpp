@@ -61,7 +61,7 @@ size_t DramController::queued() const {
   return n;
 }
 
-void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at) {
+Cycle DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at) {
   uint64_t burst = config_.burst_bytes();
   uint64_t first = addr / burst, last = (addr + std::max<uint32_t>(bytes, 1) - 1) / burst;
   uint32_t request;
@@ -77,6 +77,7 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
   (write ? stats_.write_bytes : stats_.read_bytes) += (last - first + 1) * burst;
   DramClock arrival = to_dram(at);
   Burst* last_entry = nullptr;
+  DramClock next = kNever;
   for (uint64_t b = first; b <= last; ++b) {
     Burst entry{request, map_.decode(b * burst), arrival};
     if (last_entry && same_row(last_entry->a, entry.a) &&
@@ -90,7 +91,9 @@ void DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool wr
     // Asleep, it wakes at a refresh it missed or at the arrival, whichever comes first.
     if (ch.next == kNever && config_.refresh != DramRefresh::None) ch.next = ch.refresh_due;
     ch.next = std::min(ch.next, arrival);
+    next = std::min(next, ch.next);
   }
+  return core_of(next);
 }
 
 Cycle DramController::next_event() const {
@@ -109,10 +112,20 @@ void DramController::advance(Cycle until, std::vector<DramReadDone>& done) {
   size_t first = done.size();
   for (Channel& ch : channels_)
     while (ch.next <= last) step(ch, ch.next, done);
-  if (done.size() - first > 1)
-    std::stable_sort(
-        done.begin() + long(first), done.end(),
-        [](const DramReadDone& x, const DramReadDone& y) { return x.decided < y.decided; });
+  // In order of decision, a channel's in its order (a stable sort). A call completes a few
+  // reads: sorted in place, as std::stable_sort would take a buffer from the heap each time.
+  auto earlier = [](const DramReadDone& x, const DramReadDone& y) { return x.decided < y.decided; };
+  constexpr size_t kInPlace = 32;
+  if (done.size() - first > kInPlace) {
+    std::stable_sort(done.begin() + long(first), done.end(), earlier);
+    return;
+  }
+  for (size_t i = first + 1; i < done.size(); ++i) {
+    DramReadDone read = done[i];
+    size_t j = i;
+    for (; j > first && earlier(read, done[j - 1]); --j) done[j] = done[j - 1];
+    done[j] = read;
+  }
 }
 
 void DramController::admit(Channel& ch, DramClock t) {

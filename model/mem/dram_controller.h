@@ -56,7 +56,8 @@ class DramController {
   // A request of `bytes` at `addr` arriving at core cycle `at` (non-decreasing over calls, and
   // not before a decision already taken).
   // Reads report `id` through advance() when their data is ready; writes report nothing.
-  void enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at);
+  // Returns next_event() of the channels the request joined (the others' is unchanged).
+  Cycle enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at);
   // The core cycle from which the next decision may be taken (all requests up to it must have
   // been enqueued); kPending when every channel sleeps.
   Cycle next_event() const;

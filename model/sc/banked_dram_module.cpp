@@ -34,10 +34,10 @@ tlm::tlm_sync_enum BankedDramModule::nb_transport_fw(tlm::tlm_generic_payload& t
     return tlm::TLM_COMPLETED;
   }
   Cycle at = clock_.cycles(sim_now() + delay);
-  controller_.enqueue(reinterpret_cast<uint64_t>(&trans), trans.get_address(),
-                      trans.get_data_length(), write, at);
+  Cycle next = controller_.enqueue(reinterpret_cast<uint64_t>(&trans), trans.get_address(),
+                                   trans.get_data_length(), write, at);
   trans.set_response_status(tlm::TLM_OK_RESPONSE);
-  arm();
+  if (!deciding_) arm_at(next);
   if (write) return tlm::TLM_COMPLETED;
   phase = tlm::END_REQ;
   return tlm::TLM_UPDATED;
@@ -45,12 +45,11 @@ tlm::tlm_sync_enum BankedDramModule::nb_transport_fw(tlm::tlm_generic_payload& t
 
 void BankedDramModule::request(uint64_t addr, uint32_t bytes, bool write, Cycle at,
                                uint64_t token) {
-  controller_.enqueue(token, addr, bytes, write, at);
-  arm();
+  Cycle next = controller_.enqueue(token, addr, bytes, write, at);
+  if (!deciding_) arm_at(next);
 }
 
-void BankedDramModule::arm() {
-  Cycle next = controller_.next_event();
+void BankedDramModule::arm_at(Cycle next) {
   if (next == kPending || next + 1 + slack_ >= armed_) return;
   armed_ = next + 1 + slack_;
   wake_.notify(clock_.delay_to(armed_));
@@ -60,6 +59,7 @@ void BankedDramModule::decide() {
   sc_core::sc_time now = sim_now();
   Cycle cycle = clock_.cycles(now);
   armed_ = kPending;
+  deciding_ = true;
   done_.clear();
   controller_.advance(cycle - 1, done_);
   for (const DramReadDone& d : done_) {
@@ -72,6 +72,7 @@ void BankedDramModule::decide() {
     sc_core::sc_time delay = clock_.time(std::max(d.ready, cycle)) - now;
     in->nb_transport_bw(trans, phase, delay);
   }
+  deciding_ = false;
   arm();
 }
 

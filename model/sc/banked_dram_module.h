@@ -54,13 +54,18 @@ class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
   tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
                                      sc_core::sc_time& delay);
   void decide();
-  void arm();  // wakes decide() for the controller's next decision
+  void arm() { arm_at(controller_.next_event()); }  // wakes decide() for the next decision
+  // Wakes decide() for a decision from core cycle `next` on, if none is armed before. A request
+  // (outside decide(), which arms once it is done) arms only for its own channels: the others'
+  // decisions are armed for already.
+  void arm_at(Cycle next);
 
   Clock clock_;
   DramController controller_;
   sc_core::sc_event wake_;
   uint32_t slack_ = 0;      // cycles a decision may be taken late
   Cycle armed_ = kPending;  // the cycle wake_ is notified for
+  bool deciding_ = false;   // in decide()
   std::vector<DramReadDone> done_;
   ReadClient* client_ = nullptr;  // by call: whom reads answer (null: through `in`)
 };
