@@ -231,8 +231,8 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
     DramClock pre_at = kNever;
     bool held = false;
     uint32_t first = per_bank ? r.bank : 0, count = per_bank ? 1 : config_.banks();
-    for (uint32_t i = first; i < first + count; ++i) {
-      DramAddress a{0, rank, i / config_.banks_per_group, i % config_.banks_per_group, 0, 0};
+    DramAddress a{0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
+    for (uint32_t i = 0; i < count; ++i, next_bank(a)) {
       if (ch.device.open_row(a) == DramChannel::kClosed) continue;
       if (rows(ch)[bank_of(a)] & kHeld) {
         held = true;
@@ -251,7 +251,7 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
       return true;
     }
     if (held) continue;  // the request's column command lowers wake
-    DramAddress a{0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
+    a = {0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
     DramCommand command = per_bank ? DramCommand::RefPb : DramCommand::Ref;
     DramClock e = ch.device.earliest(command, a, t);
     if (e > t || dry) {

@@ -131,6 +131,11 @@ class DramController {
     return (size_t(a.rank) * config_.bank_groups + a.group) * config_.banks_per_group + a.bank;
   }
   void mark_opened(Channel& ch, const Burst& b);  // b's ACT: its request's bursts in that row
+  // The rank's next bank after a's (bank, then bank group; a division per bank costs the host
+  // tens of cycles).
+  void next_bank(DramAddress& a) const {
+    if (++a.bank == config_.banks_per_group) a.bank = 0, a.group++;
+  }
   // FR-FCFS over one queue; returns whether it issued a command, else lowers wake.
   bool schedule(Channel& ch, std::vector<Burst>& queue, bool write, DramClock t, DramClock& wake,
                 std::vector<DramReadDone>& done, bool dry);

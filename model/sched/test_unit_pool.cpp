@@ -32,15 +32,16 @@ TestUnitPool::Slot* TestUnitPool::slot_at(Cycle cycle) {
   return slot;
 }
 
-Cycle TestUnitPool::find_free(Cycle cycle) {
+TestUnitPool::Slot* TestUnitPool::find_free(Cycle& cycle) {
   constexpr int kPath = 32;
   struct Passed {
     Slot* slot;
     Cycle cycle;
   } path[kPath];
   int length = 0;
+  Slot* slot;
   for (;;) {
-    Slot* slot = slot_at(cycle);
+    slot = slot_at(cycle);
     if (slot && slot->used < config_.count) break;
     if (slot && length < kPath) path[length++] = {slot, cycle};
     cycle += slot && slot->skip > 0 ? slot->skip : 1;
@@ -48,7 +49,7 @@ Cycle TestUnitPool::find_free(Cycle cycle) {
   // Every booked cycle passed on the way now points (close to) here.
   for (int i = 0; i < length; ++i)
     path[i].slot->skip = uint16_t(std::min<Cycle>(cycle - path[i].cycle, kCalendarCycles - 1));
-  return cycle;
+  return slot;
 }
 
 Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
@@ -64,18 +65,16 @@ Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
       return arrival + config_.latency;
     }
   }
-  Cycle cycle = find_free(arrival), first = cycle, last = cycle;
+  Cycle cycle = arrival;
+  Slot* slot = find_free(cycle);
+  stats_.stall_cycles += cycle - arrival;
   for (;;) {
-    Slot* slot = slot_at(cycle);
     uint32_t take = std::min<uint32_t>(config_.count - slot->used, issues);
     slot->used = uint16_t(slot->used + take);
     issues -= take;
-    last = cycle;
-    if (issues == 0) break;
-    cycle = find_free(cycle + 1);
+    if (issues == 0) return cycle + config_.latency;
+    slot = find_free(++cycle);
   }
-  stats_.stall_cycles += first - arrival;
-  return last + config_.latency;
 }
 
 }  // namespace rtsim

@@ -61,8 +61,9 @@ class TestUnitPool {
   // one (count as booked); slot_at also counts that as a calendar conflict.
   Slot* entry(Cycle cycle);
   Slot* slot_at(Cycle cycle);
-  // The first cycle at or after `cycle` with a free issue; shortens the skips it followed.
-  Cycle find_free(Cycle cycle);
+  // Moves `cycle` to the first cycle at or after it with a free issue and returns its entry;
+  // shortens the skips it followed.
+  Slot* find_free(Cycle& cycle);
 
   TestUnitConfig config_;
   std::vector<Slot> calendar_;
