@@ -231,7 +231,9 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
     DramClock pre_at = kNever;
     bool held = false;
     uint32_t first = per_bank ? r.bank : 0, count = per_bank ? 1 : config_.banks();
-    DramAddress a{0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
+    const DramAddress first_bank{
+        0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
+    DramAddress a = first_bank;
     for (uint32_t i = 0; i < count; ++i, next_bank(a)) {
       if (ch.device.open_row(a) == DramChannel::kClosed) continue;
       if (rows(ch)[bank_of(a)] & kHeld) {
@@ -251,14 +253,13 @@ bool DramController::refresh(Channel& ch, DramClock t, DramClock& wake, bool dry
       return true;
     }
     if (held) continue;  // the request's column command lowers wake
-    a = {0, rank, first / config_.banks_per_group, first % config_.banks_per_group, 0, 0};
     DramCommand command = per_bank ? DramCommand::RefPb : DramCommand::Ref;
-    DramClock e = ch.device.earliest(command, a, t);
+    DramClock e = ch.device.earliest(command, first_bank, t);
     if (e > t || dry) {
       wake = std::min(wake, e);
       continue;
     }
-    ch.device.issue(command, a, t);
+    ch.device.issue(command, first_bank, t);
     (per_bank ? stats_.commands.ref_pb : stats_.commands.ref)++;
     bool waited = false;
     for (const std::vector<Burst>* q : {&ch.reads, &ch.writes})

@@ -20,17 +20,12 @@ TraversalCounters& TraversalCounters::operator+=(const TraversalCounters& o) {
   return *this;
 }
 
-namespace {
-
-// Appends one fetch to the ray's access list, field by field (no 16-byte temporary).
-void record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind) {
+void TraversalUnit::record(TraversalState& s, uint64_t address, uint32_t bytes, AccessKind kind) {
   MemoryAccess& access = s.accesses.emplace_back();
   access.address = address;
   access.bytes = bytes;
   access.kind = kind;
 }
-
-}  // namespace
 
 TraversalUnit::TraversalUnit(BvhView bvh, TraversalConfig config) : bvh_(bvh), config_(config) {}
 

@@ -153,6 +153,8 @@ class TraversalUnit {
   StepResult visit_leaf(TraversalState& state, const StackEntry& entry) const;
   StepResult visit_instance(TraversalState& state, const StackEntry& entry) const;
   void leave_instance(TraversalState& state) const;
+  // Appends one fetch to the ray's access list, field by field (no 16-byte temporary).
+  static void record(TraversalState& state, uint64_t address, uint32_t bytes, AccessKind kind);
 
   BvhView bvh_;
   TraversalConfig config_;

@@ -12,7 +12,7 @@ StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& en
   out.fetch_address = s.top->triangle_address(entry.index);
   out.fetch_bytes = kInstanceRecordBytes;
   if (config_.record_accesses) {
-    s.accesses.push_back({out.fetch_address, kInstanceRecordBytes, AccessKind::Instance});
+    record(s, out.fetch_address, kInstanceRecordBytes, AccessKind::Instance);
     out.access_count = 1;
   }
   InstanceRecord r = read_instance_record(*s.top, entry.index);
