@@ -1,6 +1,7 @@
 #include "model/mem/dram_controller.h"
 
 #include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 namespace rtsim {
@@ -24,9 +25,14 @@ constexpr DramCommand column_command(bool write) {
   return write ? DramCommand::Wr : DramCommand::Rd;
 }
 
-// a * b / c rounded up, without overflow for clocks of any simulation.
-uint64_t mul_div_up(uint64_t a, uint64_t b, uint64_t c) {
-  return uint64_t(((unsigned __int128)a * b + c - 1) / c);
+// a * b / c rounded down or up, without overflow for clocks of any simulation. In 64 bits where
+// the product fits (b and c are a reduced ratio: always, in practice), since a 128-bit division
+// is a library call several times slower.
+uint64_t mul_div(uint64_t a, uint64_t b, uint64_t c, bool up) {
+  uint64_t product;
+  if (!__builtin_mul_overflow(a, b, &product) && product <= ~uint64_t(0) - c)
+    return (product + (up ? c - 1 : 0)) / c;
+  return uint64_t(((unsigned __int128)a * b + (up ? c - 1 : 0)) / c);
 }
 
 }  // namespace
@@ -34,8 +40,11 @@ uint64_t mul_div_up(uint64_t a, uint64_t b, uint64_t c) {
 DramController::DramController(const BankedDramConfig& config, double core_ghz)
     : config_(config),
       map_(checked(config)),
-      core_khz_(uint64_t(core_ghz * 1e6 + 0.5)),
-      dram_khz_(uint64_t(config.clock_mhz * 1e3 + 0.5)) {
+      core_rate_(uint64_t(core_ghz * 1e6 + 0.5)),
+      dram_rate_(uint64_t(config.clock_mhz * 1e3 + 0.5)) {
+  uint64_t common = std::gcd(core_rate_, dram_rate_);  // the same conversions, in smaller numbers
+  core_rate_ /= common;
+  dram_rate_ /= common;
   for (uint32_t c = 0; c < config.channels; ++c) {
     channels_.emplace_back(config);
     for (uint32_t r = 0; r < config.ranks; ++r) {  // ranks refresh in turn, tREFI apart in all
@@ -48,11 +57,11 @@ DramController::DramController(const BankedDramConfig& config, double core_ghz)
 }
 
 DramClock DramController::to_dram(Cycle core) const {
-  return mul_div_up(core, dram_khz_, core_khz_);
+  return mul_div(core, dram_rate_, core_rate_, true);
 }
 
 Cycle DramController::to_core(DramClock clock) const {
-  return mul_div_up(clock, core_khz_, dram_khz_);
+  return mul_div(clock, core_rate_, dram_rate_, true);
 }
 
 size_t DramController::queued() const {
@@ -63,7 +72,8 @@ size_t DramController::queued() const {
 
 Cycle DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at) {
   uint64_t burst = config_.burst_bytes();
-  uint64_t first = addr / burst, last = (addr + std::max<uint32_t>(bytes, 1) - 1) / burst;
+  auto shift = uint32_t(__builtin_ctzll(burst));  // a power of two (checked)
+  uint64_t first = addr >> shift, last = (addr + std::max<uint32_t>(bytes, 1) - 1) >> shift;
   uint32_t request;
   if (free_requests_.empty()) {
     request = uint32_t(requests_.size());
@@ -104,11 +114,11 @@ Cycle DramController::next_event() const {
 }
 
 Cycle DramController::core_of(DramClock clock) const {
-  return Cycle((unsigned __int128)clock * core_khz_ / dram_khz_);
+  return mul_div(clock, core_rate_, dram_rate_, false);
 }
 
 void DramController::advance(Cycle until, std::vector<DramReadDone>& done) {
-  DramClock last = mul_div_up(until + 1, dram_khz_, core_khz_) - 1;
+  DramClock last = mul_div(until + 1, dram_rate_, core_rate_, true) - 1;
   size_t first = done.size();
   for (Channel& ch : channels_)
     while (ch.next <= last) step(ch, ch.next, done);

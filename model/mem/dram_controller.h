@@ -147,7 +147,7 @@ class DramController {
 
   BankedDramConfig config_;
   DramAddressMap map_;
-  uint64_t core_khz_, dram_khz_;
+  uint64_t core_rate_, dram_rate_;  // the clock frequencies' ratio, in lowest terms
   std::vector<Channel> channels_;
   std::vector<Request> requests_;
   std::vector<uint32_t> free_requests_;
