@@ -62,6 +62,19 @@ Cycle read_alone(DramController& dram, uint64_t id, uint64_t addr, Cycle at) {
   return run(dram, id + 1)[id];
 }
 
+// DRAM clocks to core cycles, rounded up, for a ratio that is not a whole number (1.75 GHz
+// DRAM, 1.5 GHz core) and for clocks whose product with it needs more than 64 bits.
+TEST(DramTiming, ClockConversionIsExactAtEveryMagnitude) {
+  BankedDramConfig c = small_config();
+  c.clock_mhz = 1750;
+  DramController dram(c, 1.5);
+  for (DramClock clock : {DramClock(0), DramClock(1), DramClock(7), DramClock(1'000'003),
+                          DramClock(1) << 40, (DramClock(1) << 62) + 5, ~DramClock(0) / 2}) {
+    auto exact = (unsigned __int128)clock * 1'500'000 + 1'750'000 - 1;
+    EXPECT_EQ(dram.to_core(clock), Cycle(exact / 1'750'000)) << clock;
+  }
+}
+
 TEST(DramTiming, ClosedBankRowHitAndRowConflictLatencies) {
   BankedDramConfig c = small_config();
   const DramTiming& t = c.timing;
