@@ -98,26 +98,24 @@ DramAddressMap::DramAddressMap(const BankedDramConfig& c)
   for (Field f : order) {
     uint32_t n = f == Field::Column && column_low_ > 1 ? column_low_ : size(f);
     digits_.push_back({member(f), n, f == Field::ColumnHigh ? column_low_ : 1,
-                       power_of_two(n) ? uint32_t(__builtin_ctz(n)) : 0});
-    powers_of_two_ = powers_of_two_ && power_of_two(n);
+                       power_of_two(n) ? uint32_t(__builtin_ctz(n)) : kNoShift});
   }
 }
 
-DramAddress DramAddressMap::decode(uint64_t addr) const {
-  uint64_t rest = addr >> burst_shift_;
+DramAddress DramAddressMap::decode_burst(uint64_t rest) const {
   DramAddress a;  // all 0: each digit adds to its field (the column has two)
-  // The most significant digit wraps: the rest is dropped. With every size a power of two (the
-  // usual case) a digit is a mask and a shift: a 64-bit division costs the host tens of cycles.
-  if (powers_of_two_) {
-    for (const Digit& d : digits_) {
-      a.*d.field += uint32_t(rest & (d.size - 1)) * d.scale;
+  // The most significant digit wraps: the rest is dropped. A power-of-two digit (the usual case)
+  // is a mask and a shift: a 64-bit division costs the host tens of cycles.
+  for (const Digit& d : digits_) {
+    uint64_t digit;
+    if (d.shift != kNoShift) {
+      digit = rest & (d.size - 1);
       rest >>= d.shift;
-    }
-  } else {
-    for (const Digit& d : digits_) {
-      a.*d.field += uint32_t(rest % d.size) * d.scale;
+    } else {
+      digit = rest % d.size;
       rest /= d.size;
     }
+    a.*d.field += uint32_t(digit) * d.scale;
   }
   if (hashed_) {
     a.bank ^= a.row & (banks_ - 1);

@@ -30,7 +30,9 @@ std::string dram_mapping_problem(const BankedDramConfig& config);
 class DramAddressMap {
  public:
   explicit DramAddressMap(const BankedDramConfig& config);  // config.mapping must be valid
-  DramAddress decode(uint64_t addr) const;
+  DramAddress decode(uint64_t addr) const { return decode_burst(addr >> burst_shift_); }
+  DramAddress decode_burst(uint64_t burst) const;  // of the burst numbered `burst` (addr / size)
+  uint32_t burst_shift() const { return burst_shift_; }  // log2 of the burst's bytes
 
  private:
   enum class Field : uint8_t { Row, Rank, Group, Bank, Column, ColumnHigh, Channel };
@@ -38,10 +40,10 @@ class DramAddressMap {
     uint32_t DramAddress::*field;  // the field it adds to
     uint32_t size;
     uint32_t scale;  // of its value in the field (column_high: column_low_ columns)
-    uint32_t shift;  // log2(size), if a power of two
+    uint32_t shift;  // log2(size) if a power of two, else kNoShift
   };
+  static constexpr uint32_t kNoShift = ~0u;
   std::vector<Digit> digits_;  // least significant first
-  bool powers_of_two_ = true;  // every digit's size
   uint32_t burst_shift_;
   uint32_t column_low_ = 1;  // interleave: bursts of a row in one channel before the next
   bool hashed_ = false;      // xor

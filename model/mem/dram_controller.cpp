@@ -72,7 +72,7 @@ size_t DramController::queued() const {
 
 Cycle DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool write, Cycle at) {
   uint64_t burst = config_.burst_bytes();
-  auto shift = uint32_t(__builtin_ctzll(burst));  // a power of two (checked)
+  uint32_t shift = map_.burst_shift();
   uint64_t first = addr >> shift, last = (addr + std::max<uint32_t>(bytes, 1) - 1) >> shift;
   uint32_t request;
   if (free_requests_.empty()) {
@@ -89,7 +89,7 @@ Cycle DramController::enqueue(uint64_t id, uint64_t addr, uint32_t bytes, bool w
   Burst* last_entry = nullptr;
   DramClock next = kNever;
   for (uint64_t b = first; b <= last; ++b) {
-    Burst entry{request, map_.decode(b * burst), arrival};
+    Burst entry{request, map_.decode_burst(b), arrival};
     if (last_entry && same_row(last_entry->a, entry.a) &&
         last_entry->a.column + last_entry->columns == entry.a.column) {
       last_entry->columns++;  // the next burst of the same row: one entry, one more RD
