@@ -84,6 +84,9 @@ class ReadClient {
   // The read made with `token` has its data at `ready`; charge is what it cost beyond what the
   // read call returned.
   virtual void read_done(uint64_t token, Cycle ready, const ReadCharge& charge) = 0;
+  // A hint that read_done(token, ...) comes soon: the client may ask the host's memory for what
+  // answering it touches. Changes nothing modelled.
+  virtual void prime_done(uint64_t token) const { (void)token; }
 };
 
 class MemoryTarget {

@@ -165,7 +165,10 @@ void SharedCacheModule::serve_window() {
     stamp_ = sim_now();
     serving_ = true;
     Calendar<Job>::Event e;
-    while (events_.pop_before(served_until_, e)) run_job(e.item, e.cycle);
+    while (events_.pop_before(served_until_, e)) {
+      prime_next_job();
+      run_job(e.item, e.cycle);
+    }
     serving_ = false;
     if (!events_.empty() && events_.next_cycle() < armed_) {  // wake for the next job
       armed_ = events_.next_cycle();
@@ -176,6 +179,13 @@ void SharedCacheModule::serve_window() {
     if (!on_error_) throw;
     on_error_(std::current_exception());
   }
+}
+
+void SharedCacheModule::prime_next_job() const {
+  Job next;
+  if (!events_.peek(next)) return;
+  bool answers = next.kind == JobKind::Read || next.kind == JobKind::DramDone;
+  if (answers && next.client) next.client->prime_done(next.token);
 }
 
 void SharedCacheModule::run_job(const Job& job, Cycle at) {

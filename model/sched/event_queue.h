@@ -54,6 +54,14 @@ class Calendar {
     settle();
     return take_at_cursor();
   }
+  // For hints to the host about what comes next: the item the next pop returns if nothing is
+  // pushed first (false: none on the wheel).
+  bool peek(Item& item) const {
+    if (on_wheel_ == 0) return false;
+    const Slot& s = slots_[(cursor_ + gap(cursor_)) % kWheel];
+    item = s[s.next];
+    return true;
+  }
   // Pops the earliest event if it is before cycle `until` (then true); else changes nothing.
   bool pop_before(Cycle until, Event& event) {
     if (size_ == 0) return false;

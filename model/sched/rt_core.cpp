@@ -114,14 +114,30 @@ uint64_t RtCore::poll(Cycle now) {
 uint64_t RtCore::advance(Cycle until) {
   progress_ = 0;
   EventQueue::Event e;
+  bool packet = config_.mode == TraversalMode::Packet;
   while (events_.pop_before(until, e)) {
     now_ = std::max(now_, e.cycle);
-    if (config_.mode == TraversalMode::Packet)
+    if (packet) {
       on_packet(e.item, now_);
-    else
-      on_ray(e.item, now_);
+      continue;
+    }
+    prime_next_event();
+    on_ray(e.item, now_);
   }
   return progress_;
+}
+
+void RtCore::prime_next_event() const {
+  uint32_t slot;
+  if (!events_.peek(slot)) return;
+  // What on_ray reads first: the context up to the traversal state's counters, the slot's
+  // control state, and the top of the stack (through the address noted after the ray's last
+  // step: no load of the context).
+  constexpr size_t kContextBytes = 384;
+  auto context = reinterpret_cast<const char*>(slots_[slot]);
+  for (size_t line = 0; line < kContextBytes; line += 64) __builtin_prefetch(context + line, 0, 2);
+  __builtin_prefetch(&slot_state_[slot], 0, 2);
+  __builtin_prefetch(slot_state_[slot].stack_top, 0, 2);
 }
 
 Cycle RtCore::reserve_issue(Cycle now) {

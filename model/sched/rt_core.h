@@ -174,6 +174,9 @@ class RtCore : private ReadClient {
     uint32_t depth = 0;  // its position in the stack
   };
   Next peek(const TraversalState& state) const;
+  // Asks the host's memory for what the next event's step reads first (its ray's context and
+  // stack top): a hint given one event ahead, which changes nothing modelled.
+  void prime_next_event() const;
   // The cycle traversal control can start a step asked for at `now`: now, or the first later
   // cycle with a free issue slot (reserved, so the step is scheduled once, not retried).
   Cycle reserve_issue(Cycle now);
@@ -250,6 +253,8 @@ class RtCore : private ReadClient {
     uint32_t calls = 0;               // per slot: that step's any-hit calls
     Wait wait = Wait::None;           // per item: what it waits for
     StepKind kind = StepKind::Done;   // per item: the kind of the step waiting for its data
+    // Per slot: the host address of its ray's stack top after its last step, for a hint.
+    const StackEntry* stack_top = nullptr;
   };
   std::vector<SlotState> slot_state_;
   uint32_t waiting_reads_ = 0;

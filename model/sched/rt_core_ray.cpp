@@ -230,6 +230,7 @@ void RtCore::on_ray(uint32_t slot, Cycle now) {
   slot_state_[slot].tests = step.tests ? step.tests : kNoTests;  // none: a masked instance
   slot_state_[slot].kind = step.kind;
   traversal_.prime(ray.state);
+  if (!ray.state.stack.empty()) slot_state_[slot].stack_top = &ray.state.stack.back();
   if (!wait_reads(slot, Wait::Data, known)) test_step(slot, known);
 }
 
