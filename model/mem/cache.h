@@ -261,7 +261,7 @@ class Cache : public MemoryTarget, private ReadClient {
   // the level below charged is in `below` if it answered, else kept for read_done.
   Cycle issue(uint32_t miss, Cycle at, ReadCharge& below);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
-  void prime_done(uint64_t miss) const override { __builtin_prefetch(&misses_[miss], 0, 2); }
+  void prime_done(uint64_t miss) const override { __builtin_prefetch(&misses_[miss], 0, kHostL2); }
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
   uint32_t find(uint32_t set, uint64_t tag) const;  // the way holding tag, or kNone
   WaySearch find_way_ = way_search();

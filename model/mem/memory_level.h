@@ -29,13 +29,19 @@ constexpr uint64_t kTextureBase = 0x6000'0000'0000ull;
 // above this address, below textures.
 constexpr uint64_t kShadingBase = 0x5000'0000'0000ull;
 
+// How far into the host's caches a hint brings a line: all the way (the default), or into its
+// second level only, for a record read an event from now (a first-level hint would push out
+// what the current event reads).
+constexpr int kHostL1 = 3, kHostL2 = 2;
+
 // Asks the host to bring [p, p + bytes) into its caches, a prefetch every `step` bytes: a hint
 // for a record the simulation reads later (a lookup, a step), which changes nothing it computes.
 // With thousands of requests and rays in flight, the records they touch have left the host's
 // caches by the time they are read; a hint given while other work runs hides that wait.
+template <int Level = kHostL1>
 inline void prefetch_span(const void* p, size_t bytes, size_t step) {
   auto first = static_cast<const char*>(p);
-  for (const char* q = first; q < first + bytes; q += step) __builtin_prefetch(q);
+  for (const char* q = first; q < first + bytes; q += step) __builtin_prefetch(q, 0, Level);
 }
 
 // Adds one cost to another, field by field (a read's charge, a sum of them, a ray's cost).
@@ -84,8 +90,8 @@ class ReadClient {
   // The read made with `token` has its data at `ready`; charge is what it cost beyond what the
   // read call returned.
   virtual void read_done(uint64_t token, Cycle ready, const ReadCharge& charge) = 0;
-  // A hint that read_done(token, ...) comes soon: the client may ask the host's memory for what
-  // answering it touches. Changes nothing modelled.
+  // A hint that read_done(token, ...) comes soon: the client may ask the host's memory (kHostL2)
+  // for what answering it touches. Changes nothing modelled.
   virtual void prime_done(uint64_t token) const { (void)token; }
 };
 

@@ -155,8 +155,9 @@ class SharedCacheModule : public sc_core::sc_module, private MemoryTarget, priva
 
   void serve();
   void serve_window();  // every job dated before served_until_, in order, at this stamp
-  // Asks the host's memory for what the next job touches (its slice's set, the record of the
-  // miss its answer completes): a hint given one job ahead, which changes nothing modelled.
+  // Asks the host's memory for the record of the miss the next job's answer completes (its
+  // slice's set was asked for when the job joined): a hint given one job ahead, which changes
+  // nothing modelled.
   void prime_next_job() const;
   void run_job(const Job& job, Cycle at);
   [[gnu::always_inline]] void respond(const Job& job, Cycle ready, const ReadCharge& charge);

@@ -134,10 +134,9 @@ void RtCore::prime_next_event() const {
   // control state, and the top of the stack (through the address noted after the ray's last
   // step: no load of the context).
   constexpr size_t kContextBytes = 384;
-  auto context = reinterpret_cast<const char*>(slots_[slot]);
-  for (size_t line = 0; line < kContextBytes; line += 64) __builtin_prefetch(context + line, 0, 2);
-  __builtin_prefetch(&slot_state_[slot], 0, 2);
-  __builtin_prefetch(slot_state_[slot].stack_top, 0, 2);
+  prefetch_span<kHostL2>(slots_[slot], kContextBytes, 64);
+  __builtin_prefetch(&slot_state_[slot], 0, kHostL2);
+  __builtin_prefetch(slot_state_[slot].stack_top, 0, kHostL2);
 }
 
 Cycle RtCore::reserve_issue(Cycle now) {

@@ -174,8 +174,9 @@ class RtCore : private ReadClient {
     uint32_t depth = 0;  // its position in the stack
   };
   Next peek(const TraversalState& state) const;
-  // Asks the host's memory for what the next event's step reads first (its ray's context and
-  // stack top): a hint given one event ahead, which changes nothing modelled.
+  // Asks the host's memory (kHostL2) for what the next event's step reads first (its ray's
+  // context, control state and stack top): a hint given one event ahead, which changes nothing
+  // modelled.
   void prime_next_event() const;
   // The cycle traversal control can start a step asked for at `now`: now, or the first later
   // cycle with a free issue slot (reserved, so the step is scheduled once, not retried).
