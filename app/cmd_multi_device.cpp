@@ -92,6 +92,10 @@ multi::DeviceSet device_set(const MultiOptions& o) {
     throw InputError(
         "multi-device: give devices by --devices-file or by --config/--device-config"
         ", not both");
+  if (!o.config.empty() && !o.device_configs.empty())
+    throw InputError(
+        "multi-device: give one config for every device (--config, with --devices) or one "
+        "--device-config per device, not both");
   if (!o.device_configs.empty()) {
     if (o.devices && o.devices != o.device_configs.size())
       throw InputError(fmt::format("multi-device: --devices {} but {} --device-config", o.devices,

@@ -14,6 +14,7 @@
 #include "reports/page_util.h"
 #include "reports/process_pool.h"
 #include "reports/regress_compare.h"
+#include "reports/report_writer.h"
 #include "traces/output_file.h"
 #include "traces/error.h"
 #include "traces/hash.h"
@@ -65,9 +66,9 @@ std::vector<reports::CaseOutcome> run_cases(const reports::RegressSuite& suite,
     reports::CaseOutcome& c = cases[i];
     c.exit_code = code;
     c.seconds = seconds;
-    std::string text = reports::read_file(o.output + "/cases/" + c.name + "/report.json");
-    c.ran = !text.empty();
-    if (c.ran) c.metrics = reports::flat_metrics(Json::parse(text));
+    Json report = reports::whole_report(o.output + "/cases/" + c.name + "/report.json");
+    c.ran = !report.is_null();
+    if (c.ran) c.metrics = reports::flat_metrics(report);
     if (!o.quiet)
       fmt::print(
           "case       {}: {}\n", c.name,
@@ -98,6 +99,9 @@ int update_baseline(const reports::RegressSuite& suite, const RegressOptions& o,
 
 int run_regress(const RegressOptions& o) {
   if (o.baseline.empty()) throw InputError("regress: --baseline DIR is required");
+  if (o.update && !o.junit.empty())
+    throw InputError("regress: --junit goes with a comparison, not --update-baseline (which "
+                     "writes no JUnit XML)");
   reports::RegressSuite suite = reports::read_regress_suite(o.suite);
   create_output_folder(o.output);
   lock_output_folder(o.output, "rtsim regress");
@@ -113,6 +117,9 @@ int run_regress(const RegressOptions& o) {
     if (!fs::exists(path))
       throw_input_error(o.baseline, "", "no baseline.json (record one with --update-baseline)");
     baseline = reports::read_json_file(path, reports::kBaselineSchema);
+    reports::require_fields(baseline, path,
+                            {{"cases", reports::JsonKind::Object},
+                             {"cases.*.metrics", reports::JsonKind::Object}});
   }
   fs::create_directories(o.output);
   std::vector<reports::CaseOutcome> cases = run_cases(suite, o);

@@ -79,7 +79,7 @@ void check_options(const SweepOptions& o, CLI::App* cmd) {
       !o.spec.empty() + !o.status_dir.empty() + !o.collect_dir.empty() + !o.slurm_task.empty();
   if (modes != 1) throw InputError("sweep: give one of SPEC, --status DIR or --collect DIR");
   if (o.spec.empty())
-    for (const char* name : {"--output", "--engine", "--jobs", "--trace-only"})
+    for (const char* name : {"--output", "--engine", "--jobs", "--trace-only", "--max-points"})
       if (cmd->count(name))
         throw InputError(std::string("sweep: ") + name + " goes with a SPEC, not --status or " +
                          "--collect");
@@ -152,8 +152,9 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"local", "slurm"}));
   cmd->add_option("-j,--jobs", o->jobs, "Points run at once (default: the spec's, else all cores)");
   cmd->add_option("--max-points", o->max_points,
-                  "Refuse a grid of more points than this (counted before it is expanded)")
-      ->check(CLI::Range(uint64_t(1), uint64_t(1) << 40));
+                  "Refuse a sweep of more points (workloads x configs) than this, counted before a grid "
+                  "is expanded")
+      ->check(CLI::Range(uint64_t(1), reports::kMostSweepPoints));
   cmd->add_flag("--no-charts", o->no_charts, "Write the pages without running Python");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");
   cmd->add_flag("--trace-only", o->trace_only,

@@ -60,7 +60,9 @@ std::string with_type(const char* key, const std::string& type) {
 Json flat_metrics(const Json& r) {
   Json m;
   for (const MetricKey& k : kRunMetrics) m[k.name] = at_key(r, k.key);
-  for (const auto& [type, rays] : r["workload"]["rays_per_type"].items()) {
+  const Json& types = at_key(r, "workload.rays_per_type");  // any report.json: null-safe reads
+  if (!types.is_object()) return m;
+  for (const auto& [type, rays] : types.items()) {
     std::string p = "type." + type + ".";
     m[p + "rays"] = rays;
     for (const MetricKey& k : kTypeMetrics) m[p + k.name] = at_key(r, with_type(k.key, type));

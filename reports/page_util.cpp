@@ -63,9 +63,85 @@ Json read_json_file(const std::string& path, const char* schema) {
   } catch (const nlohmann::json::parse_error& e) {
     throw_input_error(path, fmt::format("byte {}", e.byte), "not valid JSON");
   }
-  if (schema && doc.value("schema", "") != schema)
-    throw_input_error(path, "schema", std::string("expected ") + schema);
+  if (schema && (!doc.is_object() || at_key(doc, "schema") != schema))
+    throw_input_error(path, "key schema", std::string("expected ") + schema);
   return doc;
+}
+
+namespace {
+
+const char* kind_name(JsonKind kind) {
+  switch (kind) {
+    case JsonKind::String: return "a string";
+    case JsonKind::Bool: return "true or false";
+    case JsonKind::Count: return "a whole number >= 0";
+    case JsonKind::Number: return "a number";
+    case JsonKind::Object: return "an object";
+    case JsonKind::Array: return "an array";
+    case JsonKind::Present: return "a value";
+    case JsonKind::ObjectOrNull: return "an object or null";
+  }
+  return "";
+}
+
+bool is_kind(const Json& v, JsonKind kind) {
+  switch (kind) {
+    case JsonKind::String: return v.is_string();
+    case JsonKind::Bool: return v.is_boolean();
+    case JsonKind::Count: return v.is_number_unsigned();
+    case JsonKind::Number: return v.is_number();
+    case JsonKind::Object: return v.is_object();
+    case JsonKind::Array: return v.is_array();
+    case JsonKind::Present: return true;
+    case JsonKind::ObjectOrNull: return v.is_object() || v.is_null();
+  }
+  return false;
+}
+
+// Checks the field's kind at parts[i...] under node, which is at key `path` of the document.
+void require_at(const Json& node, const std::vector<std::string>& parts, size_t i,
+                const std::string& path, JsonKind kind, const std::string& file) {
+  auto fail = [&](const std::string& key, const char* expected, const Json& v) {
+    throw_input_error(file, "key " + key,
+                      fmt::format("expected {}, found {}", expected, v.type_name()));
+  };
+  if (i == parts.size()) {
+    if (!is_kind(node, kind)) fail(path, kind_name(kind), node);
+    return;
+  }
+  std::string prefix = path.empty() ? "" : path + ".";
+  if (parts[i] == "*") {
+    if (!node.is_array() && !node.is_object()) fail(path, "an array or object", node);
+    size_t index = 0;
+    for (auto it = node.begin(); it != node.end(); ++it, ++index)
+      require_at(*it, parts, i + 1,
+                 prefix + (node.is_array() ? std::to_string(index) : it.key()), kind, file);
+    return;
+  }
+  if (!node.is_object()) fail(path, "an object", node);
+  auto it = node.find(parts[i]);
+  if (it == node.end()) {
+    const char* expected = i + 1 == parts.size()   ? kind_name(kind)
+                           : parts[i + 1] == "*" ? "an array or object"
+                                                 : "an object";
+    throw_input_error(file, "key " + prefix + parts[i], std::string("missing (expected ") +
+                                                            expected + ")");
+  }
+  require_at(*it, parts, i + 1, prefix + parts[i], kind, file);
+}
+
+}  // namespace
+
+void require_fields(const Json& doc, const std::string& file,
+                    const std::vector<JsonField>& fields) {
+  for (const JsonField& f : fields) {
+    std::vector<std::string> parts;
+    for (size_t start = 0, end = 0; end != std::string::npos; start = end + 1) {
+      end = f.key.find('.', start);
+      parts.push_back(f.key.substr(start, end == std::string::npos ? end : end - start));
+    }
+    require_at(doc, parts, 0, "", f.kind, file);
+  }
 }
 
 const Json& swept_value(const Json& values, const std::string& key) {
@@ -101,6 +177,7 @@ std::string show(const Json& v, Style style) {
   if (v.is_null()) return "n/a";
   if (style == Style::Text || v.is_string()) return v.is_string() ? v.get<std::string>() : v.dump();
   if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (!v.is_number()) return v.dump();  // an object or array where a number belongs
   if (style == Style::Percent) return fmt::format("{:.2f}%", 100 * v.get<double>());
   if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
   if (style == Style::Integer) return fmt::format("{:.0f}", v.get<double>());

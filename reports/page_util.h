@@ -20,6 +20,19 @@ std::string read_file(const std::string& path);  // "" if missing
 // schema is not null).
 nlohmann::ordered_json read_json_file(const std::string& path, const char* schema);
 
+// What a document read back must hold at a key for the code that reads it: a value of a kind.
+enum class JsonKind { String, Bool, Count, Number, Object, Array, Present, ObjectOrNull };
+struct JsonField {
+  std::string key;  // dotted, as at_key reads it; a part "*" stands for every element or value
+  JsonKind kind;
+};
+
+// Checks that doc, read from file, holds every field, so that code reading it needs no checks
+// of its own. Throws InputError "FILE: key K: WHAT" naming the first key missing or of another
+// kind.
+void require_fields(const nlohmann::ordered_json& doc, const std::string& file,
+                    const std::vector<JsonField>& fields);
+
 // The value at a dotted key ("timing.cycles", "workload.passes.0.rays": a number indexes an
 // array); null if any part is missing.
 const nlohmann::ordered_json& at_key(const nlohmann::ordered_json& doc, const std::string& key);

@@ -34,6 +34,7 @@ RegressCase read_case(const SpecReader& r, const toml::table& t, const toml::tab
   RegressCase c;
   c.trace.workload = r.resolve(text("workload", "pica"));
   c.name = text("name", fs::path(c.trace.workload).stem().string());
+  r.path_name(t.get("name") ? *t.get("name") : t, c.name, "[[case]] name");
   c.trace.resolution = text("resolution", "");
   c.trace.scene = text("scene", "");
   if (const toml::node* n = pick("frames"))

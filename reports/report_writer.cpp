@@ -9,6 +9,7 @@
 #include "reports/report_doc.h"
 #include "reports/report_pages.h"
 #include "traces/error.h"
+#include "traces/path_name.h"
 
 namespace rtsim::reports {
 namespace fs = std::filesystem;
@@ -51,6 +52,67 @@ ReportOutcome finish(Json& report, const std::string& run_dir, const ReportOptio
 
 }  // namespace
 
+// What the pages and charts read from a report.json written by an earlier run; everything else
+// they read through at_key, which takes a missing key as null.
+void require_report_fields(const Json& report, const std::string& path) {
+  using K = JsonKind;
+  require_fields(report, path,
+                 {{"generator", K::String},
+                  {"command", K::String},
+                  {"workload.name", K::String},
+                  {"workload.passes", K::Array},
+                  {"workload.passes.*.pass", K::String},
+                  {"workload.passes.*.ray_type", K::String},
+                  {"workload.passes.*.rays", K::Count},
+                  {"workload.passes.*.budget_per_frame", K::Count},
+                  {"workload.passes.*.skipped", K::Bool},
+                  {"workload.passes.*.reason", K::String},
+                  {"hardware.name", K::String},
+                  {"hardware.sets", K::Present},
+                  {"hardware.resolved", K::Present},
+                  {"fidelity.level", K::String},
+                  {"dram.by_channel", K::Present},
+                  {"energy", K::Present},
+                  {"latency.histogram", K::Present},
+                  {"hit_rates.by_type", K::Present},
+                  {"time.ray_time_share", K::Present},
+                  {"verification.skipped", K::Bool},
+                  {"pixel_buffers", K::ObjectOrNull}});
+  if (report["verification"]["skipped"].get<bool>())
+    require_fields(report, path, {{"verification.reason", K::String}});
+  else
+    require_fields(report, path,
+                   {{"verification.passed", K::Bool},
+                    {"verification.rays", K::Count},
+                    {"verification.agree", K::Count},
+                    {"verification.mismatches", K::Count},
+                    {"verification.unexplained", K::Count},
+                    {"verification.by_class", K::Present}});
+  if (report["pixel_buffers"].is_null()) return;
+  require_fields(report, path,
+                 {{"pixel_buffers.files.cycles", K::String}, {"pixel_buffers.files.*", K::String}});
+  for (const auto& [key, file] : report["pixel_buffers"]["files"].items()) {
+    std::string problem = path_name_problem(file.get<std::string>());
+    if (!problem.empty())
+      throw_input_error(path, "key pixel_buffers.files." + key, problem + " (a file of the run)");
+  }
+}
+
+Json whole_report(const std::string& path) {
+  std::string text = read_file(path);
+  if (text.empty()) return Json();
+  try {
+    Json report = Json::parse(text);
+    if (!report.is_object() || at_key(report, "schema") != kReportSchema) return Json();
+    require_report_fields(report, path);
+    return report;
+  } catch (const nlohmann::json::exception&) {
+    return Json();
+  } catch (const InputError&) {
+    return Json();
+  }
+}
+
 void clear_run_folder(const std::string& run_dir, const std::string& keep) {
   std::error_code ignored;
   fs::path kept = fs::weakly_canonical(keep, ignored);
@@ -87,6 +149,7 @@ ReportOutcome rewrite_report(const std::string& run_dir, const ReportOptions& op
   std::string path = run_dir + "/report.json";
   if (!fs::exists(path)) throw_input_error(run_dir, "", "no report.json (not a run folder)");
   Json report = read_json_file(path, kReportSchema);
+  require_report_fields(report, path);
   bool pixels =
       !report["pixel_buffers"].is_null() &&
       fs::exists(run_dir + "/" + report["pixel_buffers"]["files"]["cycles"].get<std::string>());

@@ -28,6 +28,14 @@ ReportOutcome write_report(nlohmann::ordered_json& report, const std::string& ru
 // mixes two runs, even if this one is interrupted. Files rtsim does not write are left alone.
 void clear_run_folder(const std::string& run_dir, const std::string& keep);
 
+// Throws InputError naming path and the key if report, read from path, lacks a key the pages
+// read directly or holds it of another kind (the rest they read as null when missing).
+void require_report_fields(const nlohmann::ordered_json& report, const std::string& path);
+
+// The report.json at path as `rtsim run` writes it (whole, of the schema, with the keys the
+// pages read), or null: a sweep's point or a suite's case without one did not finish.
+nlohmann::ordered_json whole_report(const std::string& path);
+
 // `rtsim report RUN_DIR`: redraws the charts and rewrites the pages from report.json.
 ReportOutcome rewrite_report(const std::string& run_dir, const ReportOptions& options);
 

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "traces/error.h"
+#include "traces/path_name.h"
 
 namespace rtsim::reports {
 namespace fs = std::filesystem;
@@ -62,6 +63,13 @@ double SpecReader::non_negative(const toml::node& n, const std::string& what) co
   std::optional<double> v = n.value<double>();
   if (!v || *v < 0) fail(n, what + " must be a number >= 0");
   return *v;
+}
+
+void SpecReader::path_name(const toml::node& n, const std::string& name,
+                           const std::string& what) const {
+  std::string problem = path_name_problem(name);
+  if (!problem.empty())
+    fail(n, what + ": " + problem + " (it names a folder of the output: one path component)");
 }
 
 std::string SpecReader::resolve(const std::string& path) const {

@@ -29,6 +29,9 @@ struct SpecReader {
   int64_t integer(const toml::table& t, const char* key, int64_t def, int64_t lo, int64_t hi) const;
   bool boolean(const toml::node& n, const char* key) const;
   double non_negative(const toml::node& n, const std::string& what) const;
+  // Fails at n if `name` (what it names, e.g. "[[workload]] name") cannot be one component of
+  // an output path (path_name_problem, traces/path_name.h).
+  void path_name(const toml::node& n, const std::string& name, const std::string& what) const;
   // An existing file as an absolute path: relative to the file's folder if such a file exists,
   // else to the current folder; anything else (a built-in scene) as written. Absolute, so that
   // jobs started elsewhere (Slurm sweeps) find the same files.

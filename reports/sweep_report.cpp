@@ -10,12 +10,17 @@
 #include "reports/charts.h"
 #include "reports/page_util.h"
 #include "traces/error.h"
+#include "traces/path_name.h"
 
 namespace rtsim::reports {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
 namespace {
+
+std::string chart_file(const std::string& id) {
+  return "images/" + id + ".png";
+}
 
 bool numeric_key(const Json& points, const std::string& key) {
   for (const Json& p : points)
@@ -61,7 +66,7 @@ Json chart_list(const SweepSpec& spec, const Json& points) {
                       {"series", "workload"},
                       {"title", std::string("Pareto: cycles against ") + c.what}});
   for (Json& c : charts) {
-    c["file"] = "images/" + c["id"].get<std::string>() + ".png";
+    c["file"] = chart_file(c["id"].get<std::string>());
     c["available"] = true;
     c["reason"] = "";
   }
@@ -152,6 +157,66 @@ std::string csv_field(const Json& v) {
 const char* point_status(const PointRun& p) {
   if (p.ok) return p.reused ? "reused" : "done";
   return p.ran_on.empty() && p.exit_code == 0 ? "missing" : "failed";
+}
+
+// What the pages, the CSV and the objective's lines read from a sweep.json written before.
+void require_sweep_fields(const Json& doc, const std::string& path) {
+  using K = JsonKind;
+  require_fields(doc, path,
+                 {{"generator", K::String},
+                  {"spec.name", K::String},
+                  {"spec.file", K::String},
+                  {"spec.description", K::String},
+                  {"spec.config", K::String},
+                  {"spec.fidelity", K::String},
+                  {"spec.workloads", K::Present},
+                  {"spec.keys", K::Array},
+                  {"spec.keys.*", K::String},
+                  {"points", K::Array},
+                  {"points.*.id", K::String},
+                  {"points.*.workload", K::String},
+                  {"points.*.status", K::String},
+                  {"points.*.ran_on", K::String},
+                  {"points.*.values", K::Object},
+                  {"points.*.metrics", K::ObjectOrNull},
+                  {"charts", K::Array},
+                  {"charts.*.id", K::String},
+                  {"charts.*.kind", K::String},
+                  {"charts.*.x", K::String},
+                  {"charts.*.y", K::String},
+                  {"charts.*.series", K::String},
+                  {"charts.*.title", K::String},
+                  {"charts.*.reason", K::String},
+                  {"objective", K::ObjectOrNull}});
+  for (size_t i = 0; i < doc["charts"].size(); ++i) {
+    std::string problem = path_name_problem(doc["charts"][i]["id"].get<std::string>());
+    if (!problem.empty())
+      throw_input_error(path, fmt::format("key charts.{}.id", i), problem + " (names its image)");
+  }
+  const Json& o = doc["objective"];
+  if (o.is_null()) return;
+  require_fields(doc, path,
+                 {{"objective.metric", K::String},
+                  {"objective.goal", K::String},
+                  {"objective.at_most", K::Object},
+                  {"objective.at_least", K::Object},
+                  {"objective.at_most.*", K::Number},
+                  {"objective.at_least.*", K::Number},
+                  {"objective.best", K::Array},
+                  {"objective.best.*.workload", K::String},
+                  {"objective.best.*.id", K::Present}});
+  for (size_t i = 0; i < o["best"].size(); ++i) {
+    std::string b = fmt::format("objective.best.{}.", i);
+    if (o["best"][i]["id"].is_null()) {
+      require_fields(doc, path, {{b + "reason", K::String}});
+      continue;
+    }
+    require_fields(doc, path,
+                   {{b + "id", K::String}, {b + "values", K::Object}, {b + "value", K::Number}});
+    for (const char* side : {"at_most", "at_least"})
+      for (const auto& [name, bound] : o[side].items())
+        require_fields(doc, path, {{b + "bounded_metrics." + name, K::Number}});
+  }
 }
 
 }  // namespace
@@ -263,7 +328,11 @@ ReportOutcome write_sweep_report(Json& doc, const std::string& dir, const Report
 ReportOutcome rewrite_sweep_report(const std::string& dir, const ReportOptions& options) {
   std::string path = dir + "/sweep.json";
   Json doc = read_json_file(path, kSweepSchema);
-  for (Json& c : doc["charts"]) c["available"] = true;
+  require_sweep_fields(doc, path);
+  for (Json& c : doc["charts"]) {
+    c["available"] = true;
+    c["file"] = chart_file(c["id"].get<std::string>());  // never a path from the file
+  }
   return write_sweep_report(doc, dir, options);
 }
 

@@ -13,6 +13,7 @@
 #include "reports/page_util.h"
 #include "reports/process_pool.h"
 #include "reports/report_doc.h"
+#include "reports/report_writer.h"
 #include "traces/hash.h"
 
 namespace rtsim::reports {
@@ -70,15 +71,13 @@ std::string describe(const PointRun& p) {
 
 Json finished_report(const std::string& dir, const Json& request) {
   std::string old = read_file(dir + "/request.json");
-  std::string report = read_file(dir + "/report.json");
-  if (old.empty() || report.empty()) return Json();
+  if (old.empty()) return Json();
   try {
     if (Json::parse(old) != request) return Json();
-    Json r = Json::parse(report);
-    return r.value("schema", "") == kReportSchema ? r : Json();
   } catch (const nlohmann::json::exception&) {
     return Json();
   }
+  return whole_report(dir + "/report.json");
 }
 
 std::string host_name() {

@@ -338,7 +338,11 @@ std::string slurm_sweep_spec(const std::string& dir) {
 }
 
 uint64_t slurm_sweep_max_points(const std::string& dir) {
-  return read_state(dir).value("max_points", kDefaultMaxSweepPoints);
+  uint64_t max_points = read_state(dir).value("max_points", kDefaultMaxSweepPoints);
+  if (max_points < 1 || max_points > kMostSweepPoints)
+    throw_input_error(state_path(dir), "key max_points",
+                      fmt::format("{} is not 1 to {}", max_points, kMostSweepPoints));
+  return max_points;
 }
 
 void submit_slurm_sweep(const SweepSpec& spec, const std::string& output, const SlurmOptions& o) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <optional>
+#include <set>
 
 #include <fmt/core.h>
 #include <toml++/toml.h>
@@ -31,37 +33,66 @@ std::pair<std::string, Json> scalar(const SpecReader& r, const toml::node& n) {
   r.fail(n, "a config value must be an integer, number, boolean or string");
 }
 
-// Flattens nested tables into dotted keys ("rt.l1.size_bytes").
-void flatten(const toml::table& t, const std::string& prefix,
+// Flattens nested tables into dotted keys ("rt.l1.size_bytes"); a key given twice (`"rt.count"`
+// and `rt.count`, or `[grid.rt] count`) is refused.
+void flatten(const SpecReader& r, const toml::table& t, const std::string& prefix,
              std::vector<std::pair<std::string, const toml::node*>>& out) {
   for (const auto& [key, node] : t) {
     std::string name = prefix + std::string(key.str());
-    if (node.is_table())
-      flatten(*node.as_table(), name + ".", out);
-    else
-      out.emplace_back(name, &node);
+    if (node.is_table()) {
+      flatten(r, *node.as_table(), name + ".", out);
+      continue;
+    }
+    for (const auto& [other, first] : out) {
+      uint32_t a = first->source().begin.line, b = node.source().begin.line;
+      if (other == name)
+        r.fail(a > b ? *first : node, fmt::format("'{}' is given twice, on lines {} and {}", name,
+                                                  std::min(a, b), std::max(a, b)));
+    }
+    out.emplace_back(name, &node);
   }
+}
+
+// a x b, or UINT64_MAX where that overflows: counts from a spec are multiplied checked.
+uint64_t times(uint64_t a, uint64_t b) {
+  uint64_t product = 0;
+  return __builtin_mul_overflow(a, b, &product) ? UINT64_MAX : product;
+}
+
+// Refuses a sweep of more points (workloads x configs) than max_points, from the count alone.
+void check_point_count(const SpecReader& r, const toml::node& n, const std::string& what,
+                       uint64_t count, std::string product, size_t workloads,
+                       uint64_t max_points) {
+  if (count <= max_points) return;
+  if (workloads > 1) product += fmt::format(" x {} workloads", workloads);
+  std::string how = count <= kMostSweepPoints
+                        ? fmt::format(", or pass --max-points {} to run them all", count)
+                        : fmt::format(" (--max-points takes at most {})", kMostSweepPoints);
+  r.fail(n, fmt::format("{} has {}{} points ({}), more than the limit of {}: narrow it{}", what,
+                        count == UINT64_MAX ? "at least " : "", count, product, max_points, how));
 }
 
 void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points, SweepSpec& spec) {
   std::vector<std::pair<std::string, const toml::node*>> axes;
-  flatten(grid, "", axes);
-  uint64_t count = 1;
+  flatten(r, grid, "", axes);
+  uint64_t count = spec.workloads.size();
   std::string product;
   for (const auto& [key, node] : axes) {
     const toml::array* values = node->as_array();
     if (!values || values->empty()) r.fail(*node, "grid key '" + key + "' needs a list of values");
-    count = std::min<uint64_t>(count * values->size(), uint64_t(1) << 62);
+    count = times(count, values->size());
     product += (product.empty() ? "" : " x ") + std::to_string(values->size());
   }
-  if (count > max_points)
-    r.fail(grid, fmt::format("the grid has {} points ({}), more than the limit of {}: narrow it, "
-                             "or pass --max-points {} to run them all",
-                             count, product, max_points, count));
+  check_point_count(r, grid, "the grid", count, product, spec.workloads.size(), max_points);
   spec.points.push_back({Json::object(), {}, {}});
   for (const auto& [key, node] : axes) {
     const toml::array* values = node->as_array();
     spec.keys.push_back(key);
+    std::set<std::string> listed;
+    for (const toml::node& v : *values)
+      if (!listed.insert(scalar(r, v).first).second)
+        r.fail(v, fmt::format("grid key '{}' lists {} twice (its points would run twice)", key,
+                              scalar(r, v).first));
     std::vector<SweepPoint> next;
     for (const SweepPoint& p : spec.points)
       for (const toml::node& v : *values) {
@@ -76,19 +107,36 @@ void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points,
   }
 }
 
-void add_point(const SpecReader& r, const toml::table& table, SweepSpec& spec) {
-  std::vector<std::pair<std::string, const toml::node*>> keys;
-  flatten(table, "", keys);
-  SweepPoint p{Json::object(), {}, {}};
-  for (const auto& [key, node] : keys) {
-    auto [set, json] = scalar(r, *node);
-    p.values[key] = json;
-    p.sets.push_back(key + "=" + set);
-    p.lines.push_back(node->source().begin.line);
-    if (std::find(spec.keys.begin(), spec.keys.end(), key) == spec.keys.end())
-      spec.keys.push_back(key);
+// The [[point]] list; a point that sets the same values as an earlier one is refused, naming
+// both lines.
+void add_points(const SpecReader& r, const toml::array& list, uint64_t max_points,
+                SweepSpec& spec) {
+  check_point_count(r, list, "the [[point]] list",
+                    times(list.size(), spec.workloads.size()),
+                    std::to_string(list.size()) + " [[point]]", spec.workloads.size(), max_points);
+  std::map<std::vector<std::string>, uint32_t> seen;  // sorted settings -> line
+  for (const toml::node& n : list) {
+    if (!n.is_table()) r.fail(n, "[[point]] must be a table");
+    std::vector<std::pair<std::string, const toml::node*>> keys;
+    flatten(r, *n.as_table(), "", keys);
+    SweepPoint p{Json::object(), {}, {}};
+    for (const auto& [key, node] : keys) {
+      auto [set, json] = scalar(r, *node);
+      p.values[key] = json;
+      p.sets.push_back(key + "=" + set);
+      p.lines.push_back(node->source().begin.line);
+      if (std::find(spec.keys.begin(), spec.keys.end(), key) == spec.keys.end())
+        spec.keys.push_back(key);
+    }
+    std::vector<std::string> settings = p.sets;
+    std::sort(settings.begin(), settings.end());
+    auto [earlier, fresh] = seen.emplace(settings, n.source().begin.line);
+    if (!fresh)
+      r.fail(n, fmt::format("this [[point]] sets the same values as the one on line {} (it would "
+                            "run twice)",
+                            earlier->second));
+    spec.points.push_back(p);
   }
-  spec.points.push_back(p);
 }
 
 void read_workloads(const SpecReader& r, const toml::table& root, SweepSpec& spec) {
@@ -101,6 +149,7 @@ void read_workloads(const SpecReader& r, const toml::table& root, SweepSpec& spe
     SweepWorkload w;
     w.trace.workload = r.resolve(r.text(*t, "workload", "pica"));
     w.name = r.text(*t, "name", fs::path(w.trace.workload).stem().string());
+    r.path_name(t->get("name") ? *t->get("name") : n, w.name, "[[workload]] name");
     if (!is_builtin_scene(w.trace.workload) && !fs::exists(w.trace.workload))
       r.fail(*t->get("workload"), "workload '" + w.trace.workload +
                                       "': no such workload spec (.toml), scene file or built-in "
@@ -140,7 +189,12 @@ void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) 
     r.only(*t, {"x", "y", "series"}, "[[chart]]");
     SweepChart c{r.text(*t, "x"), r.text(*t, "y", "cycles"), r.text(*t, "series", "workload")};
     if (std::find(spec.keys.begin(), spec.keys.end(), c.x) == spec.keys.end())
-      r.fail(n, "chart x '" + c.x + "' is not a swept key");
+      r.fail(t->get("x") ? *t->get("x") : n, "chart x '" + c.x + "' is not a swept key");
+    std::string problem = metric_name_problem(c.y);
+    if (!problem.empty()) r.fail(t->get("y") ? *t->get("y") : n, "chart y: " + problem);
+    if (c.series != "workload" &&
+        std::find(spec.keys.begin(), spec.keys.end(), c.series) == spec.keys.end())
+      r.fail(*t->get("series"), "chart series '" + c.series + "' is neither 'workload' nor a swept key");
     spec.charts.push_back(c);
   }
 }
@@ -223,11 +277,7 @@ SweepSpec read_sweep_spec(const std::string& path, uint64_t max_points) {
   if (grid && list) throw_input_error(path, "", "give either [grid] or [[point]] lists, not both");
   if (!grid && !list) throw_input_error(path, "", "no [grid] table or [[point]] list to sweep");
   if (grid) add_grid(r, *root["grid"].as_table(), max_points, spec);
-  if (list)
-    for (const toml::node& n : *root["point"].as_array()) {
-      if (!n.is_table()) r.fail(n, "[[point]] must be a table");
-      add_point(r, *n.as_table(), spec);
-    }
+  if (list) add_points(r, *root["point"].as_array(), max_points, spec);
   if (const toml::table* run = root["run"].as_table()) read_run(r, *run, spec);
   read_charts(r, root, spec);
   if (const toml::node* objective = root.get("objective")) {

@@ -39,9 +39,11 @@ struct SweepObjective {
   std::vector<std::pair<std::string, double>> at_most, at_least;  // metric, bound
 };
 
-// The most grid points a sweep expands unless asked for more (`rtsim sweep --max-points`): a
-// grid is counted before it is expanded, so a mistyped one is refused at once.
+// The most points (workloads x configs) a sweep takes unless asked for more (`rtsim sweep
+// --max-points`): a grid is counted before it is expanded, so a mistyped one is refused at once.
+// A point costs a few kilobytes of memory before it runs, so even --max-points is capped.
 constexpr uint64_t kDefaultMaxSweepPoints = 10000;
+constexpr uint64_t kMostSweepPoints = 1000000;
 
 struct SweepSpec {
   std::string file, name, description;

@@ -72,6 +72,25 @@ TraceOutcome read_trace_dir(const std::string& dir) {
   if (!fs::exists(path)) throw_input_error(dir, "", "not a trace folder (no trace.json)");
   TraceOutcome out;
   out.summary = read_json_file(path, kTraceSchema);
+  using K = JsonKind;  // what runs and their reports read of it
+  require_fields(out.summary, path,
+                 {{"request", K::Present},
+                  {"workload", K::String},
+                  {"scene", K::String},
+                  {"rays", K::Count},
+                  {"triangles", K::Count},
+                  {"width", K::Count},
+                  {"height", K::Count},
+                  {"frames", K::Count},
+                  {"lights", K::Count},
+                  {"surfels", K::Count},
+                  {"passes", K::Array},
+                  {"passes.*.pass", K::String},
+                  {"passes.*.ray_type", K::String},
+                  {"passes.*.rays", K::Count},
+                  {"passes.*.budget_per_frame", K::Count},
+                  {"passes.*.skipped", K::Bool},
+                  {"passes.*.reason", K::String}});
   out.dir = dir;
   out.stream = dir + "/rays.rays";
   if (!fs::exists(out.stream)) throw_input_error(out.stream, "", "missing");
