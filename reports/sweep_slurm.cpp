@@ -16,6 +16,7 @@
 #include "reports/process_pool.h"
 #include "traces/error.h"
 #include "traces/output_file.h"
+#include "traces/path_name.h"
 
 namespace rtsim::reports {
 namespace fs = std::filesystem;
@@ -421,8 +422,31 @@ void submit_slurm_sweep(const SweepSpec& spec, const std::string& output, const 
         dir, output, output);
 }
 
+namespace {
+
+// A tasks file's shape; a point's id and workload name its folders (whose contents a task
+// clears), so each must be one path component.
+void check_tasks(const Json& tasks, const std::string& file) {
+  require_fields(tasks, file,
+                 {{"sweep", JsonKind::String},
+                  {"tasks", JsonKind::Array},
+                  {"tasks.*", JsonKind::Array},
+                  {"tasks.*.*.id", JsonKind::String},
+                  {"tasks.*.*.workload", JsonKind::String}});
+  for (size_t t = 0; t < tasks["tasks"].size(); ++t)
+    for (size_t i = 0; i < tasks["tasks"][t].size(); ++i)
+      for (const char* key : {"id", "workload"}) {
+        std::string problem = path_name_problem(tasks["tasks"][t][i][key].get<std::string>());
+        if (!problem.empty())
+          throw_input_error(file, fmt::format("key tasks.{}.{}.{}", t, i, key), problem);
+      }
+}
+
+}  // namespace
+
 int run_slurm_task(const std::string& tasks_file, uint32_t task) {
   Json tasks = read_json_file(tasks_file, kTasksSchema);
+  check_tasks(tasks, tasks_file);
   if (task >= tasks["tasks"].size())
     throw_input_error(
         tasks_file, "",

@@ -68,8 +68,13 @@ TEST(HostileSweeps, ANameFromASpecNeverLeavesTheOutputFolder) {
                              dir.path("out")),
                    {suite + ": line 3: [[case]] name"});
   }
+  // A Slurm task clears its points' folders: an id from its tasks file never leads outside.
+  std::string tasks = dir.write("tasks.json", R"({"schema": "rtsim.sweep.slurm-tasks/1",
+      "sweep": ")" + dir.path("sweep") + R"(", "tasks": [[{"id": "../../victim", "workload": "w"}]]})");
+  expect_refused(run_rtsim("sweep --slurm-task " + tasks + " --task 0"),
+                 {tasks + ": key tasks.0.0.id: '../../victim' starts with '.'"});
   EXPECT_EQ(test::slurp(victim), "the user's own file\n");
-  EXPECT_EQ(entries(dir.path("")), 3u) << "no output folder, no temporary: the specs and victim/";
+  EXPECT_EQ(entries(dir.path("")), 4u) << "no output folder, no temporary: the specs and victim/";
   EXPECT_EQ(entries(dir.path("victim")), 1u);
   // A workload's default name is its file's stem: a hidden spec file needs a name.
   std::string hidden = dir.write(".w.toml", "");
