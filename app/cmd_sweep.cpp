@@ -84,6 +84,10 @@ void check_options(const SweepOptions& o, CLI::App* cmd) {
         throw InputError(std::string("sweep: ") + name + " goes with a SPEC, not --status or " +
                          "--collect");
   if (!o.spec.empty() && o.output.empty()) throw InputError("sweep: -o DIR is required");
+  if (o.trace_only)
+    for (const char* name : {"--jobs", "--no-charts"})
+      if (cmd->count(name))
+        throw InputError(std::string("sweep: ") + name + " does nothing with --trace-only");
   if (o.engine == "slurm" && (cmd->count("--jobs") || o.trace_only))
     throw InputError(std::string("sweep: ") + (o.trace_only ? "--trace-only" : "--jobs") +
                      " is an option of the local engine (--array-limit caps Slurm's tasks)");

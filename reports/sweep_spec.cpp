@@ -33,24 +33,35 @@ std::pair<std::string, Json> scalar(const SpecReader& r, const toml::node& n) {
   r.fail(n, "a config value must be an integer, number, boolean or string");
 }
 
-// Flattens nested tables into dotted keys ("rt.l1.size_bytes"); a key given twice (`"rt.count"`
-// and `rt.count`, or `[grid.rt] count`) is refused.
-void flatten(const SpecReader& r, const toml::table& t, const std::string& prefix,
-             std::vector<std::pair<std::string, const toml::node*>>& out) {
+void flatten_into(const toml::table& t, const std::string& prefix,
+                  std::vector<std::pair<std::string, const toml::node*>>& out) {
   for (const auto& [key, node] : t) {
     std::string name = prefix + std::string(key.str());
-    if (node.is_table()) {
-      flatten(r, *node.as_table(), name + ".", out);
-      continue;
-    }
-    for (const auto& [other, first] : out) {
-      uint32_t a = first->source().begin.line, b = node.source().begin.line;
-      if (other == name)
-        r.fail(a > b ? *first : node, fmt::format("'{}' is given twice, on lines {} and {}", name,
-                                                  std::min(a, b), std::max(a, b)));
-    }
-    out.emplace_back(name, &node);
+    if (node.is_table())
+      flatten_into(*node.as_table(), name + ".", out);
+    else
+      out.emplace_back(name, &node);
   }
+}
+
+// Flattens nested tables into dotted keys ("rt.l1.size_bytes"); a key given twice (`"rt.count"`
+// and `rt.count`, or `[grid.rt] count`) is refused, naming both lines.
+std::vector<std::pair<std::string, const toml::node*>> flatten(const SpecReader& r,
+                                                               const toml::table& t) {
+  std::vector<std::pair<std::string, const toml::node*>> out;
+  flatten_into(t, "", out);
+  if (out.size() > kMostSweptKeys)
+    r.fail(t, fmt::format("{} keys, more than {} (a config has under 200)", out.size(),
+                          kMostSweptKeys));
+  std::map<std::string, const toml::node*> seen;
+  for (const auto& [name, node] : out) {
+    auto [first, fresh] = seen.emplace(name, node);
+    if (fresh) continue;
+    uint32_t a = first->second->source().begin.line, b = node->source().begin.line;
+    r.fail(a > b ? *first->second : *node, fmt::format("'{}' is given twice, on lines {} and {}",
+                                                       name, std::min(a, b), std::max(a, b)));
+  }
+  return out;
 }
 
 // a x b, or UINT64_MAX where that overflows: counts from a spec are multiplied checked.
@@ -73,8 +84,7 @@ void check_point_count(const SpecReader& r, const toml::node& n, const std::stri
 }
 
 void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points, SweepSpec& spec) {
-  std::vector<std::pair<std::string, const toml::node*>> axes;
-  flatten(r, grid, "", axes);
+  std::vector<std::pair<std::string, const toml::node*>> axes = flatten(r, grid);
   uint64_t count = spec.workloads.size();
   std::string product;
   for (const auto& [key, node] : axes) {
@@ -115,19 +125,20 @@ void add_points(const SpecReader& r, const toml::array& list, uint64_t max_point
                     times(list.size(), spec.workloads.size()),
                     std::to_string(list.size()) + " [[point]]", spec.workloads.size(), max_points);
   std::map<std::vector<std::string>, uint32_t> seen;  // sorted settings -> line
+  std::set<std::string> swept;
   for (const toml::node& n : list) {
     if (!n.is_table()) r.fail(n, "[[point]] must be a table");
-    std::vector<std::pair<std::string, const toml::node*>> keys;
-    flatten(r, *n.as_table(), "", keys);
     SweepPoint p{Json::object(), {}, {}};
-    for (const auto& [key, node] : keys) {
+    for (const auto& [key, node] : flatten(r, *n.as_table())) {
       auto [set, json] = scalar(r, *node);
       p.values[key] = json;
       p.sets.push_back(key + "=" + set);
       p.lines.push_back(node->source().begin.line);
-      if (std::find(spec.keys.begin(), spec.keys.end(), key) == spec.keys.end())
-        spec.keys.push_back(key);
+      if (swept.insert(key).second) spec.keys.push_back(key);
     }
+    if (swept.size() > kMostSweptKeys)
+      r.fail(n, fmt::format("the points set {} keys, more than {} (a config has under 200)",
+                            swept.size(), kMostSweptKeys));
     std::vector<std::string> settings = p.sets;
     std::sort(settings.begin(), settings.end());
     auto [earlier, fresh] = seen.emplace(settings, n.source().begin.line);

@@ -44,6 +44,9 @@ struct SweepObjective {
 // A point costs a few kilobytes of memory before it runs, so even --max-points is capped.
 constexpr uint64_t kDefaultMaxSweepPoints = 10000;
 constexpr uint64_t kMostSweepPoints = 1000000;
+// The most config keys a sweep sets (a grid, or its points together): far more than a config
+// has, and few enough that expanding the spec stays quick.
+constexpr size_t kMostSweptKeys = 1000;
 
 struct SweepSpec {
   std::string file, name, description;

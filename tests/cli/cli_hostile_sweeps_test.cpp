@@ -51,6 +51,12 @@ TEST(HostileSweeps, AGridOf2To64PointsIsRefusedFromItsCheckedCount) {
                  {list + ": line 7: the [[point]] list has 6 points (2 [[point]] x 3 workloads)"});
   expect_refused(run_rtsim("sweep " + list + " -o " + dir.path("out") + " --max-points 1000001"),
                  {"--max-points"});
+  // A grid of one point but thousands of keys is refused before it is expanded.
+  std::string keys = kPica + "[grid]\n";
+  for (int k = 0; k < 5000; ++k) keys += "k" + std::to_string(k) + " = [1]\n";
+  std::string wide = dir.write("wide.toml", keys);
+  expect_refused(run_rtsim("sweep " + wide + " -o " + dir.path("out")),
+                 {wide + ": line 4: 5000 keys, more than 1000"});
 }
 
 TEST(HostileSweeps, ANameFromASpecNeverLeavesTheOutputFolder) {
@@ -148,6 +154,8 @@ TEST(HostileSweeps, AnUnknownChartMetricOrConflictingOptionsAreRefused) {
                  {"multi-device: give one config for every device"});
   expect_refused(run_rtsim("sweep --status " + dir.path("out") + " --max-points 5"),
                  {"--max-points goes with a SPEC"});
+  expect_refused(run_rtsim("sweep " + spec + " -o " + dir.path("out") + " --trace-only -j 2"),
+                 {"sweep: --jobs does nothing with --trace-only"});
   expect_refused(run_rtsim("regress " + spec + " --baseline " + dir.path("b") +
                            " --update-baseline --junit " + dir.path("j.xml")),
                  {"--junit goes with a comparison"});
