@@ -100,8 +100,9 @@ int update_baseline(const reports::RegressSuite& suite, const RegressOptions& o,
 int run_regress(const RegressOptions& o) {
   if (o.baseline.empty()) throw InputError("regress: --baseline DIR is required");
   if (o.update && !o.junit.empty())
-    throw InputError("regress: --junit goes with a comparison, not --update-baseline (which "
-                     "writes no JUnit XML)");
+    throw InputError(
+        "regress: --junit goes with a comparison, not --update-baseline (which "
+        "writes no JUnit XML)");
   reports::RegressSuite suite = reports::read_regress_suite(o.suite);
   create_output_folder(o.output);
   lock_output_folder(o.output, "rtsim regress");
@@ -117,9 +118,9 @@ int run_regress(const RegressOptions& o) {
     if (!fs::exists(path))
       throw_input_error(o.baseline, "", "no baseline.json (record one with --update-baseline)");
     baseline = reports::read_json_file(path, reports::kBaselineSchema);
-    reports::require_fields(baseline, path,
-                            {{"cases", reports::JsonKind::Object},
-                             {"cases.*.metrics", reports::JsonKind::Object}});
+    reports::require_fields(
+        baseline, path,
+        {{"cases", reports::JsonKind::Object}, {"cases.*.metrics", reports::JsonKind::Object}});
   }
   fs::create_directories(o.output);
   std::vector<reports::CaseOutcome> cases = run_cases(suite, o);

@@ -155,9 +155,10 @@ void add_sweep_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--engine", o->engine, "Where the points run: local (default) or slurm")
       ->check(CLI::IsMember({"local", "slurm"}));
   cmd->add_option("-j,--jobs", o->jobs, "Points run at once (default: the spec's, else all cores)");
-  cmd->add_option("--max-points", o->max_points,
-                  "Refuse a sweep of more points (workloads x configs) than this, counted before a grid "
-                  "is expanded")
+  cmd->add_option(
+         "--max-points", o->max_points,
+         "Refuse a sweep of more points (workloads x configs) than this, counted before a grid "
+         "is expanded")
       ->check(CLI::Range(uint64_t(1), reports::kMostSweepPoints));
   cmd->add_flag("--no-charts", o->no_charts, "Write the pages without running Python");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");

@@ -114,18 +114,18 @@ void require_at(const Json& node, const std::vector<std::string>& parts, size_t 
     if (!node.is_array() && !node.is_object()) fail(path, "an array or object", node);
     size_t index = 0;
     for (auto it = node.begin(); it != node.end(); ++it, ++index)
-      require_at(*it, parts, i + 1,
-                 prefix + (node.is_array() ? std::to_string(index) : it.key()), kind, file);
+      require_at(*it, parts, i + 1, prefix + (node.is_array() ? std::to_string(index) : it.key()),
+                 kind, file);
     return;
   }
   if (!node.is_object()) fail(path, "an object", node);
   auto it = node.find(parts[i]);
   if (it == node.end()) {
-    const char* expected = i + 1 == parts.size()   ? kind_name(kind)
+    const char* expected = i + 1 == parts.size() ? kind_name(kind)
                            : parts[i + 1] == "*" ? "an array or object"
                                                  : "an object";
-    throw_input_error(file, "key " + prefix + parts[i], std::string("missing (expected ") +
-                                                            expected + ")");
+    throw_input_error(file, "key " + prefix + parts[i],
+                      std::string("missing (expected ") + expected + ")");
   }
   require_at(*it, parts, i + 1, prefix + parts[i], kind, file);
 }

@@ -163,31 +163,21 @@ const char* point_status(const PointRun& p) {
 void require_sweep_fields(const Json& doc, const std::string& path) {
   using K = JsonKind;
   require_fields(doc, path,
-                 {{"generator", K::String},
-                  {"spec.name", K::String},
-                  {"spec.file", K::String},
-                  {"spec.description", K::String},
-                  {"spec.config", K::String},
-                  {"spec.fidelity", K::String},
-                  {"spec.workloads", K::Present},
-                  {"spec.keys", K::Array},
-                  {"spec.keys.*", K::String},
-                  {"points", K::Array},
-                  {"points.*.id", K::String},
-                  {"points.*.workload", K::String},
-                  {"points.*.status", K::String},
-                  {"points.*.ran_on", K::String},
-                  {"points.*.values", K::Object},
-                  {"points.*.metrics", K::ObjectOrNull},
-                  {"charts", K::Array},
-                  {"charts.*.id", K::String},
-                  {"charts.*.kind", K::String},
-                  {"charts.*.x", K::String},
-                  {"charts.*.y", K::String},
-                  {"charts.*.series", K::String},
-                  {"charts.*.title", K::String},
-                  {"charts.*.reason", K::String},
-                  {"objective", K::ObjectOrNull}});
+                 {
+                     {"generator", K::String},       {"spec.name", K::String},
+                     {"spec.file", K::String},       {"spec.description", K::String},
+                     {"spec.config", K::String},     {"spec.fidelity", K::String},
+                     {"spec.workloads", K::Present}, {"spec.keys", K::Array},
+                     {"spec.keys.*", K::String},     {"points", K::Array},
+                     {"points.*.id", K::String},     {"points.*.workload", K::String},
+                     {"points.*.status", K::String}, {"points.*.ran_on", K::String},
+                     {"points.*.values", K::Object}, {"points.*.metrics", K::ObjectOrNull},
+                     {"charts", K::Array},           {"charts.*.id", K::String},
+                     {"charts.*.kind", K::String},   {"charts.*.x", K::String},
+                     {"charts.*.y", K::String},      {"charts.*.series", K::String},
+                     {"charts.*.title", K::String},  {"charts.*.reason", K::String},
+                     {"objective", K::ObjectOrNull},
+                 });
   for (size_t i = 0; i < doc["charts"].size(); ++i) {
     std::string problem = path_name_problem(doc["charts"][i]["id"].get<std::string>());
     if (!problem.empty())

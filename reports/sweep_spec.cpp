@@ -72,8 +72,7 @@ uint64_t times(uint64_t a, uint64_t b) {
 
 // Refuses a sweep of more points (workloads x configs) than max_points, from the count alone.
 void check_point_count(const SpecReader& r, const toml::node& n, const std::string& what,
-                       uint64_t count, std::string product, size_t workloads,
-                       uint64_t max_points) {
+                       uint64_t count, std::string product, size_t workloads, uint64_t max_points) {
   if (count <= max_points) return;
   if (workloads > 1) product += fmt::format(" x {} workloads", workloads);
   std::string how = count <= kMostSweepPoints
@@ -121,8 +120,7 @@ void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points,
 // both lines.
 void add_points(const SpecReader& r, const toml::array& list, uint64_t max_points,
                 SweepSpec& spec) {
-  check_point_count(r, list, "the [[point]] list",
-                    times(list.size(), spec.workloads.size()),
+  check_point_count(r, list, "the [[point]] list", times(list.size(), spec.workloads.size()),
                     std::to_string(list.size()) + " [[point]]", spec.workloads.size(), max_points);
   std::map<std::vector<std::string>, uint32_t> seen;  // sorted settings -> line
   std::set<std::string> swept;
@@ -205,7 +203,8 @@ void read_charts(const SpecReader& r, const toml::table& root, SweepSpec& spec) 
     if (!problem.empty()) r.fail(t->get("y") ? *t->get("y") : n, "chart y: " + problem);
     if (c.series != "workload" &&
         std::find(spec.keys.begin(), spec.keys.end(), c.series) == spec.keys.end())
-      r.fail(*t->get("series"), "chart series '" + c.series + "' is neither 'workload' nor a swept key");
+      r.fail(*t->get("series"),
+             "chart series '" + c.series + "' is neither 'workload' nor a swept key");
     spec.charts.push_back(c);
   }
 }

@@ -11,8 +11,7 @@ std::string path_name_problem(const std::string& name) {
   if (name[0] == '.') return fmt::format("'{}' starts with '.'", name);
   for (char c : name) {
     if (c == '/' || c == '\\') return fmt::format("'{}' holds a '{}'", name, c);
-    if ((unsigned char)c < 0x20 || c == 0x7f)
-      return "the name holds a control character";
+    if ((unsigned char)c < 0x20 || c == 0x7f) return "the name holds a control character";
   }
   return "";
 }

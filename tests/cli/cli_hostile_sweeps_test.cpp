@@ -43,10 +43,11 @@ TEST(HostileSweeps, AGridOf2To64PointsIsRefusedFromItsCheckedCount) {
                   "narrow it (--max-points takes at most 1000000)"});
   EXPECT_FALSE(fs::exists(dir.path("out")));
   // Workloads multiply the points of a list too.
-  std::string list = dir.write("list.toml", "[[workload]]\nname = \"a\"\n[[workload]]\n"
-                                            "name = \"b\"\n[[workload]]\nname = \"c\"\n"
-                                            "[[point]]\n\"rt.count\" = 1\n[[point]]\n"
-                                            "\"rt.count\" = 2\n");
+  std::string list = dir.write("list.toml",
+                               "[[workload]]\nname = \"a\"\n[[workload]]\n"
+                               "name = \"b\"\n[[workload]]\nname = \"c\"\n"
+                               "[[point]]\n\"rt.count\" = 1\n[[point]]\n"
+                               "\"rt.count\" = 2\n");
   expect_refused(run_rtsim("sweep " + list + " -o " + dir.path("out") + " --max-points 5"),
                  {list + ": line 7: the [[point]] list has 6 points (2 [[point]] x 3 workloads)"});
   expect_refused(run_rtsim("sweep " + list + " -o " + dir.path("out") + " --max-points 1000001"),
@@ -64,19 +65,21 @@ TEST(HostileSweeps, ANameFromASpecNeverLeavesTheOutputFolder) {
   fs::create_directories(dir.path("victim"));
   std::string victim = dir.write("victim/trace.json", "the user's own file\n");
   for (std::string name : {"../../victim", "..", "", ".hidden", "a/b", "/tmp/x", "a\\\\b"}) {
-    std::string spec = dir.write("s.toml", "[[workload]]\nworkload = \"pica\"\nname = \"" +
-                                               name + "\"\n[grid]\n\"rt.count\" = [1]\n");
+    std::string spec = dir.write("s.toml", "[[workload]]\nworkload = \"pica\"\nname = \"" + name +
+                                               "\"\n[grid]\n\"rt.count\" = [1]\n");
     expect_refused(run_rtsim("sweep " + spec + " -o " + dir.path("out")),
                    {spec + ": line 3: [[workload]] name", "one path component"});
-    std::string suite = dir.write("suite.toml", "[[case]]\nworkload = \"pica\"\nname = \"" +
-                                                    name + "\"\n[tolerance]\ncycles = 0\n");
+    std::string suite = dir.write("suite.toml", "[[case]]\nworkload = \"pica\"\nname = \"" + name +
+                                                    "\"\n[tolerance]\ncycles = 0\n");
     expect_refused(run_rtsim("regress " + suite + " --baseline " + dir.path("base") + " -o " +
                              dir.path("out")),
                    {suite + ": line 3: [[case]] name"});
   }
   // A Slurm task clears its points' folders: an id from its tasks file never leads outside.
-  std::string tasks = dir.write("tasks.json", R"({"schema": "rtsim.sweep.slurm-tasks/1",
-      "sweep": ")" + dir.path("sweep") + R"(", "tasks": [[{"id": "../../victim", "workload": "w"}]]})");
+  std::string tasks =
+      dir.write("tasks.json", R"({"schema": "rtsim.sweep.slurm-tasks/1",
+      "sweep": ")" + dir.path("sweep") +
+                                  R"(", "tasks": [[{"id": "../../victim", "workload": "w"}]]})");
   expect_refused(run_rtsim("sweep --slurm-task " + tasks + " --task 0"),
                  {tasks + ": key tasks.0.0.id: '../../victim' starts with '.'"});
   EXPECT_EQ(test::slurp(victim), "the user's own file\n");
@@ -111,8 +114,8 @@ TEST(HostileSweeps, PointsThatWouldShareAFolderAreRefusedNamingTheirLines) {
 TEST(HostileSweeps, AMalformedDocumentReadBackNamesItsFileAndKey) {
   test::TempDir dir;
   fs::create_directories(dir.path("run"));
-  std::string report = dir.write("run/report.json",
-                     R"({"schema": "rtsim.report/1", "generator": "rtsim", "command": "run"})");
+  std::string report = dir.write(
+      "run/report.json", R"({"schema": "rtsim.report/1", "generator": "rtsim", "command": "run"})");
   expect_refused(run_rtsim("report --no-charts " + dir.path("run")),
                  {report + ": key workload: missing (expected an object)"});
   fs::create_directories(dir.path("sweep"));
@@ -121,7 +124,8 @@ TEST(HostileSweeps, AMalformedDocumentReadBackNamesItsFileAndKey) {
   std::string doc = R"({"schema": "rtsim.sweep/1", "generator": "rtsim",
       "spec": {"name": "s", "file": "s.toml", "description": "", "config": "",
                "fidelity": "cycle", "workloads": [], "keys": []},
-      "points": [)" + point + R"(], "charts": [], "objective": null})";
+      "points": [)" +
+                    point + R"(], "charts": [], "objective": null})";
   std::string sweep = dir.write("sweep/sweep.json", doc);
   expect_refused(run_rtsim("report --no-charts " + dir.path("sweep")),
                  {sweep + ": key points.0.metrics: expected an object or null, found number"});
@@ -132,7 +136,8 @@ TEST(HostileSweeps, AMalformedDocumentReadBackNamesItsFileAndKey) {
   doc = R"({"schema": "rtsim.sweep/1", "generator": "rtsim",
       "spec": {"name": "s", "file": "s.toml", "description": "", "config": "",
                "fidelity": "cycle", "workloads": [], "keys": []},
-      "points": [], "charts": [)" + chart + R"(], "objective": null})";
+      "points": [], "charts": [)" +
+        chart + R"(], "objective": null})";
   sweep = dir.write("sweep/sweep.json", doc);
   expect_refused(run_rtsim("report --no-charts " + dir.path("sweep")),
                  {sweep + ": key charts.0.id: 'a/../../x' holds a '/'"});
@@ -141,11 +146,13 @@ TEST(HostileSweeps, AMalformedDocumentReadBackNamesItsFileAndKey) {
 TEST(HostileSweeps, AnUnknownChartMetricOrConflictingOptionsAreRefused) {
   test::TempDir dir;
   std::string spec = dir.write(
-      "s.toml", kPica + "[grid]\n\"rt.count\" = [1, 2]\n[[chart]]\nx = \"rt.count\"\ny = \"cycels\"\n");
+      "s.toml",
+      kPica + "[grid]\n\"rt.count\" = [1, 2]\n[[chart]]\nx = \"rt.count\"\ny = \"cycels\"\n");
   expect_refused(run_rtsim("sweep " + spec + " -o " + dir.path("out")),
                  {spec + ": line 8: chart y: unknown metric 'cycels'"});
-  spec = dir.write("s.toml", kPica + "[grid]\n\"rt.count\" = [1, 2]\n[[chart]]\nx = \"rt.count\"\n"
-                                     "series = \"rt.cuont\"\n");
+  spec = dir.write("s.toml", kPica +
+                                 "[grid]\n\"rt.count\" = [1, 2]\n[[chart]]\nx = \"rt.count\"\n"
+                                 "series = \"rt.cuont\"\n");
   expect_refused(run_rtsim("sweep " + spec + " -o " + dir.path("out")),
                  {spec + ": line 8: chart series 'rt.cuont'"});
   std::string config = std::string(RTSIM_SOURCE_DIR) + "/configs/mobile.toml";

@@ -102,8 +102,10 @@ TEST(HostileDocuments, ASweepDocumentWithAnyKeyDamagedIsRewrittenOrRefusedNaming
     p.point = &spec.points[i];
     p.ok = i > 0;  // one failed point: its metrics are null
     p.ran_on = "local on host";
-    p.metrics = {{"cycles", 1000 + i}, {"energy_nj_per_ray", 2.0 + double(i)},
-                 {"sram_area_mm2", 0.01 * double(i)}, {"on_chip_bytes", 4096 * i}};
+    p.metrics = {{"cycles", 1000 + i},
+                 {"energy_nj_per_ray", 2.0 + double(i)},
+                 {"sram_area_mm2", 0.01 * double(i)},
+                 {"on_chip_bytes", 4096 * i}};
     points.push_back(p);
   }
   Json doc = reports::sweep_json(spec, points);
