@@ -551,11 +551,14 @@ uint32_t ray_slots(const HwConfig& c) {
 namespace {
 
 // Measured peaks (bench-sim's child peak memory as each key grows), rounded up by a fifth or
-// more: a ray context 830 B, a cache line 16 B and each of its sectors 16 B, a sorting bin 24 B.
+// more: an RT unit's modules 84 KiB besides its slots and L1, a ray context 830 B, a cache line
+// 16 B and each of its sectors 16 B, a sorting bin 24 B, a shader warp slot 56 B.
+constexpr uint64_t kRtUnitBytes = 128 * 1024;
 constexpr uint64_t kRayContextBytes = 1024;
 constexpr uint64_t kCacheLineBytes = 20;
 constexpr uint64_t kCacheSectorBytes = 20;
 constexpr uint64_t kSortBinBytes = 32;
+constexpr uint64_t kShaderWarpBytes = 64;
 
 uint64_t cache_host_bytes(const CacheConfig& c) {
   uint64_t lines = c.size_bytes / c.line_bytes;
@@ -572,7 +575,10 @@ SimHostMemory sim_host_memory(const HwConfig& c) {
                                            : "rt.count * rt.warps * rt.warp_size"},
       {c.rt_units * cache_host_bytes(c.l1), "rt.l1.size_bytes (each of rt.count L1s)"},
       {cache_host_bytes(c.l2), "l2.size_bytes"},
-      {c.sort.key == SortKey::Hash ? c.sort.bins * kSortBinBytes : 0, "sort.bins"}};
+      {c.sort.key == SortKey::Hash ? c.sort.bins * kSortBinBytes : 0, "sort.bins"},
+      {c.rt_units * kRtUnitBytes, "rt.count"},
+      {c.shader.model == ShaderModel::Simt ? c.rt_units * c.shader.warps * kShaderWarpBytes : 0,
+       "shader.warps (each of rt.count SMs)"}};
   SimHostMemory memory;
   uint64_t largest = 0;
   for (const auto& [bytes, key] : parts) {

@@ -72,8 +72,9 @@ uint64_t ray_buffer_sram_bytes(const HwConfig& config);
 uint32_t ray_slots(const HwConfig& config);
 
 // Host memory that building a simulation of the config takes (model/sc/rt_simulator.cpp: the
-// ray contexts, every cache's tags and sectors, the sorting unit's bins), and the key that
-// takes most of it, for load_hw_config's memory plan (traces/memory_plan.h).
+// RT units, their ray contexts, every cache's tags and sectors, the sorting unit's bins, the
+// SMs' warp slots), and the key that takes most of it, for load_hw_config's memory plan
+// (traces/memory_plan.h).
 struct SimHostMemory {
   uint64_t bytes = 0;
   std::string largest;  // e.g. "l2.size_bytes"
