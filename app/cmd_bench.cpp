@@ -38,6 +38,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 int run_bench(const BenchOptions& o) {
   std::string problem = validate(o.bvh);
   if (!problem.empty()) throw_input_error("bvh config", "", problem);
+  reports::require_generated_ray_memory(o.rays, "--rays");
   if (!is_builtin_scene(o.scene) && !std::filesystem::exists(o.scene)) {
     fmt::print(stderr,
                "rtsim bench: scene file {} not found (the shared scenes are not on this "
@@ -100,7 +101,7 @@ void add_bench_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("bench", "Time the functional model against Embree");
   auto options = std::make_shared<BenchOptions>();
   cmd->add_option("--scene", options->scene, "Scene file or built-in scene")->capture_default_str();
-  cmd->add_option("--rays", options->rays, "Number of rays")->capture_default_str();
+  reports::add_generated_rays_option(*cmd, options->rays, "Number of rays");
   cmd->add_option("--seed", options->seed, "Seed of the ray sampler")
       ->check(reports::non_negative())
       ->capture_default_str();

@@ -127,6 +127,7 @@ int run_bench_sim(const BenchSimOptions& o) {
                o.scene);
     return 2;
   }
+  if (o.stream.empty()) reports::require_generated_ray_memory(o.rays, "--rays");
   HwConfig config = load_hw_config(o.config, o.sets);
   // A stream's scene as it was traced: its fingerprint checked, its instance settings applied.
   Scene scene = o.stream.empty() ? load_scene(o.scene)
@@ -199,9 +200,7 @@ void add_bench_sim_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("bench-sim", "Time the cycle-approximate model against Embree");
   auto o = std::make_shared<BenchSimOptions>();
   cmd->add_option("--scene", o->scene, "Scene file or built-in scene")->capture_default_str();
-  cmd->add_option("--rays", o->rays, "Diffuse-GI-like rays to generate")
-      ->check(reports::non_negative())
-      ->capture_default_str();
+  reports::add_generated_rays_option(*cmd, o->rays, "Diffuse-GI-like rays to generate");
   cmd->add_option("--seed", o->seed, "Seed of the ray sampler")
       ->check(reports::non_negative())
       ->capture_default_str();

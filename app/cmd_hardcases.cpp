@@ -4,6 +4,8 @@
 
 #include "app/commands.h"
 #include "reports/cli_options.h"
+#include "traces/error.h"
+#include "traces/memory_plan.h"
 #include "traces/stream.h"
 #include "workloads/hardcases.h"
 
@@ -11,6 +13,7 @@ namespace rtsim::app {
 namespace {
 
 constexpr uint32_t kPixelsPerRow = 1024;
+constexpr uint64_t kHardcaseRayBytes = 64;  // a Ray in its case's vector, rounded up
 
 struct HardcasesOptions {
   std::string output;
@@ -18,10 +21,30 @@ struct HardcasesOptions {
   uint64_t seed = 1;
 };
 
-void write_hardcases(const HardcasesOptions& options) {
-  auto cases = hardcases::make_hard_cases(options.rays_per_case, options.seed);
-  size_t total = 0;
+uint64_t ray_count(const std::vector<hardcases::HardCase>& cases) {
+  uint64_t total = 0;
   for (const auto& c : cases) total += c.rays.size();
+  return total;
+}
+
+// The cases' rays before they are made: a fixed part and one in proportion to rays_per_case.
+// They fit the stream's grid, one pixel each, and the memory available, or InputError.
+void check_ray_count(size_t rays_per_case) {
+  uint64_t fixed = ray_count(hardcases::make_hard_cases(0));
+  uint64_t total = fixed + (ray_count(hardcases::make_hard_cases(1)) - fixed) * rays_per_case;
+  if (total > uint64_t(kPixelsPerRow) * kMaxGridSide)
+    throw InputError(fmt::format(
+        "--rays-per-case {}: {} rays, more than a stream's largest grid for them ({} x {} "
+        "pixels, one a ray) holds",
+        rays_per_case, total, kPixelsPerRow, kMaxGridSide));
+  require_memory(total * kHardcaseRayBytes, "--rays-per-case",
+                 fmt::format("{} hard-case rays", total), "ask for fewer rays per case");
+}
+
+void write_hardcases(const HardcasesOptions& options) {
+  check_ray_count(options.rays_per_case);
+  auto cases = hardcases::make_hard_cases(options.rays_per_case, options.seed);
+  uint64_t total = ray_count(cases);
 
   StreamHeader header;
   header.scene_source = "builtin:hardcases";

@@ -11,6 +11,7 @@
 #include "model/fidelity/sample_plan.h"
 #include "reports/trace_step.h"
 #include "traces/error.h"
+#include "traces/memory_plan.h"
 
 namespace rtsim::reports {
 
@@ -27,6 +28,24 @@ inline CLI::Validator non_negative() {
                                                    : "'" + text + "' must not be negative";
       },
       "UINT");
+}
+
+// Rays a command generates and holds in memory (bench's and bench-sim's --rays): 1 to
+// 2^32 - 1, as a ray's pixel index counts them, and planned before they are made.
+constexpr uint64_t kMaxGeneratedRays = 0xffffffffull;
+constexpr uint64_t kGeneratedRayBytes = 64;  // a Ray in a vector, and the sampler's share
+
+inline CLI::Option* add_generated_rays_option(CLI::App& cmd, size_t& rays,
+                                              const std::string& description) {
+  return cmd.add_option("--rays", rays, description)
+      ->check(CLI::Range(uint64_t(1), kMaxGeneratedRays))
+      ->capture_default_str();
+}
+
+// InputError naming `option` if `rays` generated rays do not fit the memory available.
+inline void require_generated_ray_memory(uint64_t rays, const std::string& option) {
+  require_memory(rays * kGeneratedRayBytes, option, std::to_string(rays) + " generated rays",
+                 "ask for fewer rays");
 }
 
 inline void add_camera_options(CLI::App& cmd, std::string& camera, std::string& look_at,

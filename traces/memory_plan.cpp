@@ -1,5 +1,9 @@
 #include "traces/memory_plan.h"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -30,18 +34,33 @@ uint64_t cgroup_limit_bytes() {
   return std::numeric_limits<uint64_t>::max();
 }
 
+// Address space left under `ulimit -v` (RLIMIT_AS): the limit less what this process already
+// maps (/proc/self/statm's first field, in pages); an allocation beyond it fails at once.
+uint64_t address_space_left_bytes() {
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+    return std::numeric_limits<uint64_t>::max();
+  std::ifstream in("/proc/self/statm");
+  uint64_t pages = 0;
+  in >> pages;
+  uint64_t mapped = pages * uint64_t(sysconf(_SC_PAGESIZE));
+  return limit.rlim_cur > mapped ? limit.rlim_cur - mapped : 0;
+}
+
 }  // namespace
 
 uint64_t available_memory_bytes() {
+  // The address-space limit is hard: an allocation beyond it fails whatever else is planned.
+  uint64_t address_space = address_space_left_bytes();
   if (const char* text = std::getenv("RTSIM_MAX_MEMORY")) {
     char* end = nullptr;
     unsigned long long value = std::strtoull(text, &end, 10);
-    if (end != text && *end == '\0') return value;
+    if (end != text && *end == '\0') return std::min<uint64_t>(value, address_space);
     throw InputError(fmt::format("RTSIM_MAX_MEMORY: expected a number of bytes, got '{}'", text));
   }
   uint64_t available = meminfo_bytes("MemAvailable");
-  if (available == 0) return std::numeric_limits<uint64_t>::max();  // unknown: do not refuse
-  return std::min(available, cgroup_limit_bytes());
+  if (available == 0) available = std::numeric_limits<uint64_t>::max();  // unknown: do not refuse
+  return std::min({available, cgroup_limit_bytes(), address_space});
 }
 
 void require_memory(uint64_t bytes, const std::string& source, const std::string& what,

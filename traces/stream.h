@@ -18,6 +18,14 @@ constexpr uint32_t kStreamVersion = 2;  // also reads version 1 (no instance set
 constexpr uint32_t kDefaultChunkRays = 16384;
 constexpr uint32_t kMaxChunkRays = 1u << 20;
 constexpr size_t kRayRecordBytes = 44;
+// The largest pixel grid and frame count a stream may declare: those of `rtsim trace`
+// (`--resolution` up to 65536 a side, so every pixel index fits the u32 field; `--frames` up
+// to 100,000).
+constexpr uint32_t kMaxGridSide = 65536;
+constexpr uint32_t kMaxFrames = 100000;
+// A grid may have at most this many pixels more than the stream has rays, so that buffers
+// sized by the grid (sim's per-pixel buffers, 12 B a pixel) stay in proportion to the stream.
+constexpr uint64_t kMaxGridPixelsBeyondRays = uint64_t(1) << 24;
 
 struct StreamHeader {
   uint32_t version = kStreamVersion;  // as read (writers write kStreamVersion)
@@ -34,19 +42,30 @@ struct StreamHeader {
   InstanceSettings instances;
 
   uint64_t total_rays() const;
+  uint64_t pixels() const { return uint64_t(width) * height; }
 };
+
+// What is wrong with the header's frame count or grid (empty if nothing): frames beyond
+// kMaxFrames, a side beyond kMaxGridSide, one side 0 and not the other (0 x 0: no grid).
+std::string grid_problem(const StreamHeader& header);
+// What places the ray outside the header (empty if nothing): a frame at or beyond frame_count,
+// a pixel at or beyond width * height (unless the grid is 0 x 0).
+std::string ray_outside_header(const Ray& ray, const StreamHeader& header);
 
 // Writes to PATH.tmp-PID and renames to PATH in finish(); a writer destroyed before finish()
 // removes its temporary file, so an interrupted run never leaves a half-written stream.
 class RayStreamWriter {
  public:
+  // Throws std::invalid_argument for a header that grid_problem() rejects.
   RayStreamWriter(const std::string& path, StreamHeader header);
   ~RayStreamWriter();
   RayStreamWriter(const RayStreamWriter&) = delete;
   RayStreamWriter& operator=(const RayStreamWriter&) = delete;
 
-  // Throws std::invalid_argument for a ray that ray_problem() rejects.
+  // Throws std::invalid_argument for a ray that ray_problem() or ray_outside_header() rejects.
   void write(const Ray& ray);
+  // InputError if the grid has more than kMaxGridPixelsBeyondRays pixels beyond the rays
+  // written (readers would refuse the stream), or if the file cannot be written.
   void finish();
   const StreamHeader& header() const { return header_; }
 
@@ -83,6 +102,7 @@ class RayStreamReader {
 
  private:
   void read_header();
+  void check_counts_and_grid(size_t header_bytes);
   bool load_chunk();
   void read_exact(void* data, size_t size, uint64_t start, const char* what);
   [[noreturn]] void fail(uint64_t offset, const std::string& what) const;

@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include <fmt/core.h>
+
 #include "traces/bytes.h"
 #include "traces/hash.h"
 
@@ -16,6 +18,26 @@ uint64_t StreamHeader::total_rays() const {
   uint64_t total = 0;
   for (auto c : counts) total += c;
   return total;
+}
+
+std::string grid_problem(const StreamHeader& h) {
+  if (h.frame_count > kMaxFrames)
+    return fmt::format("{} frames: more than {}", h.frame_count, kMaxFrames);
+  if (h.width > kMaxGridSide || h.height > kMaxGridSide)
+    return fmt::format("pixel grid {} x {}: a side is beyond {}", h.width, h.height,
+                       kMaxGridSide);
+  if ((h.width == 0) != (h.height == 0))
+    return fmt::format("pixel grid {} x {}: one side is 0 (0 x 0 is no grid)", h.width, h.height);
+  return {};
+}
+
+std::string ray_outside_header(const Ray& ray, const StreamHeader& h) {
+  if (ray.frame >= h.frame_count)
+    return fmt::format("frame {} is beyond the header's {} frames", ray.frame, h.frame_count);
+  if (h.pixels() > 0 && ray.pixel >= h.pixels())
+    return fmt::format("pixel {} is beyond the header's {} x {} grid", ray.pixel, h.width,
+                       h.height);
+  return {};
 }
 
 std::vector<uint8_t> encode_header(const StreamHeader& h) {

@@ -1,6 +1,11 @@
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <limits>
+
+#include <fmt/core.h>
 
 #include "traces/bytes.h"
 #include "traces/error.h"
@@ -62,7 +67,35 @@ void RayStreamReader::read_header() {
     fail(settings_at, "instance settings: " + problem);
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
     fail(44, "chunk size " + std::to_string(header_.chunk_rays) + " is out of range");
+  check_counts_and_grid(header_bytes);
   chunk_.resize(4 + size_t(header_.chunk_rays) * kRayRecordBytes + 4);
+}
+
+// Before anything is sized by them: the counts must fit the file (a regular file's size bounds
+// its rays), and the grid and frames must keep within their maxima and in proportion to the
+// rays (traces/FORMAT.md).
+void RayStreamReader::check_counts_and_grid(size_t header_bytes) {
+  uint64_t room = std::numeric_limits<uint64_t>::max();
+  struct stat info {};
+  int fd = fileno(file_.get());
+  if (fd >= 0 && fstat(fd, &info) == 0 && S_ISREG(info.st_mode))
+    room = (uint64_t(info.st_size) - std::min<uint64_t>(info.st_size, header_bytes)) /
+           kRayRecordBytes;
+  uint64_t total = 0;
+  for (int t = 0; t < kRayTypeCount; ++t) {
+    if (header_.counts[t] > room - total)
+      fail(48 + 8 * t, fmt::format("header counts {} {} rays, more than the file's {} bytes "
+                                   "can hold",
+                                   header_.counts[t], ray_type_name(RayType(t)), info.st_size));
+    total += header_.counts[t];
+  }
+  std::string problem = grid_problem(header_);
+  if (!problem.empty()) fail(header_.frame_count > kMaxFrames ? 32 : 36, problem);
+  if (header_.pixels() > total + kMaxGridPixelsBeyondRays)
+    fail(36, fmt::format("pixel grid {} x {} has {} pixels, more than {} beyond the stream's {} "
+                         "rays",
+                         header_.width, header_.height, header_.pixels(),
+                         kMaxGridPixelsBeyondRays, total));
 }
 
 void RayStreamReader::fail(uint64_t offset, const std::string& what) const {
@@ -110,6 +143,7 @@ bool RayStreamReader::next(Ray& ray) {
   const uint8_t* record = chunk_.data() + 4 + size_t(chunk_pos_) * kRayRecordBytes;
   ray = decode_ray(record);
   std::string problem = ray_problem(ray);
+  if (problem.empty()) problem = ray_outside_header(ray, header_);
   if (!problem.empty())
     fail(chunk_offset_ + 4 + uint64_t(chunk_pos_) * kRayRecordBytes,
          "ray " + std::to_string(rays_read_) + ": " + problem);

@@ -6,6 +6,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <fmt/core.h>
+
 #include "traces/bytes.h"
 #include "traces/error.h"
 #include "traces/hash.h"
@@ -18,6 +20,8 @@ RayStreamWriter::RayStreamWriter(const std::string& path, StreamHeader header)
   if (header_.chunk_rays == 0 || header_.chunk_rays > kMaxChunkRays)
     throw std::invalid_argument("chunk_rays must be in [1, " + std::to_string(kMaxChunkRays) + "]");
   header_.counts = {};
+  if (std::string problem = grid_problem(header_); !problem.empty())
+    throw std::invalid_argument("stream header: " + problem);
   if (output_.sequential())  // checked before opening: opening a FIFO waits for a reader
     throw_input_error(path_, "",
                       "cannot write a ray stream to a FIFO or socket: it needs a "
@@ -39,6 +43,7 @@ RayStreamWriter::~RayStreamWriter() {
 void RayStreamWriter::write(const Ray& ray) {
   if (!file_) throw std::logic_error("RayStreamWriter::write after finish");
   std::string problem = ray_problem(ray);
+  if (problem.empty()) problem = ray_outside_header(ray, header_);
   if (!problem.empty()) throw std::invalid_argument("cannot write ray: " + problem);
   if (chunk_count_ == 0) chunk_.assign(4, 0);  // room for the count
   encode_ray(ray, chunk_);
@@ -57,9 +62,17 @@ void RayStreamWriter::flush_chunk() {
 
 void RayStreamWriter::finish() {
   if (!file_) return;
+  if (header_.pixels() > header_.total_rays() + kMaxGridPixelsBeyondRays)
+    throw_input_error(path_, "",
+                      fmt::format("a {} x {} pixel grid for {} rays: readers refuse a grid of more "
+                                  "than {} pixels beyond its rays; trace a smaller resolution",
+                                  header_.width, header_.height, header_.total_rays(),
+                                  kMaxGridPixelsBeyondRays));
   if (chunk_count_ > 0) flush_chunk();
   flush_chunk();  // an empty chunk marks the end
   auto bytes = encode_header(header_);
+  if (std::fflush(file_) != 0)  // what is buffered fails here on a full disk, not in the seek
+    throw_input_error(path_, "", std::string("cannot write: ") + std::strerror(errno));
   if (std::fseek(file_, 0, SEEK_SET) != 0)
     throw_input_error(path_, "", "cannot seek back to the header: a stream needs a seekable file");
   write_bytes(bytes.data(), bytes.size());

@@ -12,6 +12,7 @@
 #include "model/energy/process_node.h"
 #include "model/config/dram_presets.h"
 #include "traces/error.h"
+#include "traces/memory_plan.h"
 
 namespace rtsim {
 namespace {
@@ -541,6 +542,54 @@ uint64_t ray_buffer_sram_bytes(const HwConfig& c) {
   return b.bytes ? b.bytes : uint64_t(c.treelet_queues.max_rays) * ray_state_bytes(c.rt.stack);
 }
 
+uint32_t ray_slots(const HwConfig& c) {
+  if (c.rt.mode == TraversalMode::Treelet) return c.treelet_queues.max_rays;
+  uint32_t sorting = c.sort.key == SortKey::None ? 0 : c.sort.buffer_rays;
+  return c.rt_units * c.rt.warps * c.rt.warp_size + sorting;
+}
+
+namespace {
+
+// Measured peaks (bench-sim's child peak memory as each key grows), rounded up by a fifth or
+// more: an RT unit's modules 84 KiB besides its slots and L1, a ray context 830 B, a cache line
+// 16 B and each of its sectors 16 B, a sorting bin 24 B, a shader warp slot 56 B.
+constexpr uint64_t kRtUnitBytes = 128 * 1024;
+constexpr uint64_t kRayContextBytes = 1024;
+constexpr uint64_t kCacheLineBytes = 20;
+constexpr uint64_t kCacheSectorBytes = 20;
+constexpr uint64_t kSortBinBytes = 32;
+constexpr uint64_t kShaderWarpBytes = 64;
+
+uint64_t cache_host_bytes(const CacheConfig& c) {
+  uint64_t lines = c.size_bytes / c.line_bytes;
+  return lines * (kCacheLineBytes + kCacheSectorBytes * (c.line_bytes / block_bytes(c)));
+}
+
+}  // namespace
+
+SimHostMemory sim_host_memory(const HwConfig& c) {
+  std::pair<uint64_t, const char*> parts[] = {
+      {ray_slots(c) * kRayContextBytes,
+       c.rt.mode == TraversalMode::Treelet ? "treelet_queues.max_rays"
+       : c.sort.key != SortKey::None       ? "rt.count * rt.warps * rt.warp_size + sort.buffer_rays"
+                                           : "rt.count * rt.warps * rt.warp_size"},
+      {c.rt_units * cache_host_bytes(c.l1), "rt.l1.size_bytes (each of rt.count L1s)"},
+      {cache_host_bytes(c.l2), "l2.size_bytes"},
+      {c.sort.key == SortKey::Hash ? c.sort.bins * kSortBinBytes : 0, "sort.bins"},
+      {c.rt_units * kRtUnitBytes, "rt.count"},
+      {c.shader.model == ShaderModel::Simt ? c.rt_units * c.shader.warps * kShaderWarpBytes : 0,
+       "shader.warps (each of rt.count SMs)"}};
+  SimHostMemory memory;
+  uint64_t largest = 0;
+  for (const auto& [bytes, key] : parts) {
+    memory.bytes += bytes;
+    if (bytes <= largest) continue;
+    largest = bytes;
+    memory.largest = key;
+  }
+  return memory;
+}
+
 std::string hw_config_problem(const HwConfig& c) {
   auto section = [](const char* name, const std::string& problem) {
     return problem.empty() ? problem : fmt::format("[{}] {}", name, problem);
@@ -596,6 +645,8 @@ HwConfig load_hw_config(const std::string& path, const std::vector<std::string>&
   check_unknown_keys(root, ctx);
   std::string problem = hw_config_problem(config);
   if (!problem.empty()) throw_input_error(file, "", problem);
+  SimHostMemory memory = sim_host_memory(config);
+  require_memory(memory.bytes, file, "simulating this machine", "lower " + memory.largest);
   return config;
 }
 

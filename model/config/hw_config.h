@@ -67,6 +67,19 @@ struct HwConfig {
 CacheConfig l1_as_built(const HwConfig& config);
 // Bytes of the treelet queues' SRAM ray buffer (0 outside treelet mode and in memory).
 uint64_t ray_buffer_sram_bytes(const HwConfig& config);
+// Ray slots of the machine: the rays it holds in flight (ray contexts; the treelet buffer in
+// treelet mode; the sorting buffer's rays too). Sizes the sampled level's windows too.
+uint32_t ray_slots(const HwConfig& config);
+
+// Host memory that building a simulation of the config takes (model/sc/rt_simulator.cpp: the
+// RT units, their ray contexts, every cache's tags and sectors, the sorting unit's bins, the
+// SMs' warp slots), and the key that takes most of it, for load_hw_config's memory plan
+// (traces/memory_plan.h).
+struct SimHostMemory {
+  uint64_t bytes = 0;
+  std::string largest;  // e.g. "l2.size_bytes"
+};
+SimHostMemory sim_host_memory(const HwConfig& config);
 
 // One key's documentation (for model/SIM-REFERENCE.md and --list-keys).
 struct HwConfigKey {
@@ -75,7 +88,8 @@ struct HwConfigKey {
 
 // Loads a TOML file (path empty: the defaults) and applies the "key=value" overrides.
 // Throws InputError naming the file (or the --set) and line for a syntax error, a wrong type,
-// a value out of range, an unknown key, or an impossible combination.
+// a value out of range, an unknown key, an impossible combination, or a machine whose
+// simulation would not fit the memory available (sim_host_memory).
 HwConfig load_hw_config(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // Every key of the config, in file order, with its default.

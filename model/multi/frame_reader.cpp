@@ -20,10 +20,6 @@ bool FrameReader::next(FrameRays& out) {
       ended_ = true;
       break;
     }
-    if (ray.frame >= header.frame_count)
-      throw_input_error(
-          reader_.path(), fmt::format("ray {}", reader_.rays_read() - 1),
-          fmt::format("frame {} is beyond the header's {} frames", ray.frame, header.frame_count));
     if (ray.frame < frame_)
       throw_input_error(
           reader_.path(), fmt::format("ray {}", reader_.rays_read() - 1),

@@ -9,12 +9,6 @@
 
 namespace rtsim {
 
-uint32_t ray_slots(const HwConfig& c) {
-  if (c.rt.mode == TraversalMode::Treelet) return c.treelet_queues.max_rays;
-  uint32_t sorting = c.sort.key == SortKey::None ? 0 : c.sort.buffer_rays;
-  return c.rt_units * c.rt.warps * c.rt.warp_size + sorting;
-}
-
 namespace {
 
 Clock clock_of(const HwConfig& c) {

@@ -35,10 +35,6 @@ class SimStallError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Ray slots of the machine: the rays it holds in flight (ray contexts; the treelet buffer in
-// treelet mode; the sorting buffer's rays too). Sizes the sampled level's windows too.
-uint32_t ray_slots(const HwConfig& config);
-
 class RtSimulator {
  public:
   using MemoryBinder = std::function<void(SharedCacheModule& l2)>;

@@ -3,9 +3,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <utility>
 #include <vector>
 
@@ -367,18 +368,23 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   return doc;
 }
 
-void write_file_atomic(const std::string& path, const std::string& bytes) {
+void write_file_atomic(const std::string& path, const void* data, size_t size) {
   OutputFile output(path);
-  bool ok;
-  {
-    std::ofstream out(output.write_path(), std::ios::binary);
-    out.write(bytes.data(), std::streamsize(bytes.size()));
-    ok = bool(out.flush());
+  int error = 0;  // the first failure's errno
+  if (FILE* file = std::fopen(output.write_path().c_str(), "wb")) {
+    if (std::fwrite(data, 1, size, file) != size || std::fflush(file) != 0) error = errno;
+    if (std::fclose(file) != 0 && error == 0) error = errno;
+  } else {
+    error = errno;
   }
-  if (!ok || !output.commit()) {
-    output.discard();
-    throw_input_error(path, "", "cannot write");
-  }
+  if (error == 0 && !output.commit()) error = errno;
+  if (error == 0) return;
+  output.discard();
+  throw_input_error(path, "", std::string("cannot write: ") + std::strerror(error));
+}
+
+void write_file_atomic(const std::string& path, const std::string& bytes) {
+  write_file_atomic(path, bytes.data(), bytes.size());
 }
 
 Json write_sim_results(const std::string& dir, const RtSimulator& sim, const SimRunInfo& info) {
@@ -387,13 +393,13 @@ Json write_sim_results(const std::string& dir, const RtSimulator& sim, const Sim
   sim.report(stats);
   Json doc = sim_stats_json(sim, stats, info);
   const PixelBuffers& px = sim.collected().pixels();
-  auto raw = [](const std::vector<float>& v) {
-    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(float));
+  auto write_floats = [&dir](const char* name, const std::vector<float>& v) {
+    write_file_atomic(dir + "/" + name, v.data(), v.size() * sizeof(float));
   };
   if (!px.cycles.empty()) {
-    write_file_atomic(dir + "/pixel_cycles.f32", raw(px.cycles));
-    write_file_atomic(dir + "/pixel_nodes.f32", raw(px.nodes));
-    write_file_atomic(dir + "/pixel_dram_bytes.f32", raw(px.dram_bytes));
+    write_floats("pixel_cycles.f32", px.cycles);
+    write_floats("pixel_nodes.f32", px.nodes);
+    write_floats("pixel_dram_bytes.f32", px.dram_bytes);
   }
   write_file_atomic(dir + "/config.toml", resolved_toml(sim.config()));
   write_file_atomic(dir + "/stats.json", doc.dump(2) + "\n");

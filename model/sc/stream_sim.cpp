@@ -1,5 +1,9 @@
 #include "model/sc/stream_sim.h"
 
+#include <fmt/core.h>
+
+#include "traces/memory_plan.h"
+
 namespace rtsim {
 
 uint64_t rays_of(const StreamHeader& header, RayTypeMask types) {
@@ -20,6 +24,9 @@ StreamSim::StreamSim(const HwConfig& config, BvhView bvh, const TriangleMesh& me
     listeners_.add(verifier_.get());
   }
   const StreamHeader& header = reader.header();
+  require_memory(header.pixels() * kPixelBufferBytes, reader.path(),
+                 fmt::format("per-pixel buffers of its {} x {} grid", header.width, header.height),
+                 "trace it at a lower resolution");
   sim_ =
       std::make_unique<RtSimulator>(config, bvh, source_, header.width, header.height, &listeners_);
 }

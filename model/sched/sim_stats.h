@@ -30,6 +30,8 @@ struct RayTypeStats {
   LatencyHistogram warp_latency;
 };
 
+constexpr uint64_t kPixelBufferBytes = 3 * sizeof(float);  // a pixel's cycles, nodes, DRAM bytes
+
 struct PixelBuffers {
   uint32_t width = 0, height = 0;
   std::vector<float> cycles, nodes, dram_bytes;  // row-major, summed over a pixel's rays

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rtsim {
 namespace {
@@ -29,6 +30,7 @@ PreparedRay prepare_ray(const Ray& ray, float scene_extent, float box_padding) {
     r.t_exponent = -e;
     r.tmin = std::ldexp(ray.tmin, e);
     r.tmax = std::ldexp(ray.tmax, e);
+    r.t_limit = std::ldexp(std::numeric_limits<float>::max(), e);
   }
 
   // Box setup: reciprocal (+-inf for a +-0 component), near plane by the sign bit, and the

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <glm/vec3.hpp>
 
 #include "traces/ray.h"
@@ -13,6 +14,9 @@ struct PreparedRay {
   glm::vec3 org{0.0f}, dir{0.0f};  // dir scaled by a power of two when extreme
   float tmin = 0.0f, tmax = 0.0f;  // in units of the scaled direction
   int t_exponent = 0;              // t of the original ray = ldexp(t here, t_exponent)
+  // The farthest hit: one beyond would have t = +inf in the original ray's units (a tiny
+  // direction's far hits overflow; Embree misses them). Boxes are not culled by it.
+  float t_limit = std::numeric_limits<float>::infinity();
   // Ray-box unit: reciprocal direction, which box plane is entered first per axis, and the
   // origins shifted by the box padding for the near and far planes.
   glm::vec3 inv_dir{0.0f};

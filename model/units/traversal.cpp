@@ -141,7 +141,7 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
     TriangleHit hit;
     uint32_t prim;
     if (!intersect_triangle(level.config.triangle_format, s.ray, level.triangle_bytes(position),
-                            s.ray.tmin, s.t_hit, hit, prim))
+                            s.ray.tmin, std::min(s.t_hit, s.ray.t_limit), hit, prim))
       continue;
     if (level.alpha && !s.force_opaque && level.alpha->tested(prim)) {
       s.counters.trav_alpha_tests++;

@@ -1,5 +1,6 @@
 // The two-level part of the traversal unit (traversal.h): instance steps and the way back to
 // world space. In a file of its own, so that the single-level loop compiles as it did.
+#include <algorithm>
 #include <cmath>
 
 #include "model/units/traversal.h"
@@ -32,6 +33,7 @@ StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& en
   s.world = s.ray;
   s.world_t_hit = s.t_hit;
   s.ray = prepare_ray(object, blas.scene_extent, config_.box_padding);
+  s.ray.t_limit = std::min(s.ray.t_limit, std::ldexp(s.world.t_limit, -s.ray.t_exponent));
   s.t_hit = s.ray.tmax;
   s.level = &blas;
   s.instance = r.instance;

@@ -88,6 +88,21 @@ TEST(Watertight, DenormalAndSignedZeroDirections) {
   }
 }
 
+TEST(Watertight, TLimitEndsHitsWhereTOverflows) {
+  // Direction (1e-45, 0, 0): the wall 0.001 away is at t = 7e41, beyond every float (Embree
+  // misses); 1e-39 brings it to t = 1e36, a float. The traversal tests up to t_limit.
+  const float wall[9] = {10, -5, -5, 10, 5, -5, 10, 0, 5};
+  TriangleHit hit;
+  PreparedRay ray = prepare({9.999f, 0, 0}, {1e-45f, 0, 0});
+  ASSERT_TRUE(intersect_watertight(ray, wall, 0.0f, ray.tmax, hit));
+  EXPECT_EQ(std::ldexp(hit.t, ray.t_exponent), std::numeric_limits<float>::infinity());
+  EXPECT_FALSE(intersect_watertight(ray, wall, 0.0f, ray.t_limit, hit)) << hit.t;
+  ray = prepare({9.999f, 0, 0}, {1e-39f, 0, 0});
+  ASSERT_TRUE(intersect_watertight(ray, wall, 0.0f, ray.t_limit, hit));
+  EXPECT_TRUE(std::isfinite(std::ldexp(hit.t, ray.t_exponent)));
+  EXPECT_EQ(prepare({0, 0, 0}, {1, 0, 0}).t_limit, std::numeric_limits<float>::infinity());
+}
+
 TEST(Woop, AgreesWithWatertightAwayFromEdges) {
   // Rows of the unit-triangle map of kUnit: u = x, v = y, z = z.
   const float rows[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};

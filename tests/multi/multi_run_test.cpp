@@ -174,27 +174,6 @@ TEST(MultiRun, OneDeviceIsTheBaseline) {
     }
 }
 
-TEST(MultiRun, RaysOutsideTheImageGoToThePrimary) {
-  std::string path = test::scratch_path("outside.rays");
-  StreamHeader h;
-  h.frame_count = 1;
-  h.width = 4;
-  h.height = 2;
-  {
-    RayStreamWriter w(path, h);
-    for (uint32_t pixel : {0u, 7u, 8u, 1000u}) {
-      Ray ray;
-      ray.pixel = pixel;
-      w.write(ray);
-    }
-    w.finish();
-  }
-  MultiRunResult r = run(path, mobile_set(2));
-  EXPECT_EQ(r.outside, 2u);
-  EXPECT_EQ(r.runs[0].frames[0].devices[0].rays, 3u);
-  EXPECT_EQ(r.runs[0].frames[0].devices[1].rays, 1u);
-}
-
 TEST(MultiRun, RaysOutOfFrameOrderAreAnInputError) {
   std::string path = test::scratch_path("order.rays");
   StreamHeader h;

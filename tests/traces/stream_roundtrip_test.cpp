@@ -7,6 +7,7 @@
 #include <sys/resource.h>
 
 #include "stream_test_util.h"
+#include "traces/error.h"
 
 namespace rtsim {
 namespace {
@@ -90,6 +91,24 @@ TEST(StreamWriter, RejectsNanRay) {
   EXPECT_THROW(writer.write(ray), std::invalid_argument);
 }
 
+TEST(StreamWriter, RefusesWhatAReaderWould) {
+  StreamHeader header = test::sample_header();  // 64 x 32 pixels, 3 frames
+  header.width = kMaxGridSide + 1;
+  EXPECT_THROW(RayStreamWriter(temp_path("side.rays"), header), std::invalid_argument);
+  RayStreamWriter writer(temp_path("outside.rays"), test::sample_header());
+  Ray ray;
+  ray.pixel = 64 * 32;
+  EXPECT_THROW(writer.write(ray), std::invalid_argument) << "pixel beyond the grid";
+  ray.pixel = 0;
+  ray.frame = 3;
+  EXPECT_THROW(writer.write(ray), std::invalid_argument) << "frame beyond the frames";
+  header = test::sample_header();
+  header.width = header.height = 4097;  // 16,785,409 pixels: 8,193 beyond 2^24 for no rays
+  RayStreamWriter sparse(temp_path("sparse.rays"), header);
+  EXPECT_THROW(sparse.finish(), InputError);
+  EXPECT_FALSE(std::filesystem::exists(temp_path("sparse.rays")));
+}
+
 long peak_rss_kb() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -101,7 +120,10 @@ TEST(StreamReader, ReadsAndWritesInConstantMemory) {
   std::string path = temp_path("long.rays");
   long before = peak_rss_kb();
   {
-    RayStreamWriter writer(path, test::sample_header(16384));
+    StreamHeader header = test::sample_header(16384);
+    header.width = 2048;  // 2,097,152 pixels: one for each ray
+    header.height = 1024;
+    RayStreamWriter writer(path, header);
     Ray ray;
     for (uint32_t i = 0; i < 2000000; ++i) {
       ray.pixel = i;

@@ -31,8 +31,8 @@ inline std::vector<Ray> sample_rays(size_t n) {
     r.query = static_cast<Query>((i / kRayTypeCount) % 2);
     r.force_opaque = i % 3 == 1;
     r.sample = uint16_t(i * 7);
-    r.pixel = uint32_t(i * 13);
-    r.frame = uint32_t(i / 100);
+    r.pixel = uint32_t(i * 13 % 2048);  // within sample_header's grid and frames
+    r.frame = uint32_t(i / 100 % 3);
   }
   return rays;
 }

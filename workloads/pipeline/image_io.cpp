@@ -4,7 +4,9 @@
 #include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 
 #include <fmt/format.h>
 
@@ -24,10 +26,11 @@ void write_png(const std::string& path, uint32_t width, uint32_t height,
       out->open(output.write_path(), spec) && out->write_image(OIIO::TypeDesc::UINT8, rgb.data());
   std::string error = ok ? "" : out->geterror();
   ok = out->close() && ok;
-  if (!ok || !output.commit()) {
-    output.discard();
-    throw_input_error(path, "", "cannot write image: " + (error.empty() ? "rename failed" : error));
-  }
+  if (ok && output.commit()) return;
+  if (error.empty() && !ok) error = out->geterror();
+  if (error.empty()) error = std::strerror(errno);  // a failed rename, or a close naming no reason
+  output.discard();
+  throw_input_error(path, "", "cannot write image: " + error);
 }
 
 AlphaImage read_texture_alpha(const std::string& name, const std::vector<uint8_t>& bytes) {
