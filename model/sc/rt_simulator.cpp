@@ -168,11 +168,11 @@ Cycle RtSimulator::cycles() const {
 }
 
 Cycle RtSimulator::next_delivery() const {
-  Cycle next = l2_->next_job();
+  Cycle now = clock_.cycles(sim_now()), next = l2_->next_job();
   if (banked_dram_) next = std::min(next, banked_dram_->next_wake());
   for (const auto& unit : units_) {
     if (unit->core().has_event()) next = std::min(next, unit->core().next_event());
-    if (unit->shader()) next = std::min(next, unit->shader()->next_wake());
+    if (unit->shader()) next = std::min(next, unit->shader()->next_wake(now));
   }
   return next;
 }
