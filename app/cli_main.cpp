@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "model/sc/stall_watchdog.h"
 #include "traces/error.h"
 
 // SystemC's library needs the symbol; main() is ours.
@@ -49,6 +50,9 @@ int run_command_line(CLI::App& app, int argc, char** argv, const std::string& pr
   } catch (const rtsim::InputError& e) {
     fmt::print(stderr, "{}: error: {}\n", program, e.what());
     return 2;
+  } catch (const rtsim::SimStallError& e) {  // the state dump ends its own lines
+    fmt::print(stderr, "{}: stall: {}", program, e.what());
+    return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "{}: internal error: {}\n", program, e.what());
     return 3;

@@ -1,5 +1,6 @@
 // The command line's parse and its errors, shared by rtsim and rtsim-noimage: a usage error or
-// bad input is one line naming the program and exit code 2, any other failure exit code 3.
+// bad input is one line naming the program and exit code 2, a simulation stall (its state dump)
+// exit code 1, any other failure exit code 3.
 #pragma once
 
 #include <string>

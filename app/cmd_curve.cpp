@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include "app/commands.h"
 #include "model/config/hw_config.h"
@@ -20,6 +21,7 @@
 #include "reports/curve_report.h"
 #include "reports/phase_progress.h"
 #include "traces/error.h"
+#include "traces/memory_plan.h"
 #include "traces/output_file.h"
 #include "traces/stream.h"
 #include "workloads/scene.h"
@@ -35,8 +37,8 @@ struct CurveOptions {
   bool no_charts = false;
 };
 
-// "256K", "4M", "1G" or a number of bytes.
-uint64_t parse_size(const std::string& text, const std::string& option) {
+// "256K", "4M", "1G" or a number of bytes, within the limits of the cache's size_bytes (`key`).
+uint64_t parse_size(const std::string& text, const std::string& option, const char* key) {
   size_t used = 0;
   uint64_t value = 0;
   try {
@@ -53,26 +55,39 @@ uint64_t parse_size(const std::string& text, const std::string& option) {
   if (used == 0 || scale == 0 || value == 0)
     throw InputError(
         fmt::format("curve: {}: '{}' is not a size (256K, 4M, 1G or bytes)", option, text));
+  if (value > kMaxCacheBytes / scale || value * scale < kMinCacheBytes)
+    throw InputError(fmt::format("curve: {}: '{}' is out of range [{}, {}] (the limits of {})",
+                                 option, text, kMinCacheBytes, kMaxCacheBytes, key));
   return value * scale;
 }
 
 // "A..B": A, 2A, 4A, ... up to B; or "A,B,C".
-std::vector<uint64_t> parse_sizes(const std::string& text, const std::string& option) {
+std::vector<uint64_t> parse_sizes(const std::string& text, const std::string& option,
+                                  const char* key) {
   std::vector<uint64_t> out;
   size_t range = text.find("..");
   if (range != std::string::npos) {
-    uint64_t from = parse_size(text.substr(0, range), option);
-    uint64_t to = parse_size(text.substr(range + 2), option);
+    uint64_t from = parse_size(text.substr(0, range), option, key);
+    uint64_t to = parse_size(text.substr(range + 2), option, key);
     if (to < from) throw InputError(fmt::format("curve: {}: '{}' runs backwards", option, text));
     for (uint64_t c = from; c <= to; c *= 2) out.push_back(c);
     return out;
   }
   for (size_t at = 0; at <= text.size();) {
     size_t comma = std::min(text.find(',', at), text.size());
-    out.push_back(parse_size(text.substr(at, comma - at), option));
+    out.push_back(parse_size(text.substr(at, comma - at), option, key));
     at = comma + 1;
   }
   return out;
+}
+
+// The options that make the request, as its errors name them.
+std::string request_options(const CurveOptions& o) {
+  std::string text = "--l2 " + o.l2;
+  if (!o.ways.empty()) text += fmt::format(" --ways {}", fmt::join(o.ways, ","));
+  if (!o.simulate.empty()) text += " --simulate " + o.simulate;
+  if (o.sample_rate > 1) text += fmt::format(" --sample-rate {}", o.sample_rate);
+  return text;
 }
 
 struct CurveInputs {
@@ -146,22 +161,26 @@ void write_curve(const std::string& dir, const nlohmann::ordered_json& doc,
 
 int run_curve(const CurveOptions& o) {
   HwConfig config = load_hw_config(o.config, o.sets);
-  std::string where = o.config.empty() ? "the default config" : o.config;
+  std::string problem = curve_config_problem(config);
+  if (!problem.empty())
+    throw InputError(fmt::format("curve: {}: {}",
+                                 config_culprit(o.config, o.sets, curve_config_problem), problem));
   CurveRequest request;
-  request.capacities = parse_sizes(o.l2, "--l2");
+  request.capacities = parse_sizes(o.l2, "--l2", "l2.size_bytes");
   request.ways = o.ways.empty() ? std::vector<uint32_t>{config.l2.ways} : o.ways;
   request.sample_rate = o.sample_rate;
   std::vector<uint64_t> simulate;
-  if (!o.simulate.empty() && o.simulate != "knee") simulate = parse_sizes(o.simulate, "--simulate");
+  if (!o.simulate.empty() && o.simulate != "knee")
+    simulate = parse_sizes(o.simulate, "--simulate", "l2.size_bytes");
   for (uint64_t c : simulate) request.capacities.push_back(c);  // simulated points are points
   std::sort(request.capacities.begin(), request.capacities.end());
   request.capacities.erase(std::unique(request.capacities.begin(), request.capacities.end()),
                            request.capacities.end());
-  std::string problem = curve_request_problem(config, request);
-  if (!problem.empty()) throw InputError(fmt::format("curve: {}: {}", where, problem));
+  problem = curve_request_problem(config, request);
+  if (!problem.empty()) throw InputError(fmt::format("curve: {}: {}", request_options(o), problem));
   std::vector<HwConfig> configs;  // one per L1 size
   for (uint64_t size : o.l1.empty() ? std::vector<uint64_t>{config.l1.size_bytes}
-                                    : parse_sizes(o.l1, "--l1")) {
+                                    : parse_sizes(o.l1, "--l1", "rt.l1.size_bytes")) {
     HwConfig c = config;
     c.l1.size_bytes = size;
     problem = cache_config_problem(c.l1);
@@ -169,6 +188,12 @@ int run_curve(const CurveOptions& o) {
       throw InputError(fmt::format("curve: --l1: {} bytes: {}", size, problem));
     configs.push_back(c);
   }
+  uint64_t need = 0;
+  for (const HwConfig& c : configs)
+    need = std::max(need, curve_host_bytes(c, request, !o.simulate.empty()));
+  require_memory(need, "curve: " + request_options(o) + (o.l1.empty() ? "" : " --l1 " + o.l1),
+                 "the curve's cache model",
+                 "ask for fewer or smaller capacities, or sample them (--sample-rate)");
   bool family = !o.l1.empty();
   if (!o.output.empty()) {
     create_output_folder(o.output);

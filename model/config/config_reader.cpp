@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "traces/error.h"
+#include "traces/toml_text.h"
 
 namespace rtsim {
 namespace {
@@ -31,6 +32,12 @@ bool contains(const std::vector<std::string>& list, const std::string& item) {
   return std::find(list.begin(), list.end(), item) != list.end();
 }
 
+// An override as an error names it: cut short, so that a huge one is still a short line.
+std::string shown(const std::string& assignment) {
+  constexpr size_t kShown = 100;
+  return assignment.size() <= kShown ? assignment : assignment.substr(0, kShown) + "...";
+}
+
 }  // namespace
 
 ConfigReader::ConfigReader(const toml::table* table, std::string prefix, ConfigReadContext& ctx)
@@ -52,8 +59,9 @@ ConfigReader ConfigReader::section(const std::string& name) {
 void ConfigReader::fail(const std::string& key, const std::string& what) const {
   const toml::node* node = table_ && !key.empty() ? table_->get(key) : table_;
   std::string full = full_key(key);
-  std::string file = contains(ctx_.set_keys, full) ? ctx_.set_option + " " + full : ctx_.file;
-  throw_input_error(file, line_of(node), fmt::format("key '{}': {}", full, what));
+  std::string set = ctx_.set_place(full);
+  throw_input_error(set.empty() ? ctx_.file : set, set.empty() ? line_of(node) : "",
+                    fmt::format("key '{}': {}", full, what));
 }
 
 const toml::node* ConfigReader::take(const std::string& key, const char* type,
@@ -110,13 +118,29 @@ std::vector<std::string> ConfigReader::strings(const std::string& key,
 double ConfigReader::real(const std::string& key, double def, const char* unit, const char* desc,
                           double lo, double hi) {
   const toml::node* node = take(key, "number", fmt::format("{}", def), unit, desc);
+  return number(key, node, def, lo, hi, false);
+}
+
+double ConfigReader::rate(const std::string& key, double def, const char* unit, const char* desc,
+                          double lo, double hi, Zero zero) {
+  std::string range =
+      fmt::format("{}{} to {}", zero == Zero::NoLimit ? "0 = no limit, else " : "", lo, hi);
+  const toml::node* node =
+      take(key, "number", fmt::format("{}", def), unit, fmt::format("{}; {}", desc, range).c_str());
+  return number(key, node, def, lo, hi, zero == Zero::NoLimit);
+}
+
+double ConfigReader::number(const std::string& key, const toml::node* node, double def, double lo,
+                            double hi, bool zero_allowed) {
   double value = def;
   if (node) {
     auto v = node->value<double>();
     if (!v || !(node->is_integer() || node->is_floating_point()))
       fail(key, fmt::format("expected a number, got {}", type_of(*node)));
-    if (!std::isfinite(*v) || *v < lo || *v > hi)
-      fail(key, fmt::format("{} is out of range [{}, {}]", *v, lo, hi));
+    bool zero = zero_allowed && *v == 0;
+    if (!zero && (!std::isfinite(*v) || *v < lo || *v > hi))
+      fail(key, fmt::format("{} is out of range [{}, {}]{}", *v, lo, hi,
+                            zero_allowed ? " (or 0: no limit)" : ""));
     value = *v;
   }
   record(key, value);
@@ -164,18 +188,27 @@ toml::table parse_config_file(const std::string& path, const std::string& what) 
   if (!in) throw_input_error(path, "", "cannot open the " + what);
   std::stringstream text;
   text << in.rdbuf();
-  try {
-    return toml::parse(text.str(), path);
-  } catch (const toml::parse_error& e) {
-    throw_input_error(path, fmt::format("line {}", e.source().begin.line),
-                      std::string(e.description()));
-  }
+  return parse_toml(text.str(), path);
+}
+
+std::string ConfigReadContext::set_place(const std::string& key) const {
+  for (auto it = set_assignments.rbegin(); it != set_assignments.rend(); ++it)
+    if (it->compare(0, key.size() + 1, key + "=") == 0) return set_option + " " + shown(*it);
+  return "";
+}
+
+std::string ConfigReadContext::set_places() const {
+  std::string places;
+  for (const std::string& assignment : set_assignments)
+    places += (places.empty() ? "" : " ") + set_option + " " + shown(assignment);
+  return places;
 }
 
 void apply_override(toml::table& root, const std::string& assignment, ConfigReadContext& ctx) {
+  std::string place = ctx.set_option + " " + shown(assignment);
   size_t eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0)
-    throw_input_error(ctx.set_option + " " + assignment, "", "expected KEY=VALUE");
+  if (eq == std::string::npos || eq == 0) throw_input_error(place, "", "expected KEY=VALUE");
+  check_toml_depth(assignment, place);  // "KEY=VALUE" is a line of TOML
   std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   // The value in TOML syntax; anything that does not parse is taken as a string.
   toml::table parsed;
@@ -190,8 +223,7 @@ void apply_override(toml::table& root, const std::string& assignment, ConfigRead
     toml::node* node = table->get(part);
     if (!node) node = &table->insert_or_assign(part, toml::table{}).first->second;
     if (!node->is_table())
-      throw_input_error(ctx.set_option + " " + key, "",
-                        fmt::format("'{}' is a value, not a section", part));
+      throw_input_error(place, "", fmt::format("'{}' is a value, not a section", part));
     table = node->as_table();
     start = dot + 1;
   }
@@ -200,7 +232,7 @@ void apply_override(toml::table& root, const std::string& assignment, ConfigRead
     table->insert_or_assign(leaf, *value);
   else
     table->insert_or_assign(leaf, text);
-  ctx.set_keys.push_back(key);
+  ctx.set_assignments.push_back(assignment);
 }
 
 namespace {
@@ -232,7 +264,7 @@ void check_unknown_keys(const toml::table& root, const ConfigReadContext& ctx) {
   if (unknown.empty()) return;
   // Overrides first (they have no line), then the file's first unknown key by line.
   auto set = std::find_if(unknown.begin(), unknown.end(),
-                          [&](const Unknown& u) { return contains(ctx.set_keys, u.key); });
+                          [&](const Unknown& u) { return !ctx.set_place(u.key).empty(); });
   const Unknown& u = set != unknown.end()
                          ? *set
                          : *std::min_element(unknown.begin(), unknown.end(),
@@ -248,7 +280,7 @@ void check_unknown_keys(const toml::table& root, const ConfigReadContext& ctx) {
   std::string what = fmt::format("unknown key '{}'", u.key);
   if (!known.empty())
     what += fmt::format(" (keys of [{}]: {})", u.section.empty() ? "top level" : u.section, known);
-  if (set != unknown.end()) throw_input_error(ctx.set_option + " " + u.key, "", what);
+  if (set != unknown.end()) throw_input_error(ctx.set_place(u.key), "", what);
   throw_input_error(ctx.file, u.line ? fmt::format("line {}", u.line) : "", what);
 }
 

@@ -26,13 +26,19 @@ struct ConfigKeyDoc {
 };
 
 struct ConfigReadContext {
-  std::string file;                   // for error messages
-  std::string set_option = "--set";   // the command-line option that overrides keys
-  std::vector<std::string> set_keys;  // keys given with it
-  std::vector<ConfigKeyDoc> docs;     // every key read, in read order, with its default
+  std::string file;                          // for error messages
+  std::string set_option = "--set";          // the command-line option that overrides keys
+  std::vector<std::string> set_assignments;  // "KEY=VALUE" given with it, in order
+  std::vector<ConfigKeyDoc> docs;            // every key read, in read order, with its default
   std::vector<std::pair<std::string, nlohmann::ordered_json>> values;  // resolved, read order
   std::vector<std::string> known;                                      // every key read, dotted
   std::vector<std::string> sections;  // every section opened, dotted
+
+  // Where an error about key points: "--set KEY=VALUE" (its last override), or empty if the
+  // key was not overridden.
+  std::string set_place(const std::string& key) const;
+  // Every override as given ("--set A=1 --set B=2").
+  std::string set_places() const;
 };
 
 class ConfigReader {
@@ -45,6 +51,12 @@ class ConfigReader {
                    uint64_t lo, uint64_t hi);
   double real(const std::string& key, double def, const char* unit, const char* desc, double lo,
               double hi);
+  // A rate (a bandwidth): lo to hi, or 0 for no limit where zero is Zero::NoLimit. Its floor is
+  // what keeps a transfer's cycles few enough to simulate and within SystemC's time; the
+  // description gains the range, so --list-keys and model/SIM-REFERENCE.md state it.
+  enum class Zero : uint8_t { Refused, NoLimit };
+  double rate(const std::string& key, double def, const char* unit, const char* desc, double lo,
+              double hi, Zero zero);
   bool boolean(const std::string& key, bool def, const char* desc);
   std::string text(const std::string& key, const std::string& def, const char* desc,
                    const std::vector<std::string>& choices = {});
@@ -57,6 +69,9 @@ class ConfigReader {
   const toml::node* take(const std::string& key, const char* type, const std::string& def,
                          const char* unit, const char* desc);
   void record(const std::string& key, nlohmann::ordered_json value);
+  // The number at node (def if absent) in [lo, hi], or 0 if zero_allowed.
+  double number(const std::string& key, const toml::node* node, double def, double lo, double hi,
+                bool zero_allowed);
   std::string full_key(const std::string& key) const;
 
   const toml::table* table_;
@@ -69,8 +84,9 @@ class ConfigReader {
 toml::table parse_config_file(const std::string& path, const std::string& what);
 
 // Applies "key=value" (value in TOML syntax; a bare word is a string) to the document,
-// creating sections as needed, and notes the key in ctx.set_keys; throws InputError naming
-// ctx.set_option for a malformed one.
+// creating sections as needed, and notes it in ctx.set_assignments; throws InputError naming
+// ctx.set_option for a malformed one or one nested deeper than kMaxTomlDepth
+// (traces/toml_text.h).
 void apply_override(toml::table& root, const std::string& assignment, ConfigReadContext& ctx);
 
 // Throws InputError for the first key of the document (by line) or of --set that was never

@@ -13,15 +13,23 @@
 #include "model/config/dram_presets.h"
 #include "traces/error.h"
 #include "traces/memory_plan.h"
+#include "traces/toml_text.h"
 
 namespace rtsim {
 namespace {
 
 constexpr uint64_t kMaxU32 = 0xffffffffull;
+using Zero = ConfigReader::Zero;
+// The slowest data port or crossbar link: a link books a transfer cycle by cycle
+// (model/mem/crossbar.h), so a 4 KB line at 1 byte a cycle already costs 4,096 steps; slower
+// ports made runs endless, and 1e-30 pushed event times past what SystemC represents.
+constexpr double kMinPortBytesPerCycle = 1;
+constexpr double kMaxBytesPerCycle = 1e6;
 
 void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
-  c.size_bytes = r.integer("size_bytes", c.size_bytes, "bytes",
-                           fmt::format("data capacity of {}", which).c_str(), 64, 1ull << 34);
+  c.size_bytes =
+      r.integer("size_bytes", c.size_bytes, "bytes",
+                fmt::format("data capacity of {}", which).c_str(), kMinCacheBytes, kMaxCacheBytes);
   c.line_bytes = uint32_t(
       r.integer("line_bytes", c.line_bytes, "bytes", "line size, a power of two", 4, 4096));
   c.sector_bytes = uint32_t(r.integer(
@@ -43,8 +51,9 @@ void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
       r.integer("banks", c.banks, "banks", "lines interleaved over them, a power of two", 1, 1024));
   c.bank_ports = uint32_t(r.integer("bank_ports", c.bank_ports, "lookups/cycle",
                                     "lookups one bank starts per cycle; 0 = no limit", 0, 1024));
-  c.bytes_per_cycle = r.real("bytes_per_cycle", c.bytes_per_cycle, "bytes/cycle",
-                             "data port bandwidth (reads and writes); 0 = no limit", 0, 1e6);
+  c.bytes_per_cycle = r.rate("bytes_per_cycle", c.bytes_per_cycle, "bytes/cycle",
+                             "data port bandwidth (reads and writes)", kMinPortBytesPerCycle,
+                             kMaxBytesPerCycle, Zero::NoLimit);
 }
 
 void read_shader(ConfigReader r, ShaderConfig& c) {
@@ -196,9 +205,11 @@ void read_ray_buffer(ConfigReader& tq, RayBufferConfig& b) {
   b.overflow = overflow == "spill" ? RayBufferOverflow::Spill : RayBufferOverflow::Hold;
   b.banks = uint32_t(
       tq.integer("buffer_banks", b.banks, "banks", "SRAM banks, each with its own port", 1, 1024));
-  b.bytes_per_cycle =
-      uint32_t(tq.integer("buffer_bytes_per_cycle", b.bytes_per_cycle, "bytes/cycle",
-                          "each SRAM bank's port, reads and writes; 0: no limit", 0, kMaxU32));
+  b.bytes_per_cycle = uint32_t(
+      tq.integer("buffer_bytes_per_cycle", b.bytes_per_cycle, "bytes/cycle",
+                 "each SRAM bank's port, reads and writes, in whole bytes; 0 = no limit, else 1 to "
+                 "4294967295",
+                 0, kMaxU32));
   b.latency = uint32_t(tq.integer("buffer_latency", b.latency, "cycles",
                                   "SRAM access after the transfer", 0, 100000));
 }
@@ -229,8 +240,8 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
 
   ConfigReader dispatch = r.section("dispatch");
   c.dispatch.rays_per_cycle =
-      dispatch.real("rays_per_cycle", c.dispatch.rays_per_cycle, "rays/cycle",
-                    "ray delivery bandwidth to all units", 0.001, 1e6);
+      dispatch.rate("rays_per_cycle", c.dispatch.rays_per_cycle, "rays/cycle",
+                    "ray delivery bandwidth to all units", 0.001, 1e6, Zero::Refused);
   c.dispatch.latency = uint32_t(dispatch.integer(
       "latency", c.dispatch.latency, "cycles", "from delivery to arrival at the unit", 0, 100000));
 
@@ -381,9 +392,10 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.l2_layout.crossbar.latency =
       uint32_t(xbar.integer("latency", c.l2_layout.crossbar.latency, "cycles",
                             "crossbar between L1s and L2 slices, each way", 0, 100000));
-  c.l2_layout.crossbar.bytes_per_cycle = xbar.real(
-      "bytes_per_cycle", c.l2_layout.crossbar.bytes_per_cycle, "bytes/cycle",
-      "each crossbar port (one per RT unit, one per slice), each direction; 0 = no limit", 0, 1e6);
+  c.l2_layout.crossbar.bytes_per_cycle =
+      xbar.rate("bytes_per_cycle", c.l2_layout.crossbar.bytes_per_cycle, "bytes/cycle",
+                "each crossbar port (one per RT unit, one per slice), each direction",
+                kMinPortBytesPerCycle, kMaxBytesPerCycle, Zero::NoLimit);
 
   ConfigReader dram = r.section("dram");
   std::string model = dram.text("model", c.dram_model == DramModel::Banked ? "banked" : "simple",
@@ -391,8 +403,9 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                 "row buffers, refresh and a scheduling controller",
                                 {"simple", "banked"});
   c.dram_model = model == "banked" ? DramModel::Banked : DramModel::Simple;
-  c.dram.bytes_per_cycle = dram.real("bytes_per_cycle", c.dram.bytes_per_cycle, "bytes/cycle",
-                                     "simple: peak bandwidth of the data bus", 0.001, 1e6);
+  c.dram.bytes_per_cycle =
+      dram.rate("bytes_per_cycle", c.dram.bytes_per_cycle, "bytes/cycle",
+                "simple: peak bandwidth of the data bus", 0.001, kMaxBytesPerCycle, Zero::Refused);
   c.dram.latency =
       uint32_t(dram.integer("latency", c.dram.latency, "cycles",
                             "simple: from the end of a transfer to data ready", 0, 1000000));
@@ -482,6 +495,19 @@ ConfigReadContext resolve(const HwConfig& config) {
   return ctx;
 }
 
+// The file's keys with the overrides applied, each checked on its own (type, range, unknown).
+HwConfig read_keys(const std::string& path, const std::vector<std::string>& overrides,
+                   ConfigReadContext& ctx) {
+  toml::table root = parse_config_file(path, "hardware config");
+  ctx.file = path.empty() ? "(defaults)" : path;
+  for (const std::string& assignment : overrides) apply_override(root, assignment, ctx);
+  HwConfig config;
+  ConfigReader reader(&root, "", ctx);
+  read_hw_config(reader, config);
+  check_unknown_keys(root, ctx);
+  return config;
+}
+
 }  // namespace
 
 BankedDramConfig dram_preset_config(const std::string& name) {
@@ -493,13 +519,7 @@ BankedDramConfig dram_preset_config(const std::string& name) {
     throw_input_error("dram.preset", "",
                       fmt::format("'{}' is not a DRAM preset (known: {})", name,
                                   fmt::join(dram_preset_names(), ", ")));
-  toml::table root;
-  try {
-    root = toml::parse(it->toml, file);
-  } catch (const toml::parse_error& e) {
-    throw_input_error(file, fmt::format("line {}", e.source().begin.line),
-                      std::string(e.description()));
-  }
+  toml::table root = parse_toml(it->toml, file);
   ConfigReadContext ctx;
   ctx.file = file;
   ConfigReader reader(&root, "", ctx);
@@ -634,20 +654,28 @@ std::string hw_config_problem(const HwConfig& c) {
 }
 
 HwConfig load_hw_config(const std::string& path, const std::vector<std::string>& overrides) {
-  toml::table root = parse_config_file(path, "hardware config");
-  std::string file = path.empty() ? "(defaults)" : path;
   ConfigReadContext ctx;
-  ctx.file = file;
-  for (const std::string& assignment : overrides) apply_override(root, assignment, ctx);
-  HwConfig config;
-  ConfigReader reader(&root, "", ctx);
-  read_hw_config(reader, config);
-  check_unknown_keys(root, ctx);
+  HwConfig config = read_keys(path, overrides, ctx);
   std::string problem = hw_config_problem(config);
-  if (!problem.empty()) throw_input_error(file, "", problem);
+  if (!problem.empty())
+    throw_input_error(config_culprit(path, overrides, hw_config_problem), "", problem);
   SimHostMemory memory = sim_host_memory(config);
-  require_memory(memory.bytes, file, "simulating this machine", "lower " + memory.largest);
+  if (memory.bytes > available_memory_bytes()) {
+    auto too_big = [](const HwConfig& c) {
+      return std::string(sim_host_memory(c).bytes > available_memory_bytes() ? "too big" : "");
+    };
+    require_memory(memory.bytes, config_culprit(path, overrides, too_big),
+                   "simulating this machine", "lower " + memory.largest);
+  }
   return config;
+}
+
+std::string config_culprit(const std::string& path, const std::vector<std::string>& overrides,
+                           const std::function<std::string(const HwConfig&)>& problem_of) {
+  ConfigReadContext alone, both;
+  if (overrides.empty() || !problem_of(read_keys(path, {}, alone)).empty()) return alone.file;
+  read_keys(path, overrides, both);
+  return both.set_places();
 }
 
 std::vector<HwConfigKey> hw_config_keys() {

@@ -5,6 +5,7 @@
 // model/SIM-REFERENCE.md lists them all, and `rtsim sim --list-keys` prints them.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@
 #include "model/sched/treelet_scheduler.h"
 
 namespace rtsim {
+
+// The limits of a cache's size_bytes (rt.l1, l2), also for the sizes `rtsim curve` sets.
+constexpr uint64_t kMinCacheBytes = 64;
+constexpr uint64_t kMaxCacheBytes = 1ull << 34;
 
 struct SimulationConfig {
   uint32_t quantum_cycles = 16;  // cycles: how far a unit runs ahead of SystemC time
@@ -91,6 +96,12 @@ struct HwConfigKey {
 // a value out of range, an unknown key, an impossible combination, or a machine whose
 // simulation would not fit the memory available (sim_host_memory).
 HwConfig load_hw_config(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// What an error about a problem of the loaded config names: the overrides ("--set A=1 --set
+// B=2") when the file alone is free of it (problem_of returns empty), else the file
+// ("(defaults)" without one).
+std::string config_culprit(const std::string& path, const std::vector<std::string>& overrides,
+                           const std::function<std::string(const HwConfig&)>& problem_of);
 
 // Every key of the config, in file order, with its default.
 std::vector<HwConfigKey> hw_config_keys();

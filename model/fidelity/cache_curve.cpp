@@ -5,6 +5,7 @@
 #include <ctime>
 #include <map>
 #include <memory>
+#include <set>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -73,10 +74,14 @@ double cycles_along(const CurvePoint& p, const CurvePoint& a, const CurvePoint& 
 
 }  // namespace
 
-std::string curve_request_problem(const HwConfig& c, const CurveRequest& request) {
+std::string curve_config_problem(const HwConfig& c) {
   if (c.rt.mode != TraversalMode::DepthFirst)
     return "rt.mode: the curve's pass runs rays depth-first, as the cache level does; use "
            "rt.mode = \"depth_first\"";
+  return {};
+}
+
+std::string curve_request_problem(const HwConfig& c, const CurveRequest& request) {
   if (request.capacities.empty() || request.ways.empty()) return "no capacities or ways";
   for (uint32_t ways : request.ways) {
     if (ways < 1 || ways > LruStackSets::kMaxWays)
@@ -98,6 +103,29 @@ std::string curve_request_problem(const HwConfig& c, const CurveRequest& request
     }
   }
   return {};
+}
+
+uint64_t curve_host_bytes(const HwConfig& c, const CurveRequest& request, bool cycle_runs) {
+  auto [smallest, largest] =
+      std::minmax_element(request.capacities.begin(), request.capacities.end());
+  uint32_t ways = request.ways.front();
+  uint64_t l1s = c.rt_units * Cache::host_bytes(c.l1);
+  uint64_t pass = l1s + Cache::host_bytes(l2_at(c, *smallest, ways));  // the walk
+  uint32_t max_ways = *std::max_element(request.ways.begin(), request.ways.end());
+  std::set<uint64_t> stacks;  // their sets per slice: one stack each
+  for (uint32_t w : request.ways)
+    for (uint64_t capacity : request.capacities) {
+      if (request.sample_rate > 1) {
+        pass += Cache::host_bytes(l2_at(c, capacity / request.sample_rate, w));
+        continue;
+      }
+      uint64_t sets = sets_per_slice(c, capacity, w);
+      if (stacks.insert(sets).second)
+        pass += LruStackSets::host_bytes(
+            {c.l2.line_bytes, block_bytes(c.l2), c.l2_layout.slices, sets}, max_ways);
+    }
+  uint64_t full = cycle_runs ? l1s + Cache::host_bytes(l2_at(c, *largest, ways)) : 0;
+  return std::max(pass, full);
 }
 
 CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::string& stream,

@@ -61,10 +61,19 @@ struct CacheCurve {
   double cpu_seconds = 0;          // of the pass
 };
 
+// Why the pass cannot run on this config (empty if it can): a traversal mode whose order the
+// pass does not run (treelet queues, packets).
+std::string curve_config_problem(const HwConfig& config);
+
 // Why the request cannot be answered for this config (empty if it can): capacities that give no
 // whole number of sets per slice, associativities out of range, a rate the sets do not divide
-// by, a traversal mode whose order the pass does not run (treelet queues, packets).
+// by.
 std::string curve_request_problem(const HwConfig& config, const CurveRequest& request);
+
+// Host bytes the request's caches take at the most (for a request curve_request_problem
+// accepts): the pass's stacks or miniatures and its walk's L1s and L2, or, with cycle_runs, the
+// full model's caches at the largest capacity, whichever is more (they do not live at once).
+uint64_t curve_host_bytes(const HwConfig& config, const CurveRequest& request, bool cycle_runs);
 
 // The pass: the cache level's walk over the stream, every point counted on the way.
 CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::string& stream,

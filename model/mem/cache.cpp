@@ -92,6 +92,13 @@ Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
   for (uint32_t i = 0; i < config.mshrs; ++i) free_mshrs_.push(0);
 }
 
+uint64_t Cache::host_bytes(const CacheConfig& c) {
+  uint64_t lines = c.size_bytes / c.line_bytes;
+  uint64_t blocks_per_line = c.line_bytes / rtsim::block_bytes(c);
+  return lines * (sizeof(uint64_t) + blocks_per_line * sizeof(Block)) +
+         lines / c.ways * sizeof(uint32_t);
+}
+
 Cycle Cache::admit(uint64_t line, uint64_t bytes, Cycle at) {
   Cycle start = at;
   if (config_.bank_ports > 0) {

@@ -101,6 +101,9 @@ class Cache : public MemoryTarget, private ReadClient {
  public:
   // Throws std::invalid_argument for an impossible config (see cache_config_problem).
   Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role = CacheRole::L2);
+  // Host bytes of the arrays such a cache allocates with its capacity (tags, block records, per
+  // set counts), for planning memory before building one (traces/memory_plan.h).
+  static uint64_t host_bytes(const CacheConfig& config);
 
   // Asks the host to bring what a lookup of addr reads (its set's tags, and its block in each
   // way) into its caches, for a lookup that comes later (a hint: changes nothing modelled).

@@ -35,6 +35,11 @@ LruStackSets::LruStackSets(const L2Sets& sets, uint32_t max_ways)
   writeback_distance_.assign(max_ways + 1, 0);
 }
 
+uint64_t LruStackSets::host_bytes(const L2Sets& sets, uint32_t max_ways) {
+  uint64_t set_count = uint64_t(sets.slices) * sets.sets_per_slice;
+  return set_count * (max_ways * sizeof(Entry) + sizeof(uint8_t));
+}
+
 LruStackSets::Entry LruStackSets::fresh(uint64_t line) const {
   Entry e;
   e.line = line;

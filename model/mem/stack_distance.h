@@ -40,6 +40,8 @@ class LruStackSets {
   static constexpr uint32_t kMaxBlocksPerLine = 16;
   // Throws std::invalid_argument for max_ways outside 1..kMaxWays or a line of more blocks.
   LruStackSets(const L2Sets& sets, uint32_t max_ways);
+  // Host bytes of the stacks such an object allocates, for planning memory before building one.
+  static uint64_t host_bytes(const L2Sets& sets, uint32_t max_ways);
 
   // One reference to the block holding addr (a read, or a write of the whole block).
   void reference(uint64_t addr, bool write);

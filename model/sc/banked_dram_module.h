@@ -19,6 +19,7 @@
 // cycle in another order.
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include <systemc>
@@ -46,6 +47,13 @@ class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
   void set_response_lead(uint32_t lead);
   uint32_t max_response_lead() const;
   Cycle next_event() const { return controller_.next_event(); }
+  // The cycle decide() is woken for (kPending: none): a decision of cycle c is taken up to
+  // 1 + slack cycles later, or at once (in a delta cycle) when a request comes for a cycle
+  // already past. So this, not next_event(), says when the DRAM acts next: what the stall
+  // watchdog must wait for.
+  Cycle next_wake() const {
+    return armed_ == kPending ? kPending : std::max(armed_, clock_.cycles(sim_now()));
+  }
   // By call (QueuedMemory); a module takes its requests by call or through `in`, not both.
   void answer_to(ReadClient& client) override { client_ = &client; }
   void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, uint64_t token) override;

@@ -10,14 +10,15 @@
 #include <exception>
 #include <stdexcept>
 
+#include "model/sc/stall_watchdog.h"
 #include "traces/child_process.h"
 #include "traces/error.h"
 
 namespace rtsim {
 namespace {
 
-// A child's exit code: it returned, it threw InputError, it threw anything else.
-enum ChildExit { kDone = 0, kFailed = 1, kBadInput = 2 };
+// A child's exit code: it returned, it threw InputError, SimStallError, anything else.
+enum ChildExit { kDone = 0, kFailed = 1, kBadInput = 2, kStalled = 3 };
 
 struct Child {
   pid_t pid = -1;
@@ -48,6 +49,9 @@ Child start_child(const std::function<std::string()>& fn, size_t task) {
     } catch (const InputError& e) {
       text = e.what();
       code = kBadInput;
+    } catch (const SimStallError& e) {
+      text = e.what();
+      code = kStalled;
     } catch (const std::exception& e) {
       text = e.what();
       code = kFailed;
@@ -77,7 +81,7 @@ Failure finish_child(const Child& c, const std::string& text) {
   if (!WIFEXITED(status)) return {kFailed, "simulation child process died"};
   int code = WEXITSTATUS(status);
   if (code == kDone) return {};
-  return {code == kBadInput ? kBadInput : kFailed,
+  return {code == kBadInput || code == kStalled ? code : kFailed,
           text.empty() ? "simulation child process failed" : text};
 }
 
@@ -114,6 +118,7 @@ std::vector<std::string> run_in_children(const std::vector<std::function<std::st
     }
   }
   if (failure.code == kBadInput) throw InputError(failure.message);
+  if (failure.code == kStalled) throw SimStallError(failure.message);
   if (failure.code != kDone) throw std::runtime_error(failure.message);
   return out;
 }

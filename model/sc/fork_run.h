@@ -13,7 +13,8 @@ namespace rtsim {
 // Runs the functions in child processes, up to `jobs` at a time, in the order given, and
 // returns each one's text in that order. If one throws or its child dies, starts no more,
 // waits for the running children and throws that child's message: as InputError if the child
-// threw InputError (bad input stays exit code 2), else as std::runtime_error. The children
+// threw InputError (bad input stays exit code 2), as SimStallError if it threw that (a stall
+// stays exit code 1), else as std::runtime_error. The children
 // must not use threads that the parent started (Embree's): build such things inside fn.
 std::vector<std::string> run_in_children(const std::vector<std::function<std::string()>>& work,
                                          unsigned jobs);

@@ -162,11 +162,11 @@ Cycle RtSimulator::cycles() const {
 }
 
 Cycle RtSimulator::next_delivery() const {
-  Cycle next = l2_->next_job();
-  if (banked_dram_) next = std::min(next, banked_dram_->next_event());
+  Cycle now = clock_.cycles(sim_now()), next = l2_->next_job();
+  if (banked_dram_) next = std::min(next, banked_dram_->next_wake());
   for (const auto& unit : units_) {
     if (unit->core().has_event()) next = std::min(next, unit->core().next_event());
-    if (unit->shader()) next = std::min(next, unit->shader()->next_wake());
+    if (unit->shader()) next = std::min(next, unit->shader()->next_wake(now));
   }
   return next;
 }
@@ -182,10 +182,11 @@ std::string RtSimulator::dump() const {
     out << unit->core().dump();
     if (unit->shader()) out << unit->shader()->dump();
   }
-  out << "l2: " << l2_->queued() << " requests and DRAM reads queued\n";
+  out << "l2: " << l2_->queued() << " requests and DRAM reads queued, next at cycle "
+      << l2_->next_job() << "\n";
   if (banked_dram_)
     out << "dram: " << banked_dram_->controller().queued() << " bursts queued, next decision "
-        << banked_dram_->next_event() << "\n";
+        << banked_dram_->next_event() << ", taken at cycle " << banked_dram_->next_wake() << "\n";
   return out.str();
 }
 

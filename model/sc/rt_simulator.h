@@ -11,7 +11,6 @@
 #include <array>
 #include <functional>
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,12 +27,6 @@
 #include "model/sched/stats_registry.h"
 
 namespace rtsim {
-
-// A run that stopped making progress, or ran out of events with rays unfinished.
-class SimStallError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 class RtSimulator {
  public:
@@ -85,9 +78,9 @@ class RtSimulator {
 
  private:
   void on_handed(const RayContext& ray);
-  // The earliest cycle the L2 serves a queued request or a unit has an event, such as data a
-  // read was promised (kPending: none): what the stall watchdog waits for before calling a run
-  // stuck.
+  // The earliest cycle the L2 serves a queued request, the DRAM takes its next decision on the
+  // requests it holds, or a unit has an event, such as data a read was promised (kPending:
+  // none): what the stall watchdog waits for before calling a run stuck.
   Cycle next_delivery() const;
   void report_all(StatsRegistry& stats, Cycle end) const;  // the whole run's stats so far
   bool warmup() const { return config_.sim.warmup_rays > 0 || config_.sim.warmup_frames > 0; }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <functional>
+#include <stdexcept>
 #include <string>
 
 #include <systemc>
@@ -18,6 +19,13 @@
 #include "model/sc/ray_supply_if.h"
 
 namespace rtsim {
+
+// A run that stopped making progress, or ran out of events with rays unfinished: exit code 1
+// (app/cli_main.cpp), also from a forked child (model/sc/fork_run.h).
+class SimStallError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 class StallWatchdog : public sc_core::sc_module {
  public:

@@ -78,7 +78,7 @@ size_t ShaderCore::take(uint32_t unit, Cycle now, size_t max, std::vector<RayCon
       starved_since_ = now;
       stats_.slot_waits++;
     }
-    Cycle next = next_wake();
+    Cycle next = next_wake(now);
     if (next != kPending) wake_(next);
     return 0;
   }
@@ -170,11 +170,11 @@ void ShaderCore::free_slot(uint32_t index) {
   if (starved_since_ != kPending) wake_(w.free_at);
 }
 
-Cycle ShaderCore::next_wake() const {
+Cycle ShaderCore::next_wake(Cycle now) const {
   Cycle next = kPending;
-  if (starved_since_ == kPending) return next;
+  if (starved_since_ == kPending && !upstream_.exhausted()) return next;
   for (const Warp& w : warps_)
-    if (w.free_at > starved_since_) next = std::min(next, w.free_at);
+    if (w.free_at >= now) next = std::min(next, w.free_at);
   return next;
 }
 

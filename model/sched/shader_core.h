@@ -87,9 +87,10 @@ class ShaderCore : public RaySupply, private ReadClient {
 
   const ShaderStats& stats() const { return stats_; }
   const ShaderConfig& config() const { return config_; }
-  // While the unit waits for a warp slot: the cycle the first one frees (kPending: none
-  // known, or the unit does not wait), for the stall watchdog.
-  Cycle next_wake() const;
+  // While the unit waits for a warp slot, or, the stream exhausted, for the last warps to
+  // finish shading: the first cycle from `now` on that a warp frees (kPending: none known, or
+  // the unit does not wait), for the stall watchdog.
+  Cycle next_wake(Cycle now) const;
   std::string dump() const;
 
  private:

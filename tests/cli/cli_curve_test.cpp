@@ -30,7 +30,7 @@ TEST(CliCurve, WritesTheCurveAndRefusesBadSizes) {
   r = run_rtsim("curve " + stream + " --l2 4K --set rt.mode=treelet");  // not what the pass runs
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("curve: the default config: rt.mode"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("curve: --set rt.mode=treelet: rt.mode"), std::string::npos) << r.err;
   r = run_rtsim("curve " + stream + " --l2 4K --simulate 3K");  // a point added, run in full
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("3 KiB"), std::string::npos) << r.out;

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "model/sc/fork_run.h"
+#include "model/sc/stall_watchdog.h"
 #include "traces/error.h"
 
 namespace rtsim {
@@ -27,6 +28,15 @@ TEST(ForkRun, BadInputInAChildIsBadInputInTheParent) {
     FAIL() << "no exception";
   } catch (const InputError& e) {
     EXPECT_STREQ(e.what(), "x.rays: offset 12: truncated");
+  }
+}
+
+TEST(ForkRun, AStallInAChildIsAStallInTheParent) {  // exit 1 from validate, not 3
+  try {
+    run_in_child([]() -> std::string { throw SimStallError("no progress for 9 cycles"); });
+    FAIL() << "no exception";
+  } catch (const SimStallError& e) {
+    EXPECT_STREQ(e.what(), "no progress for 9 cycles");
   }
 }
 

@@ -75,6 +75,34 @@ TEST(SimStall, PromisedDataDefersTheDeadlineUntilItIsOverdue) {
   EXPECT_NE(report.find("stopped at cycle 25000"), std::string::npos) << report;
 }
 
+// The banked DRAM takes the decisions of a cycle up to its response lead later (hundreds of
+// cycles), or in a delta cycle for a request that comes late: requests it holds are work
+// scheduled, so a stall_cycles below that is no stall.
+TEST(SimStall, AStallCyclesBelowTheDramLatencyIsNoStall) {
+  test::SimScene s;
+  std::vector<Ray> rays = test::mixed_rays(s.scene, 200, 1);
+  auto run = [&](uint64_t stall_cycles) {
+    return run_in_child([&] {
+      HwConfig config = test::small_machine();
+      config.sim.stall_cycles = stall_cycles;
+      config.banked_dram.controller_latency = 300;
+      BvhImage image = build_bvh_image(s.scene.mesh, config.bvh);
+      VectorRaySource source(rays);
+      RtSimulator sim(config, image, source);
+      try {
+        sim.run();
+      } catch (const SimStallError& e) {
+        return std::string(e.what());
+      }
+      return std::to_string(sim.rays()) + " rays in " + std::to_string(sim.cycles()) + " cycles";
+    });
+  };
+  for (uint64_t stall_cycles : {10, 200000}) {
+    std::string result = run(stall_cycles);
+    EXPECT_EQ(result.find(std::to_string(rays.size()) + " rays in "), 0u) << result;
+  }
+}
+
 // Takes the simulator's state dump when the first ray retires (rt0's), with the machine full.
 struct DumpAtFirstRetire : RayRetireListener {
   const RtSimulator* sim = nullptr;

@@ -99,14 +99,24 @@ TEST(ShaderCore, AWarpShadesAfterItsSlowestRayAndFreesItsSlotAfterwards) {
   EXPECT_EQ(rig.memory.reads[0].at, 260u);
   EXPECT_EQ(rig.shader.stats().hit_cycles, 150u);
   EXPECT_EQ(rig.shader.stats().miss_cycles, 25u);
-  EXPECT_EQ(rig.shader.next_wake(), kPending) << "nobody waits";
+  EXPECT_EQ(rig.shader.next_wake(260), kPending) << "nobody waits";
   EXPECT_TRUE(rig.take(shaded - 1, 3).empty());
   ASSERT_FALSE(rig.wakes.empty());
   EXPECT_EQ(rig.wakes.back(), shaded) << "the waiting unit is woken when the slot frees";
-  EXPECT_EQ(rig.shader.next_wake(), shaded) << "what the stall watchdog waits for";
+  EXPECT_EQ(rig.shader.next_wake(shaded - 1), shaded) << "what the stall watchdog waits for";
   EXPECT_EQ(rig.take(shaded, 3).size(), 1u);
   EXPECT_EQ(rig.shader.stats().slot_wait_cycles, 1u);
-  EXPECT_EQ(rig.shader.next_wake(), kPending);
+  EXPECT_EQ(rig.shader.next_wake(shaded), kPending);
+}
+
+TEST(ShaderCore, TheLastWarpsShadingIsWhatTheWatchdogWaitsFor) {
+  Rig rig(rays_of({RayType::Camera}), one_warp());
+  std::vector<RayContext*> warp = rig.take(0, 1);
+  ASSERT_EQ(warp.size(), 1u);
+  rig.retire(warp[0], 200, false);  // the stream's last ray: the unit waits for its shading
+  Cycle shaded = 200 + 20 + 25;     // the hand-off, then miss shading
+  EXPECT_EQ(rig.shader.next_wake(201), shaded) << "no stall while the last warp shades";
+  EXPECT_EQ(rig.shader.next_wake(shaded + 1), kPending) << "nothing left";
 }
 
 TEST(ShaderCore, AWarpWithNoShaderWorkDoesNotWaitForAScheduler) {

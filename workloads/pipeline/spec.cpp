@@ -1,7 +1,6 @@
 // Every key of a workload spec is read here, once, with its default, unit and description.
 #include "workloads/pipeline/spec.h"
 
-#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 #include <cmath>
@@ -11,6 +10,7 @@
 #include <sstream>
 
 #include "traces/error.h"
+#include "traces/toml_text.h"
 #include "workloads/pipeline/spec_reader.h"
 #include "workloads/scene.h"
 
@@ -310,13 +310,7 @@ bool parse_resolution(const std::string& text, uint32_t& width, uint32_t& height
 }
 
 WorkloadSpec parse_spec(const std::string& text, const std::string& file) {
-  toml::table root;
-  try {
-    root = toml::parse(text, file);
-  } catch (const toml::parse_error& e) {
-    throw_input_error(file, fmt::format("line {}", e.source().begin.line),
-                      std::string(e.description()));
-  }
+  toml::table root = parse_toml(text, file);
   SpecReadContext ctx;
   ctx.file = file;
   WorkloadSpec spec;
