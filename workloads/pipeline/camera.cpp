@@ -9,6 +9,7 @@
 #include "traces/instance_settings.h"
 #include "workloads/pipeline/offset.h"
 #include "workloads/pipeline/sampling.h"
+#include "workloads/scene.h"
 
 namespace rtsim::pipeline {
 namespace {
@@ -201,7 +202,10 @@ View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const Embre
         std::cos(elevation) * (std::cos(azimuth) * basis.t + std::sin(azimuth) * basis.b) +
         std::sin(elevation) * up;
     glm::vec3 position = c + dir * distance;
-    float cov = coverage(embree, position, c, up, fov, aspect);
+    // Too far out to trace from (a narrow view of a huge scene): not probed; if none can be,
+    // the first is returned for the pipeline to refuse.
+    float cov = point_problem(position).empty() ? coverage(embree, position, c, up, fov, aspect)
+                                                : -0.5f;
     if (cov > best + 1e-3f) {
       best = cov;
       view.position = position;

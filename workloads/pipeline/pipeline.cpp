@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 
+#include "traces/error.h"
 #include "workloads/pipeline/pass_camera.h"
 #include "workloads/pipeline/pass_gi.h"
+#include "workloads/scene.h"
 
 namespace rtsim::pipeline {
 namespace {
@@ -79,6 +81,11 @@ Pipeline::Pipeline(const WorkloadSpec& spec, const Scene& scene, const EmbreeSce
   if (!spec.camera.position || !spec.camera.look_at)
     auto_fit_ = auto_view(materials_.triangles, scene.bounds, embree, spec.camera.up,
                           spec.camera.fov, float(spec.width) / float(spec.height));
+  // A narrow field of view or an extreme aspect can push the fitted camera far out.
+  if (std::string problem = point_problem(auto_fit_.position); !problem.empty())
+    throw_input_error(spec.file.empty() ? spec.name : spec.file, "camera",
+                      "the position of the camera fit to the scene, " + problem +
+                          "; set camera.position and camera.look_at");
   summary_.workload = spec.name;
   summary_.scene_source = scene.source;
   summary_.triangles = scene.triangle_count();
