@@ -133,6 +133,20 @@ bool writes_regular_file(const std::string& path) {
   return ::stat(path.c_str(), &info) != 0 || S_ISREG(info.st_mode);
 }
 
+void check_output_path(const std::string& path, const std::string& option) {
+  std::error_code error;
+  std::string target = output_target(path);
+  if (fs::is_directory(target, error))
+    throw_input_error(path, option, "is a folder; give a file path");
+  if (!writes_regular_file(target)) return;
+  fs::path folder = fs::path(target).parent_path();
+  if (folder.empty()) folder = ".";
+  if (!fs::is_directory(folder, error))
+    throw_input_error(path, option, "its folder " + folder.string() + " does not exist");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw_input_error(path, option, "its folder " + folder.string() + " is not writable");
+}
+
 namespace {
 
 // What a path names: its device and inode where it exists, else its absolute path with links
@@ -159,8 +173,7 @@ void refuse_overwriting(const std::vector<NamedPath>& inputs,
       if (other_identity == identity)
         throw_input_error(output.path, output.option,
                           "is the same file as " + other->option + " (" + other->path +
-                              "); writing it would replace that; choose another " +
-                              output.option);
+                              "); writing it would replace that; choose another " + output.option);
     named.emplace_back(identity, &output);
   }
 }

@@ -37,6 +37,11 @@ std::string output_target(const std::string& path);
 // than writing into a device, FIFO or socket in place.
 bool writes_regular_file(const std::string& path);
 
+// Throws InputError naming path and option unless a file can be written there: a folder, or a
+// path whose folder is missing or not writable, is refused (a device, FIFO or socket is written
+// in place and passes). Commands call it before any work, so a bad path is not found hours later.
+void check_output_path(const std::string& path, const std::string& option);
+
 // A file a command reads or writes, and the option (or argument) that names it, for messages.
 struct NamedPath {
   std::string option, path;

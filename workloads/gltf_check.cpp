@@ -517,9 +517,9 @@ std::vector<size_t> node_parents(const std::string& path, const GltfNodeTree& tr
                           fmt::format("child {} does not exist (the file has {} nodes)", child,
                                       tree.nodes.size()));
       if (parent[child] == n)
-        throw_input_error(path, place,
-                          fmt::format("lists child {} twice; glTF node hierarchies are trees",
-                                      child));
+        throw_input_error(
+            path, place,
+            fmt::format("lists child {} twice; glTF node hierarchies are trees", child));
       if (parent[child] != kNoParent)
         throw_input_error(path, fmt::format("node {}", child),
                           fmt::format("has two parents, nodes {} and {}; glTF node hierarchies "
@@ -532,7 +532,7 @@ std::vector<size_t> node_parents(const std::string& path, const GltfNodeTree& tr
 
 // No node is its own ancestor, and none lies deeper than kMaxNodeDepth.
 void check_node_depths(const std::string& path, const std::vector<size_t>& parent) {
-  std::vector<size_t> depth(parent.size(), 0);  // 1: a root; 0: not known yet
+  std::vector<size_t> depth(parent.size(), 0);                // 1: a root; 0: not known yet
   std::vector<size_t> walked_from(parent.size(), kNoParent);  // the walk that passed the node
   std::vector<size_t> chain;  // the walk's nodes of unknown depth, child first
   for (size_t n = 0; n < parent.size(); ++n) {
@@ -562,15 +562,14 @@ void check_scene_roots(const std::string& path, const std::vector<size_t>& roots
   std::string place = fmt::format("scenes[{}]", scene);
   for (size_t root : roots) {
     if (root >= parent.size())
-      throw_input_error(path, place,
-                        fmt::format("node {} does not exist (the file has {} nodes)", root,
-                                    parent.size()));
+      throw_input_error(
+          path, place,
+          fmt::format("node {} does not exist (the file has {} nodes)", root, parent.size()));
     if (parent[root] != kNoParent)
-      throw_input_error(path, place,
-                        fmt::format("lists node {}, a child of node {}, as a root node", root,
-                                    parent[root]));
-    if (listed[root])
-      throw_input_error(path, place, fmt::format("lists node {} twice", root));
+      throw_input_error(
+          path, place,
+          fmt::format("lists node {}, a child of node {}, as a root node", root, parent[root]));
+    if (listed[root]) throw_input_error(path, place, fmt::format("lists node {} twice", root));
     listed[root] = true;
   }
 }

@@ -383,8 +383,8 @@ void write_file_atomic(const std::string& path, const std::string& bytes) {
 
 std::vector<std::string> sim_result_files(const std::string& dir) {
   std::vector<std::string> files;
-  for (const char* name : {"stats.json", "config.toml", "pixel_cycles.f32", "pixel_nodes.f32",
-                           "pixel_dram_bytes.f32"})
+  for (const char* name :
+       {"stats.json", "config.toml", "pixel_cycles.f32", "pixel_nodes.f32", "pixel_dram_bytes.f32"})
     files.push_back(dir + "/" + name);
   return files;
 }

@@ -9,7 +9,6 @@
 #include "traces/instance_settings.h"
 #include "workloads/pipeline/offset.h"
 #include "workloads/pipeline/sampling.h"
-#include "workloads/scene.h"
 
 namespace rtsim::pipeline {
 namespace {
@@ -120,6 +119,13 @@ bool room_view(const FlatTriangles& triangles, const EmbreeScene& embree, const 
 
 }  // namespace
 
+std::string camera_origin_problem(const glm::vec3& p) {
+  Ray ray;
+  ray.org = p;
+  ray.dir = glm::vec3(0.0f, 0.0f, -1.0f);
+  return ray_problem(ray);
+}
+
 Camera Camera::look_at(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up,
                        float fov_degrees, uint32_t width, uint32_t height) {
   Camera c;
@@ -204,8 +210,9 @@ View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const Embre
     glm::vec3 position = c + dir * distance;
     // Too far out to trace from (a narrow view of a huge scene): not probed; if none can be,
     // the first is returned for the pipeline to refuse.
-    float cov = point_problem(position).empty() ? coverage(embree, position, c, up, fov, aspect)
-                                                : -0.5f;
+    float cov = camera_origin_problem(position).empty()
+                    ? coverage(embree, position, c, up, fov, aspect)
+                    : -0.5f;
     if (cov > best + 1e-3f) {
       best = cov;
       view.position = position;

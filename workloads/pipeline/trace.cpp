@@ -30,22 +30,24 @@ std::string settings_note(const Scene& scene, const EmbreeScene& embree) {
                             seconds.size(), 1e3 * sum / double(seconds.size()));
 }
 
-// The spec and the scene file may not be replaced by the stream or the pictures, nor the stream
-// by a picture.
-void refuse_overwriting_inputs(const WorkloadSpec& spec, const TraceOptions& options) {
+// The outputs can be written, and replace neither the spec nor the scene file, nor the stream
+// a picture.
+void check_outputs(const WorkloadSpec& spec, const TraceOptions& options) {
   std::vector<NamedPath> inputs = {{"the workload spec", spec.file}};
   if (!is_builtin_scene(spec.scene)) inputs.push_back({"the scene", spec.scene});
   std::vector<NamedPath> outputs = {{"-o", options.output}};
   if (!options.preview.empty())
     for (const std::string& file : preview_files(options.preview))
       outputs.push_back({"--preview", file});
+  for (const NamedPath& output : outputs)
+    if (!output.path.empty()) check_output_path(output.path, output.option);
   refuse_overwriting(inputs, outputs);
 }
 
 }  // namespace
 
 TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& options) {
-  refuse_overwriting_inputs(requested, options);
+  check_outputs(requested, options);
   double start = wall_seconds();
   Scene scene = load_scene(requested.scene);
   WorkloadSpec spec = requested;
