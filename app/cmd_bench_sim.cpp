@@ -25,6 +25,7 @@
 #include "traces/embree_scene.h"
 #include "traces/error.h"
 #include "traces/host_clock.h"
+#include "traces/output_file.h"
 #include "workloads/scene.h"
 
 namespace rtsim::app {
@@ -128,6 +129,10 @@ int run_bench_sim(const BenchSimOptions& o) {
     return 2;
   }
   if (o.stream.empty()) reports::require_generated_ray_memory(o.rays, "--rays");
+  refuse_overwriting({{"--stream", o.stream},
+                      {"--config", o.config},
+                      {"--scene", is_builtin_scene(o.scene) ? "" : o.scene}},
+                     {{"--write-stream", o.write_stream}});
   HwConfig config = load_hw_config(o.config, o.sets);
   // A stream's scene as it was traced: its fingerprint checked, its instance settings applied.
   Scene scene = o.stream.empty() ? load_scene(o.scene)

@@ -21,6 +21,7 @@
 #include "model/sc/stream_sim.h"
 #include "traces/host_clock.h"
 #include "traces/error.h"
+#include "traces/output_file.h"
 #include "workloads/scene.h"
 
 namespace rtsim::app {
@@ -171,6 +172,12 @@ int run_sim(const SimOptions& o) {
   }
   if (o.stream.empty() || o.output.empty())
     throw InputError("sim: STREAM and -o DIR are required (or --list-keys)");
+  std::vector<NamedPath> outputs;
+  for (const std::string& file : sim_result_files(o.output)) outputs.push_back({"-o", file});
+  refuse_overwriting({{"the stream", o.stream},
+                      {"--config", o.config},
+                      {"--scene", is_builtin_scene(o.scene) ? "" : o.scene}},
+                     outputs);
   HwConfig config = load_hw_config(o.config, o.sets);
   RayStreamReader reader(o.stream);
   StreamHeader header = reader.header();

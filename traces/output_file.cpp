@@ -117,8 +117,7 @@ void lock_output_folder(const std::string& dir, const std::string& command) {
   held.insert(key);  // fd stays open: the lock lasts as long as the process
 }
 
-OutputFile::OutputFile(const std::string& path) : target_(path) {
-  // Follow links (also to a file that does not exist yet), as open() would; at most 40, as Linux.
+std::string output_target(const std::string& path) {
   fs::path target = path;
   std::error_code error;
   for (int depth = 0; depth < 40 && fs::is_symlink(fs::symlink_status(target, error)); ++depth) {
@@ -126,14 +125,67 @@ OutputFile::OutputFile(const std::string& path) : target_(path) {
     if (error) break;
     target = next.is_absolute() ? next : target.parent_path() / next;
   }
-  target_ = target.string();
+  return target.string();
+}
+
+bool writes_regular_file(const std::string& path) {
+  struct stat info {};
+  return ::stat(path.c_str(), &info) != 0 || S_ISREG(info.st_mode);
+}
+
+void check_output_path(const std::string& path, const std::string& option) {
+  std::error_code error;
+  std::string target = output_target(path);
+  if (fs::is_directory(target, error))
+    throw_input_error(path, option, "is a folder; give a file path");
+  if (!writes_regular_file(target)) return;
+  fs::path folder = fs::path(target).parent_path();
+  if (folder.empty()) folder = ".";
+  if (!fs::is_directory(folder, error))
+    throw_input_error(path, option, "its folder " + folder.string() + " does not exist");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw_input_error(path, option, "its folder " + folder.string() + " is not writable");
+}
+
+namespace {
+
+// What a path names: its device and inode where it exists, else its absolute path with links
+// resolved.
+std::string file_identity(const std::string& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) == 0)
+    return std::to_string(info.st_dev) + ":" + std::to_string(info.st_ino);
+  std::error_code error;
+  return fs::weakly_canonical(fs::absolute(output_target(path), error), error).string();
+}
+
+}  // namespace
+
+void refuse_overwriting(const std::vector<NamedPath>& inputs,
+                        const std::vector<NamedPath>& outputs) {
+  std::vector<std::pair<std::string, const NamedPath*>> named;  // identity, and who named it
+  for (const NamedPath& input : inputs)
+    if (!input.path.empty()) named.emplace_back(file_identity(input.path), &input);
+  for (const NamedPath& output : outputs) {
+    if (output.path.empty() || !writes_regular_file(output.path)) continue;
+    std::string identity = file_identity(output.path);
+    for (const auto& [other_identity, other] : named)
+      if (other_identity == identity)
+        throw_input_error(output.path, output.option,
+                          "is the same file as " + other->option + " (" + other->path +
+                              "); writing it would replace that; choose another " + output.option);
+    named.emplace_back(identity, &output);
+  }
+}
+
+OutputFile::OutputFile(const std::string& path) : target_(output_target(path)) {
   struct stat info {};
   bool exists = ::stat(target_.c_str(), &info) == 0;
   renames_ = !exists || S_ISREG(info.st_mode);
   sequential_ = exists && (S_ISFIFO(info.st_mode) || S_ISSOCK(info.st_mode));
   write_path_ = renames_ ? target_ + ".tmp-" + std::to_string(getpid()) : target_;
   if (!renames_) return;
-  remove_stale_temporaries(target);
+  remove_stale_temporaries(target_);
   pending_ = remember(write_path_);
 }
 

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace rtsim {
 
@@ -27,6 +28,33 @@ void lock_output_folder(const std::string& dir, const std::string& command);
 // Installs handlers for SIGINT, SIGTERM and SIGHUP that remove this process's temporaries,
 // then end it by the same signal (so its parent sees how it ended). Called once, by main().
 void remove_temporaries_on_signals();
+
+// The file writing `path` replaces: path with its symbolic links followed (also to a file that
+// does not exist yet), as open() would; at most 40, as Linux.
+std::string output_target(const std::string& path);
+
+// Whether writing `path` makes a regular file (one exists there, or nothing does yet), rather
+// than writing into a device, FIFO or socket in place.
+bool writes_regular_file(const std::string& path);
+
+// Throws InputError naming path and option unless a file can be written there: a folder, or a
+// path whose folder is missing or not writable, is refused (a device, FIFO or socket is written
+// in place and passes). Commands call it before any work, so a bad path is not found hours later.
+void check_output_path(const std::string& path, const std::string& option);
+
+// A file a command reads or writes, and the option (or argument) that names it, for messages.
+struct NamedPath {
+  std::string option, path;
+};
+
+// Throws InputError naming an output and its option when writing it would replace one of the
+// inputs or an earlier output. Files are compared by what they are, device and inode, so links,
+// relative paths and other spellings of one file are caught; an output that does not exist yet
+// by its absolute path with links resolved. An output that is a device, FIFO or socket is written
+// in place and replaces nothing, so it is not compared. Empty paths are skipped. Commands call it
+// before any work.
+void refuse_overwriting(const std::vector<NamedPath>& inputs,
+                        const std::vector<NamedPath>& outputs);
 
 class OutputFile {
  public:

@@ -21,6 +21,7 @@
 #include <nlohmann/json.hpp>
 
 #include "traces/error.h"
+#include "traces/memory_plan.h"
 #include "workloads/scene_file_check.h"
 
 namespace rtsim {
@@ -109,19 +110,48 @@ GltfFile read_container(const std::string& path, bool glb) {
   return f;
 }
 
+// Where byte `byte` of the JSON document lies: its line, or the file offset in a GLB.
+std::string place_of(const GltfFile& f, size_t byte) {
+  if (f.binary) return fmt::format("offset {}", f.json_offset + byte);
+  return fmt::format("line {}", 1 + std::count(f.json.begin(), f.json.begin() + byte, '\n'));
+}
+
+// assimp parses the JSON recursively (RapidJSON's default), so deep nesting would overflow
+// its stack: no glTF document comes near this.
+constexpr int kMaxJsonDepth = 256;
+
+void check_json_nesting(const std::string& path, const GltfFile& f) {
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (size_t i = 0; i < f.json.size(); ++i) {
+    char c = f.json[i];
+    if (in_string) {
+      in_string = escaped || c != '"';
+      escaped = !escaped && c == '\\';
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > kMaxJsonDepth)
+        throw_input_error(path, place_of(f, i),
+                          fmt::format("JSON nested deeper than {} levels; rtsim reads glTF "
+                                      "documents up to that depth",
+                                      kMaxJsonDepth));
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+}
+
 Json parse_document(const std::string& path, const GltfFile& f) {
+  check_json_nesting(path, f);
   try {
     return Json::parse(f.json);
   } catch (const Json::parse_error& e) {
     size_t byte = e.byte == 0 ? 0 : std::min<size_t>(e.byte - 1, f.json.size());
-    size_t line = 1 + size_t(std::count(f.json.begin(), f.json.begin() + byte, '\n'));
     std::string what = e.what();
     size_t colon = what.find(": ", what.find("parse error"));
     std::string reason = colon == std::string::npos ? what : what.substr(colon + 2);
-    throw_input_error(
-        path,
-        f.binary ? fmt::format("offset {}", f.json_offset + byte) : fmt::format("line {}", line),
-        "not valid JSON: " + reason);
+    throw_input_error(path, place_of(f, byte), "not valid JSON: " + reason);
   }
 }
 
@@ -285,6 +315,11 @@ class GpuInstanceReader {
     node_ = node_index;
     const Json& attributes = attributes_of(*extension);
     uint64_t count = instance_count(attributes);
+    // An accessor without a bufferView is zeros, so a tiny file can ask for billions.
+    placed_ += count;
+    require_memory(placed_ * kBytesPerInstance, doc_.path(),
+                   fmt::format("{} EXT_mesh_gpu_instancing instances", placed_),
+                   "place fewer instances");
     std::vector<float> translation = read_attribute(attributes, kTranslation, count);
     std::vector<float> rotation = read_attribute(attributes, kRotation, count);
     std::vector<float> scale = read_attribute(attributes, kScale, count);
@@ -443,8 +478,13 @@ class GpuInstanceReader {
     }
   }
 
+  // The instances' transforms here and in assimp's terms, their instance records and Embree's
+  // instances, rounded up.
+  static constexpr uint64_t kBytesPerInstance = 320;
+
   GltfDocument& doc_;
   size_t node_ = 0;
+  uint64_t placed_ = 0;  // instances of the nodes read so far
 };
 
 // The unsigned entries of array `key` of object (assimp skips the others).
@@ -457,20 +497,99 @@ std::vector<size_t> node_indices(const Json& object, const char* key) {
   return indices;
 }
 
+// assimp reads the node tree recursively (and so does SceneWalk), so a deep chain of nodes
+// would overflow the stack; scenes nest a few dozen levels.
+constexpr size_t kMaxNodeDepth = 1000;
+
+constexpr size_t kNoParent = SIZE_MAX;
+
+// Each node's parent, checking that every child exists and has no other parent, and that no node
+// lists a child twice (glTF: "the node hierarchy MUST be a set of disjoint strict trees").
+// assimp would place a node once per path to it: 2^40 times for 40 nodes that each list the next
+// twice.
+std::vector<size_t> node_parents(const std::string& path, const GltfNodeTree& tree) {
+  std::vector<size_t> parent(tree.nodes.size(), kNoParent);
+  for (size_t n = 0; n < tree.nodes.size(); ++n)
+    for (size_t child : tree.nodes[n].children) {
+      std::string place = fmt::format("node {}", n);
+      if (child >= tree.nodes.size())
+        throw_input_error(path, place,
+                          fmt::format("child {} does not exist (the file has {} nodes)", child,
+                                      tree.nodes.size()));
+      if (parent[child] == n)
+        throw_input_error(
+            path, place,
+            fmt::format("lists child {} twice; glTF node hierarchies are trees", child));
+      if (parent[child] != kNoParent)
+        throw_input_error(path, fmt::format("node {}", child),
+                          fmt::format("has two parents, nodes {} and {}; glTF node hierarchies "
+                                      "are trees",
+                                      parent[child], n));
+      parent[child] = n;
+    }
+  return parent;
+}
+
+// No node is its own ancestor, and none lies deeper than kMaxNodeDepth.
+void check_node_depths(const std::string& path, const std::vector<size_t>& parent) {
+  std::vector<size_t> depth(parent.size(), 0);                // 1: a root; 0: not known yet
+  std::vector<size_t> walked_from(parent.size(), kNoParent);  // the walk that passed the node
+  std::vector<size_t> chain;  // the walk's nodes of unknown depth, child first
+  for (size_t n = 0; n < parent.size(); ++n) {
+    chain.clear();
+    size_t up = n;
+    for (; up != kNoParent && depth[up] == 0; up = parent[up]) {
+      if (walked_from[up] == n)
+        throw_input_error(path, fmt::format("node {}", up),
+                          "is its own ancestor (its children lead back to it); glTF node "
+                          "hierarchies are trees");
+      walked_from[up] = n;
+      chain.push_back(up);
+    }
+    size_t below = up == kNoParent ? 0 : depth[up];
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) depth[*it] = ++below;
+    if (below > kMaxNodeDepth)
+      throw_input_error(path, fmt::format("node {}", n),
+                        fmt::format("lies {} levels deep; rtsim reads node trees up to {} levels",
+                                    below, kMaxNodeDepth));
+  }
+}
+
+// A scene lists root nodes, each once.
+void check_scene_roots(const std::string& path, const std::vector<size_t>& roots, size_t scene,
+                       const std::vector<size_t>& parent) {
+  std::vector<bool> listed(parent.size(), false);
+  std::string place = fmt::format("scenes[{}]", scene);
+  for (size_t root : roots) {
+    if (root >= parent.size())
+      throw_input_error(
+          path, place,
+          fmt::format("node {} does not exist (the file has {} nodes)", root, parent.size()));
+    if (parent[root] != kNoParent)
+      throw_input_error(
+          path, place,
+          fmt::format("lists node {}, a child of node {}, as a root node", root, parent[root]));
+    if (listed[root]) throw_input_error(path, place, fmt::format("lists node {} twice", root));
+    listed[root] = true;
+  }
+}
+
 GltfNodeTree read_node_tree(GltfDocument& doc, const Json& json) {
   GltfNodeTree tree;
-  GpuInstanceReader instances(doc);
   const Json& nodes = doc.member("nodes");
-  for (size_t n = 0; n < nodes.size(); ++n) {
-    GltfNode& node = tree.nodes.emplace_back();
-    if (!nodes[n].is_object()) continue;
-    node.children = node_indices(nodes[n], "children");
-    node.gpu_instances = instances.read(nodes[n], n);
-  }
+  for (size_t n = 0; n < nodes.size(); ++n)
+    tree.nodes.emplace_back().children = node_indices(nodes[n], "children");
+  std::vector<size_t> parent = node_parents(doc.path(), tree);
+  check_node_depths(doc.path(), parent);
   const Json& scenes = doc.member("scenes");
+  for (size_t s = 0; s < scenes.size(); ++s)
+    check_scene_roots(doc.path(), node_indices(scenes[s], "nodes"), s, parent);
   const Json scene = json.value("scene", Json(0));
   size_t shown = scene.is_number_unsigned() ? scene.get<size_t>() : 0;
   if (shown < scenes.size()) tree.roots = node_indices(scenes[shown], "nodes");
+  GpuInstanceReader instances(doc);
+  for (size_t n = 0; n < nodes.size(); ++n)
+    if (nodes[n].is_object()) tree.nodes[n].gpu_instances = instances.read(nodes[n], n);
   return tree;
 }
 

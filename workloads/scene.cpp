@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include <fmt/core.h>
+#include <glm/geometric.hpp>
 
 #include "traces/error.h"
 #include "traces/memory_plan.h"
@@ -41,17 +42,6 @@ void check_ids(const Scene& s, const std::vector<uint32_t>& ids, uint64_t count,
                         fmt::format("{} id {} out of range", what, ids[t]));
 }
 
-// Why a world-space vertex cannot be traced; empty if fine.
-std::string vertex_problem(const glm::vec3& p) {
-  if (!finite(p)) return "position is NaN or Inf";
-  float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-  if (largest <= kMaxSceneCoordinate) return "";
-  return fmt::format(
-      "coordinate {:g} is beyond +-{:g}, the range rtsim traces (cameras and ray offsets must "
-      "stay inside Embree's +-1.8e18); scale the scene down",
-      largest, kMaxSceneCoordinate);
-}
-
 void check_indices(const Scene& scene, const TriangleMesh& mesh, const std::string& prefix) {
   for (size_t t = 0; t < mesh.triangle_count(); ++t)
     for (uint32_t index : mesh.triangles[t])
@@ -64,6 +54,23 @@ void check_alpha(const Scene& scene, const TriangleMesh& mesh, const std::string
   if (!mesh.alpha) return;
   if (std::string problem = mesh.alpha->problem(mesh.triangle_count()); !problem.empty())
     throw_input_error(scene.source, place, problem);
+}
+
+// The cameras and lights the scene file places, in world space.
+void check_cameras_and_lights(const Scene& scene) {
+  auto check = [&](const std::string& place, const std::string& problem) {
+    if (!problem.empty()) throw_input_error(scene.source, place, problem);
+  };
+  for (const SceneCamera& c : scene.cameras) {
+    check("camera '" + c.name + "'", point_problem(c.position));
+    check("camera '" + c.name + "' forward", direction_problem(c.forward));
+    check("camera '" + c.name + "' up", direction_problem(c.up));
+  }
+  for (const SceneLight& l : scene.lights) {
+    if (l.type != SceneLight::Type::Directional)
+      check("light '" + l.name + "'", point_problem(l.position));
+    check("light '" + l.name + "' direction", direction_problem(l.direction));
+  }
 }
 
 // A scene that keeps only its instances: checked and bounded in world space without a
@@ -95,7 +102,7 @@ void finalize_instanced(Scene& scene) {
     for (size_t v = 0; v < g.meshes[m].positions.size(); ++v)
       if (!finite(g.meshes[m].positions[v]))
         throw_input_error(scene.source, fmt::format("mesh {} vertex {}", m, v),
-                          "position is NaN or Inf");
+                          "position " + format_point(g.meshes[m].positions[v]) + " is NaN or Inf");
     mesh_boxes.push_back(mesh_bounds(g.meshes[m]));
   }
   for (size_t i = 0; i < g.instances.size(); ++i) {
@@ -103,17 +110,44 @@ void finalize_instanced(Scene& scene) {
     const std::vector<glm::vec3>& positions = g.meshes[inst.mesh].positions;
     // Vertex by vertex only where the instance's box leaves the range rtsim traces.
     Bounds box = world_box(mesh_boxes[inst.mesh], inst.to_world);
-    if (!vertex_problem(box.lo).empty() || !vertex_problem(box.hi).empty())
+    if (!point_problem(box.lo).empty() || !point_problem(box.hi).empty())
       for (size_t v = 0; v < positions.size(); ++v)
-        if (std::string problem = vertex_problem(inst.to_world.point(positions[v]));
+        if (std::string problem = point_problem(inst.to_world.point(positions[v]));
             !problem.empty())
-          throw_input_error(scene.source, fmt::format("instance {} vertex {}", i, v), problem);
+          throw_input_error(scene.source, fmt::format("instance {} vertex {}", i, v),
+                            "world position " + problem);
   }
   scene.bounds = FlatTriangles(g).bounds();
   scene.fingerprint = instanced_fingerprint(g);
 }
 
 }  // namespace
+
+std::string format_point(const glm::vec3& p) {
+  auto text = [](float x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
+  return "(" + text(p.x) + ", " + text(p.y) + ", " + text(p.z) + ")";
+}
+
+std::string point_problem(const glm::vec3& p) {
+  if (!finite(p)) return format_point(p) + " is NaN or Inf";
+  float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+  if (largest <= kMaxSceneCoordinate) return "";
+  return fmt::format(
+      "{} is beyond +-{:g}, the range rtsim traces (Embree's rays reach +-1.8e18; cameras and "
+      "ray offsets around the scene must stay inside)",
+      format_point(p), kMaxSceneCoordinate);
+}
+
+std::string direction_problem(const glm::vec3& d) {
+  if (!finite(d)) return format_point(d) + " is NaN or Inf";
+  float largest = std::max({std::fabs(d.x), std::fabs(d.y), std::fabs(d.z)});
+  if (largest > kMaxSceneCoordinate)
+    return fmt::format("{} has a component beyond +-{:g}; give a shorter vector", format_point(d),
+                       kMaxSceneCoordinate);
+  if (!(glm::length(d) >= 1.0f / kMaxSceneCoordinate))
+    return fmt::format("must not be zero or shorter than {:g}", 1.0f / kMaxSceneCoordinate);
+  return "";
+}
 
 bool is_builtin_scene(const std::string& spec) {
   if (starts_with(spec, kBuiltinPrefix)) return true;
@@ -134,12 +168,13 @@ Scene load_scene(const std::string& spec) {
 }
 
 void finalize_scene(Scene& scene) {
+  check_cameras_and_lights(scene);
   if (!scene.flattened() && !scene.instanced.instances.empty()) return finalize_instanced(scene);
   const TriangleMesh& mesh = scene.mesh;
   if (mesh.triangle_count() == 0) throw_input_error(scene.source, "", "the scene has no triangles");
   for (size_t v = 0; v < mesh.positions.size(); ++v)
-    if (std::string problem = vertex_problem(mesh.positions[v]); !problem.empty())
-      throw_input_error(scene.source, "vertex " + std::to_string(v), problem);
+    if (std::string problem = point_problem(mesh.positions[v]); !problem.empty())
+      throw_input_error(scene.source, "vertex " + std::to_string(v), "position " + problem);
   check_indices(scene, mesh, "");
   check_alpha(scene, mesh, "");
   check_ids(scene, scene.material_ids, mesh.triangle_count(), scene.materials.size(), "material",
@@ -234,7 +269,7 @@ void set_instance_settings(Scene& scene, const InstanceSettings& settings,
       Bounds box =
           world_box(mesh_boxes[placed.mesh],
                     pose_at(placed.to_world, settings.motions[motion], f, settings.frames));
-      if (std::string problem = vertex_problem(box.lo) + vertex_problem(box.hi); !problem.empty())
+      if (std::string problem = point_problem(box.lo) + point_problem(box.hi); !problem.empty())
         throw_input_error(where, fmt::format("instance {} in frame {}", instance, f),
                           "its motion carries it out of range: " + problem);
     }

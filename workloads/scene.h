@@ -137,9 +137,23 @@ std::vector<std::string> builtin_scene_names();
 // File extensions load_scene imports (lowercase, with the dot: ".obj", ".gltf", ...).
 std::vector<std::string> scene_file_extensions();
 
-// The largest vertex coordinate a scene may have: far below Embree's ray range (1.844e18), so
-// that cameras placed around the scene and the rays' offsets stay inside it.
+// The largest coordinate a point of a scene may have (a vertex, a camera, a look-at point, a
+// light): far below Embree's ray range (1.844e18), so that cameras placed around the scene and
+// the rays' offsets stay inside it.
 constexpr float kMaxSceneCoordinate = 1e15f;
+
+// Why p cannot be a point of a scene ("(x, y, z) is NaN or Inf", or has a coordinate beyond
+// +-kMaxSceneCoordinate); empty if fine. The one check of every vertex, camera, look-at point and
+// light, wherever it comes from (scene files, built-in scenes, workload specs, options).
+std::string point_problem(const glm::vec3& p);
+
+// Why d cannot be a direction (a camera's forward or up, a light's direction): NaN or Inf, a
+// component beyond +-kMaxSceneCoordinate, or too short to normalize (under
+// 1/kMaxSceneCoordinate, zero included); empty if fine.
+std::string direction_problem(const glm::vec3& d);
+
+// "(x, y, z)", as the problems above name a point.
+std::string format_point(const glm::vec3& p);
 
 // Fills fingerprint and bounds, and checks the invariants (ids in range, finite world-space
 // vertices within +-kMaxSceneCoordinate, at least one triangle, instances that can be traced);

@@ -41,7 +41,11 @@ struct GltfNodeTree {
 // tree, with the EXT_mesh_gpu_instancing instances read: an attribute whose accessor is missing,
 // of the wrong type or component type, sparse, unreadable, of another count than the node's
 // other attributes, or with NaN or Inf values throws InputError naming the place ("node N
-// EXT_mesh_gpu_instancing TRANSLATION").
+// EXT_mesh_gpu_instancing TRANSLATION"), as do more instances than the memory available holds.
+// The node hierarchy must be disjoint trees, as glTF says: a node with two parents or listed
+// twice by one, a cycle, a missing child, or a scene root that is a child throws InputError
+// naming the nodes. JSON nested deeper than 256 levels or nodes deeper than 1000 throw too:
+// assimp reads both recursively.
 GltfNodeTree check_gltf(const std::string& path, bool glb);
 
 }  // namespace rtsim

@@ -54,11 +54,6 @@ std::string checked_extension(const std::string& path) {
   return ext;
 }
 
-std::string format_vertex(const aiVector3D& p) {
-  auto text = [](float x) { return std::isnan(x) ? std::string("nan") : fmt::format("{}", x); };
-  return "(" + text(p.x) + ", " + text(p.y) + ", " + text(p.z) + ")";
-}
-
 // Checks the meshes as the reader produced them, before any post-processing can hide a problem.
 // A vertex index is the reader's: the file's for PLY and OFF, the face corner's for OBJ and STL.
 void check_raw_meshes(const std::string& path, const aiScene& scene) {
@@ -68,21 +63,14 @@ void check_raw_meshes(const std::string& path, const aiScene& scene) {
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) polygons += mesh.mFaces[f].mNumIndices >= 3;
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D& p = mesh.mVertices[v];
-      bool finite = std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-      float largest = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
-      if (finite && largest <= kMaxSceneCoordinate) continue;
+      std::string problem = point_problem({p.x, p.y, p.z});
+      if (problem.empty()) continue;
       std::string where;
       if (scene.mNumMeshes > 1 || mesh.mName.length > 0) {
         where = mesh.mName.length > 0 ? "mesh '" + std::string(mesh.mName.C_Str()) + "' "
                                       : "mesh " + std::to_string(m) + " ";
       }
-      throw_input_error(path, where + "vertex " + std::to_string(v),
-                        "position " + format_vertex(p) +
-                            (finite ? fmt::format(" is beyond +-{:g}, the range rtsim traces "
-                                                  "(cameras and ray offsets must stay inside "
-                                                  "Embree's +-1.8e18); scale the scene down",
-                                                  kMaxSceneCoordinate)
-                                    : std::string(" is NaN or Inf")));
+      throw_input_error(path, where + "vertex " + std::to_string(v), "position " + problem);
     }
   }
   if (polygons == 0) throw_input_error(path, "", "the file has no triangles");

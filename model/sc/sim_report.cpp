@@ -387,6 +387,14 @@ void write_file_atomic(const std::string& path, const std::string& bytes) {
   write_file_atomic(path, bytes.data(), bytes.size());
 }
 
+std::vector<std::string> sim_result_files(const std::string& dir) {
+  std::vector<std::string> files;
+  for (const char* name :
+       {"stats.json", "config.toml", "pixel_cycles.f32", "pixel_nodes.f32", "pixel_dram_bytes.f32"})
+    files.push_back(dir + "/" + name);
+  return files;
+}
+
 Json write_sim_results(const std::string& dir, const RtSimulator& sim, const SimRunInfo& info) {
   create_output_folder(dir);
   StatsRegistry stats;

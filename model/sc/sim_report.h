@@ -35,6 +35,9 @@ nlohmann::ordered_json sim_stats_json(const RtSimulator& sim, const StatsRegistr
 nlohmann::ordered_json write_sim_results(const std::string& dir, const RtSimulator& sim,
                                          const SimRunInfo& info);
 
+// The files write_sim_results may write into dir, for the check that none is an input.
+std::vector<std::string> sim_result_files(const std::string& dir);
+
 // Writes bytes to path.tmp-PID and renames it to path; InputError naming path and the
 // system's reason (e.g. "No space left on device") if that fails.
 void write_file_atomic(const std::string& path, const void* data, size_t size);

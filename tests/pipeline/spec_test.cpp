@@ -179,7 +179,7 @@ TEST(Spec, InstanceRulesAndRayMasks) {
             "w.toml: line 3: key 'ray_masks.ao': must be in [1, 255]");
   EXPECT_EQ(error_of("scene = \"city:1000\"\n[[instances]]\nmatch = \"cars\"\naxis = [0, 0, 0]\n"
                      "[[instances.key]]\n"),
-            "w.toml: line 4: key 'instances[].axis': must not be zero");
+            "w.toml: line 4: key 'instances[].axis': must not be zero or shorter than 1e-15");
 }
 
 TEST(Spec, AlphaTestPerRayType) {
@@ -200,11 +200,65 @@ TEST(Spec, ADegenerateCameraNamesItsKey) {
             "w.toml: line 2: key 'camera.up': is parallel to the view direction (position to "
             "look_at): the image has no up; choose another up");
   EXPECT_EQ(error_of(scene + "up = [0, 0, 0]\n"),
-            "w.toml: line 3: key 'camera.up': must not be zero");
+            "w.toml: line 3: key 'camera.up': must not be zero or shorter than 1e-15");
   EXPECT_NE(error_of(scene + "[[camera.key]]\nposition = [0, 0, 0]\nlook_at = [0, 0, 0]\n")
                 .find("key 'camera.key[].look_at': equals position"),
             std::string::npos);
   EXPECT_EQ(error_of(scene + "position = [0, 0, 0]\nlook_at = [0, 0, -5]\n"), "") << "a view";
+}
+
+// Issue 63: cameras, look-at points and lights share the scene's range (+-1e15), and directions
+// must normalize; each names its key.
+TEST(Spec, PointsBeyondTheTracedRangeNameTheirKey) {
+  const std::string scene = "scene = \"cornell\"\n";
+  EXPECT_EQ(error_of(scene + "[camera]\nposition = [2e18, 0, 0]\n"),
+            "w.toml: line 3: key 'camera.position': (2e+18, 0, 0) is beyond +-1e+15, the range "
+            "rtsim traces (Embree's rays reach +-1.8e18; cameras and ray offsets around the "
+            "scene must stay inside)");
+  EXPECT_NE(error_of(scene + "[camera]\nlook_at = [0, -1.1e15, 0]\n")
+                .find("line 3: key 'camera.look_at': (0, -1100000000000000, 0) is beyond"),
+            std::string::npos);
+  EXPECT_NE(error_of(scene + "[[camera.key]]\nposition = [0, 0, 5]\nlook_at = [0, 0, -1.9e18]\n")
+                .find("line 4: key 'camera.key[].look_at': (0, 0, -1.9e+18) is beyond"),
+            std::string::npos);
+  EXPECT_NE(error_of(scene + "[[light]]\nposition = [0, 5e17, 0]\n")
+                .find("line 3: key 'light[].position': (0, 5e+17, 0) is beyond"),
+            std::string::npos);
+  EXPECT_EQ(error_of(scene + "[camera]\nup = [1e30, 1, 0]\n"),
+            "w.toml: line 3: key 'camera.up': (1e+30, 1, 0) has a component beyond +-1e+15; "
+            "give a shorter vector");
+  EXPECT_EQ(error_of(scene + "[[light]]\ndirection = [1e-30, 0, 0]\n"),
+            "w.toml: line 3: key 'light[].direction': must not be zero or shorter than 1e-15");
+  EXPECT_EQ(error_of(scene + "[[light]]\ndirection = [0, -1e300, 0]\n"),
+            "w.toml: line 3: key 'light[].direction': expected an array of 3 finite numbers "
+            "(within a float's range)");
+  EXPECT_EQ(error_of(scene + "[camera]\nposition = [1e15, -1e15, 0]\nlook_at = [0, 0, 0]\n"), "")
+      << "the range's edge";
+}
+
+TEST(Spec, OptionPointsBeyondTheTracedRangeNameTheOption) {
+  auto message = [](OverrideText t) {
+    try {
+      make_overrides(t);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  OverrideText camera;
+  camera.camera = "2e18,0,0";
+  EXPECT_EQ(message(camera).rfind("--camera 2e18,0,0: (2e+18, 0, 0) is beyond +-1e+15", 0), 0u)
+      << message(camera);
+  OverrideText look_at;
+  look_at.look_at = "0,-3e18,0";
+  EXPECT_EQ(message(look_at).rfind("--look-at 0,-3e18,0: (0, -3e+18, 0) is beyond", 0), 0u);
+  OverrideText up;
+  up.up = "1e30,1,0";
+  EXPECT_EQ(message(up),
+            "--up 1e30,1,0: (1e+30, 1, 0) has a component beyond +-1e+15; give a "
+            "shorter vector");
+  up.up = "1e-30,0,0";
+  EXPECT_EQ(message(up), "--up 1e-30,0,0: must not be zero or shorter than 1e-15");
 }
 
 TEST(Spec, ResolutionSyntax) {
@@ -261,7 +315,7 @@ TEST(Spec, CameraOverridesReplaceTheSpecsViewAndRefuseADegenerateOne) {
   EXPECT_NE(message(parallel).find("--up: parallel to the view direction"), std::string::npos);
   OverrideText zero;
   zero.up = "0,0,0";
-  EXPECT_NE(message(zero).find("--up: must not be zero"), std::string::npos);
+  EXPECT_NE(message(zero).find("--up 0,0,0: must not be zero"), std::string::npos);
   OverrideText malformed;
   malformed.look_at = "1,2";
   EXPECT_EQ(message(malformed), "--look-at 1,2: expected three numbers X,Y,Z, e.g. 0,1.5,4");

@@ -119,6 +119,13 @@ bool room_view(const FlatTriangles& triangles, const EmbreeScene& embree, const 
 
 }  // namespace
 
+std::string camera_origin_problem(const glm::vec3& p) {
+  Ray ray;
+  ray.org = p;
+  ray.dir = glm::vec3(0.0f, 0.0f, -1.0f);
+  return ray_problem(ray);
+}
+
 Camera Camera::look_at(const glm::vec3& position, const glm::vec3& target, const glm::vec3& up,
                        float fov_degrees, uint32_t width, uint32_t height) {
   Camera c;
@@ -201,7 +208,11 @@ View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const Embre
         std::cos(elevation) * (std::cos(azimuth) * basis.t + std::sin(azimuth) * basis.b) +
         std::sin(elevation) * up;
     glm::vec3 position = c + dir * distance;
-    float cov = coverage(embree, position, c, up, fov, aspect);
+    // Too far out to trace from (a narrow view of a huge scene): not probed; if none can be,
+    // the first is returned for the pipeline to refuse.
+    float cov = camera_origin_problem(position).empty()
+                    ? coverage(embree, position, c, up, fov, aspect)
+                    : -0.5f;
     if (cov > best + 1e-3f) {
       best = cov;
       view.position = position;

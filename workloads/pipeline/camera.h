@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <glm/vec3.hpp>
 
 #include "traces/embree_scene.h"
@@ -34,6 +35,11 @@ struct View {
 // from inside its roomiest room. Probe rays decide which (see workloads/README.md).
 View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const EmbreeScene& embree,
                const glm::vec3& up, float fov, float aspect);
+
+// Why rays cannot start at p: beyond Embree's range (traces/ray.h); empty if fine. A camera
+// fitted to the scene is held to this, not to the scene's range: it may stand outside a scene
+// that fills that range.
+std::string camera_origin_problem(const glm::vec3& p);
 
 // The camera of frame `frame` of `frames`: auto parts filled by auto_view, then the keys or the
 // orbit applied.

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <glm/geometric.hpp>
 
+#include "traces/error.h"
 #include "workloads/pipeline/pass_camera.h"
 #include "workloads/pipeline/pass_gi.h"
+#include "workloads/scene.h"
 
 namespace rtsim::pipeline {
 namespace {
@@ -79,6 +81,12 @@ Pipeline::Pipeline(const WorkloadSpec& spec, const Scene& scene, const EmbreeSce
   if (!spec.camera.position || !spec.camera.look_at)
     auto_fit_ = auto_view(materials_.triangles, scene.bounds, embree, spec.camera.up,
                           spec.camera.fov, float(spec.width) / float(spec.height));
+  // A narrow field of view and an extreme aspect can push the fitted camera far out.
+  glm::vec3 position = spec.camera.position.value_or(auto_fit_.position);
+  if (std::string problem = camera_origin_problem(position); !problem.empty())
+    throw_input_error(spec.file.empty() ? spec.name : spec.file, "camera",
+                      "the camera fit to the scene stands at " + format_point(position) + ": " +
+                          problem + "; set camera.position and camera.look_at");
   summary_.workload = spec.name;
   summary_.scene_source = scene.source;
   summary_.triangles = scene.triangle_count();

@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "traces/output_file.h"
 #include "workloads/pipeline/image_io.h"
 #include "workloads/pipeline/preview_filter.h"
 #include "workloads/pipeline/sampling.h"
@@ -222,7 +223,7 @@ void write_preview(const std::string& path, const Pipeline& pipeline, const Fram
 }
 
 std::string density_image_path(const std::string& preview_path, const std::string& pass) {
-  std::string stem = preview_path;
+  std::string stem = output_target(preview_path);
   auto dot = stem.find_last_of('.');
   auto slash = stem.find_last_of('/');
   if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
@@ -230,9 +231,19 @@ std::string density_image_path(const std::string& preview_path, const std::strin
   return stem + ".density-" + pass + ".png";
 }
 
+std::vector<std::string> preview_files(const std::string& preview_path) {
+  std::vector<std::string> files = {preview_path};
+  if (!writes_regular_file(preview_path)) return files;
+  for (int p = 0; p < kPassCount; ++p)
+    files.push_back(density_image_path(preview_path, pass_name(PassId(p))));
+  files.push_back(density_image_path(preview_path, "all"));
+  return files;
+}
+
 std::vector<std::string> write_density_images(const std::string& preview_path, const RaySink& sink,
                                               uint32_t width, uint32_t height) {
   std::vector<std::string> written;
+  if (!writes_regular_file(preview_path)) return written;
   std::vector<uint32_t> all(size_t(width) * height, 0);
   auto write = [&](const std::vector<uint32_t>& counts, const std::string& name) {
     uint32_t most = *std::max_element(counts.begin(), counts.end());

@@ -21,10 +21,17 @@ std::vector<uint8_t> tone_map(const std::vector<glm::vec3>& radiance);
 
 void write_preview(const std::string& path, const Pipeline& pipeline, const FrameResults& frame);
 
-// PATH.png -> PATH.density-PASS.png ("all" for every pass together).
+// PATH.png -> PATH.density-PASS.png ("all" for every pass together), beside the file PATH is
+// (its links followed).
 std::string density_image_path(const std::string& preview_path, const std::string& pass);
 
-// Writes one density image per pass that shot rays, plus "all"; returns the paths written.
+// Every file a preview at preview_path may write: itself and its density images. A preview that
+// is a device, FIFO or socket (--preview /dev/null) gets the shaded picture only: the density
+// images' names would put them in its folder (/dev).
+std::vector<std::string> preview_files(const std::string& preview_path);
+
+// Writes one density image per pass that shot rays, plus "all" (none beside a preview that is a
+// device, FIFO or socket); returns the paths written.
 std::vector<std::string> write_density_images(const std::string& preview_path, const RaySink& sink,
                                               uint32_t width, uint32_t height);
 

@@ -29,13 +29,24 @@ void check_view(const SpecReader& r, glm::vec3 position, glm::vec3 look_at, glm:
            "up; choose another up");
 }
 
+// A point or direction of the spec is one rtsim can trace (scene.h's range of scene points).
+void check_point(const SpecReader& r, const char* key, const std::optional<glm::vec3>& p) {
+  if (std::string problem = p ? point_problem(*p) : ""; !problem.empty()) r.fail(key, problem);
+}
+
+void check_direction(const SpecReader& r, const char* key, const glm::vec3& d) {
+  if (std::string problem = direction_problem(d); !problem.empty()) r.fail(key, problem);
+}
+
 void read_camera(SpecReader& r, CameraSpec& c) {
   c.position = r.vec3_or_auto("position", "the scene file's camera, else fit to the scene bounds",
                               "scene units", "where the camera is");
+  check_point(r, "position", c.position);
   c.look_at = r.vec3_or_auto("look_at", "the scene file's camera, else fit to the scene bounds",
                              "scene units", "the point the camera looks at");
+  check_point(r, "look_at", c.look_at);
   c.up = r.vec3("up", c.up, "", "the up direction of the image");
-  if (!r.documenting() && glm::length(c.up) == 0.0f) r.fail("up", "must not be zero");
+  check_direction(r, "up", c.up);
   c.fov = float(r.real("fov", c.fov, "degrees", "vertical field of view", 1.0, 179.0));
   c.jitter = r.boolean("jitter", c.jitter, "sub-pixel Halton jitter per frame, as TAA does");
   c.orbit = float(r.real("orbit", c.orbit, "degrees",
@@ -51,6 +62,8 @@ void read_camera(SpecReader& r, CameraSpec& c) {
         k->maybe_vec3("look_at", "scene units", "look-at point at this key", "(required)");
     if (k->documenting()) continue;
     if (!position || !look_at) k->fail("", "a camera key needs position and look_at");
+    check_point(*k, "position", position);
+    check_point(*k, "look_at", look_at);
     check_view(*k, *position, *look_at, c.up);
     c.keys.push_back({*position, *look_at});
   }
@@ -114,7 +127,7 @@ void read_instance_rule(SpecReader& r, InstanceRule& rule) {
   rule.motion.axis = r.vec3("axis", rule.motion.axis, "",
                             "motion: the axis the keys' rotate turns about, through the "
                             "instance's origin");
-  if (!r.documenting() && glm::length(rule.motion.axis) == 0.0f) r.fail("axis", "must not be zero");
+  check_direction(r, "axis", rule.motion.axis);
   rule.motion.axis = glm::normalize(rule.motion.axis);
   for (SpecReader* k : r.sections("key",
                                   "motion: keys spread evenly over the frames, linear in "
@@ -158,8 +171,9 @@ void read_light(SpecReader& r, LightSpec& l) {
                                    : LightType::Point;
   l.position = r.vec3_or_auto("position", "centre of the bounds, 90% up", "scene units",
                               "point, spot, sphere: where the light is");
+  check_point(r, "position", l.position);
   l.direction = r.vec3("direction", l.direction, "", "spot, directional: where the light shines");
-  if (l.direction == glm::vec3(0.0f)) r.fail("direction", "must not be zero");
+  check_direction(r, "direction", l.direction);
   l.color = r.vec3("color", l.color, "linear RGB", "colour of the light");
   l.intensity = float(r.real("intensity", l.intensity, "W/sr (directional: W/m^2)",
                              "radiant intensity", 0.0, kInf));

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "traces/error.h"
 
@@ -148,7 +149,8 @@ glm::vec3 SpecReader::to_vec3(const std::string& key, const toml::node& node) co
   glm::vec3 v;
   for (int i = 0; i < 3; ++i) {
     auto x = array->get(i)->value<double>();
-    if (!x || !std::isfinite(*x)) fail(key, "expected an array of 3 finite numbers");
+    if (!x || !(std::fabs(*x) <= std::numeric_limits<float>::max()))
+      fail(key, "expected an array of 3 finite numbers (within a float's range)");
     v[i] = static_cast<float>(*x);
   }
   return v;

@@ -7,6 +7,7 @@
 #include "traces/embree_scene.h"
 #include "traces/host_clock.h"
 #include "traces/memory_plan.h"
+#include "traces/output_file.h"
 #include "traces/stream.h"
 #include "workloads/pipeline/instance_rules.h"
 #include "workloads/pipeline/preview.h"
@@ -29,8 +30,24 @@ std::string settings_note(const Scene& scene, const EmbreeScene& embree) {
                             seconds.size(), 1e3 * sum / double(seconds.size()));
 }
 
+// The outputs can be written, and replace neither the spec nor the scene file, nor the stream
+// a picture.
+void check_outputs(const WorkloadSpec& spec, const TraceOptions& options) {
+  std::vector<NamedPath> inputs = {{"the workload spec", spec.file}};
+  if (!is_builtin_scene(spec.scene)) inputs.push_back({"the scene", spec.scene});
+  std::vector<NamedPath> outputs = {{"-o", options.output}};
+  if (!options.preview.empty())
+    for (const std::string& file : preview_files(options.preview))
+      outputs.push_back({"--preview", file});
+  for (const NamedPath& output : outputs)
+    if (!output.path.empty()) check_output_path(output.path, output.option);
+  refuse_overwriting(inputs, outputs);
+}
+
 }  // namespace
+
 TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& options) {
+  check_outputs(requested, options);
   double start = wall_seconds();
   Scene scene = load_scene(requested.scene);
   WorkloadSpec spec = requested;

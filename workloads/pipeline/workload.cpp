@@ -13,20 +13,23 @@ namespace rtsim::pipeline {
 
 namespace {
 
-// "X,Y,Z" as three finite numbers.
-std::optional<glm::vec3> parse_point(const std::string& option, const std::string& text) {
+// "X,Y,Z" as three finite numbers; a point in the range of scene points (scene.h), or a
+// direction that can be normalized.
+std::optional<glm::vec3> parse_vector(const std::string& option, const std::string& text,
+                                      bool direction) {
   if (text.empty()) return std::nullopt;
   glm::vec3 v;
   char tail = 0;
   if (std::sscanf(text.c_str(), "%f,%f,%f%c", &v.x, &v.y, &v.z, &tail) != 3 ||
       !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
     throw InputError(option + " " + text + ": expected three numbers X,Y,Z, e.g. 0,1.5,4");
+  std::string problem = direction ? direction_problem(v) : point_problem(v);
+  if (!problem.empty()) throw InputError(option + " " + text + ": " + problem);
   return v;
 }
 
 // The view the overrides leave must have a direction and an up.
 void check_overridden_view(const CameraSpec& c, const SpecOverrides& o) {
-  if (glm::length(c.up) == 0.0f) throw InputError("--up: must not be zero");
   if (!c.position || !c.look_at) return;
   ViewProblem problem = view_problem(*c.position, *c.look_at, c.up);
   if (problem == ViewProblem::NoDirection)
@@ -72,9 +75,9 @@ SpecOverrides make_overrides(const OverrideText& text) {
   if (text.frames > 0) o.frames = text.frames;
   o.seed = text.seed;
   if (!text.scene.empty()) o.scene = text.scene;
-  o.camera = parse_point("--camera", text.camera);
-  o.look_at = parse_point("--look-at", text.look_at);
-  o.up = parse_point("--up", text.up);
+  o.camera = parse_vector("--camera", text.camera, false);
+  o.look_at = parse_vector("--look-at", text.look_at, false);
+  o.up = parse_vector("--up", text.up, true);
   return o;
 }
 
