@@ -5,7 +5,6 @@
 #include "app/commands.h"
 #include "reports/cli_options.h"
 #include "traces/error.h"
-#include "traces/memory_plan.h"
 #include "traces/stream.h"
 #include "workloads/hardcases.h"
 
@@ -13,7 +12,6 @@ namespace rtsim::app {
 namespace {
 
 constexpr uint32_t kPixelsPerRow = 1024;
-constexpr uint64_t kHardcaseRayBytes = 64;  // a Ray in its case's vector, rounded up
 
 struct HardcasesOptions {
   std::string output;
@@ -37,8 +35,7 @@ void check_ray_count(size_t rays_per_case) {
         "--rays-per-case {}: {} rays, more than a stream's largest grid for them ({} x {} "
         "pixels, one a ray) holds",
         rays_per_case, total, kPixelsPerRow, kMaxGridSide));
-  require_memory(total * kHardcaseRayBytes, "--rays-per-case",
-                 fmt::format("{} hard-case rays", total), "ask for fewer rays per case");
+  reports::require_generated_ray_memory(total, "--rays-per-case");
 }
 
 void write_hardcases(const HardcasesOptions& options) {

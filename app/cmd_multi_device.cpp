@@ -80,7 +80,7 @@ void check_hardware_sets(const MultiOptions& o) {
     for (const ConfigKeyDoc& k : multi::device_set_keys())
       if (k.key == key)
         throw_input_error(
-            "--set " + key, "",
+            "--set " + assignment, "",
             "a device-set key, not a hardware key: pass it as --device-set " + assignment);
   }
 }

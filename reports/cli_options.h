@@ -12,12 +12,13 @@
 #include "reports/trace_step.h"
 #include "traces/error.h"
 #include "traces/memory_plan.h"
+#include "traces/stream.h"
 
 namespace rtsim::reports {
 
 // Frames as a workload spec takes them.
 inline CLI::Range frame_range() {
-  return CLI::Range(1, 100000);
+  return CLI::Range(uint32_t(1), kMaxFrames);
 }
 
 // An unsigned option given a negative number (CLI11 would wrap "-1" round to 2^64-1).

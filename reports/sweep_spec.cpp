@@ -255,11 +255,8 @@ void check_point_config(const SweepSpec& spec, const SweepPoint& p, uint32_t set
       try {
         load_hw_config(spec.config, {sets.begin(), sets.begin() + long(n) + 1});
       } catch (const InputError& e) {
-        std::string why = e.what();
-        std::string key = sets[n].substr(0, sets[n].find('='));
-        for (const std::string& prefix : {"--set " + key + ": ", spec.config + ": "})
-          if (why.rfind(prefix, 0) == 0) why = why.substr(prefix.size());
-        throw_input_error(spec.file, fmt::format("line {}", lines[n]), sets[n] + ": " + why);
+        throw_input_error(spec.file, fmt::format("line {}", lines[n]),
+                          sets[n] + ": " + e.problem());
       }
     }
     throw;  // the config fails without any of the spec's settings: the preset file's own line

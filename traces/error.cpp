@@ -6,7 +6,7 @@ void throw_input_error(const std::string& file, const std::string& place, const 
   std::string msg = file;
   if (!place.empty()) msg += ": " + place;
   msg += ": " + what;
-  throw InputError(msg);
+  throw InputError(msg, what);
 }
 
 }  // namespace rtsim

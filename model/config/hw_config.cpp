@@ -673,7 +673,13 @@ HwConfig load_hw_config(const std::string& path, const std::vector<std::string>&
 std::string config_culprit(const std::string& path, const std::vector<std::string>& overrides,
                            const std::function<std::string(const HwConfig&)>& problem_of) {
   ConfigReadContext alone, both;
-  if (overrides.empty() || !problem_of(read_keys(path, {}, alone)).empty()) return alone.file;
+  std::string file = path.empty() ? "(defaults)" : path;
+  if (overrides.empty()) return file;
+  try {
+    if (!problem_of(read_keys(path, {}, alone)).empty()) return file;
+  } catch (const InputError&) {
+    // the file alone does not read (a value that an override replaces): blame the overrides
+  }
   read_keys(path, overrides, both);
   return both.set_places();
 }

@@ -74,8 +74,7 @@ nlohmann::ordered_json multi_report_json(const ReportInput& in) {
                 {"width", result.layout.width},
                 {"height", result.layout.height},
                 {"frames", result.single_trace_ns.size()},
-                {"rays", result.rays},
-                {"rays_outside_image", result.outside}};
+                {"rays", result.rays}};
   j["device_set"] = device_set_json(*in.set);
   j["hardware"] = nlohmann::ordered_json::array();
   for (size_t i = 0; i < in.configs->configs().size(); ++i) {

@@ -1,7 +1,6 @@
 #include "model/multi/multi_run.h"
 
 #include <algorithm>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -11,27 +10,21 @@
 namespace rtsim::multi {
 namespace {
 
-constexpr uint32_t kOutside = std::numeric_limits<uint32_t>::max();
-
 // One frame's rays, located on the screen.
 struct LocatedFrame {
   const FrameRays* source = nullptr;
-  std::vector<uint32_t> position;  // per ray; kOutside if its pixel is not in the image
+  std::vector<uint32_t> position;  // per ray
   FramePreview preview;            // samples and rays by type, per position
 };
 
-LocatedFrame locate(const FrameRays& frame, const ScreenLayout& layout, SampleUnit unit,
-                    uint64_t& outside) {
+LocatedFrame locate(const FrameRays& frame, const ScreenLayout& layout, SampleUnit unit) {
   LocatedFrame located{&frame, {}, {}};
   located.preview.samples.assign(layout.pixels(), 0.0);
   located.preview.rays.assign(layout.pixels(), TypedRays{});
   located.position.reserve(frame.rays.size());
   for (const Ray& ray : frame.rays) {
-    if (ray.pixel >= layout.pixels()) {
-      located.position.push_back(kOutside);
-      ++outside;
-      continue;
-    }
+    if (ray.pixel >= layout.pixels())  // the stream's reader refuses such rays
+      throw std::logic_error("a ray's pixel lies outside the image");
     uint32_t p = layout.position_of(ray.pixel);
     located.position.push_back(p);
     located.preview.rays[p][size_t(ray.type)] += 1;
@@ -40,13 +33,11 @@ LocatedFrame locate(const FrameRays& frame, const ScreenLayout& layout, SampleUn
   return located;
 }
 
-// The rays of each device's region; rays outside the image go to the primary.
+// The rays of each device's region.
 std::vector<std::vector<Ray>> partition(const LocatedFrame& frame, const Split& split) {
   std::vector<std::vector<Ray>> rays(split.size());
-  for (size_t i = 0; i < frame.source->rays.size(); ++i) {
-    uint32_t p = frame.position[i];
-    rays[p == kOutside ? 0 : device_at(split, p)].push_back(frame.source->rays[i]);
-  }
+  for (size_t i = 0; i < frame.source->rays.size(); ++i)
+    rays[device_at(split, frame.position[i])].push_back(frame.source->rays[i]);
   return rays;
 }
 
@@ -120,7 +111,7 @@ MultiRunResult run_multi_device(RayStreamReader& reader, const DeviceSet& set,
   FrameRays frame;
   while (result.single_trace_ns.size() < frames && frame_reader.next(frame)) {
     if (options.progress) options.progress(frame.frame, frames);
-    LocatedFrame located = locate(frame, result.layout, set.samples, result.outside);
+    LocatedFrame located = locate(frame, result.layout, set.samples);
     result.rays += frame.rays.size();
     std::vector<uint32_t> hardware;
     for (uint32_t d = 0; d < result.devices; ++d) hardware.push_back(configs.index(d, frame.frame));

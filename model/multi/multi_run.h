@@ -1,7 +1,7 @@
 // M devices render each frame of a ray stream together, once per split strategy, and one
 // device renders it alone for the speed-up (Harada & Fujita 2014; SEED's mGPU flow). Per frame
 // and strategy: the policy proposes a split from what it saw before; each device traces the
-// rays of the pixels in its region (rays outside the image go to the primary) on its hardware
+// rays of the pixels in its region on its hardware
 // of that frame; the flow model (mgpu_flow.h) adds ray generation, copies and filtering; the
 // policy then observes each device's samples, cost and time.
 #pragma once
@@ -43,7 +43,7 @@ struct StrategyRun {
 struct MultiRunResult {
   ScreenLayout layout;
   uint32_t devices = 0;
-  uint64_t rays = 0, outside = 0;       // outside: rays whose pixel is not in the image
+  uint64_t rays = 0;
   std::vector<double> single_trace_ns;  // per frame, the primary's hardware alone
   std::vector<StrategyRun> runs;        // in the set's strategy order
 };

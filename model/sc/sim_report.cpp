@@ -356,7 +356,6 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
                             {"format",
                              "float32 little-endian, row-major, summed over the "
                              "pixel's rays of all frames"},
-                            {"rays_outside", px.outside},
                             {"files",
                              {{"cycles", "pixel_cycles.f32"},
                               {"nodes", "pixel_nodes.f32"},

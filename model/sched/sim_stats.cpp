@@ -1,6 +1,7 @@
 #include "model/sched/sim_stats.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace rtsim {
 
@@ -47,10 +48,8 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
     warps_.erase(ray.sequence / warp_size_);
   }
   if (pixels_.cycles.empty()) return;
-  if (ray.ray.pixel >= pixels_.cycles.size()) {
-    pixels_.outside++;
-    return;
-  }
+  if (ray.ray.pixel >= pixels_.cycles.size())  // the stream's reader refuses such rays
+    throw std::logic_error("a retired ray's pixel lies outside the pixel buffers");
   pixels_.cycles[ray.ray.pixel] += float(latency);
   pixels_.nodes[ray.ray.pixel] += float(ray.state.counters.trav_nodes);
   pixels_.dram_bytes[ray.ray.pixel] += float(cost.dram_bytes);

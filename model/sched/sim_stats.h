@@ -35,7 +35,6 @@ constexpr uint64_t kPixelBufferBytes = 3 * sizeof(float);  // a pixel's cycles, 
 struct PixelBuffers {
   uint32_t width = 0, height = 0;
   std::vector<float> cycles, nodes, dram_bytes;  // row-major, summed over a pixel's rays
-  uint64_t outside = 0;                          // rays whose pixel index lies outside the image
 };
 
 class SimStatsCollector : public RayRetireListener {

@@ -155,7 +155,7 @@ TEST(CliHostileStreams, AConfigIsPlannedNamingTheKeyThatTakesMost) {
   RunResult r = run_in_1gb("scene-info grid:10 --bvh --set rt.count=1024 --set rt.warps=1024");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
-            "rtsim: error: (defaults): simulating this machine needs about 34.5 GB of memory, "
+            "rtsim: error: --set rt.count=1024 --set rt.warps=1024: simulating this machine needs about 34.5 GB of memory, "
             "more than the 1.0 GB available; lower rt.count * rt.warps * rt.warp_size\n");
   r = run_in_1gb("scene-info grid:10 --bvh --set l2.size_bytes=17179869184");
   EXPECT_EQ(r.exit_code, 2);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "traces/error.h"
+#include "traces/stream.h"
 #include "traces/toml_text.h"
 #include "workloads/pipeline/spec_reader.h"
 #include "workloads/scene.h"
@@ -260,7 +261,7 @@ void read_root(SpecReader& r, WorkloadSpec& s, const std::string& stem) {
       "relative path is relative to this spec's folder");
   s.seed = uint64_t(r.integer("seed", int64_t(s.seed), "", "random seed", 0,
                               std::numeric_limits<int64_t>::max()));
-  s.frames = uint32_t(r.integer("frames", s.frames, "frames", "frames to trace", 1, 100000));
+  s.frames = uint32_t(r.integer("frames", s.frames, "frames", "frames to trace", 1, kMaxFrames));
   s.warmup_frames = uint32_t(
       r.integer("warmup_frames", s.warmup_frames, "frames",
                 "frames run before frame 0 at its camera, writing no rays (surfels and the "
@@ -315,7 +316,7 @@ bool parse_resolution(const std::string& text, uint32_t& width, uint32_t& height
     if (text[i] < '0' || text[i] > '9') return false;
     uint64_t& v = i < x ? w : h;
     v = v * 10 + uint64_t(text[i] - '0');
-    if (v > 65536) return false;
+    if (v > kMaxGridSide) return false;
   }
   if (w == 0 || h == 0) return false;
   width = uint32_t(w);
