@@ -9,7 +9,7 @@
 namespace rtsim {
 
 class InputError : public std::runtime_error {
-public:
+ public:
   using std::runtime_error::runtime_error;
   InputError(const std::string& message, std::string problem)
       : std::runtime_error(message), problem_(std::move(problem)) {}
@@ -18,7 +18,7 @@ public:
   // spec's line for a setting it passed on); the whole message where no place was given apart.
   std::string problem() const { return problem_.empty() ? what() : problem_; }
 
-private:
+ private:
   std::string problem_;
 };
 

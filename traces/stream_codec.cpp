@@ -24,8 +24,7 @@ std::string grid_problem(const StreamHeader& h) {
   if (h.frame_count > kMaxFrames)
     return fmt::format("{} frames: more than {}", h.frame_count, kMaxFrames);
   if (h.width > kMaxGridSide || h.height > kMaxGridSide)
-    return fmt::format("pixel grid {} x {}: a side is beyond {}", h.width, h.height,
-                       kMaxGridSide);
+    return fmt::format("pixel grid {} x {}: a side is beyond {}", h.width, h.height, kMaxGridSide);
   if ((h.width == 0) != (h.height == 0))
     return fmt::format("pixel grid {} x {}: one side is 0 (0 x 0 is no grid)", h.width, h.height);
   return {};

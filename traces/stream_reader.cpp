@@ -79,8 +79,8 @@ void RayStreamReader::check_counts_and_grid(size_t header_bytes) {
   struct stat info {};
   int fd = fileno(file_.get());
   if (fd >= 0 && fstat(fd, &info) == 0 && S_ISREG(info.st_mode))
-    room = (uint64_t(info.st_size) - std::min<uint64_t>(info.st_size, header_bytes)) /
-           kRayRecordBytes;
+    room =
+        (uint64_t(info.st_size) - std::min<uint64_t>(info.st_size, header_bytes)) / kRayRecordBytes;
   uint64_t total = 0;
   for (int t = 0; t < kRayTypeCount; ++t) {
     if (header_.counts[t] > room - total)
@@ -94,8 +94,8 @@ void RayStreamReader::check_counts_and_grid(size_t header_bytes) {
   if (header_.pixels() > total + kMaxGridPixelsBeyondRays)
     fail(36, fmt::format("pixel grid {} x {} has {} pixels, more than {} beyond the stream's {} "
                          "rays",
-                         header_.width, header_.height, header_.pixels(),
-                         kMaxGridPixelsBeyondRays, total));
+                         header_.width, header_.height, header_.pixels(), kMaxGridPixelsBeyondRays,
+                         total));
 }
 
 void RayStreamReader::fail(uint64_t offset, const std::string& what) const {

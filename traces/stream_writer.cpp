@@ -63,11 +63,11 @@ void RayStreamWriter::flush_chunk() {
 void RayStreamWriter::finish() {
   if (!file_) return;
   if (header_.pixels() > header_.total_rays() + kMaxGridPixelsBeyondRays)
-    throw_input_error(path_, "",
-                      fmt::format("a {} x {} pixel grid for {} rays: readers refuse a grid of more "
-                                  "than {} pixels beyond its rays; trace a smaller resolution",
-                                  header_.width, header_.height, header_.total_rays(),
-                                  kMaxGridPixelsBeyondRays));
+    throw_input_error(
+        path_, "",
+        fmt::format("a {} x {} pixel grid for {} rays: readers refuse a grid of more "
+                    "than {} pixels beyond its rays; trace a smaller resolution",
+                    header_.width, header_.height, header_.total_rays(), kMaxGridPixelsBeyondRays));
   if (chunk_count_ > 0) flush_chunk();
   flush_chunk();  // an empty chunk marks the end
   auto bytes = encode_header(header_);

@@ -134,8 +134,9 @@ TEST(CliHostileStreams, ARayWhoseFarHitsOverflowTMissesAsInEmbree) {
 
 TEST(CliHostileStreams, AddressSpaceLimitIsPlannedFor) {
   TempDir dir;
-  RunResult r = run_program("sh -c 'ulimit -v 6000000; exec " RTSIM_EXE,
-                            "trace cornell --resolution 10000x10000 -o " + dir.path("x.rays") + "'");
+  RunResult r =
+      run_program("sh -c 'ulimit -v 6000000; exec " RTSIM_EXE,
+                  "trace cornell --resolution 10000x10000 -o " + dir.path("x.rays") + "'");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find("cornell: tracing 10000 x 10000 pixels"), std::string::npos) << r.err;
@@ -155,7 +156,8 @@ TEST(CliHostileStreams, AConfigIsPlannedNamingTheKeyThatTakesMost) {
   RunResult r = run_in_1gb("scene-info grid:10 --bvh --set rt.count=1024 --set rt.warps=1024");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err,
-            "rtsim: error: --set rt.count=1024 --set rt.warps=1024: simulating this machine needs about 34.5 GB of memory, "
+            "rtsim: error: --set rt.count=1024 --set rt.warps=1024: simulating this machine needs "
+            "about 34.5 GB of memory, "
             "more than the 1.0 GB available; lower rt.count * rt.warps * rt.warp_size\n");
   r = run_in_1gb("scene-info grid:10 --bvh --set l2.size_bytes=17179869184");
   EXPECT_EQ(r.exit_code, 2);

@@ -97,13 +97,15 @@ TEST(CliMultiDevice, SetIsForHardwareKeysAndDeviceSetForTheSetsKeys) {
   test::RunResult r = test::run_rtsim("multi-device x.rays --devices-file " + set +
                                       " --set link.bandwidth_gbps=32 -o x");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_EQ(test::first_line(r.err),
-            "rtsim: error: --set link.bandwidth_gbps=32: a device-set key, not a hardware key: pass "
-            "it as --device-set link.bandwidth_gbps=32")
+  EXPECT_EQ(
+      test::first_line(r.err),
+      "rtsim: error: --set link.bandwidth_gbps=32: a device-set key, not a hardware key: pass "
+      "it as --device-set link.bandwidth_gbps=32")
       << r.err;
   r = test::run_rtsim("multi-device x.rays --devices-file " + set + " --set rt.nope=1 -o x");
   EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(test::first_line(r.err).find("--set rt.nope=1: unknown key 'rt.nope'"), std::string::npos)
+  EXPECT_NE(test::first_line(r.err).find("--set rt.nope=1: unknown key 'rt.nope'"),
+            std::string::npos)
       << r.err;
   r = test::run_rtsim("multi-device x.rays --devices-file " + set +
                       " --device-set link.bandwidth_gbps=-1 -o x");
