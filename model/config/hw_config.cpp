@@ -571,18 +571,15 @@ uint32_t ray_slots(const HwConfig& c) {
 namespace {
 
 // Measured peaks (bench-sim's child peak memory as each key grows), rounded up by a fifth or
-// more: an RT unit's modules 84 KiB besides its slots and L1, a ray context 830 B, a cache line
-// 16 B and each of its sectors 16 B, a sorting bin 24 B, a shader warp slot 56 B.
+// more: an RT unit's modules 84 KiB besides its slots and L1, a ray context 830 B, a sorting bin
+// 24 B, a shader warp slot 56 B; a cache, its arrays (Cache::host_bytes) and a fourth more.
 constexpr uint64_t kRtUnitBytes = 128 * 1024;
 constexpr uint64_t kRayContextBytes = 1024;
-constexpr uint64_t kCacheLineBytes = 20;
-constexpr uint64_t kCacheSectorBytes = 20;
 constexpr uint64_t kSortBinBytes = 32;
 constexpr uint64_t kShaderWarpBytes = 64;
 
 uint64_t cache_host_bytes(const CacheConfig& c) {
-  uint64_t lines = c.size_bytes / c.line_bytes;
-  return lines * (kCacheLineBytes + kCacheSectorBytes * (c.line_bytes / block_bytes(c)));
+  return Cache::host_bytes(c) / 4 * 5;
 }
 
 }  // namespace
