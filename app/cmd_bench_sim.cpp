@@ -95,12 +95,13 @@ nlohmann::json simulate(const BenchSimOptions& o, const HwConfig& config, BvhVie
     double seconds = wall_seconds() - start;
     StatsRegistry stats;
     sim.report(stats);
+    const std::string shared = "mem." + last_level(config).name;  // the level above DRAM
     nlohmann::json out = {{"seconds", seconds},
                           {"cpu_seconds", cpu},
                           {"rays", sim.rays()},
                           {"cycles", sim.cycles()},
                           {"dram_bytes", stats.value("dram.bytes")},
-                          {"l2_requests", stats.value("l2.accesses") + stats.value("l2.writes")},
+                          {"l2_requests", stats.value(shared + ".accesses") + stats.value(shared + ".writes")},
                           {"peak_rss_mib", peak_rss_mib()}};
     return out.dump();
   });

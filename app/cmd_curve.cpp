@@ -103,7 +103,7 @@ nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& requ
                                 const CurveInputs& in) {
   const CurveOptions& o = in.options;
   fmt::print(stderr, "curve: one pass, L1 {} bytes: {} capacities x {} associativities ({})\n",
-             config.l1.size_bytes, request.capacities.size(), request.ways.size(),
+             first_level(config).cache.size_bytes, request.capacities.size(), request.ways.size(),
              o.sample_rate > 1 ? fmt::format("miniature caches, 1 line in {}", o.sample_rate)
                                : std::string("LRU stacks per set"));
   CacheCurve curve = run_cache_curve(config, in.image, o.stream, request);
@@ -138,9 +138,9 @@ nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& requ
                                     {"config", config.name},
                                     {"config_file", o.config},
                                     {"sets", o.sets},
-                                    {"l1_bytes", config.l1.size_bytes},
-                                    {"l2_slices", config.l2_layout.slices},
-                                    {"l2_line_bytes", config.l2.line_bytes}};
+                                    {"l1_bytes", first_level(config).cache.size_bytes},
+                                    {"l2_slices", last_level(config).slices},
+                                    {"l2_line_bytes", last_level(config).cache.line_bytes}};
   return reports::curve_json(curve, context);
 }
 
@@ -167,7 +167,7 @@ int run_curve(const CurveOptions& o) {
                                  config_culprit(o.config, o.sets, curve_config_problem), problem));
   CurveRequest request;
   request.capacities = parse_sizes(o.l2, "--l2", "l2.size_bytes");
-  request.ways = o.ways.empty() ? std::vector<uint32_t>{config.l2.ways} : o.ways;
+  request.ways = o.ways.empty() ? std::vector<uint32_t>{last_level(config).cache.ways} : o.ways;
   request.sample_rate = o.sample_rate;
   std::vector<uint64_t> simulate;
   if (!o.simulate.empty() && o.simulate != "knee")
@@ -179,11 +179,11 @@ int run_curve(const CurveOptions& o) {
   problem = curve_request_problem(config, request);
   if (!problem.empty()) throw InputError(fmt::format("curve: {}: {}", request_options(o), problem));
   std::vector<HwConfig> configs;  // one per L1 size
-  for (uint64_t size : o.l1.empty() ? std::vector<uint64_t>{config.l1.size_bytes}
+  for (uint64_t size : o.l1.empty() ? std::vector<uint64_t>{first_level(config).cache.size_bytes}
                                     : parse_sizes(o.l1, "--l1", "rt.l1.size_bytes")) {
     HwConfig c = config;
-    c.l1.size_bytes = size;
-    problem = cache_config_problem(c.l1);
+    first_level(c).cache.size_bytes = size;
+    problem = cache_config_problem(first_level(c).cache);
     if (!problem.empty())
       throw InputError(fmt::format("curve: --l1: {} bytes: {}", size, problem));
     configs.push_back(c);
@@ -208,11 +208,11 @@ int run_curve(const CurveOptions& o) {
   std::vector<std::string> files;  // their curve.json
   for (const HwConfig& c : configs) {
     nlohmann::ordered_json& doc = docs.emplace_back(curve_on(c, request, in));
-    if (family) fmt::print("L1 {}:\n", reports::size_text(c.l1.size_bytes, true));
+    if (family) fmt::print("L1 {}:\n", reports::size_text(first_level(c).cache.size_bytes, true));
     fmt::print("{}", reports::curve_table(doc, false));
     if (family) fmt::print("\n");
     if (o.output.empty()) continue;
-    std::string dir = family ? o.output + "/l1-" + reports::size_text(c.l1.size_bytes, true) : o.output;
+    std::string dir = family ? o.output + "/l1-" + reports::size_text(first_level(c).cache.size_bytes, true) : o.output;
     if (family) create_output_folder(dir);
     write_curve(dir, doc, c, !o.no_charts);
     files.push_back(dir + "/curve.json");

@@ -49,8 +49,8 @@ Json hardware_json(const ReportInputs& in) {
           {"rt_units", c.rt_units},
           {"mode", traversal_mode_name(c.rt.mode)},
           {"ray_slots", ray_slots(c)},
-          {"l1", cache(c.l1)},
-          {"l2", cache(c.l2)},
+          {"l1", cache(first_level(c).cache)},
+          {"l2", cache(last_level(c).cache)},
           {"dram",
            {{"model", c.dram_model == DramModel::Banked ? "banked" : "simple"},
             {"bytes_per_cycle", c.dram.bytes_per_cycle},
@@ -102,7 +102,8 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
   if (!stats.is_null()) {
     const Json& counters = stats["stats"]["counters"];
     b["l1_bytes_per_ray"] = sum_units(counters, c.rt_units, ".fetch_bytes") / rays;
-    b["l2_bytes_per_ray"] = sum_units(counters, c.rt_units, ".l1.bytes_below") / rays;
+    const std::string first = "mem." + first_level(c).name, last = "mem." + last_level(c).name;
+    b["l2_bytes_per_ray"] = counters[first + ".bytes_below"].get<double>() / rays;
     b["dram_bytes_per_cycle"] = stats["memory"]["dram_bytes_per_cycle"];
     b["dram_utilisation"] = stats["utilisation"]["dram"];
     for (const char* key :
@@ -111,9 +112,10 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
       entry["l1_bytes_per_ray"] =
-          counters["type." + name + ".l1_accesses"].get<double>() * block_bytes(c.l1) / n;
-      entry["l2_bytes_per_ray"] =
-          counters["type." + name + ".l2_accesses"].get<double>() * c.l2.line_bytes / n;
+          counters["type." + name + "." + first + ".accesses"].get<double>() *
+          block_bytes(first_level(c).cache) / n;
+      entry["l2_bytes_per_ray"] = counters["type." + name + "." + last + ".accesses"].get<double>() *
+                                  last_level(c).cache.line_bytes / n;
     }
   }
   b["by_type"] = by_type;
@@ -240,8 +242,8 @@ Json time_json(const FidelityResult& f, const Json& stats, const Json& collected
 
 double on_chip_bytes(const HwConfig& c) {
   double stacks = double(c.rt.warps) * c.rt.warp_size * c.rt.stack.entries * c.rt.stack.entry_bytes;
-  double units = double(c.rt_units) * (double(c.l1.size_bytes) + stacks);
-  return units + double(c.l2.size_bytes) + ray_buffer_sram_bytes(c) + sort_buffer_bytes(c.sort);
+  double units = double(c.rt_units) * (double(first_level(c).cache.size_bytes) + stacks);
+  return units + double(last_level(c).cache.size_bytes) + ray_buffer_sram_bytes(c) + sort_buffer_bytes(c.sort);
 }
 
 Json build_report(const ReportInputs& in) {

@@ -58,7 +58,7 @@ ConfigReader ConfigReader::section(const std::string& name) {
 
 void ConfigReader::fail(const std::string& key, const std::string& what) const {
   const toml::node* node = table_ && !key.empty() ? table_->get(key) : table_;
-  std::string full = full_key(key);
+  std::string full = ctx_.shown(full_key(key));
   std::string set = ctx_.set_place(full);
   throw_input_error(set.empty() ? ctx_.file : set, set.empty() ? line_of(node) : "",
                     fmt::format("key '{}': {}", full, what));
@@ -191,7 +191,14 @@ toml::table parse_config_file(const std::string& path, const std::string& what) 
   return parse_toml(text.str(), path);
 }
 
-std::string ConfigReadContext::set_place(const std::string& key) const {
+std::string ConfigReadContext::shown(const std::string& key) const {
+  for (const auto& [read, written] : aliases)
+    if (key.compare(0, read.size(), read) == 0) return written + key.substr(read.size());
+  return key;
+}
+
+std::string ConfigReadContext::set_place(const std::string& read_key) const {
+  std::string key = shown(read_key);
   for (auto it = set_assignments.rbegin(); it != set_assignments.rend(); ++it)
     if (it->compare(0, key.size() + 1, key + "=") == 0) return set_option + " " + shown(*it);
   return "";
@@ -247,11 +254,12 @@ void find_unknown(const toml::table& table, const std::string& prefix, const Con
   for (auto&& [name, node] : table) {
     std::string key(name.str());
     std::string full = prefix.empty() ? key : prefix + "." + key;
+    std::string written = ctx.shown(full);
     uint32_t line = name.source().begin ? name.source().begin.line : 0;
     if (node.is_table() && contains(ctx.sections, full)) {
       find_unknown(*node.as_table(), full, ctx, out);
     } else if (!contains(ctx.known, full)) {
-      out.push_back({line, full, prefix});
+      out.push_back({line, written, ctx.shown(prefix)});
     }
   }
 }
@@ -270,12 +278,11 @@ void check_unknown_keys(const toml::table& root, const ConfigReadContext& ctx) {
                          : *std::min_element(unknown.begin(), unknown.end(),
                                              [](auto& a, auto& b) { return a.line < b.line; });
   std::string known;
-  for (const ConfigKeyDoc& doc : ctx.docs) {
-    std::string section =
-        doc.key.substr(0, doc.key.rfind('.') == std::string::npos ? 0 : doc.key.rfind('.'));
+  for (const ConfigKeyDoc& d : ctx.docs) {
+    std::string key = ctx.shown(d.key);
+    std::string section = key.substr(0, key.rfind('.') == std::string::npos ? 0 : key.rfind('.'));
     if (section == u.section)
-      known += (known.empty() ? "" : ", ") +
-               doc.key.substr(u.section.empty() ? 0 : u.section.size() + 1);
+      known += (known.empty() ? "" : ", ") + key.substr(u.section.empty() ? 0 : u.section.size() + 1);
   }
   std::string what = fmt::format("unknown key '{}'", u.key);
   if (!known.empty())

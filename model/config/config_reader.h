@@ -17,6 +17,12 @@
 
 namespace rtsim {
 
+// The slowest data port or crossbar link: a link books a transfer cycle by cycle
+// (model/mem/crossbar.h), so a 4 KB line at 1 byte a cycle already costs 4,096 steps; slower
+// ports made runs endless, and 1e-30 pushed event times past what SystemC represents.
+constexpr double kMinPortBytesPerCycle = 1;
+constexpr double kMaxBytesPerCycle = 1e6;
+
 struct ConfigKeyDoc {
   std::string key;            // dotted: "rt.l1.size_bytes"
   std::string type;           // integer, number, boolean, string
@@ -33,6 +39,12 @@ struct ConfigReadContext {
   std::vector<std::pair<std::string, nlohmann::ordered_json>> values;  // resolved, read order
   std::vector<std::string> known;                                      // every key read, dotted
   std::vector<std::string> sections;  // every section opened, dotted
+  // (read, written) key prefixes: keys read under one name that the user wrote under another
+  // (the shorthand [rt.l1], [xbar] and [l2] for memory.l1 and memory.l2), named as written.
+  std::vector<std::pair<std::string, std::string>> aliases;
+
+  // A key (or a text naming keys) as the user wrote it.
+  std::string shown(const std::string& key) const;
 
   // Where an error about key points: "--set KEY=VALUE" (its last override), or empty if the
   // key was not overridden.

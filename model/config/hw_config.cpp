@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "model/config/config_reader.h"
+#include "model/config/memory_config.h"
 #include "model/energy/dram_energy.h"
 #include "model/energy/process_node.h"
 #include "model/config/dram_presets.h"
@@ -20,41 +21,6 @@ namespace {
 
 constexpr uint64_t kMaxU32 = 0xffffffffull;
 using Zero = ConfigReader::Zero;
-// The slowest data port or crossbar link: a link books a transfer cycle by cycle
-// (model/mem/crossbar.h), so a 4 KB line at 1 byte a cycle already costs 4,096 steps; slower
-// ports made runs endless, and 1e-30 pushed event times past what SystemC represents.
-constexpr double kMinPortBytesPerCycle = 1;
-constexpr double kMaxBytesPerCycle = 1e6;
-
-void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
-  c.size_bytes =
-      r.integer("size_bytes", c.size_bytes, "bytes",
-                fmt::format("data capacity of {}", which).c_str(), kMinCacheBytes, kMaxCacheBytes);
-  c.line_bytes = uint32_t(
-      r.integer("line_bytes", c.line_bytes, "bytes", "line size, a power of two", 4, 4096));
-  c.sector_bytes = uint32_t(r.integer(
-      "sector_bytes", c.sector_bytes, "bytes",
-      "fetch unit of a miss, a power of two dividing the line; 0 = the whole line", 0, 4096));
-  c.ways = uint32_t(r.integer("ways", c.ways, "lines", "associativity: lines per set", 1, 1024));
-  c.replacement =
-      r.text("replacement", c.replacement, "replacement policy", replacement_policy_names());
-  c.hit_latency =
-      uint32_t(r.integer("hit_latency", c.hit_latency, "cycles",
-                         "request to data on a hit; also the tag check of a miss", 0, 100000));
-  c.mshrs =
-      uint32_t(r.integer("mshrs", c.mshrs, "count", "block misses in flight at once", 1, 65536));
-  c.merge_limit = uint32_t(r.integer("merge_limit", c.merge_limit, "requests",
-                                     "requests one MSHR takes besides its own (more replay after "
-                                     "the data); 0 = no limit",
-                                     0, 65535));
-  c.banks = uint32_t(
-      r.integer("banks", c.banks, "banks", "lines interleaved over them, a power of two", 1, 1024));
-  c.bank_ports = uint32_t(r.integer("bank_ports", c.bank_ports, "lookups/cycle",
-                                    "lookups one bank starts per cycle; 0 = no limit", 0, 1024));
-  c.bytes_per_cycle = r.rate("bytes_per_cycle", c.bytes_per_cycle, "bytes/cycle",
-                             "data port bandwidth (reads and writes)", kMinPortBytesPerCycle,
-                             kMaxBytesPerCycle, Zero::NoLimit);
-}
 
 void read_shader(ConfigReader r, ShaderConfig& c) {
   std::string model = r.text("model", shader_model_name(c.model),
@@ -346,7 +312,6 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                            "most bytes one prefetch fetches, nodes first; 0 = "
                                            "the whole treelet",
                                            0, kMaxU32));
-  read_cache(rt.section("l1"), c.l1, "each RT unit's L1");
 
   ConfigReader shader = r.section("shader");
   AnyHitConfig& anyhit = c.rt.anyhit;
@@ -382,20 +347,7 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                           "from a unit taking a ray to its next step", 0, 100000));
   read_ray_buffer(tq, c.treelet_queues.buffer);
 
-  ConfigReader l2 = r.section("l2");
-  read_cache(l2, c.l2, "the shared L2 (all slices)");
-  c.l2_layout.slices = uint32_t(l2.integer(
-      "slices", c.l2_layout.slices, "slices",
-      "address-hashed slices of size_bytes / slices each; mshrs, banks and bandwidth are per slice",
-      1, 1024));
-  ConfigReader xbar = r.section("xbar");
-  c.l2_layout.crossbar.latency =
-      uint32_t(xbar.integer("latency", c.l2_layout.crossbar.latency, "cycles",
-                            "crossbar between L1s and L2 slices, each way", 0, 100000));
-  c.l2_layout.crossbar.bytes_per_cycle =
-      xbar.rate("bytes_per_cycle", c.l2_layout.crossbar.bytes_per_cycle, "bytes/cycle",
-                "each crossbar port (one per RT unit, one per slice), each direction",
-                kMinPortBytesPerCycle, kMaxBytesPerCycle, Zero::NoLimit);
+  read_memory_levels(r.section("memory"), c.memory);
 
   ConfigReader dram = r.section("dram");
   std::string model = dram.text("model", c.dram_model == DramModel::Banked ? "banked" : "simple",
@@ -500,7 +452,9 @@ HwConfig read_keys(const std::string& path, const std::vector<std::string>& over
                    ConfigReadContext& ctx) {
   toml::table root = parse_config_file(path, "hardware config");
   ctx.file = path.empty() ? "(defaults)" : path;
+  name_memory_levels(root, ctx);
   for (const std::string& assignment : overrides) apply_override(root, assignment, ctx);
+  expand_cache_shorthand(root, ctx);
   HwConfig config;
   ConfigReader reader(&root, "", ctx);
   read_hw_config(reader, config);
@@ -549,10 +503,40 @@ DramConfig dram_for_analysis(const HwConfig& config) {
   return d;
 }
 
-CacheConfig l1_as_built(const HwConfig& config) {
-  CacheConfig l1 = config.l1;
-  l1.write_back = config.rt.mode != TraversalMode::Treelet;
-  return l1;
+std::vector<MemoryLevelConfig> default_memory_levels() {
+  MemoryLevelConfig l1, l2;
+  l1.name = "l1";
+  l1.cache = CacheConfig{32 * 1024, 64, 4, "lru", 20, 16};
+  l2.name = "l2";
+  l2.scope = LevelScope::Shared;
+  l2.cache = CacheConfig{2 * 1024 * 1024, 64, 16, "lru", 80, 128};
+  return {l1, l2};
+}
+
+std::vector<MemoryLevelConfig> levels_as_built(const HwConfig& config) {
+  std::vector<MemoryLevelConfig> levels = config.memory;
+  for (MemoryLevelConfig& level : levels)
+    if (level.scope != LevelScope::Shared && config.rt.mode == TraversalMode::Treelet)
+      level.cache.write_back = false;
+  return levels;
+}
+
+const MemoryLevelConfig* find_level(const HwConfig& config, const std::string& name) {
+  for (const MemoryLevelConfig& level : config.memory)
+    if (level.name == name) return &level;
+  return nullptr;
+}
+
+std::string two_level_problem(const HwConfig& c, const std::string& what) {
+  if (c.memory.size() == 2 && c.memory[0].scope == LevelScope::Unit &&
+      c.memory[1].scope == LevelScope::Shared && c.memory[1].fill == LevelFill::Miss)
+    return {};
+  std::string levels;
+  for (const MemoryLevelConfig& l : c.memory)
+    levels += (levels.empty() ? "" : ", ") + l.name + " (" + scope_name(l) + ")";
+  return fmt::format(
+      "{} models a unit level and one shared level; this machine has {} ({}): use `rtsim sim`",
+      what, c.memory.size(), levels);
 }
 
 uint64_t ray_buffer_sram_bytes(const HwConfig& c) {
@@ -590,14 +574,21 @@ SimHostMemory sim_host_memory(const HwConfig& c) {
        c.rt.mode == TraversalMode::Treelet ? "treelet_queues.max_rays"
        : c.sort.key != SortKey::None       ? "rt.count * rt.warps * rt.warp_size + sort.buffer_rays"
                                            : "rt.count * rt.warps * rt.warp_size"},
-      {c.rt_units * cache_host_bytes(c.l1), "rt.l1.size_bytes (each of rt.count L1s)"},
-      {cache_host_bytes(c.l2), "l2.size_bytes"},
       {c.sort.key == SortKey::Hash ? c.sort.bins * kSortBinBytes : 0, "sort.bins"},
       {c.rt_units * kRtUnitBytes, "rt.count"},
       {c.shader.model == ShaderModel::Simt ? c.rt_units * c.shader.warps * kShaderWarpBytes : 0,
        "shader.warps (each of rt.count SMs)"}};
   SimHostMemory memory;
   uint64_t largest = 0;
+  for (const MemoryLevelConfig& level : c.memory) {
+    uint32_t n = level_instances(level, c.rt_units);
+    uint64_t bytes = n * cache_host_bytes(level.cache);
+    memory.bytes += bytes;
+    if (bytes <= largest) continue;
+    largest = bytes;
+    memory.largest = fmt::format("memory.{}.size_bytes{}", level.name,
+                                 n > 1 ? fmt::format(" (each of {} instances)", n) : "");
+  }
   for (const auto& [bytes, key] : parts) {
     memory.bytes += bytes;
     if (bytes <= largest) continue;
@@ -612,9 +603,7 @@ std::string hw_config_problem(const HwConfig& c) {
     return problem.empty() ? problem : fmt::format("[{}] {}", name, problem);
   };
   std::string p = section("rt", rt_core_config_problem(c.rt));
-  if (p.empty()) p = section("rt.l1", cache_config_problem(c.l1));
-  if (p.empty()) p = section("l2", cache_config_problem(c.l2));
-  if (p.empty()) p = section("l2", l2_layout_problem(c.l2, c.l2_layout));
+  if (p.empty()) p = hierarchy_problem(c.memory);
   if (p.empty()) p = section("dram", dram_config_problem(c.dram));
   if (p.empty() && c.dram_model == DramModel::Banked)
     p = section("dram", banked_dram_config_problem(c.banked_dram));
@@ -655,14 +644,14 @@ HwConfig load_hw_config(const std::string& path, const std::vector<std::string>&
   HwConfig config = read_keys(path, overrides, ctx);
   std::string problem = hw_config_problem(config);
   if (!problem.empty())
-    throw_input_error(config_culprit(path, overrides, hw_config_problem), "", problem);
+    throw_input_error(config_culprit(path, overrides, hw_config_problem), "", ctx.shown(problem));
   SimHostMemory memory = sim_host_memory(config);
   if (memory.bytes > available_memory_bytes()) {
     auto too_big = [](const HwConfig& c) {
       return std::string(sim_host_memory(c).bytes > available_memory_bytes() ? "too big" : "");
     };
     require_memory(memory.bytes, config_culprit(path, overrides, too_big),
-                   "simulating this machine", "lower " + memory.largest);
+                   "simulating this machine", "lower " + ctx.shown(memory.largest));
   }
   return config;
 }

@@ -1,5 +1,5 @@
-// The hardware config of a simulation: the RT units, their caches and test units, the shared
-// L2 and DRAM, the ray dispatcher, the treelet queues and the BVH the hardware traverses. The
+// The hardware config of a simulation: the RT units and their test units, the cache levels
+// (model/mem/hierarchy.h) and DRAM, the ray dispatcher, the treelet queues and the BVH the hardware traverses. The
 // TOML nesting follows the module tree (rt.l1 is each RT unit's L1). Every key is read in one
 // place, read_hw_config() in hw_config.cpp, with its default, unit and description;
 // model/SIM-REFERENCE.md lists them all, and `rtsim sim --list-keys` prints them.
@@ -17,6 +17,7 @@
 #include "model/mem/crossbar.h"
 #include "model/mem/dram.h"
 #include "model/mem/dram_config.h"
+#include "model/mem/hierarchy.h"
 #include "model/sched/dispatcher.h"
 #include "model/sched/ray_sorter.h"
 #include "model/sched/rt_core.h"
@@ -25,7 +26,7 @@
 
 namespace rtsim {
 
-// The limits of a cache's size_bytes (rt.l1, l2), also for the sizes `rtsim curve` sets.
+// The limits of a cache's size_bytes (memory.NAME), also for the sizes `rtsim curve` sets.
 constexpr uint64_t kMinCacheBytes = 64;
 constexpr uint64_t kMaxCacheBytes = 1ull << 34;
 
@@ -46,6 +47,10 @@ enum class DramModel : uint8_t { Simple, Banked };
 BankedDramConfig dram_preset_config(const std::string& name);
 const BankedDramConfig& default_banked_dram();  // the gddr6-16 preset
 
+// The two levels of a config that gives none: l1 (per unit) and l2 (shared), as the shorthand
+// sections [rt.l1], [xbar] and [l2] describe them.
+std::vector<MemoryLevelConfig> default_memory_levels();
+
 struct HwConfig {
   std::string name = "default";  // the preset's name, carried into results
   std::string description;
@@ -53,12 +58,11 @@ struct HwConfig {
   SimulationConfig sim;
   DispatchConfig dispatch;
   SortConfig sort;        // the ray sorting unit between dispatch and the units (off by default)
-  uint32_t rt_units = 4;  // units: RT units, each with its own L1
+  uint32_t rt_units = 4;  // units: RT units, each with its own first cache level
   RtCoreConfig rt;
-  CacheConfig l1{32 * 1024, 64, 4, "lru", 20, 16};
   TreeletQueueConfig treelet_queues;
-  CacheConfig l2{2 * 1024 * 1024, 64, 16, "lru", 80, 128};
-  L2Layout l2_layout;  // slices and the crossbar in front of them
+  // The cache levels from the unit outwards: by default a 32 KB L1 per unit and a 2 MB shared L2.
+  std::vector<MemoryLevelConfig> memory = default_memory_levels();
   DramModel dram_model = DramModel::Banked;
   DramConfig dram{64.0, 200, 128};                       // the simple model
   BankedDramConfig banked_dram = default_banked_dram();  // the banked model
@@ -67,9 +71,20 @@ struct HwConfig {
   EnergyConfig energy;  // the energy and area model's node and assumptions
 };
 
-// The L1 as the simulator builds it: write-back, but write-through in treelet mode, where a
-// ray moves between units and so its spilled stack entries must reach the shared L2.
-CacheConfig l1_as_built(const HwConfig& config);
+// The cache levels as the simulator builds them: write-back, but every level below a shared
+// one write-through in treelet mode, where a ray moves between units and so its spilled stack
+// entries must reach a level every unit reads.
+std::vector<MemoryLevelConfig> levels_as_built(const HwConfig& config);
+// The unit's first level and the level above DRAM (the same level in a one-level hierarchy).
+inline MemoryLevelConfig& first_level(HwConfig& c) { return c.memory.front(); }
+inline const MemoryLevelConfig& first_level(const HwConfig& c) { return c.memory.front(); }
+inline MemoryLevelConfig& last_level(HwConfig& c) { return c.memory.back(); }
+inline const MemoryLevelConfig& last_level(const HwConfig& c) { return c.memory.back(); }
+// The level named `name`, or null.
+const MemoryLevelConfig* find_level(const HwConfig& config, const std::string& name);
+// Whether the hierarchy is a unit level and one shared level, the form the faster fidelity
+// levels and the energy model's wire term reason with; else why not, naming the command.
+std::string two_level_problem(const HwConfig& config, const std::string& what);
 // Bytes of the treelet queues' SRAM ray buffer (0 outside treelet mode and in memory).
 uint64_t ray_buffer_sram_bytes(const HwConfig& config);
 // Ray slots of the machine: the rays it holds in flight (ray contexts; the treelet buffer in

@@ -82,7 +82,7 @@ struct SramTraffic {
   double accesses = 0, read_bytes = 0, write_bytes = 0;
 };
 // line_bytes 0: a plain RAM without tags.
-StructureEnergy sram(const Run& run, const char* name, const char* share_counter,
+StructureEnergy sram(const Run& run, const std::string& name, const std::string& share_counter,
                      uint32_t instances, const SramArray& data, uint32_t line_bytes,
                      const SramTraffic& t) {
   StructureEnergy s{name, "access", share_counter};
@@ -102,13 +102,27 @@ SramArray cache_array(const CacheConfig& c, uint64_t bytes) {
   return {bytes, 64, c.banks, std::max<uint32_t>(c.bank_ports, 1)};
 }
 
-// Bytes between the L1s and the L2 slices, over wire_mm of wire.
+// Bytes between the units' first level and the second level, over wire_mm of wire.
 StructureEnergy wires(const Run& run) {
-  StructureEnergy s{"l1_l2_wires", "byte", "l2_accesses"};
+  const std::string& first = run.config.memory[0].name;
+  const std::string& second = run.config.memory[1].name;
+  StructureEnergy s{first + "_" + second + "_wires", "byte", "mem." + second + ".accesses"};
   s.instances = run.config.rt_units;
-  s.events = run.value("l2.bytes_read") + run.value("l2.write_bytes");
+  s.events = run.value("mem." + second + ".bytes_read") + run.value("mem." + second + ".write_bytes");
   s.dynamic_pj = s.events * 8 * wire_pj_per_bit_mm(run.node) * run.config.energy.wire_mm;
   return s;
+}
+
+// A cache level: every slice of every instance, an SRAM array each.
+StructureEnergy cache_level(const Run& run, uint32_t index) {
+  const MemoryLevelConfig& level = run.config.memory[index];
+  const std::string p = "mem." + level.name;
+  SramTraffic traffic{run.value(p + ".accesses"), run.value(p + ".bytes_read"),
+                      run.value(p + ".bytes_below") + run.value(p + ".write_bytes")};
+  uint32_t slices = level_instances(level, run.config.rt_units) * level.slices;
+  return sram(run, level.name, p + ".accesses", slices,
+              cache_array(level.cache, level.cache.size_bytes / level.slices),
+              level.cache.line_bytes, traffic);
 }
 
 // The device data scaled to one channel: bursts by their bits, activations by the row, refresh
@@ -151,7 +165,7 @@ StructureEnergy dram(const Run& run) {
   return s;
 }
 
-double type_value(const StatsRegistry& stats, int type, const char* counter) {
+double type_value(const StatsRegistry& stats, int type, const std::string& counter) {
   return stats.value(std::string("type.") + ray_type_name(RayType(type)) + "." + counter);
 }
 
@@ -162,7 +176,7 @@ void split_by_type(DesignEnergy& d, const StatsRegistry& stats) {
   for (const StructureEnergy& s : d.structures) {
     std::array<double, kRayTypeCount> share{};
     double all = 0;
-    for (const char* counter : {s.share_counter, "rays"}) {
+    for (const std::string& counter : {s.share_counter, std::string("rays")}) {
       for (int t = 0; t < kRayTypeCount; ++t) {
         share[t] = type_value(stats, t, counter);
         all += share[t];
@@ -219,10 +233,7 @@ DesignEnergy design_energy(const HwConfig& c, const StatsRegistry& stats) {
   d.structures.push_back(test_units(run, "transform_units", c.rt.transform, transform_test(),
                                     "transform.tests", "trav_instances"));
   d.structures.push_back(ray_registers(run));
-  SramTraffic l1{run.units_value("l1.accesses"), run.units_value("l1.bytes_read"),
-                 run.units_value("l1.bytes_below") + run.units_value("l1.write_bytes")};
-  d.structures.push_back(sram(run, "l1", "l1_accesses", c.rt_units,
-                              cache_array(c.l1, c.l1.size_bytes), c.l1.line_bytes, l1));
+  d.structures.push_back(cache_level(run, 0));
   if (uint64_t bytes = ray_buffer_sram_bytes(c)) {
     double moved = run.value("treelet_queues.buffer.sram_bytes");
     double reads = run.value("treelet_queues.buffer.sram_reads");
@@ -237,12 +248,8 @@ DesignEnergy design_energy(const HwConfig& c, const StatsRegistry& stats) {
     SramTraffic sort{2 * rays, rays * kSortedRayBytes, rays * kSortedRayBytes};
     d.structures.push_back(sram(run, "sort_buffer", "rays", 1, {bytes}, 0, sort));
   }
-  d.structures.push_back(wires(run));
-  uint32_t slices = c.l2_layout.slices;
-  SramTraffic l2{run.value("l2.accesses"), run.value("l2.bytes_read"),
-                 run.value("l2.bytes_below") + run.value("l2.write_bytes")};
-  d.structures.push_back(sram(run, "l2", "l2_accesses", slices,
-                              cache_array(c.l2, c.l2.size_bytes / slices), c.l2.line_bytes, l2));
+  if (c.memory.size() > 1) d.structures.push_back(wires(run));
+  for (uint32_t i = 1; i < c.memory.size(); ++i) d.structures.push_back(cache_level(run, i));
   d.structures.push_back(dram(run));
   split_by_type(d, stats);
   return d;

@@ -22,11 +22,11 @@
 namespace rtsim {
 
 struct StructureEnergy {
-  StructureEnergy(std::string name, std::string event, const char* share_counter)
-      : name(std::move(name)), event(std::move(event)), share_counter(share_counter) {}
-  std::string name;           // "l1", "dram", ...
+  StructureEnergy(std::string name, std::string event, std::string share_counter)
+      : name(std::move(name)), event(std::move(event)), share_counter(std::move(share_counter)) {}
+  std::string name;           // a cache level's name, "dram", ...
   std::string event;          // what one event is: "test", "access", "burst", "byte"
-  const char* share_counter;  // type.T.NAME: the ray types' share of its dynamic energy
+  std::string share_counter;  // type.T.NAME: the ray types' share of its dynamic energy
   uint32_t instances = 0;     // datapaths, caches, slices, channels
   double events = 0;          // over the run, all instances
   double dynamic_pj = 0;      // over the run

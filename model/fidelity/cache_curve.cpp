@@ -16,6 +16,7 @@
 #include "model/sc/fork_run.h"
 #include "model/sc/rt_simulator.h"
 #include "model/sched/ray_source.h"
+#include "traces/error.h"
 #include "traces/stream.h"
 
 namespace rtsim {
@@ -23,11 +24,11 @@ namespace rtsim {
 namespace {
 
 uint64_t sets_per_slice(const HwConfig& c, uint64_t capacity, uint32_t ways) {
-  return capacity / (uint64_t(c.l2.line_bytes) * ways * c.l2_layout.slices);
+  return capacity / (uint64_t(last_level(c).cache.line_bytes) * ways * last_level(c).slices);
 }
 
 CacheConfig l2_at(const HwConfig& c, uint64_t capacity, uint32_t ways) {
-  CacheConfig l2 = c.l2;
+  CacheConfig l2 = last_level(c).cache;
   l2.size_bytes = capacity;
   l2.ways = ways;
   return l2;
@@ -37,12 +38,12 @@ CacheConfig l2_at(const HwConfig& c, uint64_t capacity, uint32_t ways) {
 class CurveSink : public L2ReferenceSink {
  public:
   CurveSink(const HwConfig& c, const CurveRequest& request) {
-    L2Sets sets{c.l2.line_bytes, block_bytes(c.l2), c.l2_layout.slices, 1};
+    L2Sets sets{last_level(c).cache.line_bytes, block_bytes(last_level(c).cache), last_level(c).slices, 1};
     uint32_t max_ways = *std::max_element(request.ways.begin(), request.ways.end());
     for (uint32_t ways : request.ways)
       for (uint64_t capacity : request.capacities) {
         if (request.sample_rate > 1) {
-          minis.push_back(std::make_unique<MiniCache>(l2_at(c, capacity, ways), c.l2_layout.slices,
+          minis.push_back(std::make_unique<MiniCache>(l2_at(c, capacity, ways), last_level(c).slices,
                                                       request.sample_rate));
           continue;
         }
@@ -87,14 +88,14 @@ std::string curve_request_problem(const HwConfig& c, const CurveRequest& request
     if (ways < 1 || ways > LruStackSets::kMaxWays)
       return fmt::format("{} ways: 1 to {}", ways, LruStackSets::kMaxWays);
     for (uint64_t capacity : request.capacities) {
-      uint64_t unit = uint64_t(c.l2.line_bytes) * ways * c.l2_layout.slices;
+      uint64_t unit = uint64_t(last_level(c).cache.line_bytes) * ways * last_level(c).slices;
       if (capacity < unit || capacity % unit != 0)
         return fmt::format(
             "{} bytes with {} ways: not a whole number of sets in each of the {} slices "
             "(a multiple of {} bytes)",
-            capacity, ways, c.l2_layout.slices, unit);
+            capacity, ways, last_level(c).slices, unit);
       std::string problem = request.sample_rate > 1
-                                ? mini_cache_problem(l2_at(c, capacity, ways), c.l2_layout.slices,
+                                ? mini_cache_problem(l2_at(c, capacity, ways), last_level(c).slices,
                                                      request.sample_rate)
                                 : std::string();
       if (!problem.empty())
@@ -109,7 +110,7 @@ uint64_t curve_host_bytes(const HwConfig& c, const CurveRequest& request, bool c
   auto [smallest, largest] =
       std::minmax_element(request.capacities.begin(), request.capacities.end());
   uint32_t ways = request.ways.front();
-  uint64_t l1s = c.rt_units * Cache::host_bytes(c.l1);
+  uint64_t l1s = c.rt_units * Cache::host_bytes(first_level(c).cache);
   uint64_t pass = l1s + Cache::host_bytes(l2_at(c, *smallest, ways));  // the walk
   uint32_t max_ways = *std::max_element(request.ways.begin(), request.ways.end());
   std::set<uint64_t> stacks;  // their sets per slice: one stack each
@@ -122,7 +123,7 @@ uint64_t curve_host_bytes(const HwConfig& c, const CurveRequest& request, bool c
       uint64_t sets = sets_per_slice(c, capacity, w);
       if (stacks.insert(sets).second)
         pass += LruStackSets::host_bytes(
-            {c.l2.line_bytes, block_bytes(c.l2), c.l2_layout.slices, sets}, max_ways);
+            {last_level(c).cache.line_bytes, block_bytes(last_level(c).cache), last_level(c).slices, sets}, max_ways);
     }
   uint64_t full = cycle_runs ? l1s + Cache::host_bytes(l2_at(c, *largest, ways)) : 0;
   return std::max(pass, full);
@@ -130,12 +131,14 @@ uint64_t curve_host_bytes(const HwConfig& c, const CurveRequest& request, bool c
 
 CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::string& stream,
                            const CurveRequest& request) {
+  std::string problem = two_level_problem(config, "rtsim curve");
+  if (!problem.empty()) throw InputError(problem);
   CurveSink sink(config, request);
   // The walk's clocks (the order of its references) come from an L2 of the smallest capacity:
   // there capacity misses are many and the order decides them; at large capacities misses are
   // mostly cold and the order hardly matters (model/fidelity/CURVE.md).
   HwConfig walked = config;
-  walked.l2 = l2_at(config, *std::min_element(request.capacities.begin(), request.capacities.end()),
+  last_level(walked).cache = l2_at(config, *std::min_element(request.capacities.begin(), request.capacities.end()),
                     request.ways.front());
   FidelityResult walk = run_cache_level(walked, image, stream, nullptr, &sink);
   for (auto& [sets, stack] : sink.stacks) stack->finish();
@@ -143,7 +146,7 @@ CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::str
   curve.rays = walk.rays;
   curve.l2_reads = sink.reads;
   curve.l2_writes = sink.writes;
-  curve.block_bytes = block_bytes(config.l2);
+  curve.block_bytes = block_bytes(last_level(config).cache);
   curve.sample_rate = request.sample_rate;
   curve.cpu_seconds = walk.cpu_seconds;
   double block = curve.block_bytes, reads = double(sink.reads);
@@ -156,20 +159,20 @@ CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::str
       p.sets_per_slice = sets_per_slice(config, capacity, ways);
       p.reads = sink.reads;
       // A write-through L2 writes every write below; a write-back one its evicted dirty blocks.
-      double written = config.l2.write_back ? 0 : double(sink.writes);
+      double written = last_level(config).cache.write_back ? 0 : double(sink.writes);
       if (request.sample_rate > 1) {
         const MiniCache& m = *sink.minis[mini++];
         MiniEstimate miss = m.miss_ratio(), dram = m.dram_blocks_per_read();
         p.misses = miss.value * reads;
-        p.writebacks = config.l2.write_back ? (dram.value - miss.value) * reads : written;
+        p.writebacks = last_level(config).cache.write_back ? (dram.value - miss.value) * reads : written;
         p.miss_ratio = miss.value;
         p.miss_ratio_ci95 = miss.ci95;
-        p.dram_bytes = (config.l2.write_back ? dram.value * reads : p.misses + written) * block;
+        p.dram_bytes = (last_level(config).cache.write_back ? dram.value * reads : p.misses + written) * block;
         p.dram_bytes_ci95 = dram.ci95 * reads * block;
       } else {
         const LruStackSets& s = *sink.stacks.at(p.sets_per_slice);
         p.misses = double(s.read_misses(ways));
-        p.writebacks = config.l2.write_back ? double(s.writebacks(ways)) : written;
+        p.writebacks = last_level(config).cache.write_back ? double(s.writebacks(ways)) : written;
         p.miss_ratio = reads > 0 ? p.misses / reads : 0;
         p.dram_bytes = (p.misses + p.writebacks) * block;
       }
@@ -200,7 +203,7 @@ CyclePoint run_cycle_point(const HwConfig& config, BvhView image, const std::str
   std::string text = run_in_child([&] {
     std::clock_t start = std::clock();
     HwConfig c = config;
-    c.l2 = l2_at(config, capacity, ways);
+    last_level(c).cache = l2_at(config, capacity, ways);
     RayStreamReader reader(stream);
     StreamRaySource source(reader);
     RtSimulator sim(c, image, source);

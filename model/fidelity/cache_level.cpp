@@ -76,19 +76,20 @@ class CacheWalk {
         traversal_(image, without_fetch_list()),
         dram_(config.dram),
         dram_target_(dram_),
-        l2_(config.l2, &dram_target_),
+        l2_(last_level(config).cache, &dram_target_, cache_place(config.memory, 1)),
         tap_(l2_, sink) {
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
       // The tap only when a sink listens: an L1 miss otherwise goes straight to the L2.
       MemoryTarget* below = sink ? static_cast<MemoryTarget*>(&tap_) : &l2_;
-      l1_.push_back(std::make_unique<Cache>(l1_as_built(c_), below, CacheRole::L1));
+      l1_.push_back(std::make_unique<Cache>(levels_as_built(c_)[0].cache, below,
+                                             cache_place(c_.memory, 0)));
       units_.emplace_back(c_.rt.warps);
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }
     work_.resize(c_.rt_units);
     mshr_free_.resize(c_.rt_units);
     for (auto& unit : mshr_free_)
-      for (uint32_t i = 0; i < c_.l1.mshrs; ++i) unit.push(0);
+      for (uint32_t i = 0; i < first_level(c_).cache.mshrs; ++i) unit.push(0);
   }
 
   // Steps in the order of the lanes' own clocks (a warp's start plus its ray's latency so far),
@@ -151,23 +152,23 @@ class CacheWalk {
     l1.read(addr, bytes, now_);
     const CacheStats& b1 = l1.stats();
     const CacheStats& b2 = l2_.stats();
-    cost.l1_accesses += b1.accesses - a1.accesses;
-    cost.l1_hits += b1.hits - a1.hits;
-    cost.l2_accesses += b2.accesses - a2.accesses;
-    cost.l2_hits += b2.hits - a2.hits;
+    cost.reads.accesses[0] += b1.accesses - a1.accesses;
+    cost.reads.hits[0] += b1.hits - a1.hits;
+    cost.reads.accesses[1] += b2.accesses - a2.accesses;
+    cost.reads.hits[1] += b2.hits - a2.hits;
     uint64_t below = b2.bytes_below - a2.bytes_below;
-    cost.dram_bytes += below;
+    cost.reads.dram_bytes += below;
     dram_bytes_ += below + b2.writeback_bytes - a2.writeback_bytes;
     uint64_t missed = b1.misses - a1.misses;
-    if (missed == 0) return c_.l1.hit_latency;
-    double below_latency = c_.l2.hit_latency;
+    if (missed == 0) return first_level(c_).cache.hit_latency;
+    double below_latency = last_level(c_).cache.hit_latency;
     if (b2.misses > a2.misses) below_latency += unloaded_dram_read(c_.dram, l2_.block_bytes());
     // Each missed block takes one of the unit's L1 MSHRs after the tag check, waiting for the
     // first to free if all are busy, and holds it until its data is back.
     auto& mshrs = mshr_free_[unit];
     double done = 0;
     for (uint64_t i = 0; i < missed; ++i) {
-      double start = std::max(clock_ + c_.l1.hit_latency, mshrs.top());
+      double start = std::max(clock_ + first_level(c_).cache.hit_latency, mshrs.top());
       mshrs.pop();
       mshrs.push(start + below_latency);
       done = std::max(done, start + below_latency);

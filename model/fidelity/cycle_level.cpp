@@ -17,8 +17,8 @@ FidelityResult cycle_level_result(const RtSimulator& sim) {
     c.rays = s.rays;
     c.nodes = s.counters.trav_nodes;
     c.triangles = s.counters.trav_prims;
-    add_charge(c, s);
-    add_charge(c, shading[t]);
+    c.reads += s.reads;
+    c.reads += shading[t];
     c.latency = s.latency.mean() * double(s.latency.count());
   }
   FidelityResult result;

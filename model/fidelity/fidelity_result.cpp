@@ -46,11 +46,7 @@ CostTotals& CostTotals::operator+=(const CostTotals& o) {
   rays += o.rays;
   nodes += o.nodes;
   triangles += o.triangles;
-  l1_accesses += o.l1_accesses;
-  l1_hits += o.l1_hits;
-  l2_accesses += o.l2_accesses;
-  l2_hits += o.l2_hits;
-  dram_bytes += o.dram_bytes;
+  reads += o.reads;
   latency += o.latency;
   return *this;
 }
@@ -73,9 +69,9 @@ void set_exact_estimates(FidelityResult& result,
     e.nodes_per_ray = Estimate::exact(c.nodes / n);
     e.triangles_per_ray = Estimate::exact(c.triangles / n);
     if (cached) {
-      e.l1_hit_rate = Estimate::exact(ratio(c.l1_hits, c.l1_accesses));
-      e.l2_hit_rate = Estimate::exact(ratio(c.l2_hits, c.l2_accesses));
-      e.dram_bytes_per_ray = Estimate::exact(c.dram_bytes / n);
+      e.l1_hit_rate = Estimate::exact(ratio(c.reads.hits[0], c.reads.accesses[0]));
+      e.l2_hit_rate = Estimate::exact(ratio(c.reads.hits[1], c.reads.accesses[1]));
+      e.dram_bytes_per_ray = Estimate::exact(c.reads.dram_bytes / n);
     }
     if (timed) e.latency_mean = Estimate::exact(c.latency / n);
   }
@@ -84,9 +80,9 @@ void set_exact_estimates(FidelityResult& result,
   result.nodes_per_ray = Estimate::exact(all.nodes / n);
   result.triangles_per_ray = Estimate::exact(all.triangles / n);
   if (cached) {
-    result.l1_hit_rate = Estimate::exact(ratio(all.l1_hits, all.l1_accesses));
-    result.l2_hit_rate = Estimate::exact(ratio(all.l2_hits, all.l2_accesses));
-    result.dram_bytes = Estimate::exact(double(all.dram_bytes));
+    result.l1_hit_rate = Estimate::exact(ratio(all.reads.hits[0], all.reads.accesses[0]));
+    result.l2_hit_rate = Estimate::exact(ratio(all.reads.hits[1], all.reads.accesses[1]));
+    result.dram_bytes = Estimate::exact(double(all.reads.dram_bytes));
   }
 }
 

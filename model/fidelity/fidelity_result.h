@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "model/mem/memory_level.h"
 #include "traces/ray.h"
 
 namespace rtsim {
@@ -34,7 +35,7 @@ struct Estimate {
 // What a set of rays cost: plain sums, ratios derived when read.
 struct CostTotals {
   uint64_t rays = 0, nodes = 0, triangles = 0;
-  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
+  ReadCounts reads;  // the fidelity levels model two cache levels: 0 (per unit) and 1 (shared)
   double latency = 0;  // sum of ray latencies, cycles (timed levels only)
 
   CostTotals& operator+=(const CostTotals& o);

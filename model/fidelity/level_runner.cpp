@@ -6,11 +6,20 @@
 #include "model/fidelity/sampled_level.h"
 #include "model/fidelity/scaled_level.h"
 #include "model/sc/fork_run.h"
+#include "traces/error.h"
 
 namespace rtsim {
 
 FidelityResult run_level(const LevelRequest& request, const HwConfig& config, BvhView image,
                          const std::string& stream) {
+  // The cache level and the scale model reason about a unit level and one shared level.
+  bool scaled = request.level == FidelityLevel::Sampled &&
+                request.sampling.method != SampleMethod::Windows;
+  if (request.level == FidelityLevel::CacheLevel || scaled) {
+    std::string problem = two_level_problem(
+        config, scaled ? "the sampled level's scale model" : "the cache fidelity level");
+    if (!problem.empty()) throw InputError(problem);
+  }
   switch (request.level) {
     case FidelityLevel::Functional: return run_functional_level(image, stream);
     case FidelityLevel::CacheLevel: return run_cache_level(config, image, stream);

@@ -16,11 +16,7 @@ inline void charge_retired_ray(std::array<CostTotals, kRayTypeCount>& by_type,
   c.rays++;
   c.nodes += ray.state.counters.trav_nodes;
   c.triangles += ray.state.counters.trav_prims;
-  c.l1_accesses += ray.cost.l1_accesses;
-  c.l1_hits += ray.cost.l1_hits;
-  c.l2_accesses += ray.cost.l2_accesses;
-  c.l2_hits += ray.cost.l2_hits;
-  c.dram_bytes += ray.cost.dram_bytes;
+  c.reads += ray.cost.reads;
   c.latency += double(now - std::min(now, ray.dispatched));
 }
 

@@ -135,11 +135,11 @@ void estimate(FidelityResult& r, const SamplePlan& plan, const SampledSequence& 
   Field rays = [](const CostTotals& c) { return double(c.rays); };
   Field nodes = [](const CostTotals& c) { return double(c.nodes); };
   Field tris = [](const CostTotals& c) { return double(c.triangles); };
-  Field l1a = [](const CostTotals& c) { return double(c.l1_accesses); };
-  Field l1h = [](const CostTotals& c) { return double(c.l1_hits); };
-  Field l2a = [](const CostTotals& c) { return double(c.l2_accesses); };
-  Field l2h = [](const CostTotals& c) { return double(c.l2_hits); };
-  Field dram = [](const CostTotals& c) { return double(c.dram_bytes); };
+  Field l1a = [](const CostTotals& c) { return double(c.reads.accesses[0]); };
+  Field l1h = [](const CostTotals& c) { return double(c.reads.hits[0]); };
+  Field l2a = [](const CostTotals& c) { return double(c.reads.accesses[1]); };
+  Field l2h = [](const CostTotals& c) { return double(c.reads.hits[1]); };
+  Field dram = [](const CostTotals& c) { return double(c.reads.dram_bytes); };
   Field latency = [](const CostTotals& c) { return c.latency; };
   Scaled cycles = e.scaled(span);
   cycles.excess += e.ratio(latency, rays).value;  // filling and draining the pipeline

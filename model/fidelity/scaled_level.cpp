@@ -88,11 +88,11 @@ const Field kRays = [](const CostTotals& c) { return double(c.rays); };
 const Field kWork = [](const CostTotals& c) { return double(c.nodes + c.triangles); };
 const Field kNodes = [](const CostTotals& c) { return double(c.nodes); };
 const Field kTriangles = [](const CostTotals& c) { return double(c.triangles); };
-const Field kL1Hits = [](const CostTotals& c) { return double(c.l1_hits); };
-const Field kL1Accesses = [](const CostTotals& c) { return double(c.l1_accesses); };
-const Field kL2Hits = [](const CostTotals& c) { return double(c.l2_hits); };
-const Field kL2Accesses = [](const CostTotals& c) { return double(c.l2_accesses); };
-const Field kDram = [](const CostTotals& c) { return double(c.dram_bytes); };
+const Field kL1Hits = [](const CostTotals& c) { return double(c.reads.hits[0]); };
+const Field kL1Accesses = [](const CostTotals& c) { return double(c.reads.accesses[0]); };
+const Field kL2Hits = [](const CostTotals& c) { return double(c.reads.hits[1]); };
+const Field kL2Accesses = [](const CostTotals& c) { return double(c.reads.accesses[1]); };
+const Field kDram = [](const CostTotals& c) { return double(c.reads.dram_bytes); };
 const Field kLatency = [](const CostTotals& c) { return c.latency; };
 
 // The estimates of each scope (each ray type, then all rays), in this order.
@@ -180,8 +180,8 @@ std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& c
 // the block's transfer. The absent units' first fetches are taken to last that long until the
 // L2 has measured fetches of its own.
 Cycle unloaded_fetch_cycles(const HwConfig& config) {
-  return config.l2.hit_latency +
-         Cycle(std::ceil(unloaded_dram_read(dram_for_analysis(config), block_bytes(config.l2))));
+  return last_level(config).cache.hit_latency +
+         Cycle(std::ceil(unloaded_dram_read(dram_for_analysis(config), block_bytes(last_level(config).cache))));
 }
 
 }  // namespace
@@ -209,7 +209,7 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   c.rt_units = scaled_units(config.rt_units, rate);
   m.machine_share = double(c.rt_units) / double(config.rt_units);
   c.dispatch.rays_per_cycle = config.dispatch.rays_per_cycle * m.machine_share;
-  c.l2.mshrs = scaled_count(config.l2.mshrs, m.machine_share);
+  last_level(c).cache.mshrs = scaled_count(last_level(config).cache.mshrs, m.machine_share);
   c.dram.bytes_per_cycle = config.dram.bytes_per_cycle * m.machine_share;
   c.dram.queue_depth = scaled_count(config.dram.queue_depth, m.machine_share);
   c.banked_dram.channels = scaled_count(config.banked_dram.channels, m.machine_share);
@@ -264,22 +264,22 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   // made: the scaled units' (their DRAM bytes over the block) once, the absent units' by their
   // rays' types.
   CacheStats l2 = sim.l2_stats();
-  if (!warmed) r.caveat = capacity_caveat(k, l2, config.l2);
-  double line = double(block_bytes(config.l2));
+  if (!warmed) r.caveat = capacity_caveat(k, l2, last_level(config).cache);
+  double line = double(block_bytes(last_level(config).cache));
   const auto& totals = collector.totals();
   double misses = 0, accesses = 0;
   for (const CostTotals& c : totals) {
-    misses += double(c.l2_accesses - c.l2_hits);
-    accesses += double(c.l2_accesses);
+    misses += double(c.reads.misses(1));
+    accesses += double(c.reads.accesses[1]);
   }
   // A type's first references: warmed, its own fetches and its absent units'; otherwise the
   // run's cold misses and absent fills shared out by the type's L2 misses and accesses.
   auto first_of = [&](int t) {
     const CostTotals& c = totals[t];
-    if (warmed) return FirstReferences{double(c.dram_bytes) / line, source.fetched()[t]};
+    if (warmed) return FirstReferences{double(c.reads.dram_bytes) / line, source.fetched()[t]};
     return FirstReferences{
-        misses > 0 ? double(l2.cold_misses) * double(c.l2_accesses - c.l2_hits) / misses : 0,
-        accesses > 0 ? double(l2.absent_fills) * double(c.l2_accesses) / accesses : 0};
+        misses > 0 ? double(l2.cold_misses) * double(c.reads.misses(1)) / misses : 0,
+        accesses > 0 ? double(l2.absent_fills) * double(c.reads.accesses[1]) / accesses : 0};
   };
   FirstReferences first_all;
   for (int t = 0; t < kRayTypeCount; ++t) {

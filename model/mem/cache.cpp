@@ -50,9 +50,11 @@ CacheStats& CacheStats::operator+=(const CacheStats& o) {
                               {&prefetch_redundant, o.prefetch_redundant},
                               {&prefetch_useful, o.prefetch_useful},
                               {&prefetch_late, o.prefetch_late},
-                              {&prefetch_useless, o.prefetch_useless}})
+                              {&prefetch_useless, o.prefetch_useless},
+                              {&victims, o.victims},
+                              {&victim_fills, o.victim_fills}})
     *mine += theirs;
-  static_assert(sizeof(CacheStats) == 26 * sizeof(uint64_t), "a counter is missing above");
+  static_assert(sizeof(CacheStats) == 28 * sizeof(uint64_t), "a counter is missing above");
   return *this;
 }
 
@@ -73,8 +75,8 @@ std::string cache_config_problem(const CacheConfig& c) {
   return {};
 }
 
-Cache::Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role)
-    : config_(config), below_(below), role_(role) {
+Cache::Cache(const CacheConfig& config, MemoryTarget* below, const CachePlace& place)
+    : config_(config), below_(below), place_(place) {
   std::string problem = cache_config_problem(config);
   if (!problem.empty()) throw std::invalid_argument(problem);
   sets_ = uint32_t(config.size_bytes / (uint64_t(config.line_bytes) * config.ways));
@@ -208,6 +210,25 @@ void Cache::prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
   });
 }
 
+void Cache::fill(uint64_t addr, uint32_t bytes, Cycle at) {
+  for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
+    Cycle start = admits_ ? admit(line, stop - begin, at) : at;
+    uint32_t set = set_of(line);
+    uint32_t way = find(set, tag_of(line));
+    if (way == kNone)
+      way = allocate(set, tag_of(line), start);
+    else
+      policy_.touch(set, way);
+    for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block) {
+      Block& b = block_at(set, way, block);
+      if (b.valid) continue;
+      b = Block{start, kNone, 0, true, false, false};
+      stats_.victim_fills++;
+      if (track_cold_) first_reference(block);
+    }
+  });
+}
+
 uint32_t Cache::warm(uint64_t addr, uint32_t bytes, Cycle at, bool write) {
   uint32_t fetched = 0;
   for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
@@ -270,8 +291,7 @@ inline Cache::Place Cache::look_up(uint64_t line) {
 inline Cycle Cache::read_block(uint64_t block, Place& p, Cycle at, Caller& caller,
                                ReadCharge& charge) {
   stats_.accesses++;
-  bool l1 = role_ == CacheRole::L1;
-  (l1 ? charge.l1_accesses : charge.l2_accesses)++;
+  charge.accesses[place_.level]++;
   Cycle hit_ready = at + config_.hit_latency;
 
   if (p.way != kNone) {
@@ -285,7 +305,7 @@ inline Cycle Cache::read_block(uint64_t block, Place& p, Cycle at, Caller& calle
     }
     if (b.valid) {
       stats_.hits++;
-      (l1 ? charge.l1_hits : charge.l2_hits)++;
+      charge.hits[place_.level]++;
       return hit_ready;
     }
   }
@@ -296,14 +316,18 @@ inline Cycle Cache::read_block(uint64_t block, Place& p, Cycle at, Caller& calle
 
 Cache::Absent Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
                                  Caller& caller, ReadCharge& charge) {
-  bool l1 = role_ == CacheRole::L1;
+  bool first = track_cold_ && first_reference(block);
+  if (!place_.fill_on_miss) {
+    if (first) stats_.cold_misses++;
+    stats_.misses++;
+    return {read_through(block, at, caller, charge), way};
+  }
   if (way == kNone) way = allocate(set, tag_of(block >> sector_shift_), at);
   Cycle hit_ready = at + config_.hit_latency;
-  bool first = track_cold_ && first_reference(block);
   if (first && own_share_ < 1.0 && !fetched_here(block, own_share_)) {
     stats_.hits++;
     stats_.absent_fills++;
-    (l1 ? charge.l1_hits : charge.l2_hits)++;
+    charge.hits[place_.level]++;
     // The absent client's fetch is in flight for a fetch's mean latency: reads until then merge.
     Cycle fetched = at + mean_fetch_cycles();
     block_at(set, way, block) = Block{std::max(hit_ready, fetched), kNone, 0, true, false, false};
@@ -313,6 +337,15 @@ Cache::Absent Cache::read_absent(uint64_t block, uint32_t set, uint32_t way, Cyc
   if ((block << block_shift_) >= kLocalMemoryBase) stats_.local_misses++;
   stats_.misses++;
   return {miss(block, set, way, at, caller, charge), way};
+}
+
+Cycle Cache::read_through(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge) {
+  if (caller.several_blocks || !caller.client)
+    throw std::logic_error("a victim level reads a block at a time for the level above");
+  stats_.bytes_below += block_bytes();
+  if (place_.above_dram) charge.dram_bytes += block_bytes();
+  return below_->read(block << block_shift_, block_bytes(), at + config_.hit_latency,
+                      caller.client, caller.token, charge);
 }
 
 void Cache::write_block(uint64_t block, Cycle at) {
@@ -380,7 +413,7 @@ uint32_t Cache::take_waiting() {
 inline Cycle Cache::miss(uint64_t block, uint32_t set, uint32_t way, Cycle at, Caller& caller,
                          ReadCharge& charge) {
   stats_.bytes_below += block_bytes();
-  if (role_ == CacheRole::L2) charge.dram_bytes += block_bytes();
+  if (place_.above_dram) charge.dram_bytes += block_bytes();
   Cycle send = at + config_.hit_latency;
   uint32_t id = take_slot(misses_, free_misses_);
   Block& b = block_at(set, way, block);
@@ -489,11 +522,14 @@ uint32_t Cache::allocate(uint32_t set, uint64_t tag, Cycle at) {
     Block* blocks = &blocks_[(size_t(set) * config_.ways + victim) << sector_shift_];
     for (uint64_t s = 0; s <= sector_mask_; ++s) {
       if (blocks[s].prefetched) stats_.prefetch_useless++;
+      uint64_t old_addr = ((old_line << sector_shift_) + s) << block_shift_;
       if (blocks[s].valid && blocks[s].dirty) {
         stats_.writebacks++;
         stats_.writeback_bytes += block_bytes();
-        uint64_t old_block = (old_line << sector_shift_) + s;
-        below_->write(old_block << block_shift_, block_bytes(), at + config_.hit_latency);
+        below_->write(old_addr, block_bytes(), at + config_.hit_latency);
+      } else if (place_.victims_below && blocks[s].valid && blocks[s].ready != kPending) {
+        stats_.victims++;
+        below_->fill(old_addr, block_bytes(), at + config_.hit_latency);
       }
       blocks[s] = Block{};
     }

@@ -63,9 +63,17 @@ inline uint32_t block_bytes(const CacheConfig& c) {
   return c.sector_bytes ? c.sector_bytes : c.line_bytes;
 }
 
-// Which counters of a ReadCharge a level fills: its own accesses and hits; the L2, as the last
-// cache level, also the bytes it fetches from DRAM.
-enum class CacheRole : uint8_t { L1, L2 };
+// Where a cache sits in its hierarchy (model/mem/hierarchy.h): the level whose counters of a
+// ReadCharge it fills; whether it is the level above DRAM (it also counts the bytes it fetches);
+// how it is filled: by its misses, or (a victim level) by the clean lines the level above evicts
+// (fill), its own read misses going below without a line or an MSHR here; and whether the level
+// below is such a victim level, which this one then sends its evictions to.
+struct CachePlace {
+  uint32_t level = 0;
+  bool above_dram = true;
+  bool fill_on_miss = true;
+  bool victims_below = false;
+};
 
 struct CacheStats {
   uint64_t accesses = 0;            // block reads (a request spanning 2 blocks counts 2)
@@ -94,13 +102,15 @@ struct CacheStats {
   uint64_t prefetch_useful = 0;     // prefetched blocks a read used
   uint64_t prefetch_late = 0;       // of them, still in flight when read
   uint64_t prefetch_useless = 0;    // prefetched blocks evicted unused
+  uint64_t victims = 0;             // clean blocks sent on eviction to the victim level below
+  uint64_t victim_fills = 0;        // blocks the level above's evictions placed here
   CacheStats& operator+=(const CacheStats& o);
 };
 
 class Cache : public MemoryTarget, private ReadClient {
  public:
   // Throws std::invalid_argument for an impossible config (see cache_config_problem).
-  Cache(const CacheConfig& config, MemoryTarget* below, CacheRole role = CacheRole::L2);
+  Cache(const CacheConfig& config, MemoryTarget* below, const CachePlace& place = {});
   // Host bytes of the arrays such a cache allocates with its capacity (tags, block records, per
   // set counts), for planning memory before building one (traces/memory_plan.h).
   static uint64_t host_bytes(const CacheConfig& config);
@@ -115,6 +125,9 @@ class Cache : public MemoryTarget, private ReadClient {
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at);
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
   void prefetch(uint64_t addr, uint32_t bytes, Cycle at) override;
+  // A clean line of the level above, evicted there (this is a victim level): its absent blocks
+  // become valid from `at` without a fetch, through the bank and data port as a write.
+  void fill(uint64_t addr, uint32_t bytes, Cycle at) override;
   // An access by a client the simulation does not drive (a scale model's absent RT units,
   // model/fidelity/l2_warming.h): its lines become most recently used and its absent blocks are
   // filled at once without going below (a write makes them dirty); victims are evicted as by a
@@ -147,6 +160,7 @@ class Cache : public MemoryTarget, private ReadClient {
   }
   const CacheStats& stats() const { return stats_; }
   const CacheConfig& config() const { return config_; }
+  const CachePlace& place() const { return place_; }
   uint32_t block_bytes() const { return 1u << block_shift_; }
 
  private:
@@ -241,6 +255,9 @@ class Cache : public MemoryTarget, private ReadClient {
   // absent line its way, then the miss (kept out of line, so the hit path stays short).
   [[gnu::noinline]] Absent read_absent(uint64_t block, uint32_t set, uint32_t way, Cycle at,
                                        Caller& caller, ReadCharge& charge);
+  // A victim level's read miss: sent below for the reader, after the tag check, holding no line
+  // or MSHR here.
+  Cycle read_through(uint64_t block, Cycle at, Caller& caller, ReadCharge& charge);
   void write_block(uint64_t block, Cycle at);
   void used_prefetch(Block& b, Cycle at);  // a read's first use of a prefetched block
   // Counts a merge into the in-flight block; returns its replay cycles (past the merge limit).
@@ -286,7 +303,7 @@ class Cache : public MemoryTarget, private ReadClient {
 
   CacheConfig config_;
   MemoryTarget* below_;
-  CacheRole role_;
+  CachePlace place_;
   uint32_t sets_;
   uint32_t set_shift_ = 0;     // log2(sets_) if sets_ is a power of two above 1, else 0
   uint32_t line_shift_ = 0;    // log2(line_bytes)

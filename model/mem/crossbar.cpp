@@ -12,7 +12,7 @@ std::string crossbar_config_problem(const CrossbarConfig& c) {
   return {};
 }
 
-std::string l2_layout_problem(const CacheConfig& c, const L2Layout& layout) {
+std::string slice_layout_problem(const CacheConfig& c, const SliceLayout& layout) {
   if (layout.slices == 0) return "slices must be at least 1";
   if (c.size_bytes % (uint64_t(layout.slices) * c.line_bytes * c.ways) != 0)
     return "size_bytes must be a multiple of slices * line_bytes * ways";

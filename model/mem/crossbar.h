@@ -1,5 +1,6 @@
-// The interconnect between the RT units' L1s and the L2's slices: a crossbar with one port per
-// unit and one per slice, each port a link in each direction that moves `bytes_per_cycle` bytes
+// The interconnect in front of a shared cache level's slices: a crossbar with one port per
+// requester (a unit's last own level, or an instance of the level above; "unit" below) and one
+// per slice, each port a link in each direction that moves `bytes_per_cycle` bytes
 // a cycle, and `latency` cycles through the switch.
 // Timing: a transfer of b bytes from a source port to a destination port takes the source's
 // outgoing link from its cycle on, crosses the switch in `latency` cycles, then takes the
@@ -28,15 +29,15 @@ struct CrossbarConfig {
 
 std::string crossbar_config_problem(const CrossbarConfig& config);
 
-// How the shared L2 is split and reached: `slices` slices of size_bytes / slices each (every
+// How a shared level is split and reached: `slices` slices of size_bytes / slices each (every
 // other key of the cache config is per slice), behind a crossbar.
-struct L2Layout {
+struct SliceLayout {
   uint32_t slices = 1;
   CrossbarConfig crossbar;
 };
 
-// Why the layout is impossible for this L2 (empty if fine).
-std::string l2_layout_problem(const CacheConfig& config, const L2Layout& layout);
+// Why the layout is impossible for this cache (empty if fine).
+std::string slice_layout_problem(const CacheConfig& config, const SliceLayout& layout);
 
 struct LinkStats {
   uint64_t transfers = 0;

@@ -5,13 +5,14 @@
 // kPending: then the target calls client->read_done(token, ready, charge) later, never during
 // the read call itself. A target serves calls in the order they are made, so the caller makes
 // them in non-decreasing `at` (an RT unit in its local time; the shared L2's module in
-// simulated-time order, model/sc/shared_cache_module.h), and a request dated earlier is never
+// simulated-time order, model/sc/shared_levels_module.h), and a request dated earlier is never
 // delayed by one dated later. Writes are posted: nobody waits for them.
 //
 // MemoryLevel is the synchronous form of the last level (DRAM): read returns the ready cycle.
 // Calls must arrive in non-decreasing `now`; the shared L2's module guarantees it.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 
@@ -44,44 +45,47 @@ inline void prefetch_span(const void* p, size_t bytes, size_t step) {
   for (const char* q = first; q < first + bytes; q += step) __builtin_prefetch(q, 0, Level);
 }
 
-// Adds one cost to another, field by field (a read's charge, a sum of them, a ray's cost).
-template <typename Cost, typename Charge>
-void add_charge(Cost& cost, const Charge& c) {
-  cost.l1_accesses += c.l1_accesses;
-  cost.l1_hits += c.l1_hits;
-  cost.l2_accesses += c.l2_accesses;
-  cost.l2_hits += c.l2_hits;
-  cost.dram_bytes += c.dram_bytes;
-}
+// The most cache levels a hierarchy has ([[memory.level]], model/mem/hierarchy.h): a read's
+// charge keeps a count per level in place, so that charging one is an add, not an allocation.
+constexpr uint32_t kMaxCacheLevels = 6;
 
-// What one read cost the levels of the hierarchy, charged to the ray that made it. A level
-// counts its own line accesses and hits; the last cache level counts the bytes it fetched.
-struct ReadCharge {
-  uint32_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0;
-  uint64_t dram_bytes = 0;
-  ReadCharge& operator+=(const ReadCharge& o) {
-    add_charge(*this, o);
+// What reads cost at each level of the memory hierarchy: a level counts its own block accesses
+// and hits (level 0 is the RT unit's first); the level above DRAM counts the bytes it fetched.
+// The same record at three widths: one read's charge (a few blocks; kept in a miss's records,
+// so small), a ray's cost and sums over many rays.
+template <typename Count, typename Bytes>
+struct LevelCounts {
+  std::array<Count, kMaxCacheLevels> accesses{}, hits{};
+  Bytes dram_bytes = 0;
+  template <typename C, typename B>
+  LevelCounts& operator+=(const LevelCounts<C, B>& o) {
+    for (uint32_t i = 0; i < kMaxCacheLevels; ++i) {
+      accesses[i] += Count(o.accesses[i]);
+      hits[i] += Count(o.hits[i]);
+    }
+    dram_bytes += Bytes(o.dram_bytes);
     return *this;
   }
-  bool empty() const { return !(l1_accesses | l1_hits | l2_accesses | l2_hits | dram_bytes); }
+  template <typename C, typename B>
+  LevelCounts& operator-=(const LevelCounts<C, B>& o) {
+    for (uint32_t i = 0; i < kMaxCacheLevels; ++i) {
+      accesses[i] -= Count(o.accesses[i]);
+      hits[i] -= Count(o.hits[i]);
+    }
+    dram_bytes -= Bytes(o.dram_bytes);
+    return *this;
+  }
+  bool empty() const {
+    for (uint32_t i = 0; i < kMaxCacheLevels; ++i)
+      if (accesses[i] | hits[i]) return false;
+    return dram_bytes == 0;
+  }
+  Count misses(uint32_t level) const { return Count(accesses[level] - hits[level]); }
 };
+using ReadCharge = LevelCounts<uint16_t, uint32_t>;  // one read
+using RayReads = LevelCounts<uint32_t, uint64_t>;    // one ray's reads
+using ReadCounts = LevelCounts<uint64_t, uint64_t>;  // sums
 
-// What reads cost at each level of the memory hierarchy, summed.
-struct ReadCounts {
-  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0, dram_bytes = 0;
-  ReadCounts& operator+=(const ReadCounts& o) {
-    add_charge(*this, o);
-    return *this;
-  }
-  ReadCounts& operator-=(const ReadCounts& o) {
-    l1_accesses -= o.l1_accesses;
-    l1_hits -= o.l1_hits;
-    l2_accesses -= o.l2_accesses;
-    l2_hits -= o.l2_hits;
-    dram_bytes -= o.dram_bytes;
-    return *this;
-  }
-};
 
 // Who waits for a read that did not complete at once.
 class ReadClient {
@@ -102,6 +106,9 @@ class MemoryTarget {
   virtual Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
                      ReadCharge& charge) = 0;
   virtual void write(uint64_t addr, uint32_t bytes, Cycle at) = 0;
+  // A clean line the level above evicted, for a level filled by evictions (fill = "victim"):
+  // it is placed without a fetch. Nobody waits for it; a level of another kind never gets one.
+  virtual void fill(uint64_t addr, uint32_t bytes, Cycle at) { (void)addr, (void)bytes, (void)at; }
   // A hint to fetch [addr, addr + bytes) ahead of demand (treelet prefetching); nobody waits
   // for it. A level that does not prefetch ignores it.
   virtual void prefetch(uint64_t addr, uint32_t bytes, Cycle at) {

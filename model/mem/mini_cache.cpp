@@ -49,7 +49,7 @@ MiniCache::MiniCache(const CacheConfig& full, uint32_t slices, uint32_t rate)
   c.bank_ports = 0;
   c.bytes_per_cycle = 0;
   for (uint64_t i = 0; i < sets / per_slice; ++i)
-    slices_.push_back(std::make_unique<Cache>(c, &below_, CacheRole::L2));
+    slices_.push_back(std::make_unique<Cache>(c, &below_));
 }
 
 bool MiniCache::sampled(uint64_t line, uint32_t rate) {

@@ -5,7 +5,7 @@
 // has 1/rate of the full cache's sets (same ways, line, sectors and policy: real Cache slices,
 // model/mem/cache.h, no timing), so each of its sets sees the load one set of the full cache
 // sees; its miss ratio estimates the full cache's. At rate 1 it is the full cache: the cycle
-// model's slices (model/sc/shared_cache_module.h), functionally. Fetches and write-backs are
+// model's slices (model/sc/shared_levels_module.h), functionally. Fetches and write-backs are
 // counted per sampled line, so the estimates come with a 95% interval that treats the sampled
 // lines as a random sample of clusters (a ratio estimator, Cochran, Sampling Techniques, 3rd
 // ed., 6.7); it covers which lines the hash chose, not how the miniature's sets differ.

@@ -1,7 +1,7 @@
 // Which slice of the shared L2 a line lives in: the slices are address-hashed (Fibonacci hashing
 // of the line number), so consecutive lines spread over them; within its slice a line's set is
 // its line number modulo the slice's set count (model/mem/cache.h). The cycle model's L2
-// (model/sc/shared_cache_module.h) and the cache curves (model/fidelity/cache_curve.h) use it.
+// (model/sc/shared_levels_module.h) and the cache curves (model/fidelity/cache_curve.h) use it.
 #pragma once
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 // hierarchies", IBM Systems Journal 9(2), 1970) applied to each set, as Hill and Smith do for
 // set-associative caches ("Evaluating associativity in CPU caches", IEEE ToC 38(12), 1989).
 // Lines go to slices by slice_of_line and to sets by line modulo the sets per slice, as in
-// model/sc/shared_cache_module.h. By the inclusion property a W-way LRU set holds the W most
+// model/sc/shared_levels_module.h. By the inclusion property a W-way LRU set holds the W most
 // recently referenced lines of its set, so one pass over a reference stream gives the misses
 // and write-backs of every associativity up to max_ways at this set count. Each set keeps its
 // lines in recency order, max_ways deep: a reference costs the depth it finds its line at.

@@ -1,5 +1,5 @@
 // The banked DRAM (model/mem/dram_controller.h) below the shared L2: connected by call
-// (QueuedMemory: the L2's fast path, SharedCacheModule::connect_memory), or as a TLM-2.0 target
+// (QueuedMemory: the L2's fast path, SharedLevelsModule::connect_memory), or as a TLM-2.0 target
 // speaking the approximately-timed base protocol, bound where the simple DRAM's loosely-timed
 // target binds.
 // By call, a request is queued at once and a read's data cycle reported to its client when the

@@ -26,24 +26,28 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
       collector_(width, height, config.rt.warp_size) {
   fanout_.add(&collector_);
   if (listener) fanout_.add(listener);
-  // The L1s send misses and writes after their tag check: the L2 may serve that far ahead.
-  l2_ = std::make_unique<SharedCacheModule>("l2", config.l2, clock_, config.l2_layout,
-                                            config.l1.hit_latency,
-                                            [this](std::exception_ptr e) { control_.fail(e); });
+  std::vector<MemoryLevelConfig> levels = levels_as_built(config);
+  // A unit's last own level sends misses and writes after its tag check: the shared levels may
+  // serve that far ahead.
+  uint32_t own = 0;
+  while (own < levels.size() && !queued_level(levels[own])) ++own;
+  shared_ = std::make_unique<SharedLevelsModule>("mem", levels, config.rt_units, clock_,
+                                             levels[own - 1].cache.hit_latency,
+                                             [this](std::exception_ptr e) { control_.fail(e); });
   // Compulsory misses at every level; the BVH's blocks in bitmaps.
   uint64_t bvh_begin = bvh.begin_address(), bvh_end = bvh.end_address();
-  l2_->track_cold_misses(bvh_begin, bvh_end);
+  shared_->track_cold_misses(bvh_begin, bvh_end);
   if (bind_memory) {
-    bind_memory(*l2_);
+    bind_memory(*shared_);
   } else if (config.dram_model == DramModel::Banked) {
     banked_dram_ =
         std::make_unique<BankedDramModule>("dram", config.banked_dram, clock_, config.clock_ghz);
     // A lead beyond what the L2's window needs would only wake the DRAM more often.
-    banked_dram_->set_response_lead(l2_->lookahead());
-    l2_->connect_memory(*banked_dram_, banked_dram_->response_lead());
+    banked_dram_->set_response_lead(shared_->lookahead());
+    shared_->connect_memory(*banked_dram_, banked_dram_->response_lead());
   } else {
     dram_ = std::make_unique<DramModule>("dram", config.dram, clock_);
-    l2_->out.bind(dram_->in);
+    shared_->out.bind(dram_->in);
   }
   dispatch_ =
       std::make_unique<DispatcherModule>("dispatch", config.dispatch, source, pool_, &fanout_);
@@ -70,12 +74,14 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
   if (config.rt.prefetch.trigger != PrefetchTrigger::None) footprints_ = treelet_footprints(bvh);
   for (uint32_t i = 0; i < config.rt_units; ++i) {
     std::string name = "rt" + std::to_string(i);
-    units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, l1_as_built(config),
-                                                    traversal_, clock_, config.sim.quantum_cycles,
-                                                    control_, &footprints_, config.shader));
-    units_.back()->l1.cache().track_cold_misses(bvh_begin, bvh_end);
+    units_.push_back(std::make_unique<RtUnitModule>(name.c_str(), i, config.rt, levels, traversal_,
+                                                    clock_, config.sim.quantum_cycles, control_,
+                                                    &footprints_, config.shader));
+    UnitMemory& memory = units_.back()->memory;
+    for (uint32_t k = 0; k < memory.levels(); ++k)
+      memory.level(k).track_cold_misses(bvh_begin, bvh_end);
     units_.back()->supply.bind(*supply);
-    units_.back()->l1.connect(*l2_);
+    memory.connect(*shared_, i);
   }
   watchdog_ = std::make_unique<StallWatchdog>(
       "watchdog", config.sim.stall_cycles, clock_, control_, [this] { return next_delivery(); },
@@ -137,7 +143,7 @@ std::vector<RtSimulator::FrameStats> RtSimulator::frame_stats() const {
 }
 
 CacheStats RtSimulator::l2_stats() const {
-  return l2_->stats();
+  return shared_->instances()[0].stats();
 }
 
 std::array<ReadCounts, kRayTypeCount> RtSimulator::shading_reads() const {
@@ -149,7 +155,7 @@ std::array<ReadCounts, kRayTypeCount> RtSimulator::shading_reads() const {
 }
 
 void RtSimulator::share_l2_first_references(double own_share, Cycle first_fetch_cycles) {
-  l2_->share_first_references(own_share, first_fetch_cycles);
+  shared_->share_first_references(own_share, first_fetch_cycles);
 }
 
 Cycle RtSimulator::cycles() const {
@@ -162,7 +168,7 @@ Cycle RtSimulator::cycles() const {
 }
 
 Cycle RtSimulator::next_delivery() const {
-  Cycle now = clock_.cycles(sim_now()), next = l2_->next_job();
+  Cycle now = clock_.cycles(sim_now()), next = shared_->next_job();
   if (banked_dram_) next = std::min(next, banked_dram_->next_wake());
   for (const auto& unit : units_) {
     if (unit->core().has_event()) next = std::min(next, unit->core().next_event());
@@ -182,8 +188,8 @@ std::string RtSimulator::dump() const {
     out << unit->core().dump();
     if (unit->shader()) out << unit->shader()->dump();
   }
-  out << "l2: " << l2_->queued() << " requests and DRAM reads queued, next at cycle "
-      << l2_->next_job() << "\n";
+  out << "shared levels: " << shared_->queued()
+      << " requests, answers and DRAM accesses queued, next at cycle " << shared_->next_job() << "\n";
   if (banked_dram_)
     out << "dram: " << banked_dram_->controller().queued() << " bursts queued, next decision "
         << banked_dram_->next_event() << ", taken at cycle " << banked_dram_->next_wake() << "\n";

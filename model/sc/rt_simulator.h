@@ -1,8 +1,9 @@
 // The whole simulated machine for one run, built from a HwConfig:
-//   dispatch -> [treelet_queues] -> rt0..rtN-1 (each with rtK.l1) -> l2 -> dram
+//   dispatch -> [treelet_queues] -> rt0..rtN-1 (each with its own cache levels) -> mem (the
+//   shared levels) -> dram
 // plus the stall watchdog. The levels of the memory hierarchy meet at TLM-2.0 sockets; pass
 // bind_memory to put another TLM memory model where the DRAM is: it binds the model to
-// l2.out, loosely timed, or approximately timed after l2.use_timed_memory(lead)
+// mem.out, loosely timed, or approximately timed after mem.use_timed_memory(lead)
 // (model/mem/README.md, "Banked DRAM").
 // SystemC allows one elaboration per process: build one RtSimulator per process (tests and
 // benchmarks that compare runs use run_in_child(), model/sc/fork_run.h).
@@ -19,7 +20,7 @@
 #include "model/sc/dispatcher_module.h"
 #include "model/sc/ray_sorter_module.h"
 #include "model/sc/rt_unit_module.h"
-#include "model/sc/shared_cache_module.h"
+#include "model/sc/shared_levels_module.h"
 #include "model/sc/stall_watchdog.h"
 #include "model/sc/tlm_memory.h"
 #include "model/sc/treelet_queue_module.h"
@@ -30,7 +31,7 @@ namespace rtsim {
 
 class RtSimulator {
  public:
-  using MemoryBinder = std::function<void(SharedCacheModule& l2)>;
+  using MemoryBinder = std::function<void(SharedLevelsModule& l2)>;
 
   // width x height: the pixel grid of the rays (0 x 0: no pixel buffers). listener (optional)
   // also sees every retired ray, after the stats (the verifier).
@@ -58,7 +59,7 @@ class RtSimulator {
   // During run(): an access of an RT unit this machine leaves out reaches its L2 (Cache::warm);
   // returns the blocks it fetched.
   uint32_t warm_l2(uint64_t addr, uint32_t bytes, bool write = false) {
-    return l2_->warm(addr, bytes, write);
+    return shared_->warm(addr, bytes, write);
   }
   // Every counter under its dotted name, and the derived ratios; with a warm-up
   // (sim.warmup_rays, sim.warmup_frames) what accrued from the dispatch of the first measured
@@ -93,7 +94,7 @@ class RtSimulator {
   SimStatsCollector collector_;
   RetireFanout fanout_;
   SimControl control_;
-  std::unique_ptr<SharedCacheModule> l2_;
+  std::unique_ptr<SharedLevelsModule> shared_;  // the group and shared levels, and the way to DRAM
   std::unique_ptr<DramModule> dram_;               // the simple DRAM, or
   std::unique_ptr<BankedDramModule> banked_dram_;  // the banked one
   std::unique_ptr<DispatcherModule> dispatch_;

@@ -37,6 +37,8 @@ void report_cache(StatsRegistry& r, const std::string& p, const CacheStats& s, b
   r.counter(p + ".writeback_bytes", s.writeback_bytes);
   r.counter(p + ".local_reads", s.local_reads);
   r.counter(p + ".local_misses", s.local_misses);
+  r.counter(p + ".victims", s.victims);
+  r.counter(p + ".victim_fills", s.victim_fills);
   r.ratio(p + ".hit_rate", p + ".hits", p + ".accesses");
   r.counter(p + ".served", s.hits + s.mshr_merges);
   r.ratio(p + ".served_rate", p + ".served", p + ".accesses");
@@ -50,32 +52,81 @@ void report_link(StatsRegistry& r, const std::string& p, const Link& link, doubl
   if (peak > 0) r.ratio(p + ".utilisation", p + ".bytes", "cycles", 1.0 / peak);
 }
 
-// Per slice: its own counts, and the crossbar port in front of it; per unit: its port.
-void report_l2(StatsRegistry& r, const SharedCacheModule& l2) {
-  report_cache(r, "l2", l2.stats(), l2.tracks_cold_misses(),
-               l2.slice(0).config().bytes_per_cycle * l2.slice_count());
-  const Crossbar& xbar = l2.crossbar();
-  double peak = xbar.config().bytes_per_cycle;
-  if (l2.slice_count() > 1)
-    for (uint32_t i = 0; i < l2.slice_count(); ++i) {
-      const CacheStats& s = l2.slice(i).stats();
-      std::string p = "l2.slice" + std::to_string(i);
-      r.counter(p + ".accesses", s.accesses);
-      r.counter(p + ".misses", s.misses);
-      r.counter(p + ".bank_stall_cycles", s.bank_stall_cycles);
-      r.counter(p + ".port_stall_cycles", s.port_stall_cycles);
-      r.counter(p + ".mshr_stall_cycles", s.mshr_stall_cycles);
-    }
+// The crossbar in front of an instance's slices: each slice's links, and each requester's
+// (a unit, or an instance of the level above).
+void report_crossbar(StatsRegistry& r, const std::string& p, const Crossbar& xbar,
+                     const std::vector<std::string>& requesters) {
   if (!xbar.modelled()) return;
+  double peak = xbar.config().bytes_per_cycle;
   for (uint32_t i = 0; i < xbar.slices(); ++i) {
-    std::string p = "xbar.slice" + std::to_string(i);
-    report_link(r, p + ".in", xbar.slice_in(i), peak);
-    report_link(r, p + ".out", xbar.slice_out(i), peak);
+    std::string q = p + ".xbar.slice" + std::to_string(i);
+    report_link(r, q + ".in", xbar.slice_in(i), peak);
+    report_link(r, q + ".out", xbar.slice_out(i), peak);
   }
   for (uint32_t i = 0; i < xbar.units(); ++i) {
-    std::string p = "xbar.rt" + std::to_string(i);
-    report_link(r, p + ".up", xbar.unit_up(i), peak);
-    report_link(r, p + ".down", xbar.unit_down(i), peak);
+    std::string q = p + ".xbar." + (i < requesters.size() ? requesters[i] : "tlm" + std::to_string(i));
+    report_link(r, q + ".up", xbar.unit_up(i), peak);
+    report_link(r, q + ".down", xbar.unit_down(i), peak);
+  }
+}
+
+// A level several units share: its instances summed (mem.NAME), each instance of a group level
+// (mem.NAME.gK), each slice, and the crossbar in front of each instance.
+void report_shared_level(StatsRegistry& r, const SharedLevelsModule& shared, uint32_t level,
+                         uint32_t units) {
+  const MemoryLevelConfig& config = shared.levels()[level];
+  auto [begin, end] = shared.instances_of(level);
+  CacheStats sum;
+  for (uint32_t i = begin; i < end; ++i) sum += shared.instances()[i].stats();
+  const std::string p = "mem." + config.name;
+  uint32_t slices = (end - begin) * config.slices;
+  report_cache(r, p, sum, shared.tracks_cold_misses(), config.cache.bytes_per_cycle * slices);
+  for (uint32_t i = begin; i < end; ++i) {
+    const SharedLevelsModule::Instance& inst = shared.instances()[i];
+    const std::string q = "mem." + inst.name;
+    if (end - begin > 1)
+      report_cache(r, q, inst.stats(), shared.tracks_cold_misses(),
+                   config.cache.bytes_per_cycle * config.slices);
+    if (inst.slices.size() > 1)
+      for (uint32_t k = 0; k < inst.slices.size(); ++k) {
+        const CacheStats& st = inst.slices[k]->stats();
+        std::string sp = q + ".slice" + std::to_string(k);
+        r.counter(sp + ".accesses", st.accesses);
+        r.counter(sp + ".misses", st.misses);
+        r.counter(sp + ".bank_stall_cycles", st.bank_stall_cycles);
+        r.counter(sp + ".port_stall_cycles", st.port_stall_cycles);
+        r.counter(sp + ".mshr_stall_cycles", st.mshr_stall_cycles);
+      }
+    std::vector<std::string> requesters;
+    if (begin == 0) {  // the first shared level: its requesters are units, in unit order
+      for (uint32_t u = 0; u < units; ++u)
+        if (shared.entry(u) == i) requesters.push_back("rt" + std::to_string(u));
+    } else {
+      for (const auto& above : shared.instances())
+        if (above.below == i) requesters.push_back(above.name);
+    }
+    report_crossbar(r, q, inst.crossbar, requesters);
+  }
+}
+
+// Every cache level under mem.NAME: a unit's own level summed over the units and per unit
+// (mem.NAME.rtK), a shared one by report_shared_level.
+void report_memory(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units,
+                   const SharedLevelsModule& shared) {
+  const std::vector<MemoryLevelConfig>& levels = shared.levels();
+  for (uint32_t i = 0; i < levels.size(); ++i) {
+    if (queued_level(levels[i])) {
+      report_shared_level(r, shared, i, uint32_t(units.size()));
+      continue;
+    }
+    const std::string p = "mem." + levels[i].name;
+    double peak = levels[i].cache.bytes_per_cycle;
+    CacheStats sum;
+    for (const auto& unit : units) sum += unit->memory.level(i).stats();
+    report_cache(r, p, sum, true, peak * double(units.size()));
+    for (const auto& unit : units)
+      report_cache(r, p + ".rt" + std::to_string(unit->core().id()), unit->memory.level(i).stats(),
+                   true, peak);
   }
 }
 
@@ -145,28 +196,32 @@ void report_test_units(StatsRegistry& r, const std::string& p, const TestUnitPoo
   r.ratio(p + ".utilisation", p + ".issues", "cycles", 1.0 / pool.config().count);
 }
 
-// What one kind of read cost: accesses and misses at the L1 and L2, DRAM bytes read.
-void report_read_counts(StatsRegistry& r, const std::string& p, const ReadCounts& sum) {
-  r.counter(p + ".l1_accesses", sum.l1_accesses);
-  r.counter(p + ".l1_misses", sum.l1_accesses - sum.l1_hits);
-  r.counter(p + ".l2_accesses", sum.l2_accesses);
-  r.counter(p + ".l2_misses", sum.l2_accesses - sum.l2_hits);
+// What one kind of read cost: accesses, misses and the miss rate at each cache level
+// (p.mem.NAME.*), DRAM bytes read.
+void report_read_counts(StatsRegistry& r, const std::string& p, const ReadCounts& sum,
+                        const std::vector<MemoryLevelConfig>& levels) {
+  for (uint32_t i = 0; i < levels.size(); ++i) {
+    const std::string q = p + ".mem." + levels[i].name;
+    r.counter(q + ".accesses", sum.accesses[i]);
+    r.counter(q + ".misses", sum.misses(i));
+    r.ratio(q + ".miss_rate", q + ".misses", q + ".accesses");
+  }
   r.counter(p + ".dram_read_bytes", sum.dram_bytes);
 }
 
 // report_read_counts of one kind of the units' reads, summed over the units.
 void report_reads(StatsRegistry& r, const std::string& p,
                   const std::vector<std::unique_ptr<RtUnitModule>>& units,
-                  ReadCounts RtCoreStats::*kind) {
+                  ReadCounts RtCoreStats::*kind, const std::vector<MemoryLevelConfig>& levels) {
   ReadCounts sum;
   for (const auto& unit : units) sum += unit->core().stats().*kind;
-  report_read_counts(r, p, sum);
+  report_read_counts(r, p, sum, levels);
 }
 
 // The shader side (model/sched/shader_core.h): each SM's scheduler time by shader, and the
 // totals; warp slots the units waited for; what the shading reads cost.
 void report_shader(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units,
-                   uint32_t schedulers) {
+                   uint32_t schedulers, const std::vector<MemoryLevelConfig>& levels) {
   ShaderStats sum;
   for (const auto& unit : units) {
     if (!unit->shader()) continue;  // before the simulation starts
@@ -193,17 +248,17 @@ void report_shader(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitMod
   r.counter("shader.slot_waits", sum.slot_waits);
   r.counter("shader.slot_wait_cycles", sum.slot_wait_cycles);
   r.counter("shader.read_bytes", sum.read_bytes);
-  report_read_counts(r, "shader.reads", reads);
+  report_read_counts(r, "shader.reads", reads, levels);
   r.ratio("shader.utilisation", "shader.busy_cycles", "cycles",
           1.0 / (double(schedulers) * double(units.size())));
   r.ratio("shader.busy_cycles_per_ray", "shader.busy_cycles", "rays");
   r.ratio("shader.mean_trace_delay", "shader.trace_delay_cycles", "shader.rays");
-  r.ratio("shader.reads.l1_miss_rate", "shader.reads.l1_misses", "shader.reads.l1_accesses");
   r.ratio("shader.reads.dram_bytes_per_ray", "shader.reads.dram_read_bytes", "rays");
 }
 
 // Two levels: steps and reads of each level, over the units, and per ray.
-void report_levels(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units) {
+void report_levels(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units,
+                   const std::vector<MemoryLevelConfig>& levels) {
   uint64_t instances = 0, top_nodes = 0, nodes = 0;
   for (const auto& unit : units) {
     const RtCoreStats& s = unit->core().stats();
@@ -217,17 +272,16 @@ void report_levels(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitMod
   r.ratio("bvh.instances_per_ray", "bvh.instance_steps", "rays");
   for (const char* level : {"top", "bottom"}) {
     std::string p = std::string("bvh.") + level;
-    report_reads(r, p, units, level[0] == 't' ? &RtCoreStats::top : &RtCoreStats::bottom);
+    report_reads(r, p, units, level[0] == 't' ? &RtCoreStats::top : &RtCoreStats::bottom, levels);
     r.ratio(p + ".nodes_per_ray", p + ".node_steps", "rays");
-    r.ratio(p + ".l1_miss_rate", p + ".l1_misses", p + ".l1_accesses");
-    r.ratio(p + ".l2_miss_rate", p + ".l2_misses", p + ".l2_accesses");
     r.ratio(p + ".dram_bytes_per_ray", p + ".dram_read_bytes", "rays");
   }
 }
 
 // Alpha-tested scenes: the any-hit calls, the cycles rays waited for them, and what the
 // shader's texel reads cost.
-void report_anyhit(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units) {
+void report_anyhit(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitModule>>& units,
+                   const std::vector<MemoryLevelConfig>& levels) {
   uint64_t calls = 0, cycles = 0;
   for (const auto& unit : units) {
     calls += unit->core().stats().anyhit_calls;
@@ -235,17 +289,17 @@ void report_anyhit(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitMod
   }
   r.counter("anyhit.calls", calls);
   r.counter("anyhit.wait_cycles", cycles);
-  report_reads(r, "anyhit.texture", units, &RtCoreStats::texture);
+  report_reads(r, "anyhit.texture", units, &RtCoreStats::texture, levels);
   r.ratio("anyhit.calls_per_ray", "anyhit.calls", "rays");
   r.ratio("anyhit.mean_wait", "anyhit.wait_cycles", "anyhit.calls");
-  r.ratio("anyhit.texture.l1_miss_rate", "anyhit.texture.l1_misses", "anyhit.texture.l1_accesses");
   r.ratio("anyhit.texture.dram_bytes_per_ray", "anyhit.texture.dram_read_bytes", "rays");
 }
 
 // The ray buffer's SRAM, and the states kept in memory: what the units read and wrote through
 // their L1s, and what those reads cost below.
 void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
-                       const std::vector<std::unique_ptr<RtUnitModule>>& units) {
+                       const std::vector<std::unique_ptr<RtUnitModule>>& units,
+                       const std::vector<MemoryLevelConfig>& levels) {
   const RayBufferStats& b = buffer.stats();
   const std::string p = "treelet_queues.buffer";
   r.gauge(p + ".state_bytes", buffer.state_bytes());
@@ -261,7 +315,7 @@ void report_ray_buffer(StatsRegistry& r, const RayBuffer& buffer,
   r.counter(p + ".memory_writes", b.memory_writes);
   r.counter(p + ".memory_reads", b.memory_reads);
   r.counter(p + ".memory_bytes", b.memory_bytes);
-  report_reads(r, p, units, &RtCoreStats::state);
+  report_reads(r, p, units, &RtCoreStats::state, levels);
   r.ratio(p + ".sram_bytes_per_ray", p + ".sram_bytes", "rays");
   r.ratio(p + ".memory_bytes_per_ray", p + ".memory_bytes", "rays");
 }
@@ -276,7 +330,7 @@ void report_prefetch(StatsRegistry& r, const std::vector<std::unique_ptr<RtUnitM
     treelets += s.treelets;
     bytes += s.bytes;
     skipped += s.skipped;
-    l1 += unit->l1.cache().stats();
+    l1 += unit->memory.cache().stats();
   }
   const std::string p = "rt.prefetch";
   r.counter(p + ".treelets", treelets);
@@ -337,7 +391,7 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
     r.ratio(p + ".mean_queued", p + ".queued_ray_cycles", "cycles");
     r.ratio(p + ".occupancy", p + ".queued_ray_cycles", "cycles",
             1.0 / config_.treelet_queues.max_rays);
-    report_ray_buffer(r, treelets_->scheduler().buffer(), units_);
+    report_ray_buffer(r, treelets_->scheduler().buffer(), units_, config_.memory);
   }
 
   if (sorter_) {
@@ -386,8 +440,6 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
       report_test_units(r, p + ".transform", core.transform());
     }
     if (alpha_tested) report_test_units(r, p + ".anyhit", core.anyhit_shader());
-    report_cache(r, p + ".l1", unit->l1.cache().stats(), true,
-                 unit->l1.cache().config().bytes_per_cycle);
     total.steps += steps;
     total.warp_steps += s.warp_steps;
     total.active_lanes += s.active_lanes;
@@ -418,12 +470,12 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
   r.ratio("rt.slot_occupancy", "rt.ray_slot_cycles", "cycles",
           1.0 / (double(slots) * config_.rt_units));
 
-  if (two_level) report_levels(r, units_);
-  if (alpha_tested) report_anyhit(r, units_);
+  if (two_level) report_levels(r, units_, config_.memory);
+  if (alpha_tested) report_anyhit(r, units_, config_.memory);
   if (config_.shader.model != ShaderModel::None)
-    report_shader(r, units_, config_.shader.schedulers);
+    report_shader(r, units_, config_.shader.schedulers, config_.memory);
   if (config_.rt.prefetch.trigger != PrefetchTrigger::None) report_prefetch(r, units_);
-  report_l2(r, *l2_);
+  report_memory(r, units_, *shared_);
   if (banked_dram_) report_banked_dram(r, banked_dram_->controller(), config_.clock_ghz);
   if (dram_) {
     const DramStats& s = dram_->dram().stats();
@@ -458,18 +510,18 @@ void RtSimulator::report_all(StatsRegistry& r, Cycle end) const {
       r.counter(p + ".trav_instances", s.counters.trav_instances);
       r.ratio(p + ".instances_per_ray", p + ".trav_instances", p + ".rays");
     }
-    r.counter(p + ".l1_accesses", s.l1_accesses);
-    r.counter(p + ".l1_hits", s.l1_hits);
-    r.counter(p + ".l2_accesses", s.l2_accesses);
-    r.counter(p + ".l2_hits", s.l2_hits);
-    r.counter(p + ".dram_bytes", s.dram_bytes);
+    for (uint32_t i = 0; i < config_.memory.size(); ++i) {
+      const std::string q = p + ".mem." + config_.memory[i].name;
+      r.counter(q + ".accesses", s.reads.accesses[i]);
+      r.counter(q + ".hits", s.reads.hits[i]);
+      r.ratio(q + ".hit_rate", q + ".hits", q + ".accesses");
+    }
+    r.counter(p + ".dram_bytes", s.reads.dram_bytes);
     r.counter(p + ".stack_spills", s.stack_spills);
     r.counter(p + ".stack_refills", s.stack_refills);
     r.counter(p + ".postponed", s.postponed);
     r.ratio(p + ".nodes_per_ray", p + ".trav_nodes", p + ".rays");
     r.ratio(p + ".triangles_per_ray", p + ".trav_prims", p + ".rays");
-    r.ratio(p + ".l1_hit_rate", p + ".l1_hits", p + ".l1_accesses");
-    r.ratio(p + ".l2_hit_rate", p + ".l2_hits", p + ".l2_accesses");
     r.ratio(p + ".dram_bytes_per_ray", p + ".dram_bytes", p + ".rays");
     r.ratio(p + ".stack_spills_per_ray", p + ".stack_spills", p + ".rays");
   }

@@ -5,16 +5,16 @@
 namespace rtsim {
 
 RtUnitModule::RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
-                           const CacheConfig& l1_config, const TraversalUnit& traversal,
-                           const Clock& clock, uint32_t quantum_cycles, SimControl& control,
+                           const std::vector<MemoryLevelConfig>& levels,
+                           const TraversalUnit& traversal, const Clock& clock, uint32_t quantum_cycles, SimControl& control,
                            const TreeletFootprints* footprints, const ShaderConfig& shader)
     : sc_module(name),
       supply("supply"),
-      l1("l1", l1_config, [this] { arm_at(core_.take_data_event()); }),
+      memory("mem", levels, [this] { arm_at(core_.take_data_event()); }),
       clock_(clock),
       quantum_(std::max<uint32_t>(quantum_cycles, 1)),
       control_(control),
-      core_(id, config, traversal, l1.cache(), footprints),
+      core_(id, config, traversal, memory.cache(), footprints),
       shader_config_(shader) {
   SC_METHOD(run);
 }
@@ -23,7 +23,7 @@ void RtUnitModule::start_of_simulation() {
   core_.set_supply(&supply->supply());
   if (shader_config_.model != ShaderModel::None) {
     shader_ = std::make_unique<ShaderCore>(
-        shader_config_, supply->supply(), l1.cache(),
+        shader_config_, supply->supply(), memory.cache(),
         [this](Cycle at) { shader_wake_.notify(clock_.delay_to(at)); });
     core_.set_supply(shader_.get());
     wake_or_work_ |= shader_wake_;

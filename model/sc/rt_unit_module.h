@@ -1,7 +1,6 @@
 // An RT unit as an sc_module: traversal control and test units (model/sched/rt_core.h) with
-// its own L1 (child module "l1", so its stats are "rtN.l1.*"). The unit reads its L1 by a
-// direct call (the L1 is part of the unit); the L1's misses and writes leave through its `out`
-// socket, bound to the shared L2. Rays come from the supply port (dispatcher or treelet queues).
+// its own cache levels (child module "mem"). The unit reads its first level by a direct call
+// (it is part of the unit); the last own level's misses and writes go to the shared levels. Rays come from the supply port (dispatcher or treelet queues).
 // One SC_METHOD, no thread per ray: it wakes at the cycle of the unit's next event, when the
 // supply announces work, or when the L2 reports data for a waiting ray; it handles every event
 // before now + quantum (TLM temporal decoupling: requests carry the unit's local time as their
@@ -24,11 +23,12 @@ namespace rtsim {
 class RtUnitModule : public sc_core::sc_module {
  public:
   sc_core::sc_port<RaySupplyIf> supply;
-  L1Module l1;
+  UnitMemory memory;
 
   SC_HAS_PROCESS(RtUnitModule);
   RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
-               const CacheConfig& l1_config, const TraversalUnit& traversal, const Clock& clock,
+               const std::vector<MemoryLevelConfig>& levels, const TraversalUnit& traversal,
+               const Clock& clock,
                uint32_t quantum_cycles, SimControl& control,
                const TreeletFootprints* footprints = nullptr, const ShaderConfig& shader = {});
 

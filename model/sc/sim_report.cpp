@@ -22,6 +22,11 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// A cache level's stats prefix: "mem.NAME".
+std::string level_stats(const MemoryLevelConfig& level) {
+  return "mem." + level.name;
+}
+
 Json latency_json(const LatencyHistogram& h) {
   return {{"p50", h.percentile(0.50)},
           {"p95", h.percentile(0.95)},
@@ -30,7 +35,9 @@ Json latency_json(const LatencyHistogram& h) {
           {"max", h.max()}};
 }
 
-Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::string& p) {
+// l1_hit_rate: the unit's first level; l2_hit_rate: the level above DRAM.
+Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::string& p,
+                   const HwConfig& c) {
   Json warps = latency_json(s.warp_latency);
   warps["warps"] = s.warp_latency.count();
   Json out = {{"rays", s.rays},
@@ -39,8 +46,8 @@ Json ray_type_json(const RayTypeStats& s, const StatsRegistry& r, const std::str
               {"warp_latency_cycles", warps},
               {"nodes_per_ray", r.value(p + ".nodes_per_ray")},
               {"triangles_per_ray", r.value(p + ".triangles_per_ray")},
-              {"l1_hit_rate", r.value(p + ".l1_hit_rate")},
-              {"l2_hit_rate", r.value(p + ".l2_hit_rate")},
+              {"l1_hit_rate", r.value(p + "." + level_stats(first_level(c)) + ".hit_rate")},
+              {"l2_hit_rate", r.value(p + "." + level_stats(last_level(c)) + ".hit_rate")},
               {"dram_bytes_per_ray", r.value(p + ".dram_bytes_per_ray")},
               {"stack_spills_per_ray", r.value(p + ".stack_spills_per_ray")}};
   if (r.has(p + ".instances_per_ray")) out["instances_per_ray"] = r.value(p + ".instances_per_ray");
@@ -74,14 +81,14 @@ Json verify_json(const VerifyReport& v) {
 }
 
 // The busiest crossbar link (0 without a crossbar).
-double busiest_link(const HwConfig& c, const StatsRegistry& r) {
+// Over every crossbar link of every level (mem.NAME[.gK].xbar.*.utilisation).
+double busiest_link(const StatsRegistry& r) {
+  const std::string suffix = ".utilisation";
   double most = 0;
-  for (uint32_t i = 0; i < c.rt_units; ++i)
-    for (const char* dir : {".up", ".down"})
-      most = std::max(most, r.value("xbar.rt" + std::to_string(i) + dir + ".utilisation"));
-  for (uint32_t i = 0; r.has("xbar.slice" + std::to_string(i) + ".in.utilisation"); ++i)
-    for (const char* dir : {".in", ".out"})
-      most = std::max(most, r.value("xbar.slice" + std::to_string(i) + dir + ".utilisation"));
+  for (const std::string& name : r.names())
+    if (name.find(".xbar.") != std::string::npos && name.size() > suffix.size() &&
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      most = std::max(most, r.value(name));
   return most;
 }
 
@@ -92,14 +99,14 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
     units[p] = {{"box", r.value(p + ".box.utilisation")},
                 {"triangle", r.value(p + ".triangle.utilisation")},
                 {"control", r.value(p + ".control.utilisation")},
-                {"l1_port", r.value(p + ".l1.port_utilisation")},
+                {"l1_port", r.value(level_stats(first_level(c)) + "." + p + ".port_utilisation")},
                 {"ray_slots", r.value(p + ".slot_occupancy")}};
   }
   auto mean = [&](const char* suffix) { return r.units_sum(c.rt_units, suffix) / c.rt_units; };
   Json means = {{"box", mean(".box.utilisation")},
                 {"triangle", mean(".triangle.utilisation")},
                 {"control", mean(".control.utilisation")},
-                {"l1_port", mean(".l1.port_utilisation")},
+                {"l1_port", r.value(level_stats(first_level(c)) + ".port_utilisation")},
                 {"ray_slots", r.value("rt.slot_occupancy")}};
   // Two levels: the instance transform units too.
   if (r.has("rt0.transform.utilisation")) {
@@ -115,8 +122,8 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
   return {{"mean", means},
           {"units", units},
           {"dispatch", r.value("dispatch.utilisation")},
-          {"l2_port", r.value("l2.port_utilisation")},
-          {"xbar_busiest_link", busiest_link(c, r)},
+          {"l2_port", r.value(level_stats(last_level(c)) + ".port_utilisation")},
+          {"xbar_busiest_link", busiest_link(r)},
           {"dram", r.value("dram.utilisation")}};
 }
 
@@ -179,22 +186,32 @@ Json shader_json(const HwConfig& c, const StatsRegistry& r) {
           {"mean_trace_delay", r.value("shader.mean_trace_delay")},
           {"slot_wait_cycles", r.value("shader.slot_wait_cycles")},
           {"read_bytes", r.value("shader.read_bytes")},
-          {"reads_l1_miss_rate", r.value("shader.reads.l1_miss_rate")},
+          {"reads_l1_miss_rate",
+           r.value("shader.reads." + level_stats(first_level(c)) + ".miss_rate")},
           {"reads_dram_bytes_per_ray", r.value("shader.reads.dram_bytes_per_ray")}};
 }
 
+// l1_*: the unit's first level, l2_*: the level above DRAM (the same in a one-level hierarchy);
+// levels: each level from the unit outwards.
 Json memory_json(const HwConfig& c, const StatsRegistry& r) {
-  double l1_accesses = r.units_sum(c.rt_units, ".l1.accesses");
-  auto l1_share = [&](const char* counter) {
-    return l1_accesses ? r.units_sum(c.rt_units, counter) / l1_accesses : 0;
-  };
-  return {{"l1_hit_rate", l1_share(".l1.hits")},
-          {"l2_hit_rate", r.value("l2.hit_rate")},
-          {"l1_served_rate", l1_share(".l1.served")},
-          {"l2_served_rate", r.value("l2.served_rate")},
-          {"l1_compulsory_share", r.units_sum(c.rt_units, ".l1.cold_misses") /
-                                      std::max(1.0, r.units_sum(c.rt_units, ".l1.misses"))},
-          {"l2_compulsory_share", r.value("l2.compulsory_share")},
+  Json levels = Json::array();
+  for (const MemoryLevelConfig& level : c.memory) {
+    std::string p = level_stats(level);
+    levels.push_back({{"name", level.name},
+                      {"scope", scope_name(level)},
+                      {"accesses", r.value(p + ".accesses")},
+                      {"hit_rate", r.value(p + ".hit_rate")},
+                      {"served_rate", r.value(p + ".served_rate")},
+                      {"compulsory_share", r.value(p + ".compulsory_share")}});
+  }
+  std::string first = level_stats(first_level(c)), last = level_stats(last_level(c));
+  return {{"levels", levels},
+          {"l1_hit_rate", r.value(first + ".hit_rate")},
+          {"l2_hit_rate", r.value(last + ".hit_rate")},
+          {"l1_served_rate", r.value(first + ".served_rate")},
+          {"l2_served_rate", r.value(last + ".served_rate")},
+          {"l1_compulsory_share", r.value(first + ".compulsory_share")},
+          {"l2_compulsory_share", r.value(last + ".compulsory_share")},
           {"dram_bytes", r.value("dram.bytes")},
           {"dram_bytes_per_ray", r.value("dram.bytes_per_ray")},
           {"dram_bytes_per_cycle", r.value("dram.bytes_per_cycle")}};
@@ -309,7 +326,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
     const RayTypeStats& s = sim.collected().by_type()[t];
     if (s.rays == 0) continue;
     std::string name = ray_type_name(RayType(t));
-    types[name] = ray_type_json(s, r, "type." + name);
+    types[name] = ray_type_json(s, r, "type." + name, c);
   }
   doc["ray_types"] = types;
   doc["memory"] = memory_json(c, r);
@@ -334,19 +351,24 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
   bool levels = r.has("bvh.instances_per_ray");
   for (const char* level : {"top", "bottom"}) {
     std::string key = level[0] == 't' ? "tlas_" : "blas_", stat = std::string("bvh.") + level;
-    for (const char* name : {"nodes_per_ray", "l1_miss_rate", "l2_miss_rate", "dram_bytes_per_ray"})
+    for (const char* name : {"nodes_per_ray", "dram_bytes_per_ray"})
       doc["coherence"][key + name] = when(levels, (stat + "." + name).c_str());
+    doc["coherence"][key + "l1_miss_rate"] =
+        when(levels, (stat + "." + level_stats(first_level(c)) + ".miss_rate").c_str());
+    doc["coherence"][key + "l2_miss_rate"] =
+        when(levels, (stat + "." + level_stats(last_level(c)) + ".miss_rate").c_str());
   }
   doc["coherence"]["instances_per_ray"] = when(levels, "bvh.instances_per_ray");
   double rays = double(std::max<uint64_t>(sim.rays(), 1));
   doc["stack"] = {{"spill_entries", r.value("rt.stack.spill_entries")},
                   {"refill_entries", r.value("rt.stack.refill_entries")},
                   {"spills_per_ray", r.value("rt.stack.spill_entries") / rays},
-                  {"refill_l1_reads", r.units_sum(c.rt_units, ".l1.local_reads")},
-                  {"refill_l1_misses", r.units_sum(c.rt_units, ".l1.local_misses")},
-                  {"refill_l2_misses", r.value("l2.local_misses")},
-                  {"l1_writeback_bytes", r.units_sum(c.rt_units, ".l1.writeback_bytes")},
-                  {"l2_writeback_bytes", r.value("l2.writeback_bytes")},
+                  {"refill_l1_reads", r.value(level_stats(first_level(c)) + ".local_reads")},
+                  {"refill_l1_misses", r.value(level_stats(first_level(c)) + ".local_misses")},
+                  {"refill_l2_misses", r.value(level_stats(last_level(c)) + ".local_misses")},
+                  {"l1_writeback_bytes",
+                   r.value(level_stats(first_level(c)) + ".writeback_bytes")},
+                  {"l2_writeback_bytes", r.value(level_stats(last_level(c)) + ".writeback_bytes")},
                   {"dram_write_bytes", r.value("dram.write_bytes")}};
   doc["verify"] = info.verify ? verify_json(*info.verify) : Json{{"skipped", true}};
   const PixelBuffers& px = sim.collected().pixels();

@@ -3,31 +3,62 @@
 #include <stdexcept>
 #include <string>
 
-#include "model/sc/shared_cache_module.h"
+#include "model/sc/shared_levels_module.h"
 
 namespace rtsim {
 
-L1Module::L1Module(sc_core::sc_module_name name, const CacheConfig& config,
-                   std::function<void()> on_response)
-    : sc_module(name), on_response_(std::move(on_response)), cache_(config, this, CacheRole::L1) {}
+namespace {
 
-void L1Module::connect(SharedCacheModule& l2) {
-  l2_ = &l2;
-  port_ = l2.connect(on_response_ ? on_response_ : std::function<void()>([] {}));
+// A unit's one level in front of a shared one (whose config is not used here).
+std::vector<MemoryLevelConfig> one_level(const CacheConfig& config) {
+  MemoryLevelConfig own, shared;
+  own.name = "l1";
+  own.cache = config;
+  shared.name = "l2";
+  shared.scope = LevelScope::Shared;
+  return {own, shared};
 }
 
-void L1Module::before_end_of_elaboration() {
-  if (!l2_) throw std::logic_error(std::string(name()) + ": not connected to an L2");
+}  // namespace
+
+UnitMemory::UnitMemory(sc_core::sc_module_name name, const std::vector<MemoryLevelConfig>& levels,
+                       std::function<void()> on_response)
+    : sc_module(name), on_response_(std::move(on_response)) {
+  uint32_t own = 0;
+  while (own < levels.size() && !queued_level(levels[own])) ++own;
+  caches_.resize(own);
+  for (uint32_t i = own; i-- > 0;) {
+    MemoryTarget* below = i + 1 < own ? caches_[i + 1].get() : static_cast<MemoryTarget*>(this);
+    caches_[i] = std::make_unique<Cache>(levels[i].cache, below, cache_place(levels, i));
+  }
 }
 
-Cycle L1Module::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
-                     ReadCharge&) {
-  l2_->read_request(port_, addr, bytes, at, client, token);
+UnitMemory::UnitMemory(sc_core::sc_module_name name, const CacheConfig& config,
+                       std::function<void()> on_response)
+    : UnitMemory(name, one_level(config), std::move(on_response)) {}
+
+void UnitMemory::connect(SharedLevelsModule& shared, uint32_t unit) {
+  shared_ = &shared;
+  instance_ = shared.entry(unit);
+  port_ = shared.connect(unit, on_response_ ? on_response_ : std::function<void()>([] {}));
+}
+
+void UnitMemory::before_end_of_elaboration() {
+  if (!shared_) throw std::logic_error(std::string(name()) + ": not connected to shared levels");
+}
+
+Cycle UnitMemory::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
+                       uint64_t token, ReadCharge&) {
+  shared_->read_request(instance_, port_, addr, bytes, at, client, token);
   return kPending;
 }
 
-void L1Module::write(uint64_t addr, uint32_t bytes, Cycle at) {
-  l2_->write_request(port_, addr, bytes, at);
+void UnitMemory::write(uint64_t addr, uint32_t bytes, Cycle at) {
+  shared_->write_request(instance_, port_, addr, bytes, at);
+}
+
+void UnitMemory::fill(uint64_t addr, uint32_t bytes, Cycle at) {
+  shared_->fill_request(instance_, port_, addr, bytes, at);
 }
 
 DramModule::DramModule(sc_core::sc_module_name name, const DramConfig& config, const Clock& clock)

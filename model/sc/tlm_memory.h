@@ -1,7 +1,8 @@
-// The memory hierarchy's ends as modules: an RT unit's L1, which sends its misses and writes to
-// the shared L2 (model/sc/shared_cache_module.h) by function call, and the simple DRAM as a
-// loosely-timed TLM-2.0 target (which the L2 calls in simulated-time order; another
-// loosely-timed TLM memory model can be bound in its place).
+// The memory hierarchy's ends as modules: an RT unit's own cache levels, which send their
+// misses, writes and evictions to the shared levels (model/sc/shared_levels_module.h) by
+// function call, and the simple DRAM as a loosely-timed TLM-2.0 target (which the shared levels
+// call in simulated-time order; another loosely-timed TLM memory model can be bound in its
+// place).
 // Only addresses and lengths matter: the functional model reads BVH data itself, so targets do
 // not fill data buffers. No module has a thread: a request is a function call chain.
 #pragma once
@@ -16,35 +17,45 @@
 
 #include "model/mem/cache.h"
 #include "model/mem/dram.h"
+#include "model/mem/hierarchy.h"
 #include "model/sc/clock.h"
 
 namespace rtsim {
 
-class SharedCacheModule;
+class SharedLevelsModule;
 
-// An RT unit's L1. The unit reads it by a direct call (it is the unit's own); its misses and
-// posted writes go to the shared L2 it is connected to (connect), also by call, as request
-// records the L2 serves in time order; the L2 answers each read through its client's
-// read_done and then calls on_response, so the owner can wake up.
-class L1Module : public sc_core::sc_module, private MemoryTarget {
+// An RT unit's own levels (scope "unit" in model/mem/hierarchy.h), first to last. The unit
+// reads the first by a direct call (they are the unit's own); each level's misses, writes and
+// evictions go to the next by call, and the last one's to the shared levels it is connected to
+// (connect), also by call, as request records those serve in time order; they answer each read
+// through its client's read_done and then call on_response, so the owner can wake up.
+class UnitMemory : public sc_core::sc_module, private MemoryTarget {
  public:
-  L1Module(sc_core::sc_module_name name, const CacheConfig& config,
-           std::function<void()> on_response = {});
-  // Before the simulation starts: the L2 below this L1 (one of its requester ports).
-  void connect(SharedCacheModule& l2);
-  Cache& cache() { return cache_; }
-  const Cache& cache() const { return cache_; }
+  // levels: the machine's hierarchy; the unit's own are its first levels of scope unit.
+  UnitMemory(sc_core::sc_module_name name, const std::vector<MemoryLevelConfig>& levels,
+             std::function<void()> on_response = {});
+  // A unit with one level of `config` (tests).
+  UnitMemory(sc_core::sc_module_name name, const CacheConfig& config,
+             std::function<void()> on_response = {});
+  // Before the simulation starts: the shared levels below, which this is unit `unit` of.
+  void connect(SharedLevelsModule& shared, uint32_t unit = 0);
+  Cache& cache() { return *caches_.front(); }  // the first level: what the unit reads
+  const Cache& cache() const { return *caches_.front(); }
+  uint32_t levels() const { return uint32_t(caches_.size()); }
+  const Cache& level(uint32_t i) const { return *caches_[i]; }
+  Cache& level(uint32_t i) { return *caches_[i]; }
 
  private:
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
              ReadCharge& charge) override;
   void write(uint64_t addr, uint32_t bytes, Cycle at) override;
-  void before_end_of_elaboration() override;  // an unconnected L1 is a wiring error
+  void fill(uint64_t addr, uint32_t bytes, Cycle at) override;
+  void before_end_of_elaboration() override;  // unconnected: a wiring error
 
   std::function<void()> on_response_;
-  SharedCacheModule* l2_ = nullptr;
-  uint32_t port_ = 0;
-  Cache cache_;
+  SharedLevelsModule* shared_ = nullptr;
+  uint32_t instance_ = 0, port_ = 0;
+  std::vector<std::unique_ptr<Cache>> caches_;
 };
 
 class DramModule : public sc_core::sc_module {

@@ -2,7 +2,7 @@
 // and in insertion order within a cycle, so a run is deterministic. A unit keeps one queue
 // for all its rays instead of a SystemC thread per ray, and wakes only at the cycles in it.
 // The item is what the owner schedules: a ray slot or warp (EventQueue), or a whole request
-// record (the shared L2's jobs, model/sc/shared_cache_module.h), kept in the queue itself.
+// record (the shared L2's jobs, model/sc/shared_levels_module.h), kept in the queue itself.
 // A timing wheel: events within kWheel cycles of the earliest pending cycle sit in per-cycle
 // FIFO arrays (constant time per event, and contiguous in memory: a linked list's nodes cost a
 // host cache miss per event); later ones wait in a heap and move onto the wheel as it turns. Events

@@ -17,9 +17,7 @@ namespace rtsim {
 
 // What one ray cost, accumulated step by step and read when it retires.
 struct RayCost {
-  uint32_t l1_accesses = 0, l1_hits = 0;  // line accesses of this ray's fetches at its L1
-  uint32_t l2_accesses = 0, l2_hits = 0;  // and at the L2, for the L1's misses
-  uint64_t dram_bytes = 0;                // bytes the L2 fetched from DRAM for its reads
+  RayReads reads;              // block accesses and hits at each cache level, DRAM bytes
   uint32_t stack_spills = 0;              // entries written out of the hardware stack
   uint32_t stack_refills = 0;             // entries read back
   uint32_t postponed = 0;                 // times it waited in a treelet queue

@@ -15,7 +15,7 @@ uint32_t RtCore::level_of(uint64_t addr) const {
 
 void RtCore::charge_level(uint32_t level, const ReadCharge& charge) {
   if (level != 0)
-    add_charge(level == 1 ? stats_.top : level == 2 ? stats_.bottom : stats_.texture, charge);
+    (level == 1 ? stats_.top : level == 2 ? stats_.bottom : stats_.texture) += charge;
 }
 
 void RtCore::count_step(StepKind kind, const TraversalState& after) {
@@ -34,8 +34,8 @@ Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bo
   ReadCharge charge;
   uint32_t level = level_of(addr);
   Cycle ready = memory_.read(addr, bytes, now, this, ray.slot | uint64_t(level) << 32, charge);
-  add_charge(ray.cost, charge);
-  if (state) add_charge(stats_.state, charge);
+  ray.cost.reads += charge;
+  if (state) stats_.state += charge;
   charge_level(level, charge);
   stats_.fetches++;
   stats_.fetch_bytes += bytes;
@@ -49,10 +49,10 @@ Cycle RtCore::read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bo
 
 void RtCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   auto slot = uint32_t(token);
-  add_charge(slots_[slot]->cost, charge);
+  slots_[slot]->cost.reads += charge;
   charge_level(uint32_t(token >> 32), charge);
   uint32_t item = item_of(slot);
-  if (slot_state_[item].wait == Wait::State) add_charge(stats_.state, charge);
+  if (slot_state_[item].wait == Wait::State) stats_.state += charge;
   slot_state_[item].data_ready = std::max(slot_state_[item].data_ready, ready);
   waiting_reads_--;
   if (--slot_state_[item].pending_reads > 0) return;

@@ -137,7 +137,7 @@ void ShaderCore::shade(uint32_t index, Cycle now) {
       uint64_t addr = shading_address(frame, pixel, config_.bytes_per_hit);
       uint64_t token = uint64_t(index) * kRayTypeCount + uint64_t(type);
       Cycle ready = memory_.read(addr, config_.bytes_per_hit, now, this, token, charge);
-      add_charge(stats_.reads[int(type)], charge);
+      stats_.reads[int(type)] += charge;
       stats_.read_bytes += config_.bytes_per_hit;
       if (ready == kPending)
         w.pending_reads++;
@@ -155,7 +155,7 @@ void ShaderCore::shade(uint32_t index, Cycle now) {
 void ShaderCore::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   auto index = uint32_t(token / kRayTypeCount);
   Warp& w = warps_[index];
-  add_charge(stats_.reads[token % kRayTypeCount], charge);
+  stats_.reads[token % kRayTypeCount] += charge;
   w.shaded = std::max(w.shaded, ready);
   if (--w.pending_reads > 0) return;
   shading_reads_--;

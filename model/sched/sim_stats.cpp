@@ -25,11 +25,7 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
   s.rays++;
   s.hits += ray.state.prim != kNoHit;
   s.counters += ray.state.counters;
-  s.l1_accesses += cost.l1_accesses;
-  s.l1_hits += cost.l1_hits;
-  s.l2_accesses += cost.l2_accesses;
-  s.l2_hits += cost.l2_hits;
-  s.dram_bytes += cost.dram_bytes;
+  s.reads += cost.reads;
   s.stack_spills += cost.stack_spills;
   s.stack_refills += cost.stack_refills;
   s.postponed += cost.postponed;
@@ -52,7 +48,7 @@ void SimStatsCollector::retired(const RayContext& ray, Cycle now) {
     throw std::logic_error("a retired ray's pixel lies outside the pixel buffers");
   pixels_.cycles[ray.ray.pixel] += float(latency);
   pixels_.nodes[ray.ray.pixel] += float(ray.state.counters.trav_nodes);
-  pixels_.dram_bytes[ray.ray.pixel] += float(cost.dram_bytes);
+  pixels_.dram_bytes[ray.ray.pixel] += float(cost.reads.dram_bytes);
 }
 
 void SimStatsCollector::close(const Warp& warp) {

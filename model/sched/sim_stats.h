@@ -19,8 +19,7 @@ namespace rtsim {
 struct RayTypeStats {
   uint64_t rays = 0, hits = 0;
   TraversalCounters counters;  // trav_nodes, trav_leaves, trav_prims, trav_prim_hits
-  uint64_t l1_accesses = 0, l1_hits = 0, l2_accesses = 0, l2_hits = 0;
-  uint64_t dram_bytes = 0;
+  ReadCounts reads;  // block accesses and hits at each cache level, DRAM bytes
   uint64_t stack_spills = 0, stack_refills = 0, postponed = 0;
   uint64_t anyhit_cycles = 0;  // cycles waiting for any-hit calls
   LatencyHistogram latency;    // cycles from dispatch to retirement

@@ -81,4 +81,11 @@ nlohmann::ordered_json StatsRegistry::to_json() const {
   return {{"counters", counters}, {"derived", derived}};
 }
 
+std::vector<std::string> StatsRegistry::names() const {
+  std::vector<std::string> all;
+  for (const auto& [name, value] : values_) all.push_back(name);
+  for (const Ratio& ratio : ratios_) all.push_back(ratio.name);
+  return all;
+}
+
 }  // namespace rtsim

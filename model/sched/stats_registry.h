@@ -32,6 +32,8 @@ class StatsRegistry {
   double value(const std::string& name) const;  // a counter, a real or a ratio; 0 if absent
   // The sum over RT units 0 .. units - 1 of "rtI" + suffix (suffix: ".l1.accesses", say).
   double units_sum(uint32_t units, const std::string& suffix) const;
+  // Every name: counters, reals and gauges, then ratios, each in the order added.
+  std::vector<std::string> names() const;
   // {"counters": {...}, "derived": {...}}, each in the order added.
   nlohmann::ordered_json to_json() const;
 

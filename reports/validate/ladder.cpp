@@ -1,7 +1,8 @@
-// The latency ladder: one ray alone on a one-triangle scene, its two reads served by the L1 or
-// by the L2, and one read at a time to a closed, open and conflicting DRAM row, each against
+// The latency ladder: one ray alone on a one-triangle scene, its two reads served by each cache
+// level in turn, and one read at a time to a closed, open and conflicting DRAM row, each against
 // the sum of the configured latencies (model/VALIDATION.md).
 #include <cmath>
+#include <optional>
 
 #include <fmt/core.h>
 
@@ -26,55 +27,108 @@ struct OneTriangle {
   std::vector<Ray> rays;  // the same ray twice: the first warms the caches up
 };
 
+// Cycles of a read that hits level k: each level's tag check down to it, and each link crossed
+// both ways (model/SIM.md, "The memory hierarchy").
+double hit_cycles(const std::vector<MemoryLevelConfig>& levels, uint32_t k) {
+  double cycles = 0;
+  for (uint32_t i = 0; i <= k; ++i) cycles += levels[i].cache.hit_latency;
+  for (uint32_t i = 0; i < k; ++i) cycles += 2.0 * levels[i].link.latency;
+  return cycles;
+}
+
+// The two-unit machine on which the second ray's reads hit level k (k >= 1): every level above
+// it private to a unit (a group level becomes one per unit: only latencies count here), level k
+// and below shared by both; for a victim level the level above holds one line, so that the
+// first ray's reads push each other into it. Empty, with why, when no machine does that.
+std::optional<HwConfig> rung_machine(const HwConfig& one_unit, uint32_t k, std::string& why) {
+  HwConfig c = one_unit;
+  c.rt_units = 2;
+  c.dispatch.rays_per_cycle = 1.0 / 4096;
+  std::vector<MemoryLevelConfig>& levels = c.memory;
+  bool victim = levels[k].fill == LevelFill::Victim;
+  uint32_t fresh = victim ? k - 1 : k;  // the first level both rays' units share
+  for (uint32_t i = 0; i < levels.size(); ++i) {
+    MemoryLevelConfig& l = levels[i];
+    if (i < fresh && l.scope == LevelScope::Shared) {
+      why = fmt::format("memory.{} is shared: the second ray finds the line there", l.name);
+      return std::nullopt;
+    }
+    if (i >= fresh && l.scope == LevelScope::Unit) {
+      why = fmt::format("memory.{} is each unit's own: no other unit's ray reaches it", l.name);
+      return std::nullopt;
+    }
+    if (l.scope == LevelScope::Group) {
+      l.scope = i < fresh ? LevelScope::Group : LevelScope::Shared;
+      l.group = 1;
+    }
+  }
+  if (victim) {
+    CacheConfig& above = levels[k - 1].cache;
+    above.ways = 1;
+    above.size_bytes = above.line_bytes;
+    levels[k - 1].slices = 1;
+  }
+  return c;
+}
+
 std::vector<Check> ray_ladder(const Target& target) {
   const HwConfig& preset = target.config;
+  const std::vector<MemoryLevelConfig>& levels = preset.memory;
   OneTriangle scene(preset.bvh);
-  HwConfig l1 = unloaded(preset);
-  l1.rt_units = 1;
-  l1.rt.warps = 1;
-  l1.rt.warp_size = 1;
-  l1.sim.warmup_rays = 1;
-  // Two units: the second ray reaches the other unit, whose L1 is cold, long after the first
-  // ray has left its data in the L2.
-  HwConfig l2 = l1;
-  l2.rt_units = 2;
-  l2.dispatch.rays_per_cycle = 1.0 / 4096;
-  std::vector<SimFigures> runs =
-      simulate(target, {{l1, &scene.image, &scene.rays}, {l2, &scene.image, &scene.rays}});
+  HwConfig one = unloaded(preset);
+  one.rt_units = 1;
+  one.rt.warps = 1;
+  one.rt.warp_size = 1;
+  one.sim.warmup_rays = 1;
   const RtCoreConfig& rt = preset.rt;
   double fixed = preset.dispatch.latency + rt.setup_latency + rt.box.latency + rt.triangle.latency +
                  2.0 * rt.control_latency;
-  double l1_read = preset.l1.hit_latency;
-  double l2_read = l1_read + 2.0 * preset.l2_layout.crossbar.latency + preset.l2.hit_latency;
   std::string terms = fmt::format(
       "dispatch.latency {} + rt.setup_latency {} + rt.box.latency {} + rt.triangle.latency {} + "
       "2 x rt.control_latency {}",
       preset.dispatch.latency, rt.setup_latency, rt.box.latency, rt.triangle.latency,
       rt.control_latency);
-  Check hit1{"ladder.l1_hit", "closed_form", "one ray, both reads hit the L1"};
-  hit1.source = "formula: " + terms + fmt::format(" + 2 reads x rt.l1.hit_latency {}", l1_read);
-  hit1.unit = "cycles";
-  set_exact(hit1, fixed + 2 * l1_read);
-  hit1.measured = runs[0]["cycles"];
-  hit1.detail =
-      "1 unit, 1 ray slot, bandwidth limits off; the same ray twice, the first as "
-      "warm-up; cycles from the second ray's dispatch to its retirement";
-  hit1.look_at = "RtCore::on_ray, test_step, Cache::read (model/sched, model/mem)";
-  Check hit2{"ladder.l2_hit", "closed_form", "one ray, both reads miss the L1 and hit the L2"};
-  hit2.source =
-      "formula: " + terms +
-      fmt::format(
-          " + 2 reads x (rt.l1.hit_latency {} + 2 x xbar.latency {} + "
-          "l2.hit_latency {})",
-          preset.l1.hit_latency, preset.l2_layout.crossbar.latency, preset.l2.hit_latency);
-  hit2.unit = "cycles";
-  set_exact(hit2, fixed + 2 * l2_read);
-  hit2.measured = runs[1]["cycles"];
-  hit2.detail =
-      "2 units, 1 ray slot each, one ray dispatched every 4096 cycles: the second ray "
-      "runs on the other unit after the first left its lines in the L2";
-  hit2.look_at = "the L1 miss path: L1Module, Crossbar, SharedCacheModule (model/sc, model/mem)";
-  return {hit1, hit2};
+  std::vector<Check> out;
+  std::vector<SimJob> jobs;
+  for (uint32_t k = 0; k < levels.size(); ++k) {
+    const MemoryLevelConfig& level = levels[k];
+    Check c{"ladder." + level.name + "_hit", "closed_form",
+            k == 0 ? fmt::format("one ray, both reads hit the unit's {}", level.name)
+                   : fmt::format("one ray, both reads miss the levels above and hit {}",
+                                 level.name)};
+    std::string sum;
+    for (uint32_t i = 0; i <= k; ++i)
+      sum += fmt::format("{}memory.{}.hit_latency {}", i ? " + " : "", levels[i].name,
+                         levels[i].cache.hit_latency);
+    for (uint32_t i = 0; i < k; ++i)
+      sum += fmt::format(" + 2 x memory.{}.link_latency {}", levels[i].name, levels[i].link.latency);
+    c.source = fmt::format("formula: {} + 2 reads x ({})", terms, sum);
+    c.unit = "cycles";
+    set_exact(c, fixed + 2 * hit_cycles(levels, k));
+    c.look_at = k == 0 ? "RtCore::on_ray, test_step, Cache::read (model/sched, model/mem)"
+                       : "the miss path: UnitMemory, Crossbar, SharedLevelsModule (model/sc, "
+                         "model/mem)";
+    std::string why;
+    std::optional<HwConfig> machine = k == 0 ? one : rung_machine(one, k, why);
+    if (!machine) {
+      c.skipped = why;
+    } else {
+      c.detail = k == 0 ? "1 unit, 1 ray slot, bandwidth limits off; the same ray twice, the "
+                          "first as warm-up; cycles from the second ray's dispatch to its "
+                          "retirement"
+                        : "2 units, 1 ray slot each, one ray dispatched every 4096 cycles: the "
+                          "second ray runs on the other unit after the first left its lines "
+                          "below (group levels taken per unit above this level, shared from it "
+                          "on; a victim level's upper level holding one line)";
+      jobs.push_back({*machine, &scene.image, &scene.rays});
+    }
+    out.push_back(c);
+  }
+  std::vector<SimFigures> runs = simulate(target, jobs);
+  size_t run = 0;
+  for (Check& c : out)
+    if (c.ran()) c.measured = runs[run++]["cycles"];
+  return out;
 }
 
 // One read at a time to the banked DRAM's controller, refresh off.
@@ -161,7 +215,7 @@ std::vector<Check> dram_ladder(const Target& target) {
     }
     return out;
   }
-  DramProbe probe(preset, target.as_run(preset), block_bytes(preset.l2));
+  DramProbe probe(preset, target.as_run(preset), block_bytes(last_level(preset).cache));
   if (!probe.one_bank(0)) {
     for (int i = 0; i < 3; ++i) {
       Check c{names[i], "closed_form", titles[i]};
@@ -196,7 +250,7 @@ std::vector<Check> dram_ladder(const Target& target) {
     set_exact(c, probe.expected(at[i], before[i]));
     c.measured = measured[i];
     c.detail = fmt::format("DramController alone, refresh off, a {}-byte read at {:#x}",
-                           block_bytes(preset.l2), addrs[i]);
+                           block_bytes(last_level(preset).cache), addrs[i]);
     c.look_at =
         "DramController::decide and DramChannel (model/mem/dram_controller.cpp, "
         "dram_device.cpp)";

@@ -57,7 +57,7 @@ Check dram_loaded_latency(const Target& target) {
     return c;
   }
   HwConfig run = target.as_run(target.config);
-  uint32_t line = block_bytes(target.config.l2);
+  uint32_t line = block_bytes(last_level(target.config).cache);
   std::vector<LoadPoint> points;
   for (int step = 1; step <= 8; ++step) points.push_back(run_load(run, line, 0.1 * step, step));
   // W0: the unloaded latency (10% load); a: least squares of W - W0 against u / (1 - u).

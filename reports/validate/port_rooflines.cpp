@@ -10,6 +10,12 @@
 namespace rtsim::validation {
 namespace {
 
+// A unit level's counter (mem.NAME.<name>, summed over the units), the mean over the units.
+Work level_per_unit(const MemoryLevelConfig& level, const std::string& name) {
+  std::string stat = "mem." + level.name + "." + name;
+  return [stat](const SimFigures& run) { return run[stat] / run.units(); };
+}
+
 struct PortCase {
   const char* id;
   const char* title;
@@ -28,24 +34,24 @@ std::vector<Check> port_rooflines(const Target& target) {
   base.rt.box.count = base.rt.triangle.count = base.rt.issue_per_cycle = kUnlimited;
   // Reads that miss the L1: one set, and MSHRs for every line a unit can wait for.
   HwConfig missing = base;
-  missing.l1.size_bytes = uint64_t(missing.l1.line_bytes) * missing.l1.ways;
-  missing.l1.mshrs = 512;
+  first_level(missing).cache.size_bytes = uint64_t(first_level(missing).cache.line_bytes) * first_level(missing).cache.ways;
+  first_level(missing).cache.mshrs = 512;
   HwConfig l1 = base, l2 = missing, xbar = missing;
-  l1.l1.bytes_per_cycle = preset.l1.bytes_per_cycle;
-  l2.l2.bytes_per_cycle = preset.l2.bytes_per_cycle;
-  l2.l2_layout.slices = 1;
-  xbar.l2_layout.crossbar.bytes_per_cycle = preset.l2_layout.crossbar.bytes_per_cycle;
+  first_level(l1).cache.bytes_per_cycle = first_level(preset).cache.bytes_per_cycle;
+  last_level(l2).cache.bytes_per_cycle = last_level(preset).cache.bytes_per_cycle;
+  last_level(l2).slices = 1;
+  first_level(xbar).link.bytes_per_cycle = first_level(preset).link.bytes_per_cycle;
   std::vector<PortCase> cases = {
       {"roofline.l1_port", "bytes a cycle through each L1's data port", "rt.l1.bytes_per_cycle",
-       preset.l1.bytes_per_cycle, per_unit("l1.bytes_read"),
+       first_level(preset).cache.bytes_per_cycle, level_per_unit(first_level(preset), "bytes_read"),
        "an L1 that holds the scene; bytes the unit read",
        "Cache::read's data port cursor (model/mem/cache.cpp)"},
       {"roofline.l2_port", "bytes a cycle through an L2 slice's data port", "l2.bytes_per_cycle",
-       preset.l2.bytes_per_cycle, stat("l2.bytes_read"),
+       last_level(preset).cache.bytes_per_cycle, stat("mem." + last_level(preset).name + ".bytes_read"),
        "one L2 slice, L1s of one set: bytes the L2 served",
-       "the L2's data port cursor (model/mem/cache.cpp, SharedCacheModule)"},
+       "the L2's data port cursor (model/mem/cache.cpp, SharedLevelsModule)"},
       {"roofline.xbar_link", "bytes a cycle over a unit's crossbar link", "xbar.bytes_per_cycle",
-       preset.l2_layout.crossbar.bytes_per_cycle, per_unit("l1.bytes_below"),
+       first_level(preset).link.bytes_per_cycle, level_per_unit(first_level(preset), "bytes_below"),
        "L1s of one set: bytes each L1 received from below",
        "Link and Crossbar (model/mem/crossbar.cpp)"}};
   Scene scene = load_scene("grid:4096");

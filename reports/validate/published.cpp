@@ -153,8 +153,8 @@ std::vector<Check> published_checks(const Target& target,
   short_stack.rt.stack.entries = 5;
   full_stack.rt.stack.entries = 64;
   HwConfig small = depth;
-  small.l2.size_bytes = 256 * 1024;
-  small.l2_layout.slices = 1;
+  last_level(small).cache.size_bytes = 256 * 1024;
+  last_level(small).slices = 1;
   HwConfig treelet = small;
   treelet.rt.mode = TraversalMode::Treelet;
   treelet.rt.refill = Refill::Slot;

@@ -26,7 +26,7 @@ std::vector<Check> dram_roofline(const Target& target) {
     return {c};
   }
   const BankedDramConfig& dram = preset.banked_dram;
-  uint32_t line = block_bytes(preset.l2);
+  uint32_t line = block_bytes(last_level(preset).cache);
   const uint64_t reads = 65536;
   HwConfig run = target.as_run(preset);
   DramController controller(run.banked_dram, run.clock_ghz);

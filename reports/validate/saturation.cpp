@@ -8,12 +8,12 @@ namespace rtsim::validation {
 HwConfig ceiling_machine(const HwConfig& preset, double rate) {
   HwConfig c = unloaded(preset);
   c.rt_units = 2;
-  c.l1.size_bytes = 4u << 20;
-  c.l1.ways = 16;
-  c.l1.mshrs = std::max(c.l1.mshrs, 64u);
+  first_level(c).cache.size_bytes = 4u << 20;
+  first_level(c).cache.ways = 16;
+  first_level(c).cache.mshrs = std::max(first_level(c).cache.mshrs, 64u);
   c.rt.refill = Refill::Slot;
   c.rt.stack.entries = 64;
-  double step = c.dispatch.latency + c.rt.setup_latency + c.l1.hit_latency +
+  double step = c.dispatch.latency + c.rt.setup_latency + first_level(c).cache.hit_latency +
                 std::max(c.rt.box.latency, c.rt.triangle.latency) + c.rt.control_latency + 4;
   c.rt.warps = uint32_t(std::ceil(3 * rate * step / c.rt.warp_size));
   return c;

@@ -40,7 +40,7 @@ std::vector<Bracket> brackets(const HwConfig& preset) {
        "the DRAM bandwidth",
        "l2.size_bytes / 2 and dram.channels / 2 (simple DRAM: dram.bytes_per_cycle / 2)",
        [](HwConfig& c) {
-         c.l2.size_bytes /= 2;
+         last_level(c).cache.size_bytes /= 2;
          c.banked_dram.channels = std::max(1u, c.banked_dram.channels / 2);
          c.dram.bytes_per_cycle /= 2;
        }},
@@ -78,6 +78,7 @@ std::vector<Check> sensitivity_checks(const Target& target) {
   for (const HwConfig& config : configs) jobs.push_back({config, &image, &rays});
   std::vector<SimFigures> runs = simulate(target, jobs);
   const SimFigures& base = runs[0];
+  const std::string last_hit_rate = "mem." + last_level(preset).name + ".hit_rate";
   for (size_t i = 0; i < cases.size(); ++i) {
     const SimFigures& run = runs[i + 1];
     Check& c = out[i];
@@ -86,7 +87,7 @@ std::vector<Check> sensitivity_checks(const Target& target) {
         "{} diffuse rays on Conference, the config as given against the bracket: cycles {:.0f} "
         "-> {:.0f}, DRAM bytes a ray {:.1f} -> {:.1f}, L2 hit rate {:.1f}% -> {:.1f}%",
         kRays, base["cycles"], run["cycles"], base["dram.bytes_per_ray"], run["dram.bytes_per_ray"],
-        100 * base["l2.hit_rate"], 100 * run["l2.hit_rate"]);
+        100 * base[last_hit_rate], 100 * run[last_hit_rate]);
     c.look_at = "the stats of both runs (rtsim sim --set ...)";
   }
   Check& exact = out.back();

@@ -63,11 +63,11 @@ std::vector<SimFigures> simulate(const Target& target, const std::vector<SimJob>
 
 HwConfig unloaded(const HwConfig& config) {
   HwConfig c = config;
-  for (CacheConfig* cache : {&c.l1, &c.l2}) {
-    cache->bank_ports = 0;
-    cache->bytes_per_cycle = 0;
+  for (MemoryLevelConfig& level : c.memory) {
+    level.cache.bank_ports = 0;
+    level.cache.bytes_per_cycle = 0;
+    level.link.bytes_per_cycle = 0;
   }
-  c.l2_layout.crossbar.bytes_per_cycle = 0;
   c.sim.quantum_cycles = 1;
   c.sort.key = SortKey::None;
   c.rt.mode = TraversalMode::DepthFirst;

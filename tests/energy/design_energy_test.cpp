@@ -100,24 +100,24 @@ TEST(DesignEnergy, SimpleDramChargesItsBytesAtTheStreamingReadEnergy) {
 TEST(DesignEnergy, CachesChargeBitsMovedTagsAndLeakage) {
   HwConfig c;
   StatsRegistry r = one_millisecond();
-  r.counter("l2.accesses", 1000);
-  r.counter("l2.bytes_read", 64000);
-  r.counter("l2.bytes_below", 6400);  // fills from DRAM
-  r.counter("l2.write_bytes", 640);
+  r.counter("mem.l2.accesses", 1000);
+  r.counter("mem.l2.bytes_read", 64000);
+  r.counter("mem.l2.bytes_below", 6400);  // fills from DRAM
+  r.counter("mem.l2.write_bytes", 640);
   DesignEnergy d = design_energy(c, r);
   const StructureEnergy& l2 = structure(d, "l2");
   const ProcessNode& node = process_node("7nm");
-  double bit = sram_read_pj({c.l2.size_bytes, 64, c.l2.banks}, node) / 64;
-  uint64_t tag_bytes = c.l2.size_bytes / 64 * 4;
+  double bit = sram_read_pj({last_level(c).cache.size_bytes, 64, last_level(c).cache.banks}, node) / 64;
+  uint64_t tag_bytes = last_level(c).cache.size_bytes / 64 * 4;
   double tag = sram_read_pj({tag_bytes, 32, 1}, node);
   EXPECT_NEAR(l2.dynamic_pj, (64000 + 1.1 * 7040) * 8 * bit + 1000 * tag, 1e-6);
-  EXPECT_EQ(l2.sram_bytes, c.l2.size_bytes + tag_bytes);
-  EXPECT_NEAR(l2.static_pj, 0.4 * (c.l2.size_bytes + tag_bytes) / 1024.0 * 1e-3 * 1e9, 1e-3);
+  EXPECT_EQ(l2.sram_bytes, last_level(c).cache.size_bytes + tag_bytes);
+  EXPECT_NEAR(l2.static_pj, 0.4 * (last_level(c).cache.size_bytes + tag_bytes) / 1024.0 * 1e-3 * 1e9, 1e-3);
   // The wires carry what the L2 sends up and takes down: 5 mm at 0.75 V.
   EXPECT_NEAR(structure(d, "l1_l2_wires").dynamic_pj,
               64640 * 8 * 0.121 * (0.75 / 0.9) * (0.75 / 0.9) * 5, 1e-6);
   // A bigger L2 leaks and takes more area, and each bit costs more to read.
-  c.l2.size_bytes *= 4;
+  last_level(c).cache.size_bytes *= 4;
   const StructureEnergy bigger = structure(design_energy(c, r), "l2");  // a copy
   EXPECT_NEAR(bigger.static_pj / l2.static_pj, 4, 1e-9);
   EXPECT_GT(bigger.area_mm2, 3.9 * l2.area_mm2);
@@ -128,8 +128,8 @@ TEST(DesignEnergy, AnOlderNodeCostsMoreEnergyAndArea) {
   HwConfig c;
   StatsRegistry r = one_millisecond();
   r.counter("rt0.box.tests", 1000);
-  r.counter("rt0.l1.accesses", 1000);
-  r.counter("rt0.l1.bytes_read", 64000);
+  r.counter("mem.l1.accesses", 1000);
+  r.counter("mem.l1.bytes_read", 64000);
   DesignEnergy n7 = design_energy(c, r);
   c.energy.node = "45nm";
   DesignEnergy n45 = design_energy(c, r);

@@ -23,7 +23,7 @@ TEST(CacheCurve, PointAtTheWalksL2IsTheCacheLevelsL2) {
       "", {"l2.slices=1", "l2.size_bytes=16384", "l2.sector_bytes=32", "rt.l1.size_bytes=4096"});
   BvhImage image = build_bvh_image(scene.mesh, config.bvh);
   // The walk's L2 is the smallest capacity: here the configured one.
-  CurveRequest request{{16384, 32768, 65536, 131072, 262144}, {config.l2.ways}, 1};
+  CurveRequest request{{16384, 32768, 65536, 131072, 262144}, {last_level(config).cache.ways}, 1};
   ASSERT_EQ(curve_request_problem(config, request), "");
   CacheCurve curve = run_cache_curve(config, image, stream, request);
   FidelityResult level = run_cache_level(config, image, stream);
@@ -53,7 +53,7 @@ TEST(CacheCurve, HitShadingReadsJoinTheL2Stream) {
   auto shading = [&](const std::string& model) {
     HwConfig config = load_hw_config("", {"shader.model=" + model});
     BvhImage image = build_bvh_image(scene.mesh, config.bvh);
-    EXPECT_EQ(curve_request_problem(config, {{65536}, {config.l2.ways}, 1}), "");
+    EXPECT_EQ(curve_request_problem(config, {{65536}, {last_level(config).cache.ways}, 1}), "");
     ShadingReferences sink;
     FidelityResult r = run_cache_level(config, image, stream, nullptr, &sink);
     return std::make_pair(sink.count, r.rays);

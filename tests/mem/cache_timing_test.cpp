@@ -75,12 +75,12 @@ TEST(CacheTiming, AMissAtTheCycleAnMshrFreesDoesNotWait) {
 TEST(CacheTiming, ReadsWaitForDataTheLevelBelowReportsLater) {
   test::MockMemory mem(0, true);
   test::RecordingClient client;
-  Cache cache(small_cache(), &mem, CacheRole::L1);
+  Cache cache(small_cache(), &mem, CachePlace{0, false});
   ReadCharge charge;
   EXPECT_EQ(cache.read(0x1000, 64, 10, &client, 7, charge), kPending);
   EXPECT_EQ(cache.read(0x1010, 16, 20, &client, 8, charge), kPending) << "merges: time unknown";
-  EXPECT_EQ(charge.l1_accesses, 2u);
-  EXPECT_EQ(charge.l1_hits, 0u);
+  EXPECT_EQ(charge.accesses[0], 2u);
+  EXPECT_EQ(charge.hits[0], 0u);
   ASSERT_EQ(mem.requests.size(), 1u);
   EXPECT_TRUE(client.done.empty()) << "nothing completes before the level below answers";
   mem.answer(0, 150);

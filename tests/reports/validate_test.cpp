@@ -46,7 +46,7 @@ TEST(Validate, QuickSuitePassesOnEveryPreset) {
 }
 
 TEST(Validate, ALatencyOtherThanTheConfiguredOneFailsItsRung) {
-  SuiteResult r = quick([](HwConfig& c) { c.l2.hit_latency += 3; });
+  SuiteResult r = quick([](HwConfig& c) { last_level(c).cache.hit_latency += 3; });
   std::map<std::string, Check> c = by_id(r);
   EXPECT_TRUE(c["ladder.l1_hit"].passed());
   EXPECT_FALSE(c["ladder.l2_hit"].passed());

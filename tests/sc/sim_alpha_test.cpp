@@ -47,7 +47,7 @@ TEST_P(SimAlpha, EveryCandidateIsOneCallReadingOneTexelAndRoundTripsCostCycles) 
                     test::stat(doc, "type.shadow.trav_alpha_tests");
   EXPECT_EQ(calls, per_type);
   EXPECT_GT(calls, 2000) << "half the candidates fall in holes: rays pass several layers";
-  EXPECT_EQ(test::stat(doc, "anyhit.texture.l1_accesses"), calls) << "a texel is one line";
+  EXPECT_EQ(test::stat(doc, "anyhit.texture.mem.l1.accesses"), calls) << "a texel is one line";
   EXPECT_LE(test::stat(doc, "anyhit.texture.dram_read_bytes"), 64) << "one 16-byte texture";
   EXPECT_GE(test::stat(doc, "anyhit.wait_cycles"), 60 * calls);
   EXPECT_EQ(

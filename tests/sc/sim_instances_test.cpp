@@ -68,8 +68,8 @@ TEST_P(SimInstances, EveryRayRetiresWithEmbreesInstancedAnswerAndTheLevelsAddUp)
             nodes);
   EXPECT_GT(test::stat(doc, "bvh.top.node_steps"), 0);
   EXPECT_GT(test::stat(doc, "bvh.bottom.node_steps"), 0);
-  EXPECT_GT(test::stat(doc, "bvh.top.l1_accesses"), 0);
-  EXPECT_GT(test::stat(doc, "bvh.bottom.l1_accesses"), 0);
+  EXPECT_GT(test::stat(doc, "bvh.top.mem.l1.accesses"), 0);
+  EXPECT_GT(test::stat(doc, "bvh.bottom.mem.l1.accesses"), 0);
   double typed = 0;
   for (auto& [name, t] : doc["ray_types"].items())
     typed += t["instances_per_ray"].get<double>() * t["rays"].get<double>();

@@ -25,7 +25,7 @@ TEST(SimMemory, LightlyLoadedDramHasItsUnloadedLatencyOnEveryPreset) {
     std::string name = entry.path().filename().string();
     double utilisation = test::stat(doc, "dram.utilisation");
     ASSERT_LT(utilisation, 0.10) << name << ": the stream must load the DRAM lightly";
-    uint32_t block = block_bytes(config.l2);
+    uint32_t block = block_bytes(last_level(config).cache);
     double unloaded = config.dram.latency + block / config.dram.bytes_per_cycle;
     double mean = test::stat(doc, "dram.mean_latency");
     EXPECT_NEAR(mean / unloaded, 1.0, 0.10)
@@ -47,7 +47,7 @@ TEST(SimMemory, AThirdPartyTimedMemoryRunsAWholeSimulation) {
     BvhImage image = build_bvh_image(s.scene.mesh, config.bvh);
     VectorRaySource source(rays);
     test::TimedMemory memory("memory", sc_core::sc_time(300, sc_core::SC_NS));
-    RtSimulator sim(config, image, source, 0, 0, nullptr, [&](SharedCacheModule& l2) {
+    RtSimulator sim(config, image, source, 0, 0, nullptr, [&](SharedLevelsModule& l2) {
       l2.out.bind(memory.in);
       l2.use_timed_memory(0);
     });
@@ -71,14 +71,14 @@ TEST(SimMemory, L1MissesWaitingForMshrsJoinTheL2InOrderWhateverTheLatencies) {
   test::SimScene s;
   std::vector<Ray> rays = test::mixed_rays(s.scene, 1000, 8);
   HwConfig config = test::small_machine();
-  config.l1.hit_latency = 40;
-  config.l1.mshrs = 2;
-  config.l2.hit_latency = 3;
+  first_level(config).cache.hit_latency = 40;
+  first_level(config).cache.mshrs = 2;
+  last_level(config).cache.hit_latency = 3;
   config.dram.latency = 0;
   nlohmann::json doc = test::simulate(config, s.scene, rays, true);
   EXPECT_EQ(doc["verify"]["unexplained"], 0);
   EXPECT_EQ(test::stat(doc, "rays"), double(rays.size()));
-  EXPECT_GT(test::stat(doc, "rt0.l1.mshr_stall_cycles"), 0.0) << "misses waited for MSHRs";
+  EXPECT_GT(test::stat(doc, "mem.l1.rt0.mshr_stall_cycles"), 0.0) << "misses waited for MSHRs";
 }
 
 TEST(SimMemory, DepthFirstAndTreeletModesMissTheSameBlocksCompulsorily) {
@@ -88,7 +88,7 @@ TEST(SimMemory, DepthFirstAndTreeletModesMissTheSameBlocksCompulsorily) {
   std::vector<Ray> rays = test::mixed_rays(s.scene, 3000, 9);
   HwConfig config = test::small_machine();
   config.rt.stack.entries = 1;
-  config.l2_layout.slices = 4;  // lines written through to the L2 go to their own slice
+  last_level(config).slices = 4;  // lines written through to the L2 go to their own slice
   nlohmann::json depth_first = test::simulate(config, s.scene, rays);
   config.rt.mode = TraversalMode::Treelet;
   config.treelet_queues.max_rays = 4096;  // many ray contexts, each spilling into fresh lines
@@ -96,7 +96,7 @@ TEST(SimMemory, DepthFirstAndTreeletModesMissTheSameBlocksCompulsorily) {
   ASSERT_GT(test::stat(depth_first, "rt.stack.spill_entries"), 0.0);
   ASSERT_GT(test::stat(treelet, "rt.stack.spill_entries"), 0.0);
   ASSERT_GT(test::stat(treelet, "rt.postponed"), 0.0);
-  EXPECT_EQ(test::stat(depth_first, "l2.cold_misses"), test::stat(treelet, "l2.cold_misses"));
+  EXPECT_EQ(test::stat(depth_first, "mem.l2.cold_misses"), test::stat(treelet, "mem.l2.cold_misses"));
 }
 
 }  // namespace

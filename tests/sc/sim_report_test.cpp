@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "model/sc/shared_cache_module.h"
+#include "model/sc/shared_levels_module.h"
 #include "model/sc/tlm_memory.h"
 #include "tests/mem/mock_memory.h"
 #include "tests/sc/sim_test_util.h"
@@ -54,8 +54,8 @@ TEST(SimReport, StatsDocumentHasEveryFigure) {
   EXPECT_GT(doc["stack"]["spill_entries"].get<double>(), 0.0) << "a 2-entry stack spills";
   EXPECT_EQ(doc["pixel_buffers"]["width"], 32);
   EXPECT_EQ(doc["config"]["rt"]["mode"], "packet") << "the resolved config rides along";
-  EXPECT_TRUE(doc["stats"]["counters"].contains("rt0.l1.hits"));
-  EXPECT_TRUE(doc["stats"]["derived"].contains("rt0.l1.hit_rate"));
+  EXPECT_TRUE(doc["stats"]["counters"].contains("mem.l1.rt0.hits"));
+  EXPECT_TRUE(doc["stats"]["derived"].contains("mem.l1.rt0.hit_rate"));
 }
 
 TEST(SimReport, WritesStatsConfigAndPixelFiles) {
@@ -87,7 +87,7 @@ TEST(SimReport, WritesStatsConfigAndPixelFiles) {
 
 // Writes `bytes` of local memory, then reads its first line back, through its L1 at cycle 0.
 struct Writer : sc_core::sc_module {
-  L1Module l1;
+  UnitMemory l1;
   test::RecordingClient client;
   uint32_t bytes;
   SC_HAS_PROCESS(Writer);
@@ -107,13 +107,13 @@ std::string write_then_read(uint32_t bytes) {
   return run_in_child([bytes] {
     Clock clock;
     Writer writer("writer", bytes);
-    SharedCacheModule l2("l2", CacheConfig{4096, 64, 4, "lru", 10, 4}, clock);
+    SharedLevelsModule l2("l2", CacheConfig{4096, 64, 4, "lru", 10, 4}, clock);
     DramModule dram("dram", DramConfig{16.0, 100, 8}, clock);
     writer.l1.connect(l2);
     l2.out.bind(dram.in);
     sc_core::sc_start();
     const CacheStats& s1 = writer.l1.cache().stats();
-    CacheStats s2 = l2.stats();
+    CacheStats s2 = l2.instances()[0].stats();
     return std::to_string(s1.writebacks) + " " + std::to_string(s2.writebacks) + " " +
            std::to_string(dram.dram().stats().write_bytes) + " " + std::to_string(s2.hits) + " " +
            std::to_string(writer.client.done.at(0).ready);

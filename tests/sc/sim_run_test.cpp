@@ -39,7 +39,7 @@ TEST(SimDeterminism, SameInputsGiveIdenticalStats) {
   std::vector<Ray> rays = test::mixed_rays(s.scene, 1500, 9);
   HwConfig config = test::small_machine();
   config.rt.mode = TraversalMode::Treelet;
-  config.l1.replacement = "random";  // seeded
+  first_level(config).cache.replacement = "random";  // seeded
   nlohmann::json a = test::simulate(config, s.scene, rays);
   nlohmann::json b = test::simulate(config, s.scene, rays);
   EXPECT_EQ(a.dump(), b.dump());

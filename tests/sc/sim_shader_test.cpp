@@ -15,8 +15,8 @@ HwConfig machine(const char* mode, std::vector<std::string> sets) {
   loaded.rt_units = c.rt_units;
   loaded.rt.warps = c.rt.warps;
   loaded.rt.warp_size = c.rt.warp_size;
-  loaded.l1 = c.l1;
-  loaded.l2 = c.l2;
+  first_level(loaded).cache = first_level(c).cache;
+  last_level(loaded).cache = last_level(c).cache;
   loaded.bvh = c.bvh;
   return loaded;
 }
@@ -39,9 +39,9 @@ TEST_P(SimShader, ShadingCostsCyclesAndReadsWithoutChangingAnswers) {
   EXPECT_EQ(test::stat(on, "shader.rays"), rays.size());
   EXPECT_EQ(test::stat(on, "shader.hits"), hits);
   EXPECT_EQ(test::stat(on, "shader.read_bytes"), 96 * hits);
-  EXPECT_GE(test::stat(on, "shader.reads.l1_accesses"), 2 * hits) << "96 bytes span two lines";
+  EXPECT_GE(test::stat(on, "shader.reads.mem.l1.accesses"), 2 * hits) << "96 bytes span two lines";
   EXPECT_GT(test::stat(on, "shader.reads.dram_read_bytes"), 0);
-  EXPECT_GT(test::stat(on, "l2.accesses"), test::stat(off, "l2.accesses"))
+  EXPECT_GT(test::stat(on, "mem.l2.accesses"), test::stat(off, "mem.l2.accesses"))
       << "shading reads compete with BVH reads in the L2";
   EXPECT_GT(test::stat(on, "cycles"), test::stat(off, "cycles"));
   EXPECT_GT(on["utilisation"]["mean"]["shader"].get<double>(), 0);

@@ -35,7 +35,7 @@ TEST(SimStall, ASlowMemoryIsNotAStall) {
     VectorRaySource source(rays);
     SlowMemory memory("slow");
     RtSimulator sim(config, image, source, 0, 0, nullptr,
-                    [&](SharedCacheModule& l2) { l2.out.bind(memory.in); });
+                    [&](SharedLevelsModule& l2) { l2.out.bind(memory.in); });
     try {
       sim.run();
     } catch (const SimStallError& e) {

@@ -23,8 +23,8 @@ inline HwConfig small_machine() {
   c.rt_units = 2;
   c.rt.warps = 2;
   c.rt.warp_size = 8;
-  c.l1 = {4096, 64, 4, "lru", 4, 8};
-  c.l2 = {32768, 64, 8, "lru", 20, 32};
+  first_level(c).cache = {4096, 64, 4, "lru", 4, 8};
+  last_level(c).cache = {32768, 64, 8, "lru", 20, 32};
   c.dram = {16.0, 100, 32};
   c.treelet_queues.max_rays = 512;
   c.treelet_queues.min_batch = 8;

@@ -31,7 +31,7 @@ TEST(SimTrend, TreeletQueuesWinOnlyWhileTheirRayStatesAreFree) {
   free_state.rt.mode = TraversalMode::Treelet;
   HwConfig held = free_state;  // an SRAM of half the L2's size, ported, holding rays back
   RayBufferConfig& buffer = held.treelet_queues.buffer;
-  buffer.bytes = held.l2.size_bytes / 2;
+  buffer.bytes = last_level(held).cache.size_bytes / 2;
   buffer.banks = 2;
   buffer.bytes_per_cycle = 32;
   buffer.latency = 4;
@@ -39,7 +39,7 @@ TEST(SimTrend, TreeletQueuesWinOnlyWhileTheirRayStatesAreFree) {
   HwConfig spilled = held;
   spilled.treelet_queues.buffer.overflow = RayBufferOverflow::Spill;
   HwConfig equal_sram = depth_first;
-  equal_sram.l2.size_bytes += buffer.bytes;
+  last_level(equal_sram).cache.size_bytes += buffer.bytes;
   equal_sram.bvh.treelet_budget = TreeletBudget::NodesAndTriangles;
 
   Design base = run(depth_first, s, rays), free_queues = run(free_state, s, rays);

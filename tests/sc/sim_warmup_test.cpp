@@ -29,15 +29,15 @@ TEST(SimWarmup, AWarmUpOfTheSameRaysLeavesNoCompulsoryMiss) {
   // every block the first copy referenced.
   config.sim.warmup_rays = 2 * rays.size();
   nlohmann::json warm = test::simulate(config, s.scene, repeated(rays, 3));
-  EXPECT_GT(test::stat(cold, "l2.cold_misses"), 0.0);
-  EXPECT_EQ(test::stat(warm, "l2.cold_misses"), 0.0) << "every block was referenced in the warm-up";
+  EXPECT_GT(test::stat(cold, "mem.l2.cold_misses"), 0.0);
+  EXPECT_EQ(test::stat(warm, "mem.l2.cold_misses"), 0.0) << "every block was referenced in the warm-up";
   EXPECT_LT(warm["memory"]["l1_compulsory_share"].get<double>(),
             cold["memory"]["l1_compulsory_share"].get<double>() / 4)
       << "an L1 misses blocks only other units' L1s saw";
   EXPECT_EQ(warm["summary"]["rays"], rays.size()) << "warm-up rays are not measured";
   EXPECT_EQ(warm["ray_types"]["camera"]["rays"], 32 * 24);
   EXPECT_LT(test::stat(warm, "cycles"), test::stat(cold, "cycles"));
-  EXPECT_LT(test::stat(warm, "l2.misses"), test::stat(cold, "l2.misses"));
+  EXPECT_LT(test::stat(warm, "mem.l2.misses"), test::stat(cold, "mem.l2.misses"));
   EXPECT_GT(warm["summary"]["measured_from_cycle"].get<double>(), 0.0);
   EXPECT_EQ(warm["memory"]["l2_compulsory_share"], 0.0);
 }

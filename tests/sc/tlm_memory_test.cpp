@@ -11,7 +11,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 
 #include "model/sc/banked_dram_module.h"
-#include "model/sc/shared_cache_module.h"
+#include "model/sc/shared_levels_module.h"
 #include "model/sc/tlm_memory.h"
 #include "tests/mem/mock_memory.h"
 #include "tests/sc/timed_memory.h"
@@ -83,14 +83,14 @@ CacheConfig l2_config(uint32_t hit_latency, uint32_t mshrs) {
 
 // An approximately-timed requester straight at an L2 (10-cycle tag check) in front of a DRAM.
 struct L2Bench {
-  L2Bench(uint32_t mshrs, const DramConfig& dram_config, const L2Layout& layout = {})
+  L2Bench(uint32_t mshrs, const DramConfig& dram_config, const SliceLayout& layout = {})
       : l2("l2", l2_config(10, mshrs), clock, layout), dram("dram", dram_config, clock) {
     cpu.out.bind(l2.in);
     l2.out.bind(dram.in);
   }
   Clock clock;
   AtRequester cpu{"cpu"};
-  SharedCacheModule l2;
+  SharedLevelsModule l2;
   DramModule dram;
 };
 
@@ -110,7 +110,7 @@ TEST(TlmMemory, AnEarlierDatedRequestIsNotDelayedByALaterDatedOneSentBefore) {
 TEST(TlmMemory, AThirdPartyTimedTargetAnswersBelowTheL2AtItsOwnCycles) {
   Clock clock;
   AtRequester cpu("cpu");
-  SharedCacheModule l2("l2", l2_config(10, 8), clock, {}, 20);
+  SharedLevelsModule l2("l2", l2_config(10, 8), clock, {}, 20);
   test::TimedMemory memory("memory", sc_core::sc_time(100, sc_core::SC_NS));
   cpu.out.bind(l2.in);
   l2.out.bind(memory.in);
@@ -136,7 +136,7 @@ void expect_banked_dram_timing(bool by_call) {
   config.channels = 1;
   config.refresh = DramRefresh::None;
   AtRequester cpu("cpu");
-  SharedCacheModule l2("l2", l2_config(10, 8), clock, {}, 20);
+  SharedLevelsModule l2("l2", l2_config(10, 8), clock, {}, 20);
   BankedDramModule dram("dram", config, clock, 1.0);
   cpu.out.bind(l2.in);
   if (by_call) {
@@ -173,11 +173,11 @@ TEST(TlmMemory, ManyIndependentMissesSaturateTheDramBandwidth) {
   double span = double(last - 100 - 10);
   double achieved = double(bench.dram.dram().stats().bytes) / span;
   EXPECT_NEAR(achieved / 16.0, 1.0, 0.05) << "bytes per cycle against the configured peak";
-  EXPECT_GT(bench.l2.stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
+  EXPECT_GT(bench.l2.instances()[0].stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
 }
 
 TEST(TlmMemory, TheCrossbarAddsItsLatencyBothWaysAndItsPortsBoundTheBandwidth) {
-  L2Layout layout;
+  SliceLayout layout;
   layout.slices = 4;
   layout.crossbar = {5, 16.0};  // a 64-byte line holds a link for 4 cycles
   L2Bench bench(8, DramConfig{64.0, 300, 64}, layout);
@@ -195,17 +195,17 @@ TEST(TlmMemory, TheCrossbarAddsItsLatencyBothWaysAndItsPortsBoundTheBandwidth) {
   EXPECT_EQ(back.front(), 5000u + 5 + 10 + 3 + 5 + 3) << "L2 hits, unloaded";
   EXPECT_EQ(back.back() - back.front(), 6u * 4) << "seven lines through one port: 4 cycles each";
   CacheStats sum;
-  for (uint32_t i = 0; i < 4; ++i) sum += bench.l2.slice(i).stats();
-  EXPECT_EQ(sum.accesses, bench.l2.stats().accesses);
+  for (uint32_t i = 0; i < 4; ++i) sum += bench.l2.instances()[0].slices[i]->stats();
+  EXPECT_EQ(sum.accesses, bench.l2.instances()[0].stats().accesses);
   uint32_t used = 0;
-  for (uint32_t i = 0; i < 4; ++i) used += bench.l2.slice(i).stats().accesses > 0;
+  for (uint32_t i = 0; i < 4; ++i) used += bench.l2.instances()[0].slices[i]->stats().accesses > 0;
   EXPECT_EQ(used, 4u) << "lines hash over all slices";
-  EXPECT_EQ(bench.l2.crossbar().units(), 1u) << "one port, the bound TLM initiator's";
+  EXPECT_EQ(bench.l2.instances()[0].crossbar.units(), 1u) << "one port, the bound TLM initiator's";
 }
 
 // Reads through an L1 from a thread at given cycles; records each read's ready cycle.
 struct L1Requester : sc_core::sc_module {
-  L1Module l1;
+  UnitMemory l1;
   std::vector<std::pair<uint64_t, Cycle>> script;
   std::vector<Cycle> ready;
   std::vector<ReadCharge> charge;
@@ -243,7 +243,7 @@ TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   dram_config.latency = 100;
 
   L1Requester cpu("cpu", l1), other("other", l1);
-  SharedCacheModule l2("l2", l2_config(10, 8), clock);
+  SharedLevelsModule l2("l2", l2_config(10, 8), clock);
   DramModule dram("dram", dram_config, clock);
   cpu.l1.connect(l2);
   other.l1.connect(l2);
@@ -252,7 +252,7 @@ TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   other.script = {{0x1000, 300}};
 
   L1Requester foreign_cpu("foreign_cpu", l1);
-  SharedCacheModule foreign_l2("foreign_l2", l2_config(10, 8), clock);
+  SharedLevelsModule foreign_l2("foreign_l2", l2_config(10, 8), clock);
   FixedLatencyMemory foreign("foreign");
   foreign_cpu.l1.connect(foreign_l2);
   foreign_l2.out.bind(foreign.in);
@@ -263,16 +263,16 @@ TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   ASSERT_EQ(cpu.ready.size(), 2u);
   // L1 tag 2 + L2 tag 10 + DRAM 64 B at 16 B/cycle 4 + latency 100.
   EXPECT_EQ(cpu.ready[0], 2u + 10 + 4 + 100) << "a DRAM access";
-  EXPECT_EQ(cpu.charge[0].l2_accesses, 1u);
+  EXPECT_EQ(cpu.charge[0].accesses[1], 1u);
   EXPECT_EQ(cpu.charge[0].dram_bytes, 64u) << "the L2's fetch, charged to the read";
   EXPECT_EQ(cpu.ready[1], 200u + 2) << "an L1 hit";
-  EXPECT_EQ(cpu.charge[1].l1_hits, 1u);
+  EXPECT_EQ(cpu.charge[1].hits[0], 1u);
   ASSERT_EQ(other.ready.size(), 1u);
   EXPECT_EQ(other.ready[0], 300u + 2 + 10) << "another unit's L1 miss hits in the L2";
-  EXPECT_EQ(other.charge[0].l2_hits, 1u);
-  EXPECT_EQ(l2.stats().misses, 1u);
+  EXPECT_EQ(other.charge[0].hits[1], 1u);
+  EXPECT_EQ(l2.instances()[0].stats().misses, 1u);
   EXPECT_EQ(dram.dram().stats().bytes, 64u);
-  EXPECT_EQ(l2.crossbar().units(), 2u) << "a port per connected L1, none for the unbound socket";
+  EXPECT_EQ(l2.instances()[0].crossbar.units(), 2u) << "a port per connected L1, none for the unbound socket";
 
   ASSERT_EQ(foreign_cpu.ready.size(), 1u);
   EXPECT_EQ(foreign_cpu.ready[0], 5u + 2 + 10 + 50) << "the foreign memory's 50 ns, through TLM";

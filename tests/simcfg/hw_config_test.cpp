@@ -50,7 +50,7 @@ TEST(HwConfig, PresetsDifferWhereTheyShould) {
   HwConfig cw = load_hw_config(RTSIM_SOURCE_DIR "/configs/desktop-cwbvh8.toml");
   HwConfig tq = load_hw_config(RTSIM_SOURCE_DIR "/configs/desktop-treelet.toml");
   EXPECT_LT(mobile.rt_units, desktop.rt_units);
-  EXPECT_LT(mobile.l2.size_bytes, desktop.l2.size_bytes);
+  EXPECT_LT(last_level(mobile).cache.size_bytes, last_level(desktop).cache.size_bytes);
   EXPECT_EQ(cw.bvh.node_format, NodeFormat::Cwbvh8);
   EXPECT_EQ(tq.rt.mode, TraversalMode::Treelet);
   EXPECT_EQ(resolved_json(tq)["l2"], resolved_json(desktop)["l2"]) << "same caches";
@@ -97,7 +97,7 @@ TEST(HwConfig, SetOverridesAnyKey) {
   HwConfig c = load_hw_config(RTSIM_SOURCE_DIR "/configs/mobile.toml",
                               {"rt.l1.size_bytes=8192", "rt.mode=treelet", "clock.ghz=2",
                                "dram.bytes_per_cycle=12.5", "sim.quantum_cycles=4"});
-  EXPECT_EQ(c.l1.size_bytes, 8192u);
+  EXPECT_EQ(first_level(c).cache.size_bytes, 8192u);
   EXPECT_EQ(c.rt.mode, TraversalMode::Treelet);
   EXPECT_DOUBLE_EQ(c.clock_ghz, 2.0);
   EXPECT_DOUBLE_EQ(c.dram.bytes_per_cycle, 12.5);

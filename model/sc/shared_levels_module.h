@@ -1,0 +1,260 @@
+// The cache levels that several RT units share (model/mem/hierarchy.h: group and shared scopes;
+// the L2 of a two-level machine) and the way to DRAM, as one sc_module that serves every request
+// at every such level in simulated-time order. Each level has one instance per group of units
+// (one for a shared level): a crossbar from its requesters (model/mem/crossbar.h) and the
+// level's address-hashed slices behind it. The requesters of an instance are the RT units' own
+// last levels (model/sc/tlm_memory.h: connect) or the instances of the level above; TLM-2.0
+// approximately-timed initiators bound to `in` are requesters of the first level's instance 0:
+// BEGIN_REQ dated by its delay, answered END_REQ at once (the request queue has no bound).
+// Every request becomes one small record (a Job) in the module's calendar, tagged with the
+// instance it is at. The answer to a read is sent as soon as the data's cycle is known (a hit:
+// when the request is served; a miss: when the level below has answered), dated by the data's
+// cycle: its client's read_done for a connected unit, a DramDone job at the instance above for
+// a level above (so that the level above sees its answers in time order too), BEGIN_RESP with
+// a delay for a TLM initiator. Writes and victim fills are posted.
+// Why a queue: units run up to a quantum ahead of simulated time and a miss that waited for an
+// MSHR leaves later than it was made, so requests arrive out of time order. The module holds
+// them in an event calendar and serves each at its own cycle, when simulated time reaches it;
+// every cache (model/mem/cache.h) and the DRAM below therefore see their requests in
+// non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
+// A miss at one level is a request at the next, at the miss's cycle, in the same calendar.
+// The DRAM is reached at the request's own cycle, by call or through `out`. By call
+// (connect_memory): the banked DRAM (model/sc/banked_dram_module.h) as a QueuedMemory, which
+// reports each read's data cycle at least `lead` cycles before it. Through `out`, in one of two
+// protocols: by default the base protocol's blocking transport (loosely timed), so any
+// loosely-timed TLM memory can be bound there; after use_timed_memory(lead), the approximately-
+// timed one (a DRAMSys-class model): BEGIN_REQ through nb_transport_fw, and the data's cycle in
+// the delay of BEGIN_RESP, sent at least `lead` cycles before it (0: at that cycle). With a
+// lead the module serves at most lead + 1 cycles ahead, so an answer is never dated before a
+// job already served; one dated inside the window already served is served at once, with what
+// it starts there, in cycle order.
+// A request crosses the crossbar to its slice (slice_of: a hash of the line address; a request
+// must not span lines, as a cache's blocks and line-by-line writes never do) when it arrives,
+// and is queued for the cycle it reaches the slice; its data crosses back when its cycle is
+// known. Crossbar links accept bookings in any order of their cycles, so neither direction
+// delays a request by one dated later.
+// An instance with no slices (a memory port: a hierarchy whose levels are all the units' own)
+// holds no cache: it orders its requesters' requests and sends them to DRAM.
+// One SC_METHOD, woken only at cycles that have requests or DRAM accesses to serve. With a
+// lookahead of L cycles (every initiator dates its requests at least L cycles after the
+// current simulated time: a unit's last level sends a miss after its tag check) it wakes at the
+// cycle c of its earliest job and serves everything dated before c + L, so one wake-up serves
+// L cycles of a busy hierarchy. Responses carry their data's cycle in their delay, so this
+// changes no timing. A request sent while it serves (a unit's miss that waited for the MSHR a
+// response freed) is dated no earlier than the job being served and is served in its turn.
+#pragma once
+
+#include <exception>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <systemc>
+#include <tlm>
+#include <tlm_utils/multi_passthrough_target_socket.h>
+#include <tlm_utils/simple_initiator_socket.h>
+
+#include "model/mem/cache.h"
+#include "model/mem/crossbar.h"
+#include "model/mem/hierarchy.h"
+#include "model/sc/clock.h"
+#include "model/sched/event_queue.h"
+
+namespace rtsim {
+
+class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
+ public:
+  // The TLM adapter's socket, which can tell how many initiators are bound to it (its size()
+  // counts one when none is).
+  struct InitiatorSocket
+      : tlm_utils::multi_passthrough_target_socket<SharedLevelsModule, 32,
+                                                   tlm::tlm_base_protocol_types, 0,
+                                                   sc_core::SC_ZERO_OR_MORE_BOUND> {
+    using multi_passthrough_target_socket::multi_passthrough_target_socket;
+    uint32_t bound() const { return uint32_t(m_sockets.size()); }  // after elaboration
+  };
+  // TLM initiators bound here (none, or any number) take the first instance's crossbar ports
+  // after the connected requesters'.
+  InitiatorSocket in;
+  tlm_utils::simple_initiator_socket_optional<SharedLevelsModule> out;  // unbound: connect_memory
+
+  // One level's slices and crossbar, and the instance below it.
+  struct Instance {
+    std::string name;  // "l2", or "l1.g0" for the first instance of a group level
+    uint32_t level = 0;
+    std::vector<std::unique_ptr<Cache>> slices;
+    Crossbar crossbar;
+    uint32_t below = kNoInstance;  // the next level's instance (kNoInstance: DRAM)
+    uint32_t below_port = 0;       // this instance's port there
+    // Per port: a unit's on_response (null function: the port is an instance above's).
+    std::vector<std::function<void()>> ports;
+    std::unique_ptr<MemoryTarget> memory;  // what its slices' misses and evictions go to
+    CacheStats stats() const;              // summed over the slices
+  };
+  static constexpr uint32_t kNoInstance = ~0u;
+
+  SC_HAS_PROCESS(SharedLevelsModule);
+  // levels: the machine's whole hierarchy; the module builds the instances of its queued levels
+  // (or one memory port when there are none) for `units` RT units. on_error receives what
+  // serving a request threw (a failed DRAM access); without it the exception leaves the SystemC
+  // kernel. lookahead: see above (0 for initiators that promise nothing); the first level's
+  // crossbar latency adds to it. Throws std::invalid_argument for an impossible hierarchy.
+  SharedLevelsModule(sc_core::sc_module_name name, const std::vector<MemoryLevelConfig>& levels,
+                     uint32_t units, const Clock& clock, uint32_t lookahead = 0,
+                     std::function<void(std::exception_ptr)> on_error = {});
+  // A single shared level (tests, and outside models in front of a DRAM): levels = {config}.
+  SharedLevelsModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
+                     const SliceLayout& layout = {}, uint32_t lookahead = 0,
+                     std::function<void(std::exception_ptr)> on_error = {});
+  // Connects unit `unit`'s last own level as a requester of the first instance that serves it
+  // (before the simulation); returns its port there. After each read's answer (its client's
+  // read_done) on_response runs.
+  uint32_t connect(uint32_t unit, std::function<void()> on_response);
+  // The instance unit `unit`'s requests enter (its port's).
+  uint32_t entry(uint32_t unit) const;
+  // A read of `bytes` at `addr` sent from `port` of `instance` at cycle `at` (or now, if that is
+  // later): its data's cycle is reported to client->read_done(token, ...), never during this
+  // call.
+  void read_request(uint32_t instance, uint32_t port, uint64_t addr, uint32_t bytes, Cycle at,
+                    ReadClient* client, uint64_t token) {
+    request(instance, port, JobKind::Read, addr, bytes, at, client, token);
+  }
+  void write_request(uint32_t instance, uint32_t port, uint64_t addr, uint32_t bytes, Cycle at) {
+    request(instance, port, JobKind::Write, addr, bytes, at, nullptr, 0);
+  }
+  // A clean line the requester evicted, for a victim level (Cache::fill). Posted.
+  void fill_request(uint32_t instance, uint32_t port, uint64_t addr, uint32_t bytes, Cycle at) {
+    request(instance, port, JobKind::Fill, addr, bytes, at, nullptr, 0);
+  }
+  const std::vector<Instance>& instances() const { return instances_; }
+  const std::vector<MemoryLevelConfig>& levels() const { return levels_; }
+  // The first and last index into instances() of level `level` (an index into levels()).
+  std::pair<uint32_t, uint32_t> instances_of(uint32_t level) const;
+  uint32_t slice_of(const Instance& instance, uint64_t addr) const;
+  void track_cold_misses(uint64_t dense_begin = 0, uint64_t dense_end = 0);  // Cache's
+  bool tracks_cold_misses() const;
+  void share_first_references(double own_share, Cycle first_fetch_cycles);  // Cache's
+  // Cache::warm on each line's slice of the first instance, now: accesses of RT units the
+  // simulation does not drive.
+  uint32_t warm(uint64_t addr, uint32_t bytes, bool write);
+  size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served
+  // Before the simulation starts: the memory bound to `out` speaks the approximately-timed
+  // protocol and sends BEGIN_RESP at least `lead` cycles before the data's cycle.
+  void use_timed_memory(uint32_t lead);
+  // Before the simulation starts: the memory below is `memory`, by call (`out` stays unbound);
+  // it answers reads at least `lead` cycles before their data's cycle.
+  void connect_memory(QueuedMemory& memory, uint32_t lead);
+  // Cycles ahead of simulated time its initiators date their requests, at the least.
+  uint32_t lookahead() const { return lookahead_; }
+  Cycle next_job() const { return events_.empty() ? kPending : events_.next_cycle(); }
+
+ private:
+  // Read, Write, Fill: from a requester of the job's instance; DramRead, DramWrite: to the DRAM
+  // below the last level; DramDone: the answer of a read below the instance (below_reads_).
+  enum class JobKind : uint8_t { Read, Write, Fill, DramRead, DramWrite, DramDone };
+  // A DRAM access in flight under the approximately-timed protocol (DramRead: its reader).
+  struct BelowTransaction : tlm::tlm_generic_payload {
+    ReadClient* client = nullptr;
+    uint64_t token = 0;
+  };
+  // One request record, kept in the calendar itself. Read: who waits (a connected requester's
+  // client and token; from a TLM initiator, its transaction as the token); DramRead: the
+  // slice's miss; DramDone: the below read answered.
+  struct Job {
+    JobKind kind = JobKind::Read;
+    uint16_t instance = 0;
+    uint32_t port = 0;
+    uint32_t slice = 0;
+    uint32_t bytes = 0;
+    uint64_t addr = 0;
+    ReadClient* client = nullptr;
+    uint64_t token = 0;
+  };
+  // A read that missed in its slice, until the slice reports its data: its record, and what it
+  // has cost so far.
+  struct MissedRead {
+    Job job;
+    ReadCharge charge;
+  };
+  // A read sent below an instance until its answer is served: who waits for it (a slice's miss,
+  // or the read a memory port passes on) and what it cost below.
+  struct BelowRead {
+    ReadClient* client;
+    uint64_t token;
+    ReadCharge charge;
+  };
+  class Below;  // an instance's MemoryTarget
+
+  void add_instances(uint32_t units);
+  void end_of_elaboration() override;   // a module with no memory below is a wiring error
+  void start_of_simulation() override;  // gives each crossbar a port per requester
+  // A request from `port` of `instance` sent at `at`: crosses to its slice and joins the
+  // calendar.
+  void request(uint32_t instance, uint32_t port, JobKind kind, uint64_t addr, uint32_t bytes,
+               Cycle at, ReadClient* client, uint64_t token);
+  tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
+                                     tlm::tlm_phase& phase, sc_core::sc_time& delay);
+  // Below an instance: a read (pending), a write or a fill at the next level or DRAM.
+  void below_read(uint32_t instance, uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
+                  uint64_t token);
+  void below_write(uint32_t instance, JobKind kind, uint64_t addr, uint32_t bytes, Cycle at);
+  void read_done(uint64_t missed, Cycle ready, const ReadCharge& charge) override;
+
+  void serve();
+  void serve_window();  // every job dated before served_until_, in order, at this stamp
+  // Asks the host's memory for the record of the miss the next job's answer completes (its
+  // slice's set was asked for when the job joined): a hint given one job ahead, which changes
+  // nothing modelled.
+  void prime_next_job() const;
+  void run_job(const Job& job, Cycle at);
+  [[gnu::always_inline]] void respond(const Job& job, Cycle ready, const ReadCharge& charge);
+  void add_job(const Job& job, Cycle at);
+  // A transaction below of `bytes` at `addr` (the data is a scratch buffer: timing only).
+  void prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command, uint64_t addr,
+                     uint32_t bytes);
+  static std::runtime_error below_error(const tlm::tlm_generic_payload& t);
+  Cycle send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at);
+  // The approximately-timed form: a read's data comes back through nb_transport_bw.
+  void send_timed(const Job& job, Cycle at);
+  tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
+                                     sc_core::sc_time& delay);
+  void below_done(BelowTransaction& t, Cycle ready);  // a read's data at `ready`
+  // A read below (below_reads_) answered: its data at `ready`, a DramDone job.
+  void answer_below(uint32_t read, Cycle ready);
+  // What the memory below answers (a QueuedMemory, or the next level's instance): the pending
+  // read (below_reads_) its token names, with what it cost there.
+  struct MemoryAnswers : ReadClient {
+    explicit MemoryAnswers(SharedLevelsModule& m) : m(m) {}
+    void read_done(uint64_t read, Cycle ready, const ReadCharge& charge) override;
+    SharedLevelsModule& m;
+  };
+
+  std::vector<MemoryLevelConfig> levels_;
+  uint32_t first_queued_ = 0;  // the index in levels_ of the first level this module holds
+  std::vector<Instance> instances_;
+  Clock clock_;
+  uint32_t lookahead_;  // at least 1: the initiators' promise
+  uint32_t window_;     // a wake-up at cycle c serves what is dated before c + it (<= lookahead_)
+  bool timed_below_ = false;
+  QueuedMemory* memory_ = nullptr;  // the memory below, by call (else `out`)
+  MemoryAnswers answers_{*this};
+  std::vector<BelowRead> below_reads_;
+  std::vector<uint32_t> free_below_reads_;
+  std::vector<std::unique_ptr<BelowTransaction>> below_pool_;
+  std::vector<BelowTransaction*> below_free_;
+  std::function<void(std::exception_ptr)> on_error_;
+  Calendar<Job> events_;  // the jobs at their cycles
+  std::vector<MissedRead> missed_;
+  std::vector<uint32_t> free_missed_;
+  sc_core::sc_event wake_;
+  Cycle armed_ = kPending;  // the cycle wake_ is notified for (kPending: none)
+  Cycle served_until_ = 0;  // every job dated before it has been served
+  sc_core::sc_time stamp_;  // the simulated time serve() runs at
+  bool serving_ = false;    // serve() arms wake_ for the next job when it ends
+  tlm::tlm_generic_payload below_trans_;
+  std::vector<unsigned char> scratch_;
+};
+
+}  // namespace rtsim
