@@ -96,13 +96,14 @@ nlohmann::json simulate(const BenchSimOptions& o, const HwConfig& config, BvhVie
     StatsRegistry stats;
     sim.report(stats);
     const std::string shared = "mem." + last_level(config).name;  // the level above DRAM
-    nlohmann::json out = {{"seconds", seconds},
-                          {"cpu_seconds", cpu},
-                          {"rays", sim.rays()},
-                          {"cycles", sim.cycles()},
-                          {"dram_bytes", stats.value("dram.bytes")},
-                          {"l2_requests", stats.value(shared + ".accesses") + stats.value(shared + ".writes")},
-                          {"peak_rss_mib", peak_rss_mib()}};
+    nlohmann::json out = {
+        {"seconds", seconds},
+        {"cpu_seconds", cpu},
+        {"rays", sim.rays()},
+        {"cycles", sim.cycles()},
+        {"dram_bytes", stats.value("dram.bytes")},
+        {"l2_requests", stats.value(shared + ".accesses") + stats.value(shared + ".writes")},
+        {"peak_rss_mib", peak_rss_mib()}};
     return out.dump();
   });
   return nlohmann::json::parse(text);

@@ -41,6 +41,15 @@ Json hardware_json(const ReportInputs& in) {
                 {"hit_latency", k.hit_latency},
                 {"mshrs", k.mshrs}};
   };
+  Json levels = Json::array();
+  for (const MemoryLevelConfig& level : c.memory) {
+    Json l = cache(level.cache);
+    l["name"] = level.name;
+    l["scope"] = scope_name(level);
+    l["fill"] = level.fill == LevelFill::Victim ? "victim" : "miss";
+    l["instances"] = level_instances(level, c.rt_units);
+    levels.push_back(l);
+  }
   return {{"name", c.name},
           {"description", c.description},
           {"config_file", in.config_file},
@@ -49,6 +58,7 @@ Json hardware_json(const ReportInputs& in) {
           {"rt_units", c.rt_units},
           {"mode", traversal_mode_name(c.rt.mode)},
           {"ray_slots", ray_slots(c)},
+          {"levels", levels},
           {"l1", cache(first_level(c).cache)},
           {"l2", cache(last_level(c).cache)},
           {"dram",
@@ -114,8 +124,9 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
       entry["l1_bytes_per_ray"] =
           counters["type." + name + "." + first + ".accesses"].get<double>() *
           block_bytes(first_level(c).cache) / n;
-      entry["l2_bytes_per_ray"] = counters["type." + name + "." + last + ".accesses"].get<double>() *
-                                  last_level(c).cache.line_bytes / n;
+      entry["l2_bytes_per_ray"] =
+          counters["type." + name + "." + last + ".accesses"].get<double>() *
+          last_level(c).cache.line_bytes / n;
     }
   }
   b["by_type"] = by_type;
@@ -242,8 +253,10 @@ Json time_json(const FidelityResult& f, const Json& stats, const Json& collected
 
 double on_chip_bytes(const HwConfig& c) {
   double stacks = double(c.rt.warps) * c.rt.warp_size * c.rt.stack.entries * c.rt.stack.entry_bytes;
-  double units = double(c.rt_units) * (double(first_level(c).cache.size_bytes) + stacks);
-  return units + double(last_level(c).cache.size_bytes) + ray_buffer_sram_bytes(c) + sort_buffer_bytes(c.sort);
+  double bytes = double(c.rt_units) * stacks + ray_buffer_sram_bytes(c) + sort_buffer_bytes(c.sort);
+  for (const MemoryLevelConfig& level : c.memory)
+    bytes += double(level_instances(level, c.rt_units)) * double(level.cache.size_bytes);
+  return bytes;
 }
 
 Json build_report(const ReportInputs& in) {

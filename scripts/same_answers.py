@@ -3,9 +3,10 @@
   same_answers.py NAME STATS_JSON          prints one line: NAME, cycles, and every figure
   same_answers.py --compare BEFORE NOW     exit 1 if a figure of BEFORE differs or is gone in NOW
 
-A line holds the run's stats.json flattened to dotted names (host timings left out), each old
-name mapped to its new one, so that answers recorded before a rename compare with those after:
-a figure that exists on both sides must be equal; one that only the new build reports is new.
+A line holds the run's stats.json flattened to dotted names (host timings left out). The
+comparison maps each old name to its new one on both sides, so that answers recorded before a
+rename compare with those after: a figure that exists on both sides must be equal; one that
+only the new build reports is new.
 """
 import json
 import re
@@ -13,11 +14,13 @@ import sys
 
 # Old name -> new name, first match wins (the cache levels became mem.NAME.*: issue 61).
 RENAMES = [
-    (r"^(.*\.)?l1_(accesses|hits|misses|hit_rate|miss_rate)$", r"\1mem.l1.\2"),
-    (r"^(.*\.)?l2_(accesses|hits|misses|hit_rate|miss_rate)$", r"\1mem.l2.\2"),
-    (r"^counters\.(rt\d+)\.l1\.(.*)$", r"counters.mem.l1.\1.\2"),
-    (r"^counters\.l2\.(.*)$", r"counters.mem.l2.\1"),
-    (r"^counters\.xbar\.(.*)$", r"counters.mem.l2.xbar.\1"),
+    (r"^stats\.(counters|derived)\.(.*\.)l1_(accesses|hits|misses|hit_rate|miss_rate)$",
+     r"stats.\1.\2mem.l1.\3"),
+    (r"^stats\.(counters|derived)\.(.*\.)l2_(accesses|hits|misses|hit_rate|miss_rate)$",
+     r"stats.\1.\2mem.l2.\3"),
+    (r"^stats\.(counters|derived)\.(rt\d+)\.l1\.(.*)$", r"stats.\1.mem.l1.\2.\3"),
+    (r"^stats\.(counters|derived)\.l2\.(.*)$", r"stats.\1.mem.l2.\2"),
+    (r"^stats\.(counters|derived)\.xbar\.(.*)$", r"stats.\1.mem.l2.xbar.\2"),
     (r"^config\.rt\.l1\.(.*)$", r"config.memory.l1.\1"),
     (r"^config\.l2\.(.*)$", r"config.memory.l2.\1"),
     (r"^config\.xbar\.(latency|bytes_per_cycle)$", r"config.memory.l1.link_\1"),
@@ -39,7 +42,7 @@ def flatten(node, prefix, out):
         for i, v in enumerate(node):
             flatten(v, f"{prefix}.{i}", out)
     else:
-        out[new_name(prefix)] = node
+        out[prefix] = node
 
 
 def line(name, path):
@@ -52,13 +55,18 @@ def line(name, path):
 
 
 def compare(before_path, now_path):
+    def read(text):
+        run = json.loads(text)
+        run["figures"] = {new_name(k): v for k, v in run["figures"].items()}
+        return run
+
     now = {}
     for text in open(now_path):
-        run = json.loads(text)
+        run = read(text)
         now[run["name"]] = run
     failed = 0
     for text in open(before_path):
-        run = json.loads(text)
+        run = read(text)
         other = now.get(run["name"])
         if other is None:
             print(f"{run['name']}: not run now")

@@ -282,7 +282,8 @@ void check_unknown_keys(const toml::table& root, const ConfigReadContext& ctx) {
     std::string key = ctx.shown(d.key);
     std::string section = key.substr(0, key.rfind('.') == std::string::npos ? 0 : key.rfind('.'));
     if (section == u.section)
-      known += (known.empty() ? "" : ", ") + key.substr(u.section.empty() ? 0 : u.section.size() + 1);
+      known +=
+          (known.empty() ? "" : ", ") + key.substr(u.section.empty() ? 0 : u.section.size() + 1);
   }
   std::string what = fmt::format("unknown key '{}'", u.key);
   if (!known.empty())

@@ -1,7 +1,7 @@
 // The hardware config of a simulation: the RT units and their test units, the cache levels
-// (model/mem/hierarchy.h) and DRAM, the ray dispatcher, the treelet queues and the BVH the hardware traverses. The
-// TOML nesting follows the module tree (rt.l1 is each RT unit's L1). Every key is read in one
-// place, read_hw_config() in hw_config.cpp, with its default, unit and description;
+// (model/mem/hierarchy.h) and DRAM, the ray dispatcher, the treelet queues and the BVH the hardware
+// traverses. The TOML nesting follows the module tree (rt.l1 is each RT unit's L1). Every key is
+// read in one place, read_hw_config() in hw_config.cpp, with its default, unit and description;
 // model/SIM-REFERENCE.md lists them all, and `rtsim sim --list-keys` prints them.
 #pragma once
 
@@ -76,10 +76,18 @@ struct HwConfig {
 // entries must reach a level every unit reads.
 std::vector<MemoryLevelConfig> levels_as_built(const HwConfig& config);
 // The unit's first level and the level above DRAM (the same level in a one-level hierarchy).
-inline MemoryLevelConfig& first_level(HwConfig& c) { return c.memory.front(); }
-inline const MemoryLevelConfig& first_level(const HwConfig& c) { return c.memory.front(); }
-inline MemoryLevelConfig& last_level(HwConfig& c) { return c.memory.back(); }
-inline const MemoryLevelConfig& last_level(const HwConfig& c) { return c.memory.back(); }
+inline MemoryLevelConfig& first_level(HwConfig& c) {
+  return c.memory.front();
+}
+inline const MemoryLevelConfig& first_level(const HwConfig& c) {
+  return c.memory.front();
+}
+inline MemoryLevelConfig& last_level(HwConfig& c) {
+  return c.memory.back();
+}
+inline const MemoryLevelConfig& last_level(const HwConfig& c) {
+  return c.memory.back();
+}
 // The level named `name`, or null.
 const MemoryLevelConfig* find_level(const HwConfig& config, const std::string& name);
 // Whether the hierarchy is a unit level and one shared level, the form the faster fidelity

@@ -117,7 +117,32 @@ void name_memory_levels(toml::table& root, ConfigReadContext& ctx) {
   for (auto&& [name, level] : named) memory->insert(name, level);
 }
 
+// A memory.NAME section of a level memory.levels does not list (a misspelt name, say).
+void check_level_names(const toml::table& root, const ConfigReadContext& ctx) {
+  const toml::table* memory = root["memory"].as_table();
+  const toml::array* names = memory ? (*memory)["levels"].as_array() : nullptr;
+  if (!memory || !names) return;
+  std::string listed;
+  for (const toml::node& n : *names)
+    listed += (listed.empty() ? "" : ", ") + n.value_or(std::string());
+  for (auto&& [key, node] : *memory) {
+    std::string name(key.str());
+    if (!node.is_table() || std::any_of(names->begin(), names->end(), [&](const toml::node& n) {
+          return n.value_or(std::string()) == name;
+        }))
+      continue;
+    std::string what = fmt::format("memory.{}: no level of that name (levels: {})", name, listed);
+    std::string set = ctx.set_place("memory." + name);
+    for (const std::string& a : ctx.set_assignments)
+      if (a.compare(0, 8 + name.size(), "memory." + name + ".") == 0)
+        set = ctx.set_option + " " + a;
+    if (!set.empty()) throw_input_error(set, "", what);
+    throw_input_error(ctx.file, line_of(node), what);
+  }
+}
+
 void expand_cache_shorthand(toml::table& root, ConfigReadContext& ctx) {
+  check_level_names(root, ctx);
   toml::table* rt = root["rt"].as_table();
   toml::node* l1 = rt ? rt->get("l1") : nullptr;
   toml::node* l2 = root.get("l2");

@@ -108,7 +108,8 @@ StructureEnergy wires(const Run& run) {
   const std::string& second = run.config.memory[1].name;
   StructureEnergy s{first + "_" + second + "_wires", "byte", "mem." + second + ".accesses"};
   s.instances = run.config.rt_units;
-  s.events = run.value("mem." + second + ".bytes_read") + run.value("mem." + second + ".write_bytes");
+  s.events =
+      run.value("mem." + second + ".bytes_read") + run.value("mem." + second + ".write_bytes");
   s.dynamic_pj = s.events * 8 * wire_pj_per_bit_mm(run.node) * run.config.energy.wire_mm;
   return s;
 }

@@ -38,13 +38,14 @@ CacheConfig l2_at(const HwConfig& c, uint64_t capacity, uint32_t ways) {
 class CurveSink : public L2ReferenceSink {
  public:
   CurveSink(const HwConfig& c, const CurveRequest& request) {
-    L2Sets sets{last_level(c).cache.line_bytes, block_bytes(last_level(c).cache), last_level(c).slices, 1};
+    L2Sets sets{last_level(c).cache.line_bytes, block_bytes(last_level(c).cache),
+                last_level(c).slices, 1};
     uint32_t max_ways = *std::max_element(request.ways.begin(), request.ways.end());
     for (uint32_t ways : request.ways)
       for (uint64_t capacity : request.capacities) {
         if (request.sample_rate > 1) {
-          minis.push_back(std::make_unique<MiniCache>(l2_at(c, capacity, ways), last_level(c).slices,
-                                                      request.sample_rate));
+          minis.push_back(std::make_unique<MiniCache>(l2_at(c, capacity, ways),
+                                                      last_level(c).slices, request.sample_rate));
           continue;
         }
         sets.sets_per_slice = sets_per_slice(c, capacity, ways);
@@ -122,8 +123,10 @@ uint64_t curve_host_bytes(const HwConfig& c, const CurveRequest& request, bool c
       }
       uint64_t sets = sets_per_slice(c, capacity, w);
       if (stacks.insert(sets).second)
-        pass += LruStackSets::host_bytes(
-            {last_level(c).cache.line_bytes, block_bytes(last_level(c).cache), last_level(c).slices, sets}, max_ways);
+        pass +=
+            LruStackSets::host_bytes({last_level(c).cache.line_bytes,
+                                      block_bytes(last_level(c).cache), last_level(c).slices, sets},
+                                     max_ways);
     }
   uint64_t full = cycle_runs ? l1s + Cache::host_bytes(l2_at(c, *largest, ways)) : 0;
   return std::max(pass, full);
@@ -138,8 +141,9 @@ CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::str
   // there capacity misses are many and the order decides them; at large capacities misses are
   // mostly cold and the order hardly matters (model/fidelity/CURVE.md).
   HwConfig walked = config;
-  last_level(walked).cache = l2_at(config, *std::min_element(request.capacities.begin(), request.capacities.end()),
-                    request.ways.front());
+  last_level(walked).cache =
+      l2_at(config, *std::min_element(request.capacities.begin(), request.capacities.end()),
+            request.ways.front());
   FidelityResult walk = run_cache_level(walked, image, stream, nullptr, &sink);
   for (auto& [sets, stack] : sink.stacks) stack->finish();
   CacheCurve curve;
@@ -164,10 +168,12 @@ CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::str
         const MiniCache& m = *sink.minis[mini++];
         MiniEstimate miss = m.miss_ratio(), dram = m.dram_blocks_per_read();
         p.misses = miss.value * reads;
-        p.writebacks = last_level(config).cache.write_back ? (dram.value - miss.value) * reads : written;
+        p.writebacks =
+            last_level(config).cache.write_back ? (dram.value - miss.value) * reads : written;
         p.miss_ratio = miss.value;
         p.miss_ratio_ci95 = miss.ci95;
-        p.dram_bytes = (last_level(config).cache.write_back ? dram.value * reads : p.misses + written) * block;
+        p.dram_bytes =
+            (last_level(config).cache.write_back ? dram.value * reads : p.misses + written) * block;
         p.dram_bytes_ci95 = dram.ci95 * reads * block;
       } else {
         const LruStackSets& s = *sink.stacks.at(p.sets_per_slice);

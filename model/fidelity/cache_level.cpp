@@ -81,8 +81,8 @@ class CacheWalk {
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
       // The tap only when a sink listens: an L1 miss otherwise goes straight to the L2.
       MemoryTarget* below = sink ? static_cast<MemoryTarget*>(&tap_) : &l2_;
-      l1_.push_back(std::make_unique<Cache>(levels_as_built(c_)[0].cache, below,
-                                             cache_place(c_.memory, 0)));
+      l1_.push_back(
+          std::make_unique<Cache>(levels_as_built(c_)[0].cache, below, cache_place(c_.memory, 0)));
       units_.emplace_back(c_.rt.warps);
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }

@@ -35,7 +35,7 @@ struct Estimate {
 // What a set of rays cost: plain sums, ratios derived when read.
 struct CostTotals {
   uint64_t rays = 0, nodes = 0, triangles = 0;
-  ReadCounts reads;  // the fidelity levels model two cache levels: 0 (per unit) and 1 (shared)
+  ReadCounts reads;    // the fidelity levels model two cache levels: 0 (per unit) and 1 (shared)
   double latency = 0;  // sum of ray latencies, cycles (timed levels only)
 
   CostTotals& operator+=(const CostTotals& o);

@@ -13,8 +13,8 @@ namespace rtsim {
 FidelityResult run_level(const LevelRequest& request, const HwConfig& config, BvhView image,
                          const std::string& stream) {
   // The cache level and the scale model reason about a unit level and one shared level.
-  bool scaled = request.level == FidelityLevel::Sampled &&
-                request.sampling.method != SampleMethod::Windows;
+  bool scaled =
+      request.level == FidelityLevel::Sampled && request.sampling.method != SampleMethod::Windows;
   if (request.level == FidelityLevel::CacheLevel || scaled) {
     std::string problem = two_level_problem(
         config, scaled ? "the sampled level's scale model" : "the cache fidelity level");

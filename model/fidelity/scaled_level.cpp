@@ -181,7 +181,8 @@ std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& c
 // L2 has measured fetches of its own.
 Cycle unloaded_fetch_cycles(const HwConfig& config) {
   return last_level(config).cache.hit_latency +
-         Cycle(std::ceil(unloaded_dram_read(dram_for_analysis(config), block_bytes(last_level(config).cache))));
+         Cycle(std::ceil(
+             unloaded_dram_read(dram_for_analysis(config), block_bytes(last_level(config).cache))));
 }
 
 }  // namespace

@@ -344,8 +344,8 @@ Cycle Cache::read_through(uint64_t block, Cycle at, Caller& caller, ReadCharge& 
     throw std::logic_error("a victim level reads a block at a time for the level above");
   stats_.bytes_below += block_bytes();
   if (place_.above_dram) charge.dram_bytes += block_bytes();
-  return below_->read(block << block_shift_, block_bytes(), at + config_.hit_latency,
-                      caller.client, caller.token, charge);
+  return below_->read(block << block_shift_, block_bytes(), at + config_.hit_latency, caller.client,
+                      caller.token, charge);
 }
 
 void Cache::write_block(uint64_t block, Cycle at) {

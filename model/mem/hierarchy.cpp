@@ -105,9 +105,8 @@ std::string level_problem(const std::vector<MemoryLevelConfig>& levels, size_t i
   const MemoryLevelConfig& above = levels[i - 1];
   p = order_problem(above, level);
   if (!p.empty()) return p;
-  if (level.fill == LevelFill::Victim &&
-      (level.cache.line_bytes != above.cache.line_bytes ||
-       block_bytes(level.cache) != block_bytes(above.cache)))
+  if (level.fill == LevelFill::Victim && (level.cache.line_bytes != above.cache.line_bytes ||
+                                          block_bytes(level.cache) != block_bytes(above.cache)))
     return fmt::format(
         "a victim level holds memory.{}'s evicted lines as they are: its line_bytes and "
         "sector_bytes must be that level's",

@@ -26,7 +26,7 @@ struct MemoryLevelConfig {
   LevelScope scope = LevelScope::Unit;
   uint32_t group = 1;  // units per instance (scope group)
   LevelFill fill = LevelFill::Miss;
-  CacheConfig cache;  // of one instance, all its slices together
+  CacheConfig cache;    // of one instance, all its slices together
   uint32_t slices = 1;  // address-hashed slices of a shared or group level
   CrossbarConfig link;  // from each instance of this level to the next level's slices, each way
 };

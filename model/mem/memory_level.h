@@ -86,7 +86,6 @@ using ReadCharge = LevelCounts<uint16_t, uint32_t>;  // one read
 using RayReads = LevelCounts<uint32_t, uint64_t>;    // one ray's reads
 using ReadCounts = LevelCounts<uint64_t, uint64_t>;  // sums
 
-
 // Who waits for a read that did not complete at once.
 class ReadClient {
  public:

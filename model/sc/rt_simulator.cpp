@@ -31,9 +31,9 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
   // serve that far ahead.
   uint32_t own = 0;
   while (own < levels.size() && !queued_level(levels[own])) ++own;
-  shared_ = std::make_unique<SharedLevelsModule>("mem", levels, config.rt_units, clock_,
-                                             levels[own - 1].cache.hit_latency,
-                                             [this](std::exception_ptr e) { control_.fail(e); });
+  shared_ = std::make_unique<SharedLevelsModule>(
+      "mem", levels, config.rt_units, clock_, levels[own - 1].cache.hit_latency,
+      [this](std::exception_ptr e) { control_.fail(e); });
   // Compulsory misses at every level; the BVH's blocks in bitmaps.
   uint64_t bvh_begin = bvh.begin_address(), bvh_end = bvh.end_address();
   shared_->track_cold_misses(bvh_begin, bvh_end);
@@ -189,7 +189,8 @@ std::string RtSimulator::dump() const {
     if (unit->shader()) out << unit->shader()->dump();
   }
   out << "shared levels: " << shared_->queued()
-      << " requests, answers and DRAM accesses queued, next at cycle " << shared_->next_job() << "\n";
+      << " requests, answers and DRAM accesses queued, next at cycle " << shared_->next_job()
+      << "\n";
   if (banked_dram_)
     out << "dram: " << banked_dram_->controller().queued() << " bursts queued, next decision "
         << banked_dram_->next_event() << ", taken at cycle " << banked_dram_->next_wake() << "\n";

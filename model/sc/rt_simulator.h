@@ -95,7 +95,7 @@ class RtSimulator {
   RetireFanout fanout_;
   SimControl control_;
   std::unique_ptr<SharedLevelsModule> shared_;  // the group and shared levels, and the way to DRAM
-  std::unique_ptr<DramModule> dram_;               // the simple DRAM, or
+  std::unique_ptr<DramModule> dram_;            // the simple DRAM, or
   std::unique_ptr<BankedDramModule> banked_dram_;  // the banked one
   std::unique_ptr<DispatcherModule> dispatch_;
   std::unique_ptr<TreeletQueueModule> treelets_;

@@ -64,7 +64,8 @@ void report_crossbar(StatsRegistry& r, const std::string& p, const Crossbar& xba
     report_link(r, q + ".out", xbar.slice_out(i), peak);
   }
   for (uint32_t i = 0; i < xbar.units(); ++i) {
-    std::string q = p + ".xbar." + (i < requesters.size() ? requesters[i] : "tlm" + std::to_string(i));
+    std::string q =
+        p + ".xbar." + (i < requesters.size() ? requesters[i] : "tlm" + std::to_string(i));
     report_link(r, q + ".up", xbar.unit_up(i), peak);
     report_link(r, q + ".down", xbar.unit_down(i), peak);
   }

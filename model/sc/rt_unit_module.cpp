@@ -6,7 +6,8 @@ namespace rtsim {
 
 RtUnitModule::RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
                            const std::vector<MemoryLevelConfig>& levels,
-                           const TraversalUnit& traversal, const Clock& clock, uint32_t quantum_cycles, SimControl& control,
+                           const TraversalUnit& traversal, const Clock& clock,
+                           uint32_t quantum_cycles, SimControl& control,
                            const TreeletFootprints* footprints, const ShaderConfig& shader)
     : sc_module(name),
       supply("supply"),

@@ -1,12 +1,13 @@
 // An RT unit as an sc_module: traversal control and test units (model/sched/rt_core.h) with
 // its own cache levels (child module "mem"). The unit reads its first level by a direct call
-// (it is part of the unit); the last own level's misses and writes go to the shared levels. Rays come from the supply port (dispatcher or treelet queues).
-// One SC_METHOD, no thread per ray: it wakes at the cycle of the unit's next event, when the
-// supply announces work, or when the L2 reports data for a waiting ray; it handles every event
-// before now + quantum (TLM temporal decoupling: requests carry the unit's local time as their
-// delay), and sleeps again. A unit whose rays all wait on memory sleeps until data arrives.
-// With a shader model the unit's SM (model/sched/shader_core.h) stands between the unit and the
-// supply; it wakes the unit when a warp slot frees.
+// (it is part of the unit); the last own level's misses and writes go to the shared levels. Rays
+// come from the supply port (dispatcher or treelet queues). One SC_METHOD, no thread per ray: it
+// wakes at the cycle of the unit's next event, when the supply announces work, or when the L2
+// reports data for a waiting ray; it handles every event before now + quantum (TLM temporal
+// decoupling: requests carry the unit's local time as their delay), and sleeps again. A unit whose
+// rays all wait on memory sleeps until data arrives. With a shader model the unit's SM
+// (model/sched/shader_core.h) stands between the unit and the supply; it wakes the unit when a warp
+// slot frees.
 #pragma once
 
 #include <memory>
@@ -28,8 +29,7 @@ class RtUnitModule : public sc_core::sc_module {
   SC_HAS_PROCESS(RtUnitModule);
   RtUnitModule(sc_core::sc_module_name name, uint32_t id, const RtCoreConfig& config,
                const std::vector<MemoryLevelConfig>& levels, const TraversalUnit& traversal,
-               const Clock& clock,
-               uint32_t quantum_cycles, SimControl& control,
+               const Clock& clock, uint32_t quantum_cycles, SimControl& control,
                const TreeletFootprints* footprints = nullptr, const ShaderConfig& shader = {});
 
   const RtCore& core() const { return core_; }

@@ -61,8 +61,8 @@ CacheStats SharedLevelsModule::Instance::stats() const {
 }
 
 SharedLevelsModule::SharedLevelsModule(sc_core::sc_module_name name,
-                                       const std::vector<MemoryLevelConfig>& levels,
-                                       uint32_t units, const Clock& clock, uint32_t lookahead,
+                                       const std::vector<MemoryLevelConfig>& levels, uint32_t units,
+                                       const Clock& clock, uint32_t lookahead,
                                        std::function<void(std::exception_ptr)> on_error)
     : sc_module(name),
       in("in"),
@@ -105,8 +105,14 @@ void SharedLevelsModule::add_instances(uint32_t units) {
   first[levels_.size()] = count;
   instances_.reserve(std::max<uint32_t>(count, 1));
   if (count == 0) {
-    Instance port{"memory_port", uint32_t(levels_.size()), {}, Crossbar({}, 0), kNoInstance, 0,
-                  {}, std::make_unique<Below>(*this, 0)};
+    Instance port{"memory_port",
+                  uint32_t(levels_.size()),
+                  {},
+                  Crossbar({}, 0),
+                  kNoInstance,
+                  0,
+                  {},
+                  std::make_unique<Below>(*this, 0)};
     instances_.push_back(std::move(port));
     return;
   }
@@ -258,8 +264,8 @@ void SharedLevelsModule::request(uint32_t instance, uint32_t port, JobKind kind,
 }
 
 tlm::tlm_sync_enum SharedLevelsModule::nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
-                                                      tlm::tlm_phase& phase,
-                                                      sc_core::sc_time& delay) {
+                                                       tlm::tlm_phase& phase,
+                                                       sc_core::sc_time& delay) {
   if (phase != tlm::BEGIN_REQ) return tlm::TLM_COMPLETED;  // END_RESP: nothing left to do
   bool write = trans.get_command() == tlm::TLM_WRITE_COMMAND;
   if (!write && trans.get_command() != tlm::TLM_READ_COMMAND) {
@@ -376,8 +382,8 @@ void SharedLevelsModule::below_read(uint32_t instance, uint64_t addr, uint32_t b
   request(inst.below, inst.below_port, JobKind::Read, addr, bytes, at, &answers_, read);
 }
 
-void SharedLevelsModule::below_write(uint32_t instance, JobKind kind, uint64_t addr,
-                                     uint32_t bytes, Cycle at) {
+void SharedLevelsModule::below_write(uint32_t instance, JobKind kind, uint64_t addr, uint32_t bytes,
+                                     Cycle at) {
   const Instance& inst = instances_[instance];
   if (inst.below != kNoInstance)
     return request(inst.below, inst.below_port, kind, addr, bytes, at, nullptr, 0);
@@ -414,7 +420,7 @@ inline void SharedLevelsModule::respond(const Job& job, Cycle ready, const ReadC
 }
 
 void SharedLevelsModule::prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command,
-                                      uint64_t addr, uint32_t bytes) {
+                                       uint64_t addr, uint32_t bytes) {
   if (scratch_.size() < bytes) scratch_.resize(bytes);
   t.set_command(command);
   t.set_address(addr);
@@ -432,7 +438,7 @@ std::runtime_error SharedLevelsModule::below_error(const tlm::tlm_generic_payloa
 }
 
 Cycle SharedLevelsModule::send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes,
-                                    Cycle at) {
+                                     Cycle at) {
   tlm::tlm_generic_payload& t = below_trans_;
   prepare_below(t, command, addr, bytes);
   sc_core::sc_time delay = clock_.time(at) - stamp_;
@@ -462,8 +468,8 @@ void SharedLevelsModule::send_timed(const Job& job, Cycle at) {
 }
 
 tlm::tlm_sync_enum SharedLevelsModule::nb_transport_bw(tlm::tlm_generic_payload& trans,
-                                                      tlm::tlm_phase& phase,
-                                                      sc_core::sc_time& delay) {
+                                                       tlm::tlm_phase& phase,
+                                                       sc_core::sc_time& delay) {
   if (phase != tlm::BEGIN_RESP) return tlm::TLM_ACCEPTED;  // END_REQ
   auto& t = static_cast<BelowTransaction&>(trans);
   if (t.is_response_error()) {

@@ -103,10 +103,15 @@ Json utilisation_json(const HwConfig& c, const StatsRegistry& r) {
                 {"ray_slots", r.value(p + ".slot_occupancy")}};
   }
   auto mean = [&](const char* suffix) { return r.units_sum(c.rt_units, suffix) / c.rt_units; };
+  double first_port_mean = 0;  // summed unit by unit, as units_sum does
+  for (uint32_t i = 0; i < c.rt_units; ++i)
+    first_port_mean +=
+        r.value(level_stats(first_level(c)) + ".rt" + std::to_string(i) + ".port_utilisation");
+  first_port_mean /= c.rt_units;
   Json means = {{"box", mean(".box.utilisation")},
                 {"triangle", mean(".triangle.utilisation")},
                 {"control", mean(".control.utilisation")},
-                {"l1_port", r.value(level_stats(first_level(c)) + ".port_utilisation")},
+                {"l1_port", first_port_mean},
                 {"ray_slots", r.value("rt.slot_occupancy")}};
   // Two levels: the instance transform units too.
   if (r.has("rt0.transform.utilisation")) {
@@ -175,20 +180,20 @@ Json shader_json(const HwConfig& c, const StatsRegistry& r) {
     std::string key = "shader.type." + name + ".busy_cycles";
     if (r.has(key)) by_type[name] = r.value(key);
   }
-  return {{"model", shader_model_name(c.shader.model)},
-          {"busy_cycles", r.value("shader.busy_cycles")},
-          {"raygen_cycles", r.value("shader.raygen_cycles")},
-          {"hit_cycles", r.value("shader.hit_cycles")},
-          {"miss_cycles", r.value("shader.miss_cycles")},
-          {"busy_cycles_by_type", by_type},
-          {"utilisation", r.value("shader.utilisation")},
-          {"busy_cycles_per_ray", r.value("shader.busy_cycles_per_ray")},
-          {"mean_trace_delay", r.value("shader.mean_trace_delay")},
-          {"slot_wait_cycles", r.value("shader.slot_wait_cycles")},
-          {"read_bytes", r.value("shader.read_bytes")},
-          {"reads_l1_miss_rate",
-           r.value("shader.reads." + level_stats(first_level(c)) + ".miss_rate")},
-          {"reads_dram_bytes_per_ray", r.value("shader.reads.dram_bytes_per_ray")}};
+  return {
+      {"model", shader_model_name(c.shader.model)},
+      {"busy_cycles", r.value("shader.busy_cycles")},
+      {"raygen_cycles", r.value("shader.raygen_cycles")},
+      {"hit_cycles", r.value("shader.hit_cycles")},
+      {"miss_cycles", r.value("shader.miss_cycles")},
+      {"busy_cycles_by_type", by_type},
+      {"utilisation", r.value("shader.utilisation")},
+      {"busy_cycles_per_ray", r.value("shader.busy_cycles_per_ray")},
+      {"mean_trace_delay", r.value("shader.mean_trace_delay")},
+      {"slot_wait_cycles", r.value("shader.slot_wait_cycles")},
+      {"read_bytes", r.value("shader.read_bytes")},
+      {"reads_l1_miss_rate", r.value("shader.reads." + level_stats(first_level(c)) + ".miss_rate")},
+      {"reads_dram_bytes_per_ray", r.value("shader.reads.dram_bytes_per_ray")}};
 }
 
 // l1_*: the unit's first level, l2_*: the level above DRAM (the same in a one-level hierarchy);
@@ -366,8 +371,7 @@ Json sim_stats_json(const RtSimulator& sim, const StatsRegistry& r, const SimRun
                   {"refill_l1_reads", r.value(level_stats(first_level(c)) + ".local_reads")},
                   {"refill_l1_misses", r.value(level_stats(first_level(c)) + ".local_misses")},
                   {"refill_l2_misses", r.value(level_stats(last_level(c)) + ".local_misses")},
-                  {"l1_writeback_bytes",
-                   r.value(level_stats(first_level(c)) + ".writeback_bytes")},
+                  {"l1_writeback_bytes", r.value(level_stats(first_level(c)) + ".writeback_bytes")},
                   {"l2_writeback_bytes", r.value(level_stats(last_level(c)) + ".writeback_bytes")},
                   {"dram_write_bytes", r.value("dram.write_bytes")}};
   doc["verify"] = info.verify ? verify_json(*info.verify) : Json{{"skipped", true}};

@@ -47,8 +47,8 @@ void UnitMemory::before_end_of_elaboration() {
   if (!shared_) throw std::logic_error(std::string(name()) + ": not connected to shared levels");
 }
 
-Cycle UnitMemory::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
-                       uint64_t token, ReadCharge&) {
+Cycle UnitMemory::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+                       ReadCharge&) {
   shared_->read_request(instance_, port_, addr, bytes, at, client, token);
   return kPending;
 }

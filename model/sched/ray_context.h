@@ -18,10 +18,10 @@ namespace rtsim {
 // What one ray cost, accumulated step by step and read when it retires.
 struct RayCost {
   RayReads reads;              // block accesses and hits at each cache level, DRAM bytes
-  uint32_t stack_spills = 0;              // entries written out of the hardware stack
-  uint32_t stack_refills = 0;             // entries read back
-  uint32_t postponed = 0;                 // times it waited in a treelet queue
-  uint64_t anyhit_cycles = 0;             // cycles waiting for any-hit calls (rt_core.h)
+  uint32_t stack_spills = 0;   // entries written out of the hardware stack
+  uint32_t stack_refills = 0;  // entries read back
+  uint32_t postponed = 0;      // times it waited in a treelet queue
+  uint64_t anyhit_cycles = 0;  // cycles waiting for any-hit calls (rt_core.h)
 };
 
 // What a unit touches at every step comes first, then the traversal state (its own hot part

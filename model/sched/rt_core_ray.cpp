@@ -14,8 +14,7 @@ uint32_t RtCore::level_of(uint64_t addr) const {
 }
 
 void RtCore::charge_level(uint32_t level, const ReadCharge& charge) {
-  if (level != 0)
-    (level == 1 ? stats_.top : level == 2 ? stats_.bottom : stats_.texture) += charge;
+  if (level != 0) (level == 1 ? stats_.top : level == 2 ? stats_.bottom : stats_.texture) += charge;
 }
 
 void RtCore::count_step(StepKind kind, const TraversalState& after) {

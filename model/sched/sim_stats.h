@@ -19,7 +19,7 @@ namespace rtsim {
 struct RayTypeStats {
   uint64_t rays = 0, hits = 0;
   TraversalCounters counters;  // trav_nodes, trav_leaves, trav_prims, trav_prim_hits
-  ReadCounts reads;  // block accesses and hits at each cache level, DRAM bytes
+  ReadCounts reads;            // block accesses and hits at each cache level, DRAM bytes
   uint64_t stack_spills = 0, stack_refills = 0, postponed = 0;
   uint64_t anyhit_cycles = 0;  // cycles waiting for any-hit calls
   LatencyHistogram latency;    // cycles from dispatch to retirement

@@ -93,15 +93,16 @@ std::vector<Check> ray_ladder(const Target& target) {
   for (uint32_t k = 0; k < levels.size(); ++k) {
     const MemoryLevelConfig& level = levels[k];
     Check c{"ladder." + level.name + "_hit", "closed_form",
-            k == 0 ? fmt::format("one ray, both reads hit the unit's {}", level.name)
-                   : fmt::format("one ray, both reads miss the levels above and hit {}",
-                                 level.name)};
+            k == 0
+                ? fmt::format("one ray, both reads hit the unit's {}", level.name)
+                : fmt::format("one ray, both reads miss the levels above and hit {}", level.name)};
     std::string sum;
     for (uint32_t i = 0; i <= k; ++i)
       sum += fmt::format("{}memory.{}.hit_latency {}", i ? " + " : "", levels[i].name,
                          levels[i].cache.hit_latency);
     for (uint32_t i = 0; i < k; ++i)
-      sum += fmt::format(" + 2 x memory.{}.link_latency {}", levels[i].name, levels[i].link.latency);
+      sum +=
+          fmt::format(" + 2 x memory.{}.link_latency {}", levels[i].name, levels[i].link.latency);
     c.source = fmt::format("formula: {} + 2 reads x ({})", terms, sum);
     c.unit = "cycles";
     set_exact(c, fixed + 2 * hit_cycles(levels, k));

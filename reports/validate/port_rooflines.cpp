@@ -34,7 +34,8 @@ std::vector<Check> port_rooflines(const Target& target) {
   base.rt.box.count = base.rt.triangle.count = base.rt.issue_per_cycle = kUnlimited;
   // Reads that miss the L1: one set, and MSHRs for every line a unit can wait for.
   HwConfig missing = base;
-  first_level(missing).cache.size_bytes = uint64_t(first_level(missing).cache.line_bytes) * first_level(missing).cache.ways;
+  first_level(missing).cache.size_bytes =
+      uint64_t(first_level(missing).cache.line_bytes) * first_level(missing).cache.ways;
   first_level(missing).cache.mshrs = 512;
   HwConfig l1 = base, l2 = missing, xbar = missing;
   first_level(l1).cache.bytes_per_cycle = first_level(preset).cache.bytes_per_cycle;
@@ -47,7 +48,8 @@ std::vector<Check> port_rooflines(const Target& target) {
        "an L1 that holds the scene; bytes the unit read",
        "Cache::read's data port cursor (model/mem/cache.cpp)"},
       {"roofline.l2_port", "bytes a cycle through an L2 slice's data port", "l2.bytes_per_cycle",
-       last_level(preset).cache.bytes_per_cycle, stat("mem." + last_level(preset).name + ".bytes_read"),
+       last_level(preset).cache.bytes_per_cycle,
+       stat("mem." + last_level(preset).name + ".bytes_read"),
        "one L2 slice, L1s of one set: bytes the L2 served",
        "the L2's data port cursor (model/mem/cache.cpp, SharedLevelsModule)"},
       {"roofline.xbar_link", "bytes a cycle over a unit's crossbar link", "xbar.bytes_per_cycle",

@@ -107,12 +107,14 @@ TEST(DesignEnergy, CachesChargeBitsMovedTagsAndLeakage) {
   DesignEnergy d = design_energy(c, r);
   const StructureEnergy& l2 = structure(d, "l2");
   const ProcessNode& node = process_node("7nm");
-  double bit = sram_read_pj({last_level(c).cache.size_bytes, 64, last_level(c).cache.banks}, node) / 64;
+  double bit =
+      sram_read_pj({last_level(c).cache.size_bytes, 64, last_level(c).cache.banks}, node) / 64;
   uint64_t tag_bytes = last_level(c).cache.size_bytes / 64 * 4;
   double tag = sram_read_pj({tag_bytes, 32, 1}, node);
   EXPECT_NEAR(l2.dynamic_pj, (64000 + 1.1 * 7040) * 8 * bit + 1000 * tag, 1e-6);
   EXPECT_EQ(l2.sram_bytes, last_level(c).cache.size_bytes + tag_bytes);
-  EXPECT_NEAR(l2.static_pj, 0.4 * (last_level(c).cache.size_bytes + tag_bytes) / 1024.0 * 1e-3 * 1e9, 1e-3);
+  EXPECT_NEAR(l2.static_pj,
+              0.4 * (last_level(c).cache.size_bytes + tag_bytes) / 1024.0 * 1e-3 * 1e9, 1e-3);
   // The wires carry what the L2 sends up and takes down: 5 mm at 0.75 V.
   EXPECT_NEAR(structure(d, "l1_l2_wires").dynamic_pj,
               64640 * 8 * 0.121 * (0.75 / 0.9) * (0.75 / 0.9) * 5, 1e-6);

@@ -119,7 +119,8 @@ TEST(ScaleModel, SharesTheMachineByTheRate) {
   EXPECT_DOUBLE_EQ(m.config.dram.bytes_per_cycle, 56.0);
   EXPECT_EQ(m.config.dram.queue_depth, 64u);
   EXPECT_EQ(last_level(m.config).cache.mshrs, last_level(full).cache.mshrs / 8);
-  EXPECT_EQ(last_level(m.config).cache.size_bytes, last_level(full).cache.size_bytes) << "the L2 keeps its size";
+  EXPECT_EQ(last_level(m.config).cache.size_bytes, last_level(full).cache.size_bytes)
+      << "the L2 keeps its size";
   EXPECT_EQ(first_level(m.config).cache.size_bytes, first_level(full).cache.size_bytes);
   ScaleModel one = scale_model(full, 64);
   EXPECT_EQ(one.config.rt_units, 1u);
@@ -183,7 +184,8 @@ TEST_F(FidelityLevels, ScaleModelLandsNearTheFullModel) {
 // too low; warmed, its L2 sees every unit's reads and its count of fetches lands near.
 TEST_F(FidelityLevels, WarmedScaleModelCountsTheCapacityMissesOfTheWholeMachine) {
   HwConfig small = *config_;
-  last_level(small).cache.size_bytes = 192 * 1024;  // the stream's nodes overflow it: 94% of reads hit
+  last_level(small).cache.size_bytes =
+      192 * 1024;  // the stream's nodes overflow it: 94% of reads hit
   ASSERT_EQ(hw_config_problem(small), "");
   FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, small, *image_, *stream_);
   LevelRequest plain{FidelityLevel::Sampled, {}}, warmed = plain;

@@ -96,7 +96,8 @@ TEST(SimMemory, DepthFirstAndTreeletModesMissTheSameBlocksCompulsorily) {
   ASSERT_GT(test::stat(depth_first, "rt.stack.spill_entries"), 0.0);
   ASSERT_GT(test::stat(treelet, "rt.stack.spill_entries"), 0.0);
   ASSERT_GT(test::stat(treelet, "rt.postponed"), 0.0);
-  EXPECT_EQ(test::stat(depth_first, "mem.l2.cold_misses"), test::stat(treelet, "mem.l2.cold_misses"));
+  EXPECT_EQ(test::stat(depth_first, "mem.l2.cold_misses"),
+            test::stat(treelet, "mem.l2.cold_misses"));
 }
 
 }  // namespace

@@ -30,7 +30,8 @@ TEST(SimWarmup, AWarmUpOfTheSameRaysLeavesNoCompulsoryMiss) {
   config.sim.warmup_rays = 2 * rays.size();
   nlohmann::json warm = test::simulate(config, s.scene, repeated(rays, 3));
   EXPECT_GT(test::stat(cold, "mem.l2.cold_misses"), 0.0);
-  EXPECT_EQ(test::stat(warm, "mem.l2.cold_misses"), 0.0) << "every block was referenced in the warm-up";
+  EXPECT_EQ(test::stat(warm, "mem.l2.cold_misses"), 0.0)
+      << "every block was referenced in the warm-up";
   EXPECT_LT(warm["memory"]["l1_compulsory_share"].get<double>(),
             cold["memory"]["l1_compulsory_share"].get<double>() / 4)
       << "an L1 misses blocks only other units' L1s saw";

@@ -173,7 +173,8 @@ TEST(TlmMemory, ManyIndependentMissesSaturateTheDramBandwidth) {
   double span = double(last - 100 - 10);
   double achieved = double(bench.dram.dram().stats().bytes) / span;
   EXPECT_NEAR(achieved / 16.0, 1.0, 0.05) << "bytes per cycle against the configured peak";
-  EXPECT_GT(bench.l2.instances()[0].stats().mshr_stall_cycles, 0u) << "the MSHRs held the misses back";
+  EXPECT_GT(bench.l2.instances()[0].stats().mshr_stall_cycles, 0u)
+      << "the MSHRs held the misses back";
 }
 
 TEST(TlmMemory, TheCrossbarAddsItsLatencyBothWaysAndItsPortsBoundTheBandwidth) {
@@ -272,7 +273,8 @@ TEST(TlmMemory, HierarchyLatenciesAreTheConfiguredSumsAndAForeignTargetBinds) {
   EXPECT_EQ(other.charge[0].hits[1], 1u);
   EXPECT_EQ(l2.instances()[0].stats().misses, 1u);
   EXPECT_EQ(dram.dram().stats().bytes, 64u);
-  EXPECT_EQ(l2.instances()[0].crossbar.units(), 2u) << "a port per connected L1, none for the unbound socket";
+  EXPECT_EQ(l2.instances()[0].crossbar.units(), 2u)
+      << "a port per connected L1, none for the unbound socket";
 
   ASSERT_EQ(foreign_cpu.ready.size(), 1u);
   EXPECT_EQ(foreign_cpu.ready[0], 5u + 2 + 10 + 50) << "the foreign memory's 50 ns, through TLM";

@@ -53,7 +53,7 @@ TEST(HwConfig, PresetsDifferWhereTheyShould) {
   EXPECT_LT(last_level(mobile).cache.size_bytes, last_level(desktop).cache.size_bytes);
   EXPECT_EQ(cw.bvh.node_format, NodeFormat::Cwbvh8);
   EXPECT_EQ(tq.rt.mode, TraversalMode::Treelet);
-  EXPECT_EQ(resolved_json(tq)["l2"], resolved_json(desktop)["l2"]) << "same caches";
+  EXPECT_EQ(resolved_json(tq)["memory"], resolved_json(desktop)["memory"]) << "same caches";
 }
 
 TEST(HwConfig, EveryKeyIsDocumented) {
