@@ -152,10 +152,8 @@ class CacheWalk {
     l1.read(addr, bytes, now_);
     const CacheStats& b1 = l1.stats();
     const CacheStats& b2 = l2_.stats();
-    cost.reads.accesses[0] += b1.accesses - a1.accesses;
-    cost.reads.hits[0] += b1.hits - a1.hits;
-    cost.reads.accesses[1] += b2.accesses - a2.accesses;
-    cost.reads.hits[1] += b2.hits - a2.hits;
+    cost.reads.add(0, b1.accesses - a1.accesses, b1.hits - a1.hits);
+    cost.reads.add(1, b2.accesses - a2.accesses, b2.hits - a2.hits);
     uint64_t below = b2.bytes_below - a2.bytes_below;
     cost.reads.dram_bytes += below;
     dram_bytes_ += below + b2.writeback_bytes - a2.writeback_bytes;

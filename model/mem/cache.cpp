@@ -291,7 +291,7 @@ inline Cache::Place Cache::look_up(uint64_t line) {
 inline Cycle Cache::read_block(uint64_t block, Place& p, Cycle at, Caller& caller,
                                ReadCharge& charge) {
   stats_.accesses++;
-  charge.accesses[place_.level]++;
+  charge.add(place_.level, 1, 0);
   Cycle hit_ready = at + config_.hit_latency;
 
   if (p.way != kNone) {

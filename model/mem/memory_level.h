@@ -52,31 +52,40 @@ constexpr uint32_t kMaxCacheLevels = 6;
 // What reads cost at each level of the memory hierarchy: a level counts its own block accesses
 // and hits (level 0 is the RT unit's first); the level above DRAM counts the bytes it fetched.
 // The same record at three widths: one read's charge (a few blocks; kept in a miss's records,
-// so small), a ray's cost and sums over many rays.
+// so small), a ray's cost and sums over many rays. `depth` bounds the levels counted so far, so
+// that adding a read that hit the first level touches that level alone (the common case).
 template <typename Count, typename Bytes>
 struct LevelCounts {
   std::array<Count, kMaxCacheLevels> accesses{}, hits{};
   Bytes dram_bytes = 0;
+  uint8_t depth = 0;  // levels 0 .. depth - 1 may hold counts; the others are 0
+  void add(uint32_t level, Count level_accesses, Count level_hits) {
+    accesses[level] += level_accesses;
+    hits[level] += level_hits;
+    if (depth <= level) depth = uint8_t(level + 1);
+  }
   template <typename C, typename B>
   LevelCounts& operator+=(const LevelCounts<C, B>& o) {
-    for (uint32_t i = 0; i < kMaxCacheLevels; ++i) {
+    for (uint32_t i = 0; i < o.depth; ++i) {
       accesses[i] += Count(o.accesses[i]);
       hits[i] += Count(o.hits[i]);
     }
+    if (depth < o.depth) depth = o.depth;
     dram_bytes += Bytes(o.dram_bytes);
     return *this;
   }
   template <typename C, typename B>
   LevelCounts& operator-=(const LevelCounts<C, B>& o) {
-    for (uint32_t i = 0; i < kMaxCacheLevels; ++i) {
+    for (uint32_t i = 0; i < o.depth; ++i) {
       accesses[i] -= Count(o.accesses[i]);
       hits[i] -= Count(o.hits[i]);
     }
+    if (depth < o.depth) depth = o.depth;
     dram_bytes -= Bytes(o.dram_bytes);
     return *this;
   }
   bool empty() const {
-    for (uint32_t i = 0; i < kMaxCacheLevels; ++i)
+    for (uint32_t i = 0; i < depth; ++i)
       if (accesses[i] | hits[i]) return false;
     return dram_bytes == 0;
   }

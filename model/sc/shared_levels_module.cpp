@@ -107,6 +107,7 @@ void SharedLevelsModule::add_instances(uint32_t units) {
   if (count == 0) {
     Instance port{"memory_port",
                   uint32_t(levels_.size()),
+                  0,
                   {},
                   Crossbar({}, 0),
                   kNoInstance,
@@ -126,6 +127,7 @@ void SharedLevelsModule::add_instances(uint32_t units) {
       uint32_t index = uint32_t(instances_.size());
       Instance inst{n > 1 ? level.name + ".g" + std::to_string(k) : level.name,
                     i,
+                    uint32_t(__builtin_ctz(level.cache.line_bytes)),
                     {},
                     Crossbar(levels_[i - 1].link, level.slices),
                     kNoInstance,
@@ -183,8 +185,7 @@ std::pair<uint32_t, uint32_t> SharedLevelsModule::instances_of(uint32_t level) c
 }
 
 uint32_t SharedLevelsModule::slice_of(const Instance& inst, uint64_t addr) const {
-  uint32_t shift = uint32_t(__builtin_ctz(levels_[inst.level].cache.line_bytes));
-  return slice_of_line(addr >> shift, uint32_t(inst.slices.size()));
+  return slice_of_line(addr >> inst.line_shift, uint32_t(inst.slices.size()));
 }
 
 uint32_t SharedLevelsModule::warm(uint64_t addr, uint32_t bytes, bool write) {
@@ -222,7 +223,7 @@ void SharedLevelsModule::use_timed_memory(uint32_t lead) {
 
 void SharedLevelsModule::connect_memory(QueuedMemory& memory, uint32_t lead) {
   memory_ = &memory;
-  memory.answer_to(answers_);
+  memory.answer_to(dram_answers_);
   use_timed_memory(lead);
 }
 
@@ -313,8 +314,9 @@ void SharedLevelsModule::serve_window() {
 void SharedLevelsModule::prime_next_job() const {
   Job next;
   if (!events_.peek(next)) return;
-  if (next.kind == JobKind::Read && next.client) next.client->prime_done(next.token);
-  if (next.kind == JobKind::DramDone) {
+  bool answers = next.kind == JobKind::Read || next.kind == JobKind::DramDone;
+  if (answers && next.client) next.client->prime_done(next.token);
+  if (next.kind == JobKind::LevelDone) {
     const BelowRead& r = below_reads_[next.token];
     r.client->prime_done(r.token);
   }
@@ -356,7 +358,8 @@ void SharedLevelsModule::run_job(const Job& job, Cycle at) {
       if (timed_below_) return send_timed(job, at);
       send_below(tlm::TLM_WRITE_COMMAND, job.addr, job.bytes, at);
       return;
-    case JobKind::DramDone: {
+    case JobKind::DramDone: return job.client->read_done(job.token, at, {});
+    case JobKind::LevelDone: {
       BelowRead r = below_reads_[job.token];
       free_below_reads_.push_back(uint32_t(job.token));  // the answer may add jobs
       return r.client->read_done(r.token, at, r.charge);
@@ -379,7 +382,7 @@ void SharedLevelsModule::below_read(uint32_t instance, uint64_t addr, uint32_t b
   }
   uint32_t read = take_slot(below_reads_, free_below_reads_);
   below_reads_[read] = {client, token, {}};
-  request(inst.below, inst.below_port, JobKind::Read, addr, bytes, at, &answers_, read);
+  request(inst.below, inst.below_port, JobKind::Read, addr, bytes, at, &level_answers_, read);
 }
 
 void SharedLevelsModule::below_write(uint32_t instance, JobKind kind, uint64_t addr, uint32_t bytes,
@@ -483,22 +486,29 @@ tlm::tlm_sync_enum SharedLevelsModule::nb_transport_bw(tlm::tlm_generic_payload&
 
 void SharedLevelsModule::below_done(BelowTransaction& t, Cycle ready) {
   below_free_.push_back(&t);
-  if (!t.client) return;  // a write's response
-  uint32_t read = take_slot(below_reads_, free_below_reads_);
-  below_reads_[read] = {t.client, t.token, {}};
-  answer_below(read, ready);
+  if (t.client) answer_below(JobKind::DramDone, t.client, t.token, ready);  // else a write's
 }
 
-void SharedLevelsModule::MemoryAnswers::read_done(uint64_t read, Cycle ready,
-                                                  const ReadCharge& charge) {
+// A DRAM read's answer frees its record at once (the DRAM charges nothing).
+void SharedLevelsModule::DramAnswers::read_done(uint64_t read, Cycle ready, const ReadCharge&) {
+  BelowRead r = m.below_reads_[read];
+  m.free_below_reads_.push_back(uint32_t(read));
+  m.answer_below(JobKind::DramDone, r.client, r.token, ready);
+}
+
+// A level's answer keeps its record, with what the read cost there, until it is served.
+void SharedLevelsModule::LevelAnswers::read_done(uint64_t read, Cycle ready,
+                                                 const ReadCharge& charge) {
   m.below_reads_[read].charge = charge;
-  m.answer_below(uint32_t(read), ready);
+  m.answer_below(JobKind::LevelDone, nullptr, read, ready);
 }
 
-void SharedLevelsModule::answer_below(uint32_t read, Cycle ready) {
+void SharedLevelsModule::answer_below(JobKind kind, ReadClient* client, uint64_t token,
+                                      Cycle ready) {
   Job job;
-  job.kind = JobKind::DramDone;
-  job.token = read;
+  job.kind = kind;
+  job.client = client;
+  job.token = token;
   // Outside serve(), a response dated inside the window already served (a memory that answers
   // with less lead than the window) is served now, in order with what it starts there.
   bool late = !serving_ && ready < served_until_;

@@ -84,6 +84,7 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   struct Instance {
     std::string name;  // "l2", or "l1.g0" for the first instance of a group level
     uint32_t level = 0;
+    uint32_t line_shift = 0;  // log2 of the level's line_bytes
     std::vector<std::unique_ptr<Cache>> slices;
     Crossbar crossbar;
     uint32_t below = kNoInstance;  // the next level's instance (kNoInstance: DRAM)
@@ -152,8 +153,9 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
 
  private:
   // Read, Write, Fill: from a requester of the job's instance; DramRead, DramWrite: to the DRAM
-  // below the last level; DramDone: the answer of a read below the instance (below_reads_).
-  enum class JobKind : uint8_t { Read, Write, Fill, DramRead, DramWrite, DramDone };
+  // below the last level; DramDone: a DRAM read's answer (for the job's client and token);
+  // LevelDone: the answer of a read at the next level (below_reads_, with what it cost there).
+  enum class JobKind : uint8_t { Read, Write, Fill, DramRead, DramWrite, DramDone, LevelDone };
   // A DRAM access in flight under the approximately-timed protocol (DramRead: its reader).
   struct BelowTransaction : tlm::tlm_generic_payload {
     ReadClient* client = nullptr;
@@ -221,12 +223,17 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
                                      sc_core::sc_time& delay);
   void below_done(BelowTransaction& t, Cycle ready);  // a read's data at `ready`
-  // A read below (below_reads_) answered: its data at `ready`, a DramDone job.
-  void answer_below(uint32_t read, Cycle ready);
-  // What the memory below answers (a QueuedMemory, or the next level's instance): the pending
-  // read (below_reads_) its token names, with what it cost there.
-  struct MemoryAnswers : ReadClient {
-    explicit MemoryAnswers(SharedLevelsModule& m) : m(m) {}
+  // A read below answered: its data at `ready`, a job of `kind` for (client, token).
+  void answer_below(JobKind kind, ReadClient* client, uint64_t token, Cycle ready);
+  // What the memory below answers, for the pending read (below_reads_) its token names: a
+  // QueuedMemory DRAM, or the next level's instance (with what the read cost there).
+  struct DramAnswers : ReadClient {
+    explicit DramAnswers(SharedLevelsModule& m) : m(m) {}
+    void read_done(uint64_t read, Cycle ready, const ReadCharge& charge) override;
+    SharedLevelsModule& m;
+  };
+  struct LevelAnswers : ReadClient {
+    explicit LevelAnswers(SharedLevelsModule& m) : m(m) {}
     void read_done(uint64_t read, Cycle ready, const ReadCharge& charge) override;
     SharedLevelsModule& m;
   };
@@ -239,7 +246,8 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   uint32_t window_;     // a wake-up at cycle c serves what is dated before c + it (<= lookahead_)
   bool timed_below_ = false;
   QueuedMemory* memory_ = nullptr;  // the memory below, by call (else `out`)
-  MemoryAnswers answers_{*this};
+  DramAnswers dram_answers_{*this};
+  LevelAnswers level_answers_{*this};
   std::vector<BelowRead> below_reads_;
   std::vector<uint32_t> free_below_reads_;
   std::vector<std::unique_ptr<BelowTransaction>> below_pool_;
