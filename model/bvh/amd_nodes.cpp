@@ -5,6 +5,7 @@
 
 #include <fmt/core.h>
 
+#include "model/bvh/bvh_image.h"
 #include "model/bvh/node_format.h"
 #include "traces/error.h"
 
@@ -120,8 +121,26 @@ void encode_amd_box(bool fp16, const WideNode& node, const ChildPlacement& place
       std::memcpy(out + kAmdBoxCoords + 24 * c + 12, hi, 12);
     }
   }
-  // box32 flags: 0 makes no claim that a child's subtree is all opaque or all non-opaque
-  // (VK_BVH_BOX_FLAG_*), so the hardware culls nothing by them; box16 has no flags.
+  // box32 flags: written by set_amd_box_flags() once the leaf records exist; box16 has none.
+}
+
+void set_amd_box_flags(BvhImage& image) {
+  if (image.config.node_format != NodeFormat::AmdBox32) return;
+  uint64_t leaf_offset = image.triangle_base - image.node_base;
+  for (uint32_t n = 0; n < image.node_count; ++n) {
+    uint8_t* node = image.nodes.data() + size_t(n) * image.node_stride;
+    uint32_t flags = 0;
+    for (int c = 0; c < kAmdBoxSlots; ++c) {
+      uint32_t id;
+      std::memcpy(&id, node + 4 * c, 4);
+      if (id == kAmdInvalidNode || (id & 7u) != kAmdTypeTriangle) continue;
+      uint64_t position = ((uint64_t(id) << 3) - leaf_offset) / image.triangle_stride;
+      uint32_t geometry;
+      std::memcpy(&geometry, image.triangle_bytes(uint32_t(position)) + kAmdTriangleGeometry, 4);
+      flags |= ((geometry & kAmdGeometryOpaque) ? kAmdBoxOnlyOpaque : kAmdBoxNoOpaque) << (8 * c);
+    }
+    put32(node + kAmdBox32Flags, flags);
+  }
 }
 
 void decode_amd_box(bool fp16, const uint8_t* bytes, const RecordRegions& regions, NodeView& view) {

@@ -23,6 +23,7 @@
 
 namespace rtsim {
 
+struct BvhImage;
 struct NodeView;
 struct ChildPlacement;
 struct RecordRegions;
@@ -39,9 +40,10 @@ constexpr int kAmdBoxSlots = 4;
 
 // Node types of the id's low bits (bvh.h: radv_bvh_node_*).
 constexpr uint32_t kAmdTypeTriangle = 0, kAmdTypeBox16 = 4, kAmdTypeBox32 = 5, kAmdTypeInstance = 6;
-constexpr uint32_t kAmdInvalidNode = 0xffffffffu;  // RADV_BVH_INVALID_NODE
-constexpr uint32_t kAmdGeometryOpaque = 1u << 31;  // RADV_GEOMETRY_OPAQUE
-constexpr uint32_t kAmdBarycentricsControl = 9;    // radv_encode_triangle_gfx10_3
+constexpr uint32_t kAmdInvalidNode = 0xffffffffu;               // RADV_BVH_INVALID_NODE
+constexpr uint32_t kAmdGeometryOpaque = 1u << 31;               // RADV_GEOMETRY_OPAQUE
+constexpr uint32_t kAmdBarycentricsControl = 9;                 // radv_encode_triangle_gfx10_3
+constexpr uint32_t kAmdBoxOnlyOpaque = 1, kAmdBoxNoOpaque = 2;  // VK_BVH_BOX_FLAG_* (vk_bvh.h)
 // Byte offsets of radv_bvh_triangle_node and radv_bvh_box*_node fields.
 constexpr size_t kAmdTriangleId = 48, kAmdTriangleGeometry = 52, kAmdTriangleControl = 60,
                  kAmdBoxCoords = 16, kAmdBox32Flags = 112;
@@ -55,6 +57,12 @@ uint16_t half_round_up(float value);
 // The id of a record at a byte offset from the level's first node; throws InputError (place
 // "bvh") past the 32-bit offsets of radv's id_to_offset.
 uint32_t amd_node_id(uint64_t offset, uint32_t type);
+
+// box32 `flags`, a byte per child (encode.comp): a triangle child's
+// VK_BVH_BOX_FLAG_ONLY_OPAQUE or _NO_OPAQUE from its triangle node (radv's fetch_child_flags);
+// 0 for inner and instance children, as radv writes without VK_BUILD_FLAG_PROPAGATE_CULL_FLAGS
+// (the build whose triangle `id` is 9). Run on a finished level; others are left alone.
+void set_amd_box_flags(BvhImage& image);
 
 void encode_amd_box(bool fp16, const WideNode& node, const ChildPlacement& placement,
                     const RecordRegions& regions, uint8_t* out);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <glm/common.hpp>
 
+#include "model/bvh/amd_nodes.h"
 #include "model/bvh/binned_sah.h"
 #include "model/bvh/node_format.h"
 #include "model/bvh/node_layout.h"
@@ -134,6 +135,7 @@ BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafR
   image.triangles.assign(size_t(image.triangle_count) * image.triangle_stride, 0);
   for (uint32_t i = 0; i < image.triangle_count; ++i)
     leaves.encode(tri_order[i], image.triangles.data() + size_t(i) * image.triangle_stride);
+  set_amd_box_flags(image);
 
   step("encode");
   image.treelets = treelets.stats;

@@ -15,6 +15,7 @@
 #include "model/bvh/triangle_format.h"
 #include "model/units/traversal.h"
 #include "model_test_util.h"
+#include "tests/alpha_layers.h"
 #include "tests/instanced_world.h"
 
 namespace rtsim {
@@ -95,7 +96,9 @@ TEST(AmdNodes, Box32BytesAreRadvBox32Node) {
       EXPECT_EQ(f32_at(bytes, 16 + 24 * c + 12 + 4 * a), node.child[c].box.hi[a]);
     }
   for (int k = 0; k < 6; ++k) EXPECT_TRUE(std::isnan(f32_at(bytes, 16 + 72 + 4 * k)));
-  for (size_t at = kAmdBox32Flags; at < 128; at += 4) EXPECT_EQ(u32_at(bytes, at), 0u);
+  for (size_t at = kAmdBox32Flags; at < 128; at += 4)
+    EXPECT_EQ(u32_at(bytes, at), 0u)
+        << "flags come with the leaf records (set_amd_box_flags); reserved stays 0";
   // The decoder gets the positions back.
   NodeView view;
   decode_node(NodeFormat::AmdBox32, 4, bytes, view, regions);
@@ -106,6 +109,30 @@ TEST(AmdNodes, Box32BytesAreRadvBox32Node) {
   EXPECT_EQ(view.count[1], 1u);
   EXPECT_EQ(view.index[2], 7u);
   EXPECT_EQ(view.lo[1][1], 0.2f) << "child 1, axis y";
+}
+
+// The flags word of a built level: per triangle child ONLY_OPAQUE or NO_OPAQUE (alpha-tested),
+// 0 for inner children and empty slots.
+TEST(AmdNodes, Box32FlagsMarkEachTriangleChildsOpacity) {
+  TriangleMesh mesh = test::layered(3);  // 6 alpha-tested triangles, then 2 opaque ones
+  BvhImage image = build_bvh_image(mesh, test::amd_config(NodeFormat::AmdBox32));
+  size_t opaque = 0, alpha_tested = 0;
+  for (uint32_t n = 0; n < image.node_count; ++n) {
+    const uint8_t* node = image.node_bytes(n);
+    NodeView view;
+    decode_node(NodeFormat::AmdBox32, 4, node, view, image.regions());
+    uint32_t expected = 0;
+    for (int c = 0; c < 4; ++c) {
+      if (!(view.valid & (1u << c)) || view.count[c] == 0) continue;
+      uint32_t prim = u32_at(image.triangle_bytes(view.index[c]), kAmdTriangleId);
+      bool tested = mesh.alpha->tested(prim);
+      expected |= (tested ? kAmdBoxNoOpaque : kAmdBoxOnlyOpaque) << (8 * c);
+      (tested ? alpha_tested : opaque)++;
+    }
+    EXPECT_EQ(u32_at(node, kAmdBox32Flags), expected) << "node " << n;
+  }
+  EXPECT_EQ(alpha_tested, 6u);
+  EXPECT_EQ(opaque, 2u);
 }
 
 TEST(AmdNodes, Box16BytesAreRadvBox16NodeRoundedOutward) {
