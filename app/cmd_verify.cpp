@@ -178,13 +178,13 @@ void add_bvh_options(CLI::App& cmd, BvhConfig& bvh) {
   cmd.add_option_function<std::string>(
          "--format", [&bvh](const std::string& v) { bvh.node_format = *node_format_from_name(v); },
          "Node format")
-      ->check(CLI::IsMember({"aabb32", "cwbvh8"}))
+      ->check(CLI::IsMember(node_format_names()))
       ->default_str(node_format_name(bvh.node_format));
   cmd.add_option_function<std::string>(
          "--triangles",
          [&bvh](const std::string& v) { bvh.triangle_format = *triangle_format_from_name(v); },
          "Triangle layout")
-      ->check(CLI::IsMember({"raw", "woop"}))
+      ->check(CLI::IsMember(triangle_format_names()))
       ->default_str(triangle_format_name(bvh.triangle_format));
   cmd.add_option_function<std::string>(
          "--layout", [&bvh](const std::string& v) { bvh.node_layout = *node_layout_from_name(v); },
@@ -199,7 +199,8 @@ void add_bvh_options(CLI::App& cmd, BvhConfig& bvh) {
          "What the treelet budget counts")
       ->check(CLI::IsMember({"nodes", "nodes_and_triangles"}))
       ->default_str(treelet_budget_name(bvh.treelet_budget));
-  cmd.add_option("--leaf-size", bvh.max_leaf_size, "Most triangles per leaf (cwbvh8: <= 3)")
+  cmd.add_option("--leaf-size", bvh.max_leaf_size,
+                 "Most triangles per leaf (cwbvh8: <= 3; amd_box32, amd_box16: 1)")
       ->capture_default_str();
   cmd.add_option("--bins", bvh.sah_bins, "SAH bins per axis: 16 or 32")->capture_default_str();
 }

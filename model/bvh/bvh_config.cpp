@@ -3,6 +3,28 @@
 #include <fmt/core.h>
 
 namespace rtsim {
+namespace {
+
+// radv's box nodes have 4 child slots, each pointing at one node or one triangle node.
+std::string amd_problem(const BvhConfig& c) {
+  const char* name = node_format_name(c.node_format);
+  if (c.width > 4)
+    return fmt::format("width is {}: {} nodes hold at most 4 children (set bvh.width = 4)", c.width,
+                       name);
+  if (c.max_leaf_size != 1)
+    return fmt::format(
+        "max_leaf_size is {}: each child of an {} node is one triangle node (set "
+        "bvh.max_leaf_size = 1)",
+        c.max_leaf_size, name);
+  if (c.triangle_format != TriangleFormat::AmdTriangle)
+    return fmt::format(
+        "triangle_format is {}: {} nodes point at amd_tri triangle nodes (set "
+        "bvh.triangle_format = \"amd_tri\")",
+        triangle_format_name(c.triangle_format), name);
+  return {};
+}
+
+}  // namespace
 
 std::string validate(const BvhConfig& c) {
   if (c.sah_bins != 16 && c.sah_bins != 32)
@@ -12,6 +34,10 @@ std::string validate(const BvhConfig& c) {
   if (c.node_format == NodeFormat::Cwbvh8 && c.max_leaf_size > 3)
     return fmt::format("max_leaf_size is {}: cwbvh8 leaves hold at most 3 triangles",
                        c.max_leaf_size);
+  if (is_amd_format(c.node_format)) {
+    std::string problem = amd_problem(c);
+    if (!problem.empty()) return problem;
+  }
   if (!(c.sah_node_cost >= 0.0f && c.sah_node_cost < 1e6f))
     return "sah_node_cost must be a finite value >= 0";
   if (c.width < 2 || c.width > 8) return fmt::format("width is {}: it must be in 2..8", c.width);
@@ -30,11 +56,28 @@ std::string validate(const BvhConfig& c) {
 }
 
 const char* node_format_name(NodeFormat format) {
-  return format == NodeFormat::Cwbvh8 ? "cwbvh8" : "aabb32";
+  switch (format) {
+    case NodeFormat::Cwbvh8: return "cwbvh8";
+    case NodeFormat::AmdBox32: return "amd_box32";
+    case NodeFormat::AmdBox16: return "amd_box16";
+    default: return "aabb32";
+  }
 }
 
 const char* triangle_format_name(TriangleFormat format) {
-  return format == TriangleFormat::Woop ? "woop" : "raw";
+  switch (format) {
+    case TriangleFormat::Woop: return "woop";
+    case TriangleFormat::AmdTriangle: return "amd_tri";
+    default: return "raw";
+  }
+}
+
+std::vector<std::string> node_format_names() {
+  return {"aabb32", "cwbvh8", "amd_box32", "amd_box16"};
+}
+
+std::vector<std::string> triangle_format_names() {
+  return {"raw", "woop", "amd_tri"};
 }
 
 const char* node_layout_name(NodeLayout layout) {
@@ -50,14 +93,15 @@ const char* treelet_budget_name(TreeletBudget budget) {
 }
 
 std::optional<NodeFormat> node_format_from_name(const std::string& name) {
-  if (name == "aabb32") return NodeFormat::Aabb32;
-  if (name == "cwbvh8") return NodeFormat::Cwbvh8;
+  for (NodeFormat f :
+       {NodeFormat::Aabb32, NodeFormat::Cwbvh8, NodeFormat::AmdBox32, NodeFormat::AmdBox16})
+    if (name == node_format_name(f)) return f;
   return std::nullopt;
 }
 
 std::optional<TriangleFormat> triangle_format_from_name(const std::string& name) {
-  if (name == "raw") return TriangleFormat::Raw;
-  if (name == "woop") return TriangleFormat::Woop;
+  for (TriangleFormat f : {TriangleFormat::Raw, TriangleFormat::Woop, TriangleFormat::AmdTriangle})
+    if (name == triangle_format_name(f)) return f;
   return std::nullopt;
 }
 

@@ -6,18 +6,32 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rtsim {
 
 enum class NodeFormat : uint8_t {
   Aabb32,  // uncompressed fp32 child boxes, 64-byte aligned node of 2..8 children
   Cwbvh8,  // Ylitie et al. 2017 compressed 8-wide node: 80 bytes, 8-bit quantized child boxes
+
+  // AMD RDNA2/3 (radv_bvh_box32_node): 128 bytes, 4 children, fp32 boxes
+  AmdBox32,
+  // AMD RDNA2/3 (radv_bvh_box16_node): 64 bytes, 4 children, fp16 boxes rounded outward
+  AmdBox16,
 };
 
 enum class TriangleFormat : uint8_t {
   Raw,   // three fp32 vertices + primitive id: 40 bytes; watertight test (Woop et al. 2013)
   Woop,  // precomputed affine unit-triangle transform + primitive id: 52 bytes (Woop 2004)
+
+  // AMD RDNA2/3 triangle node (radv_bvh_triangle_node): 64 bytes, watertight test
+  AmdTriangle,
 };
+
+// The AMD RDNA2/3 node formats (amd_nodes.h): 4 children, one triangle node per leaf.
+inline bool is_amd_format(NodeFormat format) {
+  return format == NodeFormat::AmdBox32 || format == NodeFormat::AmdBox16;
+}
 
 enum class NodeLayout : uint8_t {
   DepthFirst,    // pre-order (aabb32); sibling groups in depth-first order (cwbvh8)
@@ -39,9 +53,9 @@ enum class Instancing : uint8_t {
 struct BvhConfig {
   Instancing instancing = Instancing::Auto;
   int sah_bins = 16;           // bins per axis of the binned SAH build: 16 or 32
-  int max_leaf_size = 3;       // triangles: most triangles in one leaf (cwbvh8: <= 3)
+  int max_leaf_size = 3;       // triangles: most triangles in one leaf (cwbvh8: <= 3; amd: 1)
   float sah_node_cost = 1.0f;  // SAH cost of a node visit, in triangle tests
-  int width = 8;               // children: most children of one node, 2..8
+  int width = 8;               // children: most children of one node, 2..8 (amd: <= 4)
   NodeFormat node_format = NodeFormat::Aabb32;
   TriangleFormat triangle_format = TriangleFormat::Raw;
   NodeLayout node_layout = NodeLayout::Treelet;
@@ -62,6 +76,8 @@ const char* triangle_format_name(TriangleFormat format);
 const char* node_layout_name(NodeLayout layout);
 const char* treelet_budget_name(TreeletBudget budget);  // nodes, nodes_and_triangles
 const char* instancing_name(Instancing instancing);     // auto, flatten, two_level
+std::vector<std::string> node_format_names();           // every node format, in enum order
+std::vector<std::string> triangle_format_names();       // every triangle format, in enum order
 std::optional<NodeFormat> node_format_from_name(const std::string& name);
 std::optional<TriangleFormat> triangle_format_from_name(const std::string& name);
 std::optional<NodeLayout> node_layout_from_name(const std::string& name);

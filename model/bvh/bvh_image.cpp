@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <glm/common.hpp>
 
+#include "model/bvh/amd_nodes.h"
 #include "model/bvh/binned_sah.h"
 #include "model/bvh/node_format.h"
 #include "model/bvh/node_layout.h"
@@ -119,19 +120,22 @@ BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafR
   image.node_count = static_cast<uint32_t>(order.size());
   image.triangle_count = static_cast<uint32_t>(tri_order.size());
   image.nodes.assign(size_t(image.node_count) * image.node_stride, 0);
+  image.node_base = config.node_base;
+  uint64_t nodes_end = image.node_base + image.nodes.size();
+  image.triangle_base = (nodes_end + config.region_align - 1) & ~(config.region_align - 1);
+  RecordRegions regions = image.regions();
+  regions.instance_leaves = leaves.instances;
   image.node_treelet.resize(image.node_count);
   for (uint32_t i = 0; i < image.node_count; ++i) {
     const WideNode& node = wide.nodes[order[i]];
     encode_node(config.node_format, config.width, node, placement[order[i]],
-                image.nodes.data() + size_t(i) * image.node_stride);
+                image.nodes.data() + size_t(i) * image.node_stride, regions);
     image.node_treelet[i] = node.treelet;
   }
   image.triangles.assign(size_t(image.triangle_count) * image.triangle_stride, 0);
   for (uint32_t i = 0; i < image.triangle_count; ++i)
     leaves.encode(tri_order[i], image.triangles.data() + size_t(i) * image.triangle_stride);
-  image.node_base = config.node_base;
-  uint64_t nodes_end = image.node_base + image.nodes.size();
-  image.triangle_base = (nodes_end + config.region_align - 1) & ~(config.region_align - 1);
+  set_amd_box_flags(image);
 
   step("encode");
   image.treelets = treelets.stats;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "model/bvh/bvh_config.h"
+#include "model/bvh/node_format.h"
 #include "model/bvh/treelets.h"
 #include "traces/ray.h"
 
@@ -54,6 +55,10 @@ struct BvhImage {
   const uint8_t* triangle_bytes(uint32_t position) const {
     return triangles.data() + size_t(position) * triangle_stride;
   }
+  // Where the records lie, for formats whose children are byte offsets (amd_nodes.h).
+  RecordRegions regions() const {
+    return {node_stride, triangle_stride, triangle_base - node_base, false};
+  }
   uint64_t total_bytes() const { return nodes.size() + triangles.size(); }
   uint64_t node_padding_bytes() const { return uint64_t(node_count) * (node_stride - node_size); }
 };
@@ -71,6 +76,7 @@ struct Bvh2;
 struct LeafRecords {
   uint32_t stride = 0;                                      // bytes per record
   std::function<void(uint32_t prim, uint8_t* out)> encode;  // writes record `prim`
+  bool instances = false;  // instance records (a top level), else triangles
 };
 
 // Collapses a binary BVH, forms treelets, orders and encodes its nodes and leaf records (the

@@ -1,5 +1,7 @@
 #include "model/bvh/node_format.h"
 
+#include "model/bvh/amd_nodes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -7,7 +9,9 @@
 namespace rtsim {
 namespace {
 
-void put32(uint8_t* out, uint32_t v) { std::memcpy(out, &v, 4); }
+void put32(uint8_t* out, uint32_t v) {
+  std::memcpy(out, &v, 4);
+}
 
 // Smallest exponent byte whose 255 steps from lo reach hi once rounded to fp32.
 uint8_t grid_exponent(float lo, float hi) {
@@ -94,16 +98,22 @@ void encode_cwbvh8(const WideNode& node, const ChildPlacement& placement, uint8_
 }  // namespace
 
 uint32_t node_stride(NodeFormat format, int width) {
-  if (format == NodeFormat::Cwbvh8) return kCwbvhNodeBytes;
-  return (29u * width + 63u) / 64u * 64u;
+  switch (format) {
+    case NodeFormat::Cwbvh8: return kCwbvhNodeBytes;
+    case NodeFormat::AmdBox32: return kAmdBox32Bytes;
+    case NodeFormat::AmdBox16: return kAmdBox16Bytes;
+    default: return (29u * width + 63u) / 64u * 64u;
+  }
 }
 
 void encode_node(NodeFormat format, int width, const WideNode& node,
-                 const ChildPlacement& placement, uint8_t* out) {
+                 const ChildPlacement& placement, uint8_t* out, const RecordRegions& regions) {
   if (format == NodeFormat::Cwbvh8)
     encode_cwbvh8(node, placement, out);
-  else
+  else if (format == NodeFormat::Aabb32)
     encode_aabb32(width, node, placement, out);
+  else
+    encode_amd_box(format == NodeFormat::AmdBox16, node, placement, regions, out);
 }
 
 }  // namespace rtsim

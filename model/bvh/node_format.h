@@ -5,6 +5,7 @@
 //    Traversal on GPUs Through Compressed Wide BVHs" (HPG 2017): 80 bytes, 8 slots, child boxes
 //    quantized to 8 bits per plane on a per-node power-of-two grid, rounded outward so the
 //    decoded fp32 box always contains the exact one.
+//  - amd_box32, amd_box16: AMD RDNA2/3's 4-wide nodes as Mesa's radv writes them (amd_nodes.h).
 // decode_node() is what the hardware's node decoder computes; it feeds the ray-box unit.
 #pragma once
 
@@ -28,10 +29,19 @@ struct ChildPlacement {
   uint32_t position[kMaxWidth] = {};
 };
 
+// Where a level's records lie, for formats whose children are byte offsets from the level's
+// first node (amd_box32, amd_box16: amd_nodes.h); aabb32 and cwbvh8 ignore it.
+struct RecordRegions {
+  uint32_t node_stride = 0;      // bytes per node record
+  uint32_t leaf_stride = 0;      // bytes per leaf record
+  uint64_t leaf_offset = 0;      // bytes from the first node to the first leaf record
+  bool instance_leaves = false;  // the leaf records are instance records (a top level)
+};
+
 // Writes one node. For cwbvh8 the caller guarantees sibling and triangle contiguity; it throws
 // std::logic_error if they do not hold.
 void encode_node(NodeFormat format, int width, const WideNode& node,
-                 const ChildPlacement& placement, uint8_t* out);
+                 const ChildPlacement& placement, uint8_t* out, const RecordRegions& regions = {});
 
 // A float that may alias the node bytes it is read from.
 using AliasedFloat = float __attribute__((__may_alias__));
@@ -123,11 +133,17 @@ inline void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
   }
 }
 
-inline void decode_node(NodeFormat format, int width, const uint8_t* bytes, NodeView& view) {
+// amd_box32 and amd_box16 (amd_nodes.cpp): child ids back to positions through `regions`.
+void decode_amd_box(bool fp16, const uint8_t* bytes, const RecordRegions& regions, NodeView& view);
+
+inline void decode_node(NodeFormat format, int width, const uint8_t* bytes, NodeView& view,
+                        const RecordRegions& regions = {}) {
   if (format == NodeFormat::Cwbvh8)
     decode_cwbvh8(bytes, view);
-  else
+  else if (format == NodeFormat::Aabb32)
     decode_aabb32(bytes, width, view);
+  else
+    decode_amd_box(format == NodeFormat::AmdBox16, bytes, regions, view);
 }
 
 }  // namespace rtsim

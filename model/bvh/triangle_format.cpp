@@ -1,5 +1,8 @@
 #include "model/bvh/triangle_format.h"
 
+#include "model/bvh/amd_nodes.h"
+#include "traces/alpha.h"
+
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -30,11 +33,20 @@ void woop_rows(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, fl
 }  // namespace
 
 uint32_t triangle_stride(TriangleFormat format) {
-  return format == TriangleFormat::Woop ? kWoopTriangleBytes : kRawTriangleBytes;
+  switch (format) {
+    case TriangleFormat::Woop: return kWoopTriangleBytes;
+    case TriangleFormat::AmdTriangle: return kAmdTriangleBytes;
+    default: return kRawTriangleBytes;
+  }
 }
 
 void encode_triangle(TriangleFormat format, const TriangleMesh& mesh, uint32_t prim, uint8_t* out) {
   glm::vec3 v[3] = {mesh.vertex(prim, 0), mesh.vertex(prim, 1), mesh.vertex(prim, 2)};
+  if (format == TriangleFormat::AmdTriangle) {
+    bool opaque = !mesh.alpha || !mesh.alpha->tested(prim);
+    encode_amd_triangle(&v[0].x, prim, opaque, out);
+    return;
+  }
   if (format == TriangleFormat::Raw) {
     std::memcpy(out, v, 36);
     std::memcpy(out + 36, &prim, 4);

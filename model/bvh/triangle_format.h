@@ -4,6 +4,9 @@
 //  - woop: the precomputed affine map into the unit-triangle space of Woop, "Ray Tracing
 //          Hardware Architecture" (2004), three fp32 rows of 4, then the id: 52 bytes. Cheaper
 //          to test, not watertight, and imprecise far from the origin.
+//  - amd_tri: AMD RDNA2/3's triangle node, radv_bvh_triangle_node (amd_nodes.h): the vertices,
+//          the id at byte 48, opacity and barycentrics control: 64 bytes. Tested watertight, as
+//          raw (AMD does not publish its unit's arithmetic).
 #pragma once
 
 #include <cstdint>

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
+#include "model/bvh/amd_instances.h"
+#include "model/bvh/amd_nodes.h"
 #include "model/bvh/binned_sah.h"
 #include "traces/error.h"
 #include "traces/host_clock.h"
@@ -96,8 +99,21 @@ uint64_t TwoLevelBvh::triangle_count() const {
   return triangles;
 }
 
-InstanceRecord read_instance_record(const BvhImage& top, uint32_t position) {
+uint32_t instance_record_bytes(NodeFormat format) {
+  return is_amd_format(format) ? kAmdInstanceBytes : kInstanceRecordBytes;
+}
+
+uint32_t instance_fetch_bytes(NodeFormat format) {
+  return is_amd_format(format) ? kAmdInstanceFetchBytes : kInstanceRecordBytes;
+}
+
+InstanceRecord read_instance_record(const BvhImage& top, uint32_t position,
+                                    const std::vector<BvhImage>* bottom) {
   const uint8_t* in = top.triangle_bytes(position);
+  if (is_amd_format(top.config.node_format)) {
+    if (!bottom) throw std::logic_error("read_instance_record: amd nodes need the bottom levels");
+    return read_amd_instance(in, *bottom);
+  }
   float xfm[12];
   std::memcpy(xfm, in, sizeof xfm);
   InstanceRecord r;
@@ -154,12 +170,18 @@ BvhImage build_top_level(const std::vector<Instance>& instances,
   for (size_t i = 0; i < instances.size(); ++i) {
     const Instance& inst = instances[i];
     boxes.push_back(world_box(mesh_boxes[inst.mesh], inst.to_world));
-    records.push_back({inverse(inst.to_world), inst.mesh, uint32_t(i), inst.mask});
+    records.push_back({inverse(inst.to_world), inst.mesh, uint32_t(i), inst.mask, inst.to_world});
   }
   Bvh2 top2 = build_binned_sah(boxes, config);
-  LeafRecords instance_records{kInstanceRecordBytes, [&](uint32_t prim, uint8_t* out) {
-                                 encode_instance_record(records[prim], out);
-                               }};
+  bool amd = is_amd_format(config.node_format);
+  LeafRecords instance_records{instance_record_bytes(config.node_format),
+                               [&](uint32_t prim, uint8_t* out) {
+                                 if (amd)
+                                   encode_amd_instance(records[prim], out);
+                                 else
+                                   encode_instance_record(records[prim], out);
+                               },
+                               true};
   BvhImage top = encode_bvh_image(top2, config, instance_records, on_step);
   Bounds world;
   for (const Bounds& b : boxes) world.grow(b);
@@ -202,6 +224,10 @@ TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& 
     out.bottom.push_back(build_bvh_image(mesh, bottom_config, on_step));
     out.bottom.back().treelet_base = treelet_base;
     next = image_end(out.bottom.back());
+  }
+  if (is_amd_format(config.node_format)) {
+    link_amd_instances(out.top, out.bottom);
+    for (BvhImage& top : out.frame_tops) link_amd_instances(top, out.bottom);
   }
   return out;
 }

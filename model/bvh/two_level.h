@@ -4,7 +4,8 @@
 // configured node format, with treelets; one address space holds them in this order: TLAS
 // nodes, instance records, then each BLAS's nodes and triangles (each region aligned to
 // region_align). Unique geometry is held once, however many instances place it.
-// Instance record (kInstanceRecordBytes): the world-to-object transform as 3x4 fp32 (the
+// Instance record (kInstanceRecordBytes; amd formats: radv's 128-byte instance node,
+// amd_instances.h): the world-to-object transform as 3x4 fp32 (the
 // linear part's columns, then the offset: 48 bytes), the BLAS index, the instance id, the
 // visibility mask (one byte), padding.
 // Animated instances (traces/instance_settings.h): each frame has its own top level over the
@@ -29,7 +30,13 @@ struct InstanceRecord {
   Transform to_object;
   uint32_t blas = 0, instance = 0;
   uint8_t mask = kAllInstances;
+  Transform to_world;  // kept by amd instance nodes only (amd_instances.h)
 };
+
+// Bytes of one instance record of a top level in this node format (amd: radv's instance node),
+// and the bytes an instance step reads of it.
+uint32_t instance_record_bytes(NodeFormat format);
+uint32_t instance_fetch_bytes(NodeFormat format);
 
 // What building one frame's top level took: the figures a BVH-builder unit would need.
 struct TopLevelBuild {
@@ -100,8 +107,10 @@ inline uint32_t node_treelet(const BvhImage& level, uint32_t position) {
                                     : level.treelet_base + level.node_treelet[position];
 }
 
-// Reads the instance record at a position of the top level's leaf records.
-InstanceRecord read_instance_record(const BvhImage& top, uint32_t position);
+// Reads the instance record at a position of the top level's leaf records; amd instance nodes
+// name their BLAS by address and need the bottom levels (else std::logic_error).
+InstanceRecord read_instance_record(const BvhImage& top, uint32_t position,
+                                    const std::vector<BvhImage>* bottom = nullptr);
 
 // Whether config.instancing asks for two levels over this geometry (auto: a mesh is placed
 // more than once).

@@ -377,12 +377,14 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.bvh.width =
       int(bvh.integer("width", uint64_t(c.bvh.width), "children", "most children of a node", 2, 8));
   std::string format = bvh.text("node_format", node_format_name(c.bvh.node_format),
-                                "node encoding: fp32 boxes, or compressed 8-wide (Ylitie 2017)",
-                                {"aabb32", "cwbvh8"});
+                                "node encoding: fp32 boxes, compressed 8-wide (Ylitie 2017), or "
+                                "AMD RDNA2/3's 4-wide fp32 or fp16 nodes (Mesa radv)",
+                                node_format_names());
   c.bvh.node_format = *node_format_from_name(format);
   std::string triangles =
       bvh.text("triangle_format", triangle_format_name(c.bvh.triangle_format),
-               "triangle encoding: raw vertices or Woop transform", {"raw", "woop"});
+               "triangle encoding: raw vertices, Woop transform, or AMD's triangle node",
+               triangle_format_names());
   c.bvh.triangle_format = *triangle_format_from_name(triangles);
   std::string layout =
       bvh.text("layout", node_layout_name(c.bvh.node_layout), "node order in memory",

@@ -263,6 +263,8 @@ Json bvh_json(const BvhView& bvh) {
             {"treelets", top.treelets.count},
             {"treelet_sizes", treelet_sizes_json(top.treelets)},
             {"bytes", top.total_bytes()},
+            {"node_bytes", top.node_size},
+            {"leaf_bytes", top.triangle_stride},
             {"node_padding_bytes", top.node_padding_bytes()}};
   // The top levels: frame 0's, and with moving instances each later frame's, which a builder
   // writes anew every frame.
@@ -277,8 +279,11 @@ Json bvh_json(const BvhView& bvh) {
     top_padding += t->node_padding_bytes();
     per_frame.push_back({{"nodes_written", t->node_count}, {"bytes_written", t->total_bytes()}});
   }
-  Json top_json = {
-      {"nodes", top_nodes}, {"bytes", top_bytes}, {"treelets", bvh.bottom->front().treelet_base}};
+  Json top_json = {{"nodes", top_nodes},
+                   {"bytes", top_bytes},
+                   {"treelets", bvh.bottom->front().treelet_base},
+                   {"node_bytes", top.node_size},
+                   {"leaf_bytes", top.triangle_stride}};
   if (bvh.frame_tops) top_json["per_frame"] = per_frame;
   uint64_t nodes = 0, triangles = 0, bytes = 0, padding = 0;
   for (const BvhImage& b : *bvh.bottom) {
@@ -294,6 +299,8 @@ Json bvh_json(const BvhView& bvh) {
           {"instances", top.triangle_count},
           {"treelets", bvh.treelet_count()},
           {"bytes", bytes + top_bytes},
+          {"node_bytes", bvh.bottom->front().node_size},
+          {"leaf_bytes", bvh.bottom->front().triangle_stride},
           {"node_padding_bytes", padding + top_padding},
           {"top", top_json},
           {"bottom",

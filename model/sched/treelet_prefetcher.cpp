@@ -34,7 +34,8 @@ TreeletFootprints treelet_footprints(BvhView bvh) {
     for (uint32_t position = 0; position < image.node_count; ++position) {
       uint32_t t = node_treelet(image, position);
       add_range(nodes[t], image.node_address(position), image.node_size);
-      decode_node(image.config.node_format, image.config.width, image.node_bytes(position), view);
+      decode_node(image.config.node_format, image.config.width, image.node_bytes(position), view,
+                  image.regions());
       for (int s = 0; s < view.slots; ++s)
         if ((view.valid >> s & 1) && view.count[s] > 0)
           add_range(triangles[t], image.triangle_address(view.index[s]),

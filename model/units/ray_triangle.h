@@ -8,6 +8,8 @@
 //    digits on sliver triangles.
 //  - woop records: the unit-triangle test of Woop, "Ray Tracing Hardware Architecture" (2004)
 //    on a precomputed affine map; not watertight.
+//  - amd_tri records (radv_bvh_triangle_node): the watertight test on their vertices; the id
+//    is at byte 48.
 // A hit needs tmin <= t <= tmax (t in the units of the prepared ray).
 #pragma once
 
@@ -96,7 +98,9 @@ inline bool intersect_triangle(TriangleFormat format, const PreparedRay& ray, co
   std::memcpy(values, bytes, woop ? 48 : 36);
   bool found = woop ? intersect_woop(ray, values, tmin, tmax, hit)
                     : intersect_watertight(ray, values, tmin, tmax, hit);
-  if (found) std::memcpy(&prim, bytes + (woop ? 48 : 36), 4);
+  // The id follows the vertices (raw), the rows (woop) or sits at byte 48 (amd_tri).
+  if (found)
+    std::memcpy(&prim, bytes + (woop || format == TriangleFormat::AmdTriangle ? 48 : 36), 4);
   return found;
 }
 

@@ -94,7 +94,8 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
     out.access_count = 1;
   }
   NodeView node;
-  decode_node(level.config.node_format, level.config.width, level.node_bytes(entry.index), node);
+  decode_node(level.config.node_format, level.config.width, level.node_bytes(entry.index), node,
+              level.regions());
   // Test every child box.
   float tnear[kMaxWidth];
   uint32_t hits = intersect_children(s.ray, node, s.t_hit, tnear);

@@ -11,12 +11,12 @@ StepResult TraversalUnit::visit_instance(TraversalState& s, const StackEntry& en
   StepResult out{StepKind::Instance, static_cast<uint32_t>(s.accesses.size()), 0, 1, 0};
   // Fetch the instance record.
   out.fetch_address = s.top->triangle_address(entry.index);
-  out.fetch_bytes = kInstanceRecordBytes;
+  out.fetch_bytes = instance_fetch_bytes(s.top->config.node_format);
   if (config_.record_accesses) {
-    record(s, out.fetch_address, kInstanceRecordBytes, AccessKind::Instance);
+    record(s, out.fetch_address, out.fetch_bytes, AccessKind::Instance);
     out.access_count = 1;
   }
-  InstanceRecord r = read_instance_record(*s.top, entry.index);
+  InstanceRecord r = read_instance_record(*s.top, entry.index, bvh_.bottom);
   if ((r.mask & s.mask) == 0) {
     out.tests = 0;
     return out;

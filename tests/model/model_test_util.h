@@ -39,14 +39,21 @@ inline BvhConfig config(NodeFormat format, int width, int leaf = 3) {
   return c;
 }
 
-// Every node format at every width of the issue.
-// Every node format and width, and compressed nodes padded to 128-byte lines.
+// AMD RDNA2/3 nodes (amd_box32, amd_box16): 4 wide, one triangle node per leaf.
+inline BvhConfig amd_config(NodeFormat format) {
+  BvhConfig c = config(format, 4, 1);
+  c.triangle_format = TriangleFormat::AmdTriangle;
+  return c;
+}
+
+// Every node format and width, compressed nodes padded to 128-byte lines, and AMD's formats.
 inline std::vector<BvhConfig> all_configs() {
   std::vector<BvhConfig> out;
   for (NodeFormat f : {NodeFormat::Aabb32, NodeFormat::Cwbvh8})
     for (int w : {2, 4, 6, 8}) out.push_back(config(f, w));
   out.push_back(config(NodeFormat::Cwbvh8, 8));
   out.back().node_align = 128;
+  for (NodeFormat f : {NodeFormat::AmdBox32, NodeFormat::AmdBox16}) out.push_back(amd_config(f));
   return out;
 }
 

@@ -58,6 +58,26 @@ TEST_F(VerifyCli, PassesForEveryFormatAndWidth) {
     }
 }
 
+// AMD's radv formats (model/bvh/amd_nodes.h) pass on the hard cases; without the 4-wide,
+// one-triangle-leaf settings they need, verify names the missing setting in one line, exit 2.
+TEST_F(VerifyCli, PassesForAmdFormatsAndNamesWhatTheyNeed) {
+  for (std::string format : {"amd_box32", "amd_box16"}) {
+    auto r = test::run_rtsim("verify " + stream_ + " --format " + format +
+                             " --width 4 --leaf-size 1 --triangles amd_tri");
+    EXPECT_EQ(r.exit_code, 0) << format << "\n" << r.out << r.err;
+    EXPECT_NE(r.out.find("bvh4 " + format + " amd_tri"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("OK: "), std::string::npos) << r.out;
+    r = test::run_rtsim("verify " + stream_ + " --format " + format + " --width 4 --leaf-size 1");
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find("triangle_format is raw: " + format), std::string::npos) << r.err;
+  }
+  auto r = test::run_rtsim("verify " + stream_ + " --format amd_box32");
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.err.find("width is 8: amd_box32 nodes hold at most 4 children"), std::string::npos)
+      << r.err;
+}
+
 TEST_F(VerifyCli, PrintsSummaryCountersAndHexMismatches) {
   auto r = test::run_rtsim("verify " + stream_ + " --layout breadth-first --max-print 3");
   EXPECT_EQ(r.exit_code, 0) << r.err;

@@ -126,5 +126,25 @@ TEST(SimInstancing, AFlatSceneOnTwoLevelsIsOneInstance) {
   EXPECT_GT(entered, 0.5) << "rays that meet the scene's box enter it";
 }
 
+// stats.json's bvh section names the bytes of one node and one leaf record of each level: rtsim's
+// aabb32 and raw records on one level, AMD's radv records (amd_nodes.h) on two, where the timed
+// run also finds Embree's answers.
+TEST(SimInstancing, TheBvhSectionGivesNodeAndLeafBytes) {
+  Scene scene = instanced_scene(test::instanced_world());
+  std::vector<Ray> rays = world_rays(1500, 6);
+  nlohmann::json flat = test::simulate(machine("depth_first", "flatten"), scene, rays);
+  EXPECT_EQ(flat["bvh"]["node_bytes"], 256) << "bvh8 aabb32";
+  EXPECT_EQ(flat["bvh"]["leaf_bytes"], 40) << "raw triangle";
+  HwConfig amd =
+      load_hw_config("", {"bvh.instancing=\"two_level\"", "bvh.node_format=\"amd_box16\"",
+                          "bvh.width=4", "bvh.max_leaf_size=1", "bvh.triangle_format=\"amd_tri\""});
+  nlohmann::json two = test::simulate(amd, scene, rays, true);
+  EXPECT_EQ(two["verify"]["unexplained"], 0) << two["verify"].dump();
+  EXPECT_EQ(two["bvh"]["node_bytes"], 64) << "radv_bvh_box16_node";
+  EXPECT_EQ(two["bvh"]["leaf_bytes"], 64) << "radv_bvh_triangle_node";
+  EXPECT_EQ(two["bvh"]["top"]["node_bytes"], 64);
+  EXPECT_EQ(two["bvh"]["top"]["leaf_bytes"], 128) << "radv_bvh_instance_node";
+}
+
 }  // namespace
 }  // namespace rtsim
