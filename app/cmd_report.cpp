@@ -15,11 +15,11 @@
 namespace rtsim::app {
 
 void add_report_command(CLI::App& app, int& exit_code) {
-  auto* cmd =
-      app.add_subcommand("report", "Write the report of a run, sim or sweep folder");
+  auto* cmd = app.add_subcommand("report", "Write the report of a run, sim or sweep folder");
   auto dir = std::make_shared<std::string>();
   auto no_charts = std::make_shared<bool>(false);
-  cmd->add_option("folder", *dir, "Run folder (report.json), sim folder (stats.json) or sweep folder (sweep.json)")
+  cmd->add_option("folder", *dir,
+                  "Run folder (report.json), sim folder (stats.json) or sweep folder (sweep.json)")
       ->required();
   cmd->add_flag("--no-charts", *no_charts, "Write the pages without running Python");
   cmd->callback([dir, no_charts, &exit_code] {

@@ -22,7 +22,6 @@
 #include "model/config/hw_config.h"
 #include "model/sc/sim_report.h"
 #include "model/sc/stream_sim.h"
-#include "traces/host_clock.h"
 #include "traces/error.h"
 #include "traces/output_file.h"
 #include "workloads/scene.h"
@@ -166,7 +165,8 @@ int run_sim(const SimOptions& o) {
     throw InputError("sim: STREAM and -o DIR are required (or --list-keys)");
   std::vector<NamedPath> outputs;
   for (const std::string& file : sim_result_files(o.output)) outputs.push_back({"-o", file});
-  for (const char* name : {"fidelity.json", "sim.json"}) outputs.push_back({"-o", o.output + "/" + name});
+  for (const char* name : {"fidelity.json", "sim.json"})
+    outputs.push_back({"-o", o.output + "/" + name});
   refuse_overwriting({{"the stream", o.stream},
                       {"--config", o.config},
                       {"--scene", is_builtin_scene(o.scene) ? "" : o.scene}},
@@ -185,7 +185,8 @@ int run_sim(const SimOptions& o) {
   const HwConfig& config = job.config;
   if (!o.quiet) {
     fmt::print(
-        "sim        {} rays{} of {} on '{}' ({}, {} RT units, {})\n", rays_of(reader.header(), types),
+        "sim        {} rays{} of {} on '{}' ({}, {} RT units, {})\n",
+        rays_of(reader.header(), types),
         o.ray_types.empty() ? "" : " (" + fmt::format("{}", fmt::join(o.ray_types, ", ")) + ")",
         o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
         describe(config.bvh));
@@ -205,10 +206,11 @@ int run_sim(const SimOptions& o) {
   const nlohmann::ordered_json& doc = result.stats;
   if (!o.quiet) {
     print_summary(doc);
-    fmt::print("host       {:.2f} s, {:.0f} rays/s; results in {} (rtsim report {} writes its "
-               "report)\n",
-               doc["host"]["seconds"].get<double>(), doc["host"]["rays_per_second"].get<double>(),
-               o.output, o.output);
+    fmt::print(
+        "host       {:.2f} s, {:.0f} rays/s; results in {} (rtsim report {} writes its "
+        "report)\n",
+        doc["host"]["seconds"].get<double>(), doc["host"]["rays_per_second"].get<double>(),
+        o.output, o.output);
   }
   const auto& v = doc["verify"];
   if (v.contains("skipped")) return 0;
@@ -216,11 +218,10 @@ int run_sim(const SimOptions& o) {
   if (!o.quiet || unexplained)
     fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n",
                v["rays"].get<uint64_t>(), v["mismatches"].get<uint64_t>(), unexplained);
-  for (const auto& m : v["unexplained_examples"])
+  for (const Mismatch& m : result.unexplained)
     fmt::print("unexplained ray {} ({}): Embree triangle {} t={}, model triangle {} t={}\n",
-               m["ray"].get<uint64_t>(), m["class"].get<std::string>(),
-               m["embree_prim"].dump(), m["embree_t"].dump(), m["model_prim"].dump(),
-               m["model_t"].dump());
+               m.index, ray_type_name(m.ray.type), m.embree.prim, m.embree.t, m.model_prim,
+               m.model.t);
   return unexplained > 0 ? 1 : 0;
 }
 

@@ -77,10 +77,17 @@ std::string rays_of(const Json& r) {
 }  // namespace
 
 const std::vector<std::string>& default_compare_metrics() {
-  static const std::vector<std::string> names{
-      "cycles",         "mrays_per_second", "dram_bytes_per_ray", "l1_hit_rate",
-      "l2_hit_rate",    "nodes_per_ray",    "triangles_per_ray",  "on_chip_bytes",
-      "energy_nj_per_ray", "area_mm2",      "unexplained"};
+  static const std::vector<std::string> names{"cycles",
+                                              "mrays_per_second",
+                                              "dram_bytes_per_ray",
+                                              "l1_hit_rate",
+                                              "l2_hit_rate",
+                                              "nodes_per_ray",
+                                              "triangles_per_ray",
+                                              "on_chip_bytes",
+                                              "energy_nj_per_ray",
+                                              "area_mm2",
+                                              "unexplained"};
   return names;
 }
 
@@ -91,13 +98,13 @@ Json compare_runs(const std::vector<std::string>& args, const std::vector<std::s
     if (fs::exists(arg + "/sweep.json"))
       add_sweep_points(arg, runs, notes);
     else
-      runs.push_back({fs::path(arg).lexically_normal().filename().string(), arg,
-                      read_run_report(arg)});
+      runs.push_back(
+          {fs::path(arg).lexically_normal().filename().string(), arg, read_run_report(arg)});
   }
   if (runs.size() < 2)
-    throw InputError(fmt::format(
-        "compare: {} run(s) to compare; give at least two (run, sim or sweep folders)",
-        runs.size()));
+    throw InputError(
+        fmt::format("compare: {} run(s) to compare; give at least two (run, sim or sweep folders)",
+                    runs.size()));
   std::vector<Json> reports;
   for (const Run& r : runs) reports.push_back(r.report);
   std::vector<std::string> metrics = expand_metric_names(
@@ -126,10 +133,10 @@ Json compare_runs(const std::vector<std::string>& args, const std::vector<std::s
   }
   for (size_t i = 1; i < runs.size(); ++i)
     if (list[i]["rays"] != list[0]["rays"])
-      notes.push_back(fmt::format("{} reads other rays than A ({}; A: {}): its ratios compare the "
-                                  "workloads as well as the hardware",
-                                  letter(i), list[i]["rays"].get<std::string>(),
-                                  list[0]["rays"].get<std::string>()));
+      notes.push_back(fmt::format(
+          "{} reads other rays than A ({}; A: {}): its ratios compare the "
+          "workloads as well as the hardware",
+          letter(i), list[i]["rays"].get<std::string>(), list[0]["rays"].get<std::string>()));
   Json doc;
   doc["schema"] = kCompareSchema;
   doc["generator"] = "rtsim " RTSIM_VERSION;

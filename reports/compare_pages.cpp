@@ -61,7 +61,7 @@ std::vector<Line> lines(const Json& doc) {
 // A number cell with its compare.json key and raw value; kind "better" or "worse" colours it.
 std::string cell(const std::string& key, const Json& value, const std::string& shown,
                  const std::string& kind) {
-  std::string cls = value.is_null()      ? " class=\"na\""
+  std::string cls = value.is_null()    ? " class=\"na\""
                     : kind == "better" ? " class=\"pass\""
                     : kind == "worse"  ? " class=\"fail\""
                                        : "";
@@ -69,10 +69,19 @@ std::string cell(const std::string& key, const Json& value, const std::string& s
                      html_escape(value.dump()), cls, html_escape(shown));
 }
 
+// The run's --set overrides, "KEY=VALUE, ...", or "none".
+std::string sets_of(const Json& run) {
+  std::string out;
+  for (const Json& set : run["sets"]) out += (out.empty() ? "" : ", ") + set.get<std::string>();
+  return out.empty() ? "none" : out;
+}
+
 std::string run_line(const Json& run) {
-  return fmt::format("{}: {} on '{}', {} fidelity; {}", run["name"].get<std::string>(),
+  std::string sets = sets_of(run);
+  return fmt::format("{}: {} on '{}'{}, {} fidelity; {}", run["name"].get<std::string>(),
                      show(run["workload"], Style::Text), show(run["hardware"], Style::Text),
-                     show(run["level"], Style::Text), run["rays"].get<std::string>());
+                     sets == "none" ? "" : " with " + sets, show(run["level"], Style::Text),
+                     run["rays"].get<std::string>());
 }
 
 std::string limit_of(const Json& run) {
@@ -84,19 +93,21 @@ std::string limit_of(const Json& run) {
 }  // namespace
 
 std::string compare_text(const Json& doc) {
-  std::string out = fmt::format("compare    {} runs; ratios are to A, the first\n",
-                                doc["runs"].size());
+  std::string out =
+      fmt::format("compare    {} runs; ratios are to A, the first\n", doc["runs"].size());
   for (const Json& run : doc["runs"])
     out += fmt::format("{:<10} {}\n", run["label"].get<std::string>(), run_line(run));
   std::vector<Line> rows = lines(doc);
   std::vector<size_t> width(rows[0].cells.size() + 1, 0);
   for (const Line& l : rows) {
     width[0] = std::max(width[0], l.title.size());
-    for (size_t c = 0; c < l.cells.size(); ++c) width[c + 1] = std::max(width[c + 1], l.cells[c].size());
+    for (size_t c = 0; c < l.cells.size(); ++c)
+      width[c + 1] = std::max(width[c + 1], l.cells[c].size());
   }
   for (const Line& l : rows) {
     out += fmt::format("{:<{}}", l.title, width[0]);
-    for (size_t c = 0; c < l.cells.size(); ++c) out += fmt::format("  {:>{}}", l.cells[c], width[c + 1]);
+    for (size_t c = 0; c < l.cells.size(); ++c)
+      out += fmt::format("  {:>{}}", l.cells[c], width[c + 1]);
     out += "\n";
   }
   for (const Json& run : doc["runs"])
@@ -138,7 +149,7 @@ std::string compare_html(const Json& doc) {
                     "green: better than A, red: worse</p>\n";
   out +=
       "<section id=\"runs\">\n<h2>Runs</h2>\n<table>\n<tr><th>run</th><th>folder</th>"
-      "<th>workload</th><th>hardware</th><th>fidelity</th><th>rays</th>"
+      "<th>workload</th><th>hardware</th><th>--set</th><th>fidelity</th><th>rays</th>"
       "<th>what limits it</th></tr>\n";
   for (size_t i = 0; i < runs.size(); ++i) {
     std::string p = "runs." + std::to_string(i);
@@ -146,8 +157,10 @@ std::string compare_html(const Json& doc) {
            html_escape(runs[i]["label"].get<std::string>() + ": " +
                        runs[i]["name"].get<std::string>()) +
            "</th>";
-    for (const char* key : {".path", ".workload", ".hardware", ".level", ".rays"})
+    for (const char* key : {".path", ".workload", ".hardware"})
       out += html_cell(doc, p + key, Style::Text);
+    out += cell(p + ".sets", runs[i]["sets"], sets_of(runs[i]), "");
+    for (const char* key : {".level", ".rays"}) out += html_cell(doc, p + key, Style::Text);
     out += "<td style=\"text-align:left\">" + html_escape(limit_of(runs[i])) + "</td></tr>\n";
   }
   out += "</table>\n</section>\n<section id=\"metrics\">\n<h2>Metrics</h2>\n<table>\n";

@@ -42,6 +42,7 @@ RunResult run_cycle(const RunJob& job, const Scene& scene, BvhView bvh) {
                   job.ray_types};
   result.stats = write_sim_results(job.output, sim.simulator(), info);
   result.collected = collector.to_json();
+  if (sim.verify_report()) result.unexplained = sim.verify_report()->unexplained_examples;
   write_file_atomic(job.output + "/fidelity.json", result.fidelity.to_json().dump(2) + "\n");
   return result;
 }

@@ -12,6 +12,7 @@
 
 #include "model/config/hw_config.h"
 #include "model/fidelity/level_runner.h"
+#include "model/verify/verifier.h"
 #include "traces/stream.h"
 
 namespace rtsim::reports {
@@ -33,10 +34,11 @@ RayTypeMask selected_ray_types(const std::vector<std::string>& names, const Stre
                                const std::string& what, const std::string& stream);
 
 struct RunResult {
-  FidelityResult fidelity;           // every level
-  nlohmann::ordered_json stats;      // cycle level: the stats document; null otherwise
-  nlohmann::ordered_json collected;  // cycle level: RunCollector::to_json(); null otherwise
-  bool stalled = false;              // the model stopped making progress
+  FidelityResult fidelity;            // every level
+  nlohmann::ordered_json stats;       // cycle level: the stats document; null otherwise
+  nlohmann::ordered_json collected;   // cycle level: RunCollector::to_json(); null otherwise
+  std::vector<Mismatch> unexplained;  // cycle level, verified: the first unexplained mismatches
+  bool stalled = false;               // the model stopped making progress
   std::string stall_message;
 };
 

@@ -14,12 +14,9 @@ using Json = nlohmann::ordered_json;
 
 void write_sim_run(const std::string& dir, const SimRunRecord& record, const TraceOutcome& trace,
                    const RunResult& run) {
-  Json doc = {{"schema", kSimRunSchema},
-              {"generator", "rtsim " RTSIM_VERSION},
-              {"command", record.command},
-              {"config_file", record.config_file},
-              {"sets", record.sets},
-              {"trace", trace.summary},
+  Json doc = {{"schema", kSimRunSchema},   {"generator", "rtsim " RTSIM_VERSION},
+              {"command", record.command}, {"config_file", record.config_file},
+              {"sets", record.sets},       {"trace", trace.summary},
               {"collected", run.collected}};
   write_file_atomic(dir + "/sim.json", doc.dump(2) + "\n");
 }
@@ -60,7 +57,8 @@ Json sim_folder_report(const std::string& dir) {
   try {
     run.fidelity = FidelityResult::from_json(fidelity);
   } catch (const std::exception& e) {
-    throw_input_error(dir + "/fidelity.json", "", std::string("not a fidelity result: ") + e.what());
+    throw_input_error(dir + "/fidelity.json", "",
+                      std::string("not a fidelity result: ") + e.what());
   }
   run.stats = stats;
   run.collected = sim["collected"];
@@ -83,7 +81,8 @@ Json read_run_report(const std::string& dir) {
     return report;
   }
   if (is_sim_folder(dir)) return sim_folder_report(dir);
-  throw_input_error(dir, "", "no report.json, stats.json or sweep.json (not a run, sim or sweep folder)");
+  throw_input_error(dir, "",
+                    "no report.json, stats.json or sweep.json (not a run, sim or sweep folder)");
 }
 
 }  // namespace rtsim::reports

@@ -117,8 +117,8 @@ Json stream_summary(const std::string& stream) {
           {"surfels", Json()},
           {"rays", h.total_rays()},
           {"passes", Json::array()},
-          {"notes", {"read from the ray stream " + stream +
-                     ": its header records no passes, triangles or lights"}},
+          {"notes", Json::array({"read from the ray stream " + stream +
+                                 ": its header records no passes, triangles or lights"})},
           {"stream", stream}};
 }
 

@@ -27,9 +27,9 @@ class Compare : public ::testing::Test {
                                 " --report json -q -o " + dir_ + "/" + name)
                     .exit_code,
                 0);
-    ASSERT_EQ(
-        test::run_rtsim("sim " + dir_ + "/pica.rays" + config + " -q -o " + dir_ + "/sim").exit_code,
-        0);
+    ASSERT_EQ(test::run_rtsim("sim " + dir_ + "/pica.rays" + config + " -q -o " + dir_ + "/sim")
+                  .exit_code,
+              0);
   }
   static std::string dir_;
 };
@@ -37,13 +37,14 @@ std::string Compare::dir_;
 
 TEST_F(Compare, RatiosAreToTheFirstRun) {
   std::string out = dir_ + "/cmp";
-  test::RunResult r = test::run_rtsim("compare " + dir_ + "/four " + dir_ + "/two " + dir_ +
-                                      "/sim --metric cycles,l2_hit_rate,type.*.nodes_per_ray -o " +
-                                      out);
+  test::RunResult r =
+      test::run_rtsim("compare " + dir_ + "/four " + dir_ + "/two " + dir_ +
+                      "/sim --metric cycles,l2_hit_rate,type.*.nodes_per_ray -o " + out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   Json doc = test::read_json(out + "/compare.json");
   ASSERT_EQ(doc["runs"].size(), 3u);
-  Json a = test::read_json(dir_ + "/four/report.json"), b = test::read_json(dir_ + "/two/report.json");
+  Json a = test::read_json(dir_ + "/four/report.json"),
+       b = test::read_json(dir_ + "/two/report.json");
   double ca = a["timing"]["cycles"].get<double>(), cb = b["timing"]["cycles"].get<double>();
   EXPECT_EQ(doc["runs"][1]["metrics"]["cycles"].get<double>(), cb);
   EXPECT_DOUBLE_EQ(doc["runs"][1]["ratios"]["cycles"].get<double>(), cb / ca);
@@ -65,8 +66,9 @@ TEST_F(Compare, RatiosAreToTheFirstRun) {
     size_t run = std::stoul(key.substr(5, key.find('.', 5) - 5));
     std::string rest = key.substr(key.find('.', 5) + 1);
     size_t dot = rest.find('.');
-    const Json& at = dot == std::string::npos ? doc["runs"][run][rest]
-                                              : doc["runs"][run][rest.substr(0, dot)][rest.substr(dot + 1)];
+    const Json& at = dot == std::string::npos
+                         ? doc["runs"][run][rest]
+                         : doc["runs"][run][rest.substr(0, dot)][rest.substr(dot + 1)];
     EXPECT_EQ(c.value, at.dump()) << key;
     ++cells;
   }

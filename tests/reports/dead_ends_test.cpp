@@ -22,11 +22,10 @@ class StreamRuns : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     dir_ = test::fresh_dir("dead-ends");
-    test::RunResult t =
-        test::run_rtsim("trace pica --resolution 32x18 -o " + dir_ + "/pica.rays");
+    test::RunResult t = test::run_rtsim("trace pica --resolution 32x18 -o " + dir_ + "/pica.rays");
     ASSERT_EQ(t.exit_code, 0) << t.err;
-    test::RunResult run = test::run_rtsim("run " + dir_ + "/pica.rays" + mobile() + " -o " +
-                                          dir_ + "/run -q");
+    test::RunResult run =
+        test::run_rtsim("run " + dir_ + "/pica.rays" + mobile() + " -o " + dir_ + "/run -q");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     test::RunResult sim =
         test::run_rtsim("sim " + dir_ + "/pica.rays" + mobile() + " -o " + dir_ + "/sim -q");
@@ -60,8 +59,8 @@ TEST_F(StreamRuns, FromTraceTakesAStreamToo) {
 }
 
 TEST_F(StreamRuns, AStreamCannotBeRetracedOrGivenTwice) {
-  test::RunResult r = test::run_rtsim("run " + dir_ + "/pica.rays --resolution 64x36 -o " + dir_ +
-                                      "/refused");
+  test::RunResult r =
+      test::run_rtsim("run " + dir_ + "/pica.rays --resolution 64x36 -o " + dir_ + "/refused");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--resolution cannot change it"), std::string::npos) << r.err;
   r = test::run_rtsim("run " + dir_ + "/pica.rays --from-trace " + dir_ + "/pica.rays -o " + dir_ +
@@ -121,8 +120,8 @@ TEST_F(StreamRuns, AnotherSimRemovesTheEarlierReport) {
 TEST_F(StreamRuns, AChartThatFailsIsExitOneWithTheReason) {
   std::string run = dir_ + "/charts";
   fs::copy(dir_ + "/run", run, fs::copy_options::recursive);
-  test::RunResult r = test::run_program("RTSIM_PYTHON=/nonexistent/python3 " RTSIM_EXE,
-                                        "report " + run);
+  test::RunResult r =
+      test::run_program("RTSIM_PYTHON=/nonexistent/python3 " RTSIM_EXE, "report " + run);
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_NE(r.err.find("rtsim: charts failed: /nonexistent/python3 not found"), std::string::npos)
       << r.err;
