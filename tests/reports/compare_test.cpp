@@ -6,7 +6,9 @@
 
 #include <fmt/core.h>
 
+#include "reports/metrics.h"
 #include "tests/reports/report_test_util.h"
+#include "traces/error.h"
 
 namespace rtsim {
 namespace {
@@ -34,6 +36,26 @@ class Compare : public ::testing::Test {
   static std::string dir_;
 };
 std::string Compare::dir_;
+
+TEST(CompareMetrics, TypeWildcardsExpandOverTheRunsTypesAndUnknownNamesAreRefused) {
+  Json a = {{"workload", {{"rays_per_type", {{"camera", 10}, {"shadow", 5}}}}}};
+  Json b = {{"workload", {{"rays_per_type", {{"camera", 10}, {"ao", 2}}}}}};
+  std::vector<std::string> names =
+      reports::expand_metric_names({"cycles", "type.*.l1_hit_rate"}, {a, b}, "--metric");
+  EXPECT_EQ(names, (std::vector<std::string>{"cycles", "type.camera.l1_hit_rate",
+                                             "type.shadow.l1_hit_rate", "type.ao.l1_hit_rate"}));
+  try {
+    reports::expand_metric_names({"type.*.l1_hit_rat"}, {a}, "--metric");
+    FAIL() << "a misspelt metric must be refused";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--metric type.*.l1_hit_rat: unknown metric"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(reports::metric_style("type.ao.l2_hit_rate"), reports::Style::Percent);
+  EXPECT_EQ(reports::metric_style("cycles"), reports::Style::Integer);
+  EXPECT_EQ(reports::metric_style("dram_bytes_per_ray"), reports::Style::Real);
+}
 
 TEST_F(Compare, RatiosAreToTheFirstRun) {
   std::string out = dir_ + "/cmp";

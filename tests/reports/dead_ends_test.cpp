@@ -24,8 +24,8 @@ class StreamRuns : public ::testing::Test {
     dir_ = test::fresh_dir("dead-ends");
     test::RunResult t = test::run_rtsim("trace pica --resolution 32x18 -o " + dir_ + "/pica.rays");
     ASSERT_EQ(t.exit_code, 0) << t.err;
-    test::RunResult run =
-        test::run_rtsim("run " + dir_ + "/pica.rays" + mobile() + " -o " + dir_ + "/run -q");
+    test::RunResult run = test::run_rtsim("run " + dir_ + "/pica.rays" + mobile() + " -o " + dir_ +
+                                          "/run -q --no-charts");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     test::RunResult sim =
         test::run_rtsim("sim " + dir_ + "/pica.rays" + mobile() + " -o " + dir_ + "/sim -q");
