@@ -15,8 +15,11 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
+// A ratio as 0.812x: three decimals, whole from 100 on, three significant digits below 0.1.
 std::string times(const Json& ratio) {
-  return ratio.is_number() ? fmt::format("{:.3f}x", ratio.get<double>()) : "n/a";
+  if (!ratio.is_number()) return "n/a";
+  double r = ratio.get<double>();
+  return fmt::format(r >= 100 ? "{:.0f}x" : r >= 0.1 ? "{:.3f}x" : "{:.3g}x", r);
 }
 
 // "better" or "worse" than the first run for a ratio of the metric, or "" (neither, or equal).
