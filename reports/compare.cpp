@@ -134,7 +134,7 @@ Json compare_runs(const std::vector<std::string>& args, const std::vector<std::s
   for (size_t i = 1; i < runs.size(); ++i)
     if (list[i]["level"] != list[0]["level"])
       notes.push_back(fmt::format(
-          "{} ran at the {} fidelity level, A at the {}: its ratios "
+          "{} ran at the {} fidelity level and A at the {} level: its ratios "
           "compare the models as well as the hardware",
           letter(i), list[i]["level"].get<std::string>(), list[0]["level"].get<std::string>()));
   for (size_t i = 1; i < runs.size(); ++i)
