@@ -125,6 +125,10 @@ TEST_F(Compare, ASweepComparesItsPointsAndChartsACategoricalKeyAsBars) {
   Json doc = test::read_json(sweep + "/sweep.json");
   EXPECT_TRUE(doc["charts"][0]["available"].get<bool>()) << doc["charts"][0];
   EXPECT_TRUE(fs::exists(sweep + "/" + doc["charts"][0]["file"].get<std::string>()));
+  r = test::run_program("RTSIM_PYTHON=/nonexistent/python3 " RTSIM_EXE, "report " + sweep);
+  EXPECT_EQ(r.exit_code, 1) << "a sweep's charts that fail: " << r.out << r.err;
+  EXPECT_NE(r.err.find("rtsim: charts failed: /nonexistent/python3 not found"), std::string::npos)
+      << r.err;
   r = test::run_rtsim("compare " + sweep + " --metric nodes_per_ray");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("compare    2 runs"), std::string::npos) << r.out;
