@@ -1,5 +1,6 @@
 // rtsim run [WORKLOAD] --config HW.toml -o DIR: the main job. Traces the workload (a spec file,
-// or a built-in scene with its default spec; pica when none is given) into DIR/trace,
+// or a built-in scene with its default spec; pica when none is given) into DIR/trace (a ray
+// stream, WORKLOAD.rays or --from-trace, is taken as it is),
 // simulates it at the chosen fidelity level (the full cycle-approximate model by default,
 // every ray checked against Embree), and writes the report: DIR/report.html (self-contained),
 // DIR/report.md, DIR/report.json, DIR/images/, next to the simulation's own results
@@ -96,7 +97,7 @@ int run(const RunOptions& o) {
   reports::clear_run_folder(o.output, o.from_trace);
   reports::TraceOutcome trace = o.from_trace.empty()
                                     ? reports::trace_into(o.workload, o.output + "/trace", o.quiet)
-                                    : reports::read_trace_dir(o.from_trace);
+                                    : reports::read_trace_source(o.from_trace);
   reports::RunJob job;
   job.stream = trace.stream;
   job.config = config;
@@ -113,13 +114,12 @@ int run(const RunOptions& o) {
   nlohmann::ordered_json report = reports::build_report(inputs);
   reports::ReportOptions options{!o.no_charts, o.report == "full"};
   reports::ReportOutcome written = reports::write_report(report, o.output, trace.dir, options);
-  if (!o.quiet) {
-    print_summary(report);
-    if (!written.charts_ok) fmt::print("charts     missing: {}\n", written.message);
+  if (!o.quiet) print_summary(report);
+  int charts = reports::charts_exit_code(written, options, o.quiet);
+  if (!o.quiet)
     fmt::print("report     {}/{}\n", o.output, options.pages ? "report.html" : "report.json");
-  }
   const auto& v = report["verification"];
-  return !v["skipped"].get<bool>() && !v["passed"].get<bool>() ? 1 : 0;
+  return !v["skipped"].get<bool>() && !v["passed"].get<bool>() ? 1 : charts;
 }
 
 }  // namespace
@@ -129,10 +129,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
       "run", "Trace, simulate, verify and report one workload on one hardware config");
   auto o = std::make_shared<RunOptions>();
   cmd->add_option("workload", o->workload.workload,
-                  "Workload spec (.toml) or built-in scene (default: pica)")
+                  "Workload spec (.toml), scene file, built-in scene (default: pica) or a ray "
+                  "stream (.rays: simulated as it is, like --from-trace)")
       ->capture_default_str();
   reports::add_workload_options(*cmd, o->workload);
-  cmd->add_option("--from-trace", o->from_trace, "Reuse a trace folder (DIR/trace of a run)");
+  cmd->add_option("--from-trace", o->from_trace,
+                  "Reuse a trace folder (DIR/trace of a run) or a ray stream (.rays)");
   cmd->add_option("--config", o->config, "Hardware config (.toml; see configs/)");
   reports::add_config_overrides(*cmd, o->sets);
   cmd->add_option("-o,--output", o->output, "Run folder (report, results, trace)");
@@ -148,7 +150,12 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-charts", o->no_charts, "Write the pages without running Python");
   cmd->add_flag("-q,--quiet", o->quiet, "Print nothing but errors");
   cmd->callback([o, cmd, &exit_code] {
-    reports::refuse_workload_with_trace(*cmd, o->from_trace);
+    bool stream = reports::is_stream_file(o->workload.workload);
+    if (stream && !o->from_trace.empty())
+      throw InputError("run: " + o->workload.workload + " and --from-trace " + o->from_trace +
+                       ": give one trace");
+    if (stream) o->from_trace = o->workload.workload;
+    reports::refuse_workload_with_trace(*cmd, o->from_trace, stream);
     o->sampling.method = reports::sampling_methods(*cmd, o->sample_methods).front();
     exit_code = run(*o);
   });

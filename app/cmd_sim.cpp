@@ -16,10 +16,12 @@
 #include "app/commands.h"
 #include "reports/cli_options.h"
 #include "reports/phase_progress.h"
+#include "reports/report_writer.h"
+#include "reports/run_job.h"
+#include "reports/sim_folder.h"
 #include "model/config/hw_config.h"
 #include "model/sc/sim_report.h"
 #include "model/sc/stream_sim.h"
-#include "traces/host_clock.h"
 #include "traces/error.h"
 #include "traces/output_file.h"
 #include "workloads/scene.h"
@@ -33,26 +35,15 @@ struct SimOptions {
   bool no_verify = false, quiet = false, list_keys = false;
 };
 
-// The mask of --ray-types (every type if none is named); InputError for an unknown name or a
-// selection the stream has no rays of.
-RayTypeMask selected_ray_types(const SimOptions& o, const StreamHeader& header) {
-  if (o.ray_types.empty()) return kAllRayTypes;
-  RayTypeMask mask = 0;
-  for (const std::string& name : o.ray_types) {
-    std::optional<RayType> type = ray_type_from_name(name);
-    if (!type) {
-      std::string known;
-      for (int t = 0; t < kRayTypeCount; ++t)
-        known += std::string(t ? ", " : "") + ray_type_name(RayType(t));
-      throw InputError(
-          fmt::format("sim: --ray-types: unknown ray type '{}' (one of {})", name, known));
-    }
-    mask |= ray_type_bit(*type);
-  }
-  if (rays_of(header, mask) == 0)
-    throw InputError(
-        fmt::format("sim: {} has no rays of the types {}", o.stream, fmt::join(o.ray_types, ", ")));
-  return mask;
+// The command line, as the report of the folder shows it.
+std::string command_line(const SimOptions& o) {
+  std::string out = "rtsim sim " + o.stream;
+  if (!o.config.empty()) out += " --config " + o.config;
+  for (const std::string& s : o.sets) out += " --set " + s;
+  if (!o.scene.empty()) out += " --scene " + o.scene;
+  if (!o.ray_types.empty()) out += fmt::format(" --ray-types {}", fmt::join(o.ray_types, ","));
+  if (o.no_verify) out += " --no-verify";
+  return out + " -o " + o.output;
 }
 
 // A Markdown table, as model/SIM-REFERENCE.md shows it.
@@ -174,19 +165,28 @@ int run_sim(const SimOptions& o) {
     throw InputError("sim: STREAM and -o DIR are required (or --list-keys)");
   std::vector<NamedPath> outputs;
   for (const std::string& file : sim_result_files(o.output)) outputs.push_back({"-o", file});
+  for (const char* name : {"fidelity.json", "sim.json"})
+    outputs.push_back({"-o", o.output + "/" + name});
   refuse_overwriting({{"the stream", o.stream},
                       {"--config", o.config},
                       {"--scene", is_builtin_scene(o.scene) ? "" : o.scene}},
                      outputs);
-  HwConfig config = load_hw_config(o.config, o.sets);
+  reports::RunJob job;
+  job.stream = o.stream;
+  job.config = load_hw_config(o.config, o.sets);
+  job.verify = !o.no_verify;
+  job.output = o.output;
+  job.progress = !o.quiet;
+  job.scene = o.scene;
+  job.ray_types = o.ray_types;
+  reports::TraceOutcome trace = reports::read_stream_trace(o.stream);
   RayStreamReader reader(o.stream);
-  StreamHeader header = reader.header();
-  RayTypeMask types = selected_ray_types(o, header);
-  Scene scene = load_stream_scene(o.stream, header, o.scene);
-  TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, o.quiet);
+  RayTypeMask types = reports::selected_ray_types(o.ray_types, reader.header(), "sim", o.stream);
+  const HwConfig& config = job.config;
   if (!o.quiet) {
     fmt::print(
-        "sim        {} rays{} of {} on '{}' ({}, {} RT units, {})\n", rays_of(header, types),
+        "sim        {} rays{} of {} on '{}' ({}, {} RT units, {})\n",
+        rays_of(reader.header(), types),
         o.ray_types.empty() ? "" : " (" + fmt::format("{}", fmt::join(o.ray_types, ", ")) + ")",
         o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
         describe(config.bvh));
@@ -195,30 +195,34 @@ int run_sim(const SimOptions& o) {
           "config     built in (no --config): the defaults rtsim sim --list-keys shows; presets "
           "are in configs/\n");
   }
-  StreamSim sim(config, bvh, scene.mesh, scene.instanced, reader, !o.no_verify, !o.quiet, types);
   std::fflush(stdout);  // the header before the progress lines, also in a pipe
-  double start = wall_seconds();
-  sim.run();
-  SimRunInfo info{o.stream, header, BvhView(bvh), sim.verify_report(), wall_seconds() - start, {}};
-  info.ray_types = o.ray_types;
-  nlohmann::ordered_json doc = write_sim_results(o.output, sim.simulator(), info);
+  reports::clear_sim_folder_report(o.output);
+  reports::RunResult result = reports::run_job(job);
+  if (result.stalled) {
+    fmt::print(stderr, "rtsim: stall: {}", result.stall_message);
+    return 1;
+  }
+  reports::write_sim_run(o.output, {command_line(o), o.config, o.sets}, trace, result);
+  const nlohmann::ordered_json& doc = result.stats;
   if (!o.quiet) {
     print_summary(doc);
-    fmt::print("host       {:.2f} s, {:.0f} rays/s; results in {}\n", info.host_seconds,
-               doc["host"]["rays_per_second"].get<double>(), o.output);
+    fmt::print(
+        "host       {:.2f} s, {:.0f} rays/s; results in {} (rtsim report {} writes its "
+        "report)\n",
+        doc["host"]["seconds"].get<double>(), doc["host"]["rays_per_second"].get<double>(),
+        o.output, o.output);
   }
-  if (const VerifyReport* report = sim.verify_report()) {
-    const VerifyReport& v = *report;
-    if (!o.quiet || v.unexplained())
-      fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n", v.rays,
-                 v.mismatches(), v.unexplained());
-    for (const Mismatch& m : v.unexplained_examples)
-      fmt::print("unexplained ray {} ({}): Embree triangle {} t={}, model triangle {} t={}\n",
-                 m.index, ray_type_name(m.ray.type), m.embree.prim, m.embree.t, m.model_prim,
-                 m.model.t);
-    if (v.unexplained() > 0) return 1;
-  }
-  return 0;
+  const auto& v = doc["verify"];
+  if (v.contains("skipped")) return 0;
+  uint64_t unexplained = v["unexplained"].get<uint64_t>();
+  if (!o.quiet || unexplained)
+    fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n",
+               v["rays"].get<uint64_t>(), v["mismatches"].get<uint64_t>(), unexplained);
+  for (const Mismatch& m : result.unexplained)
+    fmt::print("unexplained ray {} ({}): Embree triangle {} t={}, model triangle {} t={}\n",
+               m.index, ray_type_name(m.ray.type), m.embree.prim, m.embree.t, m.model_prim,
+               m.model.t);
+  return unexplained > 0 ? 1 : 0;
 }
 
 }  // namespace

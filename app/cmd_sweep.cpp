@@ -41,7 +41,6 @@ int write_results(const reports::SweepSpec& spec, const std::vector<reports::Poi
     unverified += p.ok && !u.is_null() && u.get<uint64_t>() > 0;
   }
   if (!o.quiet) {
-    if (!out.charts_ok) fmt::print("charts     missing: {}\n", out.message);
     for (const std::string& line : reports::objective_lines(doc))
       fmt::print("best       {}\n", line);
     fmt::print(
@@ -49,7 +48,8 @@ int write_results(const reports::SweepSpec& spec, const std::vector<reports::Poi
         "{}/sweep.html, sweep.csv, sweep.json\n",
         points.size(), failed, unverified, output);
   }
-  return failed + unverified > 0 ? 1 : 0;
+  int charts = reports::charts_exit_code(out, {!o.no_charts, true}, o.quiet);
+  return failed + unverified > 0 ? 1 : charts;
 }
 
 std::string jobs_list(const std::vector<std::string>& jobs) {

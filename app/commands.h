@@ -27,6 +27,7 @@ void add_speed_vs_error_command(CLI::App& app, int& exit_code);
 void add_curve_command(CLI::App& app, int& exit_code);
 void add_run_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
+void add_compare_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);
 void add_regress_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   rtsim::app::add_curve_command(app, exit_code);
   rtsim::app::add_run_command(app, exit_code);
   rtsim::app::add_report_command(app, exit_code);
+  rtsim::app::add_compare_command(app, exit_code);
   rtsim::app::add_sweep_command(app, exit_code);
   rtsim::app::add_regress_command(app, exit_code);
   rtsim::app::add_validate_command(app, exit_code);

@@ -81,11 +81,13 @@ inline void add_config_overrides(CLI::App& cmd, std::vector<std::string>& sets) 
 
 // With --from-trace DIR the stream is reused as it was traced: a workload or an option that
 // would trace it differently is refused (InputError), not silently ignored.
-inline void refuse_workload_with_trace(const CLI::App& cmd, const std::string& from_trace) {
+// workload_is_trace: the positional workload is the trace (a .rays stream), not a change to it.
+inline void refuse_workload_with_trace(const CLI::App& cmd, const std::string& from_trace,
+                                       bool workload_is_trace = false) {
   if (from_trace.empty()) return;
-  for (const char* option : {"workload", "--resolution", "--frames", "--seed", "--scene",
+  for (std::string option : {"workload", "--resolution", "--frames", "--seed", "--scene",
                              "--camera", "--look-at", "--up"})
-    if (cmd.count(option) > 0)
+    if (cmd.count(option) > 0 && !(workload_is_trace && option == "workload"))
       throw InputError(std::string(cmd.get_name()) + ": --from-trace " + from_trace +
                        " reuses that trace as it was traced; " +
                        (option[0] == '-' ? std::string(option) : "a workload") +

@@ -1,6 +1,9 @@
 #include "reports/metrics.h"
 
+#include <algorithm>
+
 #include "reports/page_util.h"
+#include "traces/error.h"
 #include "traces/ray.h"
 
 namespace rtsim::reports {
@@ -102,6 +105,38 @@ std::string metric_direction(const std::string& name) {
       ends("mm2"))
     return "lower";
   return "either";
+}
+
+Style metric_style(const std::string& name) {
+  auto ends = [&](const std::string& suffix) {
+    return name.size() >= suffix.size() &&
+           name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0;
+  };
+  if (ends("hit_rate") || ends("utilisation")) return Style::Percent;
+  if (ends("cycles") || ends("rays") || ends("unexplained") || name == "dram_bytes" ||
+      name == "on_chip_bytes")
+    return Style::Integer;
+  return Style::Real;
+}
+
+std::vector<std::string> expand_metric_names(const std::vector<std::string>& names,
+                                             const std::vector<Json>& reports,
+                                             const std::string& what) {
+  std::vector<std::string> out;
+  for (const std::string& name : names) {
+    std::string problem = metric_name_problem(name);
+    if (!problem.empty()) throw InputError(what + " " + name + ": " + problem);
+    if (name.rfind("type.*.", 0) != 0) {
+      out.push_back(name);
+      continue;
+    }
+    std::vector<std::string> types;
+    for (const Json& r : reports)
+      for (const auto& [type, rays] : at_key(r, "workload.rays_per_type").items())
+        if (std::find(types.begin(), types.end(), type) == types.end()) types.push_back(type);
+    for (const std::string& type : types) out.push_back("type." + type + name.substr(6));
+  }
+  return out;
 }
 
 }  // namespace rtsim::reports

@@ -10,8 +10,11 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "reports/page_util.h"
 
 namespace rtsim::reports {
 
@@ -23,5 +26,15 @@ std::string metric_name_problem(const std::string& name);
 
 // Whether a larger value is better ("higher"), worse ("lower"), or neither ("either").
 std::string metric_direction(const std::string& name);
+
+// How a page shows the metric: hit rates as percentages, counts whole, the rest as reals.
+Style metric_style(const std::string& name);
+
+// The metric names of `names` for these reports, in order: type.*.NAME becomes NAME of every
+// ray type any report has. InputError (`what`: "... --metric X: problem") for a name that is no
+// metric.
+std::vector<std::string> expand_metric_names(const std::vector<std::string>& names,
+                                             const std::vector<nlohmann::ordered_json>& reports,
+                                             const std::string& what);
 
 }  // namespace rtsim::reports

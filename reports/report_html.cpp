@@ -19,6 +19,9 @@ std::string workload(const Json& r) {
   std::string out = html_rows(r, workload_rows());
   out += "<h3>Rays per type</h3>\n" +
          html_type_table(r, "workload.rays_per_type", {{"rays", "", kInt}});
+  if (r["workload"]["passes"].empty())
+    return out + "<h3>Passes of the hybrid pipeline</h3>\n<p class=\"na\">" +
+           html_escape(kNoPasses) + "</p>\n";
   out +=
       "<h3>Passes of the hybrid pipeline</h3>\n<table>\n<tr><th>pass</th><th>ray type</th>"
       "<th>rays</th><th>budget per frame</th><th>skipped</th><th>why</th></tr>\n";

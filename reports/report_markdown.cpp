@@ -11,6 +11,7 @@ using Json = nlohmann::ordered_json;
 constexpr int kInt = int(Style::Integer), kReal = int(Style::Real), kPct = int(Style::Percent);
 
 std::string passes(const Json& r) {
+  if (r["workload"]["passes"].empty()) return std::string(kNoPasses) + "\n";
   std::string out =
       "| pass | ray type | rays | budget per frame | skipped | why |\n"
       "|---|---|---|---|---|---|\n";

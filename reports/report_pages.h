@@ -16,6 +16,11 @@ namespace rtsim::reports {
 std::string report_html(const nlohmann::ordered_json& report, const std::string& run_dir);
 std::string report_markdown(const nlohmann::ordered_json& report);
 
+// What the workload section says of a run that read a ray stream, not a trace folder.
+constexpr const char* kNoPasses =
+    "Passes not recorded: the run read a ray stream, whose header holds the workload, scene, "
+    "grid, frames and rays per type, not the passes that made them.";
+
 // The labelled values of the summary, workload, hardware, timing, bandwidth and DRAM sections, for
 // both pages (report_rows.cpp).
 const std::vector<Row>& summary_rows();

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <filesystem>
 
+#include <fmt/core.h>
+
 #include "model/sc/sim_report.h"
 #include "reports/charts.h"
 #include "reports/page_util.h"
 #include "reports/report_doc.h"
 #include "reports/report_pages.h"
+#include "reports/sim_folder.h"
 #include "traces/error.h"
 #include "traces/path_name.h"
 
@@ -145,11 +148,28 @@ ReportOutcome write_report(Json& report, const std::string& run_dir, const std::
   return finish(report, run_dir, options);
 }
 
+int charts_exit_code(const ReportOutcome& outcome, const ReportOptions& options, bool quiet) {
+  if (outcome.charts_ok || !options.pages) return 0;
+  if (!options.charts) {
+    if (!quiet) fmt::print("charts     skipped (--no-charts)\n");
+    return 0;
+  }
+  fmt::print(stderr, "rtsim: charts failed: {}\n", outcome.message);
+  return 1;
+}
+
+void clear_sim_folder_report(const std::string& sim_dir) {
+  for (const char* name : {"report.json", "report.html", "report.md"}) {
+    std::error_code error;
+    fs::remove(fs::path(sim_dir) / name, error);
+    if (error)
+      throw_input_error(sim_dir + "/" + name, "",
+                        "cannot remove the earlier report: " + error.message());
+  }
+}
+
 ReportOutcome rewrite_report(const std::string& run_dir, const ReportOptions& options) {
-  std::string path = run_dir + "/report.json";
-  if (!fs::exists(path)) throw_input_error(run_dir, "", "no report.json (not a run folder)");
-  Json report = read_json_file(path, kReportSchema);
-  require_report_fields(report, path);
+  Json report = read_run_report(run_dir);
   bool pixels =
       !report["pixel_buffers"].is_null() &&
       fs::exists(run_dir + "/" + report["pixel_buffers"]["files"]["cycles"].get<std::string>());

@@ -19,6 +19,12 @@ struct ReportOutcome {
   std::string message;  // why charts are missing
 };
 
+// What became of the charts a page command asked for, on the terminal: with --no-charts one
+// stdout line (unless quiet) and 0; a chart that failed (the script's error, or no Python with
+// matplotlib) one stderr line with the reason, `rtsim: charts failed: WHY`, and 1 (the pages are
+// written all the same, saying why each chart is missing).
+int charts_exit_code(const ReportOutcome& outcome, const ReportOptions& options, bool quiet);
+
 // trace_dir: where the preview pictures are ("" if none).
 ReportOutcome write_report(nlohmann::ordered_json& report, const std::string& run_dir,
                            const std::string& trace_dir, const ReportOptions& options);
@@ -36,7 +42,12 @@ void require_report_fields(const nlohmann::ordered_json& report, const std::stri
 // pages read), or null: a sweep's point or a suite's case without one did not finish.
 nlohmann::ordered_json whole_report(const std::string& path);
 
-// `rtsim report RUN_DIR`: redraws the charts and rewrites the pages from report.json.
+// `rtsim report RUN_DIR`: redraws the charts and rewrites the pages from report.json, or writes
+// them for a `rtsim sim` folder (reports/sim_folder.h) from its results.
 ReportOutcome rewrite_report(const std::string& run_dir, const ReportOptions& options);
+
+// Removes a report an earlier `rtsim report` wrote into a `rtsim sim` folder (report.json,
+// .html, .md), which the new results would contradict.
+void clear_sim_folder_report(const std::string& sim_dir);
 
 }  // namespace rtsim::reports

@@ -11,6 +11,7 @@
 #include "traces/output_file.h"
 #include "traces/error.h"
 #include "traces/hash.h"
+#include "traces/stream.h"
 #include "workloads/pipeline/trace.h"
 
 namespace rtsim::reports {
@@ -96,6 +97,37 @@ TraceOutcome read_trace_dir(const std::string& dir) {
   if (!fs::exists(out.stream)) throw_input_error(out.stream, "", "missing");
   if (fs::exists(dir + "/preview.png")) out.preview = dir + "/preview.png";
   return out;
+}
+
+bool is_stream_file(const std::string& path) {
+  return fs::path(path).extension() == ".rays" && !fs::is_directory(path);
+}
+
+Json stream_summary(const std::string& stream) {
+  StreamHeader h = RayStreamReader(stream).header();
+  return {{"schema", kTraceSchema},
+          {"request", {{"stream", fs::absolute(stream).lexically_normal().string()}}},
+          {"workload", h.workload},
+          {"scene", h.scene_source},
+          {"triangles", Json()},
+          {"width", h.width},
+          {"height", h.height},
+          {"frames", h.frame_count},
+          {"lights", Json()},
+          {"surfels", Json()},
+          {"rays", h.total_rays()},
+          {"passes", Json::array()},
+          {"notes", Json::array({"read from the ray stream " + stream +
+                                 ": its header records no passes, triangles or lights"})},
+          {"stream", stream}};
+}
+
+TraceOutcome read_stream_trace(const std::string& stream) {
+  return {"", stream, "", stream_summary(stream)};
+}
+
+TraceOutcome read_trace_source(const std::string& path) {
+  return is_stream_file(path) ? read_stream_trace(path) : read_trace_dir(path);
 }
 
 bool trace_is_current(const TraceRequest& request, const std::string& dir) {

@@ -45,4 +45,16 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
 // Reads a folder written by trace_into (InputError if it is not one).
 TraceOutcome read_trace_dir(const std::string& dir);
 
+// Whether path names a ray stream (a .rays file), which `rtsim run` takes in place of a trace.
+bool is_stream_file(const std::string& path);
+
+// A stream traced elsewhere (`rtsim trace`, `hardcases`) as a trace: a summary from its header
+// (workload, scene, grid, frames, rays), without what only a trace folder records (passes,
+// triangles, lights: empty or null). InputError naming the file if it is no valid stream.
+TraceOutcome read_stream_trace(const std::string& stream);
+nlohmann::ordered_json stream_summary(const std::string& stream);
+
+// --from-trace PATH: a trace folder or a stream file.
+TraceOutcome read_trace_source(const std::string& path);
+
 }  // namespace rtsim::reports

@@ -4,7 +4,9 @@
 Usage: sweep_charts.py SWEEP.json OUTDIR  -- draws every available chart listed in SWEEP.json's
 "charts" into OUTDIR (their "file" paths):
   curve:  a metric against a swept key, one line per value of the series key (and of any
-          other swept key); a y of "type.*.NAME" draws NAME for every ray type.
+          other swept key); a y of "type.*.NAME" draws NAME for every ray type. A categorical
+          x key (a value that is not a number: "bvh.node_format") draws grouped bars instead,
+          one bar per series value (and ray type) in each category.
   pareto: cycles against a cost (on-chip memory, area, energy per ray), every point, with
           each workload's Pareto front.
 Exits 1 if any chart failed, after drawing the others.
@@ -13,6 +15,7 @@ import json
 import sys
 
 from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
 
 import chart_style
 
@@ -59,23 +62,70 @@ def byte_unit(key, values):
     return (2**10, key + " (KB)") if max(numbers) >= 2**10 else (1, key)
 
 
+def is_number(value):
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def y_lines(chart, points):
+    """(metric, ray type or None) of each line: one, or one per ray type for type.*.NAME."""
+    if not chart["y"].startswith("type.*."):
+        return [(chart["y"], None)]
+    name = chart["y"][len("type.*."):]
+    types = sorted({m.split(".")[1] for p in points for m in p["metrics"]
+                    if m.startswith("type.") and m.endswith("." + name)})
+    return [("type.%s.%s" % (t, name), t) for t in types]
+
+
+HATCHES = ["", "//", "..", "xx"]
+
+
+def bars(doc, chart, points, others):
+    """Grouped bars over a categorical x: a group per category, a bar per series and ray type."""
+    x_key = chart["x"]
+    categories = sorted({str(value_of(p, x_key)) for p in points}, key=order)
+    ys = y_lines(chart, points)
+    grouped = sorted(groups(points, others).items(), key=lambda kv: [order(v) for v in kv[0]])
+    bars_drawn = [(g, members, y, ray_type) for g, (_, members) in enumerate(grouped)
+                  for y, ray_type in ys if any(metric(p, y) is not None for p in members)]
+    fig, ax = chart_style.new(9.5, 4.2)
+    width = 0.8 / max(len(bars_drawn), 1)
+    legend = []
+    for i, (g, members, y, ray_type) in enumerate(bars_drawn):
+        by_category = {str(value_of(p, x_key)): metric(p, y) for p in members}
+        heights = [by_category.get(c) for c in categories]
+        xs = [c + (i - (len(bars_drawn) - 1) / 2) * width for c in range(len(categories))]
+        heights = [float("nan") if h is None else h for h in heights]
+        if ray_type is None:
+            ax.bar(xs, heights, width, label=label(members[0], others))
+            continue
+        ax.bar(xs, heights, width, color=chart_style.color(ray_type), edgecolor="black",
+               linewidth=0.3, hatch=HATCHES[g % len(HATCHES)], label=ray_type if g == 0 else None)
+        if ray_type == ys[0][1]:
+            legend.append(Patch(facecolor="white", edgecolor="black",
+                                hatch=HATCHES[g % len(HATCHES)], label=label(members[0], others)))
+    ax.set_xticks(range(len(categories)))
+    ax.set_xticklabels(categories)
+    ax.set_xlabel(x_key)
+    ax.set_ylabel(chart["y"].replace("type.*.", ""))
+    ax.set_title(chart["title"])
+    handles, _ = ax.get_legend_handles_labels()
+    ax.legend(handles=handles + legend, fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1))
+    return fig
+
+
 def curve(doc, chart):
     x_key, series = chart["x"], chart["series"]
     # A [[point]] list may leave the x key unset in some points: they have no place on the axis.
     points = [p for p in doc["points"] if p["metrics"] and value_of(p, x_key) is not None]
+    others = [series] + [k for k in doc["spec"]["keys"] if k not in (x_key, series)]
+    if not all(is_number(value_of(p, x_key)) for p in points):
+        return bars(doc, chart, points, others)
     unit, x_label = byte_unit(x_key, [value_of(p, x_key) for p in points])
 
     def x_of(p):
         return value_of(p, x_key) / unit if unit != 1 else value_of(p, x_key)
 
-    others = [series] + [k for k in doc["spec"]["keys"] if k not in (x_key, series)]
-    if chart["y"].startswith("type.*."):
-        name = chart["y"][len("type.*."):]
-        types = sorted({m.split(".")[1] for p in points for m in p["metrics"]
-                        if m.startswith("type.") and m.endswith("." + name)})
-        ys = [("type.%s.%s" % (t, name), t) for t in types]
-    else:
-        ys = [(chart["y"], None)]
+    ys = y_lines(chart, points)
     fig, ax = chart_style.new(9.5, 4.2)
     legend = []
     grouped = sorted(groups(points, others).items(), key=lambda kv: [order(v) for v in kv[0]])
