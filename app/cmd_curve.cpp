@@ -150,8 +150,8 @@ void draw(const std::vector<std::string>& args) {
   if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
 }
 
-void write_curve(const std::string& dir, const nlohmann::ordered_json& doc,
-                 const HwConfig& config, bool charts) {
+void write_curve(const std::string& dir, const nlohmann::ordered_json& doc, const HwConfig& config,
+                 bool charts) {
   write_file_atomic(dir + "/curve.json", doc.dump(2) + "\n");
   write_file_atomic(dir + "/curve.csv", reports::curve_csv(doc));
   write_file_atomic(dir + "/curve.md", reports::curve_markdown(doc));
@@ -184,8 +184,7 @@ int run_curve(const CurveOptions& o) {
     HwConfig c = config;
     c.l1.size_bytes = size;
     problem = cache_config_problem(c.l1);
-    if (!problem.empty())
-      throw InputError(fmt::format("curve: --l1: {} bytes: {}", size, problem));
+    if (!problem.empty()) throw InputError(fmt::format("curve: --l1: {} bytes: {}", size, problem));
     configs.push_back(c);
   }
   uint64_t need = 0;
@@ -212,7 +211,8 @@ int run_curve(const CurveOptions& o) {
     fmt::print("{}", reports::curve_table(doc, false));
     if (family) fmt::print("\n");
     if (o.output.empty()) continue;
-    std::string dir = family ? o.output + "/l1-" + reports::size_text(c.l1.size_bytes, true) : o.output;
+    std::string dir =
+        family ? o.output + "/l1-" + reports::size_text(c.l1.size_bytes, true) : o.output;
     if (family) create_output_folder(dir);
     write_curve(dir, doc, c, !o.no_charts);
     files.push_back(dir + "/curve.json");

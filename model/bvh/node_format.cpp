@@ -7,7 +7,9 @@
 namespace rtsim {
 namespace {
 
-void put32(uint8_t* out, uint32_t v) { std::memcpy(out, &v, 4); }
+void put32(uint8_t* out, uint32_t v) {
+  std::memcpy(out, &v, 4);
+}
 
 // Smallest exponent byte whose 255 steps from lo reach hi once rounded to fp32.
 uint8_t grid_exponent(float lo, float hi) {

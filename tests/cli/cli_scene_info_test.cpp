@@ -160,10 +160,11 @@ TEST(CliMemoryPlan, FlatteningAForestBeyondTheMemoryIsRefusedWithTheEstimate) {
   const std::string forest = "scene-info forest:100000000 --bvh";
   RunResult r = run_with_memory("1000000000", forest + " --set bvh.instancing=\"flatten\"");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err,
-            "rtsim: error: builtin:forest:100000000: flattening 100005416 instanced triangles needs "
-            "about 5.6 GB of memory, more than the 1.0 GB available; keep its instances "
-            "(bvh.instancing = \"auto\" or \"two_level\", no --flatten)\n");
+  EXPECT_EQ(
+      r.err,
+      "rtsim: error: builtin:forest:100000000: flattening 100005416 instanced triangles needs "
+      "about 5.6 GB of memory, more than the 1.0 GB available; keep its instances "
+      "(bvh.instancing = \"auto\" or \"two_level\", no --flatten)\n");
   EXPECT_EQ(run_with_memory("1000000000", forest).exit_code, 0) << "its instances fit";
 }
 

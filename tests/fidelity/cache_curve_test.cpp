@@ -1,6 +1,6 @@
 // The cache curve (model/fidelity/cache_curve.h): on a small stream its point at the walk's L2
-// (the smallest capacity) is the cache level's own L2 there, count for count, and the curve never rises with capacity; the
-// knee and the interpolated cycles follow their rules on hand-made points.
+// (the smallest capacity) is the cache level's own L2 there, count for count, and the curve never
+// rises with capacity; the knee and the interpolated cycles follow their rules on hand-made points.
 #include "model/fidelity/cache_curve.h"
 
 #include <gtest/gtest.h>
@@ -43,7 +43,9 @@ TEST(CacheCurve, PointAtTheWalksL2IsTheCacheLevelsL2) {
 
 // Counts the L2 references to the shading region.
 struct ShadingReferences : L2ReferenceSink {
-  void reference(uint64_t addr, bool) override { count += addr >= kShadingBase && addr < kTextureBase; }
+  void reference(uint64_t addr, bool) override {
+    count += addr >= kShadingBase && addr < kTextureBase;
+  }
   uint64_t count = 0;
 };
 
