@@ -151,8 +151,8 @@ TEST(CliSceneInfo, AGltfListsObjectsMaterialsCamerasAndLights) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* line :
        {"objects      1\n  names      'tri_node'\n",
-        "materials    1\n  0          'paint': base colour [0.9, 0.1, 0.1], roughness 0.2, "
-        "metalness 1\n",
+        "materials    2\n  0          'paint': base colour [0.9, 0.1, 0.1], roughness 0.2, "
+        "metalness 1\n  1          '': ",  // assimp adds a default material
         "cameras      2 (trace, run: --camera-index N)\n  0          'eye' perspective at [0.3, "
         "0.3, 3] looking [0, 0, -1], up [0, 1, 0], 45.8 degrees high\n",
         "  1          'top' orthographic at [0, 9, 0] looking [0, 0, -1], up [0, 1, 0]: a view box "
