@@ -21,6 +21,8 @@ struct TraceArgs {
   std::string workload, output, preview, resolution, scene, camera, look_at, up;
   uint32_t frames = 0;
   uint64_t seed = 0;
+  std::optional<uint32_t> camera_index;
+  std::optional<double> fov;
   bool seed_set = false, quiet = false, list_keys = false;
 };
 
@@ -47,7 +49,7 @@ void add_trace_command(CLI::App& app, int& exit_code) {
       ->check(reports::non_negative())
       ->each([a](const std::string&) { a->seed_set = true; });
   cmd->add_option("--scene", a->scene, "Scene file or built-in (replaces the spec's scene)");
-  reports::add_camera_options(*cmd, a->camera, a->look_at, a->up);
+  reports::add_camera_options(*cmd, a->camera, a->look_at, a->up, a->camera_index, a->fov);
   cmd->add_option("--preview", a->preview,
                   "Write a shaded PNG of the last frame, and PATH.density-PASS.png per pass");
   cmd->add_flag("-q,--quiet", a->quiet, "No progress and no summary");
@@ -63,10 +65,10 @@ void add_trace_command(CLI::App& app, int& exit_code) {
       throw InputError("trace: nothing to write: give -o OUT.rays and/or --preview OUT.png");
     pipeline::WorkloadSpec spec = pipeline::load_workload(a->workload);
     pipeline::apply_overrides(
-        spec,
-        pipeline::make_overrides({a->resolution, a->frames,
-                                  a->seed_set ? std::optional<uint64_t>(a->seed) : std::nullopt,
-                                  a->scene, a->camera, a->look_at, a->up}));
+        spec, pipeline::make_overrides(
+                  {a->resolution, a->frames,
+                   a->seed_set ? std::optional<uint64_t>(a->seed) : std::nullopt, a->scene,
+                   a->camera, a->look_at, a->up, a->camera_index, a->fov}));
     pipeline::TraceOptions options;
     options.output = a->output;
     options.preview = a->preview;

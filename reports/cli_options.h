@@ -3,6 +3,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,10 +51,18 @@ inline void require_generated_ray_memory(uint64_t rays, const std::string& optio
 }
 
 inline void add_camera_options(CLI::App& cmd, std::string& camera, std::string& look_at,
-                               std::string& up) {
+                               std::string& up, std::optional<uint32_t>& camera_index,
+                               std::optional<double>& fov) {
   cmd.add_option("--camera", camera, "Camera position X,Y,Z (overrides the spec)");
   cmd.add_option("--look-at", look_at, "Point the camera looks at X,Y,Z (overrides the spec)");
   cmd.add_option("--up", up, "Up direction of the image X,Y,Z (overrides the spec)");
+  cmd.add_option_function<uint32_t>(
+         "--camera-index", [&camera_index](const uint32_t& n) { camera_index = n; },
+         "The scene file's camera N (0 the first; rtsim scene-info lists them), whole")
+      ->check(non_negative());
+  cmd.add_option_function<double>(
+      "--fov", [&fov](const double& degrees) { fov = degrees; },
+      "Vertical field of view, degrees (overrides the spec's and a file camera's)");
 }
 
 inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
@@ -65,7 +74,8 @@ inline void add_workload_options(CLI::App& cmd, TraceRequest& request) {
          "Random seed of the workload (overrides the spec)")
       ->check(non_negative());
   cmd.add_option("--scene", request.scene, "Scene file or built-in (replaces the spec's scene)");
-  add_camera_options(cmd, request.camera, request.look_at, request.up);
+  add_camera_options(cmd, request.camera, request.look_at, request.up, request.camera_index,
+                     request.fov);
 }
 
 // --set and --flatten, which is --set bvh.instancing="flatten": one BVH level over the
@@ -86,7 +96,7 @@ inline void refuse_workload_with_trace(const CLI::App& cmd, const std::string& f
                                        bool workload_is_trace = false) {
   if (from_trace.empty()) return;
   for (std::string option : {"workload", "--resolution", "--frames", "--seed", "--scene",
-                             "--camera", "--look-at", "--up"})
+                             "--camera", "--look-at", "--up", "--camera-index", "--fov"})
     if (cmd.count(option) > 0 && !(workload_is_trace && option == "workload"))
       throw InputError(std::string(cmd.get_name()) + ": --from-trace " + from_trace +
                        " reuses that trace as it was traced; " +

@@ -199,9 +199,8 @@ std::string curve_family_markdown(const std::vector<nlohmann::ordered_json>& doc
       out += fmt::format(
           "| {} | {} | {} | {:.2f}% | {:.1f} | {} | {} | {} |\n",
           size_text(doc["context"]["l1_bytes"].get<uint64_t>()),
-          size_text(p["capacity_bytes"].get<uint64_t>()), ways,
-          100 * p["miss_ratio"].get<double>(), p["dram_bytes_per_ray"].get<double>(),
-          p["knee"].get<bool>() ? "knee" : "",
+          size_text(p["capacity_bytes"].get<uint64_t>()), ways, 100 * p["miss_ratio"].get<double>(),
+          p["dram_bytes_per_ray"].get<double>(), p["knee"].get<bool>() ? "knee" : "",
           p["cycles"].is_null() ? "-" : fmt::format("{:.0f}", p["cycles"].get<double>()),
           p["cycles_from"].get<std::string>());
     }

@@ -25,11 +25,18 @@ Json workload_json(const Json& trace, const FidelityResult& f) {
   Json per_type = Json::object();
   for (int t = 0; t < kRayTypeCount; ++t)
     if (f.types[t].rays) per_type[ray_type_name(RayType(t))] = f.types[t].rays;
-  return {
-      {"name", trace["workload"]}, {"scene", trace["scene"]},     {"triangles", trace["triangles"]},
-      {"width", trace["width"]},   {"height", trace["height"]},   {"frames", trace["frames"]},
-      {"lights", trace["lights"]}, {"surfels", trace["surfels"]}, {"rays", f.rays},
-      {"rays_per_type", per_type}, {"passes", trace["passes"]}};
+  return {{"name", trace["workload"]},
+          {"scene", trace["scene"]},
+          {"triangles", trace["triangles"]},
+          {"width", trace["width"]},
+          {"height", trace["height"]},
+          {"frames", trace["frames"]},
+          {"lights", trace["lights"]},
+          {"surfels", trace["surfels"]},
+          {"rays", f.rays},
+          {"rays_per_type", per_type},
+          {"passes", trace["passes"]},
+          {"ray_mix", trace.contains("ray_mix") ? trace["ray_mix"] : Json()}};
 }
 
 Json hardware_json(const ReportInputs& in) {

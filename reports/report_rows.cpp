@@ -28,7 +28,8 @@ const std::vector<Row>& workload_rows() {
                                      {"height", "workload.height", Style::Integer},
                                      {"frames", "workload.frames", Style::Integer},
                                      {"lights", "workload.lights", Style::Integer, false},
-                                     {"rays", "workload.rays", Style::Integer}};
+                                     {"rays", "workload.rays", Style::Integer},
+                                     {"ray mix", "workload.ray_mix", Style::Text, true, true}};
   return rows;
 }
 

@@ -12,6 +12,7 @@
 #include "traces/error.h"
 #include "traces/hash.h"
 #include "traces/stream.h"
+#include "workloads/pipeline/summary.h"
 #include "workloads/pipeline/trace.h"
 
 namespace rtsim::reports {
@@ -32,6 +33,8 @@ Json trace_request_json(const TraceRequest& r) {
   j["scene"] = r.scene;
   for (auto [key, value] : {std::pair{"camera", &r.camera}, {"look_at", &r.look_at}, {"up", &r.up}})
     if (!value->empty()) j[key] = *value;
+  if (r.camera_index) j["camera_index"] = *r.camera_index;
+  if (r.fov) j["fov"] = *r.fov;
   return j;
 }
 
@@ -147,7 +150,8 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   pipeline::WorkloadSpec spec = pipeline::load_workload(request.workload);
   pipeline::apply_overrides(
       spec, pipeline::make_overrides({request.resolution, request.frames, request.seed,
-                                      request.scene, request.camera, request.look_at, request.up}));
+                                      request.scene, request.camera, request.look_at, request.up,
+                                      request.camera_index, request.fov}));
   pipeline::TraceOptions options;
   options.output = dir + "/rays.rays";
   options.preview = dir + "/preview.png";
@@ -167,6 +171,8 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   Json pipeline_summary = summary_json(result.summary);
   for (auto& [key, value] : pipeline_summary.items()) summary[key] = value;
   summary["notes"] = result.notes;
+  std::string mix = pipeline::ray_mix_note(result.summary);
+  summary["ray_mix"] = mix.empty() ? Json() : Json(mix);
   summary["stream"] = "rays.rays";
   summary["preview"] = "preview.png";
   write_file_atomic(dir + "/trace.json", summary.dump(2) + "\n");

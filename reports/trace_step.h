@@ -21,8 +21,10 @@ struct TraceRequest {
   std::string resolution;  // "WxH" or "" (the spec's)
   uint32_t frames = 0;     // 0: the spec's
   std::optional<uint64_t> seed{};
-  std::string scene{};                    // replaces the spec's scene; "" keeps it
-  std::string camera{}, look_at{}, up{};  // "X,Y,Z", or "" for the spec's
+  std::string scene{};                     // replaces the spec's scene; "" keeps it
+  std::string camera{}, look_at{}, up{};   // "X,Y,Z", or "" for the spec's
+  std::optional<uint32_t> camera_index{};  // the scene file's camera N
+  std::optional<double> fov{};             // degrees
 };
 
 struct TraceOutcome {

@@ -11,7 +11,7 @@ static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "rtsim files are little
 namespace rtsim {
 
 class ByteWriter {
-public:
+ public:
   explicit ByteWriter(std::vector<uint8_t>& out) : out_(out) {}
   template <typename T>
   void put(T value) {
@@ -23,13 +23,13 @@ public:
     out_.insert(out_.end(), s.begin(), s.end());
   }
 
-private:
+ private:
   std::vector<uint8_t>& out_;
 };
 
 // Reads from a buffer; ok() turns false (and stays false) on reading past the end.
 class ByteReader {
-public:
+ public:
   ByteReader(const uint8_t* data, size_t size) : data_(data), size_(size) {}
   template <typename T>
   T get() {
@@ -57,7 +57,7 @@ public:
   size_t left() const { return size_ - pos_; }
   void fail() { ok_ = false; }
 
-private:
+ private:
   const uint8_t* data_;
   size_t size_;
   size_t pos_ = 0;

@@ -29,7 +29,7 @@ constexpr uint64_t kMaxGridPixelsBeyondRays = uint64_t(1) << 24;
 
 struct StreamHeader {
   uint32_t version = kStreamVersion;  // as read (writers write kStreamVersion)
-  std::string scene_source;  // scene file path, or "builtin:NAME[:PARAMS]"
+  std::string scene_source;           // scene file path, or "builtin:NAME[:PARAMS]"
   uint64_t scene_fingerprint = 0;
   std::string workload;
   std::string generator;  // program and version that wrote the stream

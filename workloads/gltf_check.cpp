@@ -593,6 +593,37 @@ GltfNodeTree read_node_tree(GltfDocument& doc, const Json& json) {
   return tree;
 }
 
+// glTF 1.0 is refused, naming the version: assimp would read it with another importer, silently
+// without its materials. A document says so by asset.version ("1.0", "1.0.2"), or, unversioned,
+// by collections that are JSON objects keyed by id where glTF 2.0 has arrays.
+const char* const kGltf2Only = "rtsim reads glTF 2.0 (re-export the file as glTF 2.0)";
+
+const Json* asset_version(const Json& json) {
+  auto asset = json.find("asset");
+  if (asset == json.end() || !asset->is_object()) return nullptr;
+  auto version = asset->find("version");
+  return version != asset->end() && version->is_string() ? &*version : nullptr;
+}
+
+void check_version(const std::string& path, const Json& json) {
+  if (const Json* version = asset_version(json)) {
+    std::string v = version->get<std::string>();
+    if (v.rfind("2", 0) != 0)
+      throw_input_error(
+          path, "asset.version",
+          fmt::format("'{}': glTF {}; {}", v, v.rfind("1", 0) == 0 ? "1.0" : v, kGltf2Only));
+    return;
+  }
+  for (const char* key : {"meshes", "nodes", "accessors"}) {
+    auto it = json.find(key);
+    if (it != json.end() && it->is_object())
+      throw_input_error(path, key,
+                        fmt::format("an object keyed by id, as in glTF 1.0 (glTF 2.0 has an "
+                                    "array), and no asset.version; {}",
+                                    kGltf2Only));
+  }
+}
+
 }  // namespace
 
 bool GltfNodeTree::has_gpu_instances() const {
@@ -604,10 +635,18 @@ GltfNodeTree check_gltf(const std::string& path, bool glb) {
   GltfFile file = read_container(path, glb);
   Json json = parse_document(path, file);
   if (!json.is_object()) return {};
+  check_version(path, json);
   GltfDocument doc(path, file, json);
   try {
     IndexChecker(doc).check();
-    return read_node_tree(doc, json);
+    GltfNodeTree tree = read_node_tree(doc, json);
+    // Checked last, so that a broken document names what is broken: assimp reads no glTF
+    // without a version ("No suitable reader found").
+    if (!asset_version(json))
+      throw_input_error(
+          path, "asset.version",
+          std::string("missing; glTF 2.0 names its version there, and ") + kGltf2Only);
+    return tree;
   } catch (const Json::type_error& e) {  // a member of the wrong JSON type
     throw_input_error(path, "", std::string("malformed glTF: ") + e.what());
   }

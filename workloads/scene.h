@@ -29,11 +29,15 @@ struct Material {
   glm::vec3 emission{0.0f};   // emitted radiance
 };
 
-// A camera the scene file places (glTF cameras), in world space.
+// A camera the scene file places (glTF cameras), in world space. An orthographic one has no
+// field of view but a view box (xmag, ymag: half its width and height); rtsim's camera is a
+// pinhole, so it lists such cameras and does not adopt them.
 struct SceneCamera {
   std::string name;
   glm::vec3 position{0.0f}, forward{0.0f, 0.0f, -1.0f}, up{0.0f, 1.0f, 0.0f};
-  float yfov_degrees = 60.0f;  // vertical
+  float yfov_degrees = 60.0f;  // vertical (perspective)
+  bool orthographic = false;
+  float xmag = 0.0f, ymag = 0.0f;  // orthographic: half width and height, scene units
 };
 
 // A light the scene file places (glTF KHR_lights_punctual), in world space.

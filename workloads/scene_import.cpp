@@ -301,7 +301,8 @@ glm::vec3 direction(const aiMatrix4x4& m, const aiVector3D& v) {
 // The file's cameras and lights, placed by their nodes. Cameras (only glTF has them) sit at
 // their node's origin: assimp 5.2 also copies the node's translation into mPosition, which would
 // count it twice. It gives the horizontal field of view as yfov x aspect (yfov alone when the
-// aspect is unset).
+// aspect is unset); an orthographic camera as its half width (xmag) and xmag / ymag as the
+// aspect, with no field of view.
 void read_cameras_and_lights(const aiScene& scene, Scene& out) {
   for (unsigned i = 0; i < scene.mNumCameras; ++i) {
     const aiCamera& c = *scene.mCameras[i];
@@ -311,6 +312,11 @@ void read_cameras_and_lights(const aiScene& scene, Scene& out) {
     cam.position = to_glm(m * aiVector3D(0.0f, 0.0f, 0.0f));
     cam.forward = direction(m, c.mLookAt);
     cam.up = direction(m, c.mUp);
+    cam.orthographic = c.mOrthographicWidth > 0.0f;
+    if (cam.orthographic) {
+      cam.xmag = c.mOrthographicWidth;
+      cam.ymag = c.mAspect > 0.0f ? c.mOrthographicWidth / c.mAspect : c.mOrthographicWidth;
+    }
     float yfov = c.mAspect > 0.0f ? c.mHorizontalFOV / c.mAspect : c.mHorizontalFOV;
     if (yfov > 0.0f) cam.yfov_degrees = yfov * 180.0f / 3.14159265f;
     out.cameras.push_back(cam);

@@ -13,7 +13,7 @@ namespace rtsim {
 // Installs a logger for its lifetime. assimp's logger is a process-wide singleton, so imports
 // are serialized while one is alive.
 class AssimpErrorLog {
-public:
+ public:
   AssimpErrorLog();
   ~AssimpErrorLog();
   AssimpErrorLog(const AssimpErrorLog&) = delete;
@@ -22,7 +22,7 @@ public:
   // The errors logged so far, oldest first.
   const std::vector<std::string>& errors() const { return *errors_; }
 
-private:
+ private:
   std::unique_lock<std::mutex> lock_;
   std::shared_ptr<std::vector<std::string>> errors_;
 };

@@ -19,6 +19,8 @@ RayContext* RayContextPool::acquire() {
   return context;
 }
 
-void RayContextPool::release(RayContext* context) { free_.push_back(context); }
+void RayContextPool::release(RayContext* context) {
+  free_.push_back(context);
+}
 
 }  // namespace rtsim

@@ -13,7 +13,7 @@
 namespace rtsim {
 
 class TreeletPolicy {
-public:
+ public:
   virtual ~TreeletPolicy() = default;
   // The queue of `treelet` went from `before` to `after` rays.
   virtual void changed(uint32_t treelet, uint32_t before, uint32_t after) = 0;

@@ -109,6 +109,101 @@ TEST(CliSceneInfo, BrokenObjAndGltfNameTheirLine) {
   std::remove((base + ".gltf").c_str());
 }
 
+// A glTF 2.0 triangle (its buffer a data: URI) under a named node and material, a perspective
+// camera looking at it, an orthographic one above, and a directional light.
+std::string write_view_gltf(const std::string& path) {
+  std::ofstream(path) << R"({
+  "asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_lights_punctual"],
+  "extensions": {"KHR_lights_punctual": {"lights": [
+    {"name": "sun", "type": "directional", "color": [1, 0.5, 0.5], "intensity": 3}]}},
+  "scene": 0,
+  "scenes": [{"nodes": [0, 1, 2, 3]}],
+  "nodes": [
+    {"name": "tri_node", "mesh": 0},
+    {"name": "eye", "camera": 0, "translation": [0.3, 0.3, 3]},
+    {"name": "top", "camera": 1, "translation": [0, 9, 0]},
+    {"name": "sun_node", "extensions": {"KHR_lights_punctual": {"light": 0}}}
+  ],
+  "cameras": [
+    {"type": "perspective", "perspective": {"yfov": 0.8, "aspectRatio": 1, "znear": 0.1}},
+    {"type": "orthographic", "orthographic": {"xmag": 4, "ymag": 2, "znear": 0.1, "zfar": 99}}],
+  "materials": [{"name": "paint", "pbrMetallicRoughness": {
+    "baseColorFactor": [0.9, 0.1, 0.1, 1], "metallicFactor": 1, "roughnessFactor": 0.2}}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+  "buffers": [{"byteLength": 42, "uri":
+    "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIA"}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+     "min": [0, 0, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]
+})";
+  return path;
+}
+
+// What [[material]] rules match, and what a spec could adopt: object and material names,
+// cameras (the orthographic one as such), lights with direction and intensity.
+TEST(CliSceneInfo, AGltfListsObjectsMaterialsCamerasAndLights) {
+  std::string file = write_view_gltf(::testing::TempDir() + "cli-scene-info-view.gltf");
+  RunResult r = run_rtsim("scene-info " + file);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* line :
+       {"objects      1\n  names      'tri_node'\n",
+        "materials    2\n  0          'paint': base colour [0.9, 0.1, 0.1], roughness 0.2, "
+        "metalness 1\n  1          '': ",  // assimp adds a default material
+        "cameras      2 (trace, run: --camera-index N)\n  0          'eye' perspective at [0.3, "
+        "0.3, 3] looking [0, 0, -1], up [0, 1, 0], 45.8 degrees high\n",
+        "  1          'top' orthographic at [0, 9, 0] looking [0, 0, -1], up [0, 1, 0]: a view box "
+        "8 x 4 wide and high (not adopted: rtsim's camera is a pinhole)\n",
+        "lights       1\n  0          ",
+        " directional, direction [0, 0, -1], intensity 3 lux, colour [1, 0.5, 0.5]\n"})
+    EXPECT_NE(r.out.find(line), std::string::npos) << line << "\nin:\n" << r.out;
+  EXPECT_EQ(r.out.find("60 degrees"), std::string::npos) << r.out;
+}
+
+// --camera-index picks a file camera and --fov its angle; a camera the scene cannot give, or an
+// orthographic one, is one line and exit 2 before anything is written.
+TEST(CliSceneInfo, TraceTakesTheCameraIndexAndFovItIsGiven) {
+  std::string file = write_view_gltf(::testing::TempDir() + "cli-camera-index.gltf");
+  std::string out = ::testing::TempDir() + "cli-camera-index.rays";
+  RunResult r =
+      run_rtsim("trace " + file + " --camera-index 0 --fov 30 --resolution 16x16 -o " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("trace: camera 0 'eye' of " + file +
+                       ": at (0.3, 0.3, 3) looking along (0, 0, -1), 30 degrees high (--fov)\n"),
+            std::string::npos)
+      << r.err;
+  for (const std::string& bad :
+       {std::string("--camera-index 1"), std::string("--camera-index 7"), std::string("--fov 0"),
+        std::string("--camera-index 0 --camera 1,1,1")}) {
+    std::remove(out.c_str());
+    RunResult refused = run_rtsim("trace " + file + " " + bad + " --resolution 16x16 -o " + out);
+    EXPECT_EQ(refused.exit_code, 2) << bad << ": " << refused.err;
+    EXPECT_EQ(count_lines(refused.err), 1) << bad << ": " << refused.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << bad;
+  }
+  RunResult ortho = run_rtsim("trace " + file + " --camera-index 1 -o " + out);
+  EXPECT_NE(ortho.err.find(file + ": --camera-index 1: camera 'top' is orthographic"),
+            std::string::npos)
+      << ortho.err;
+  RunResult beyond = run_rtsim("trace " + file + " --camera-index 7 -o " + out);
+  EXPECT_NE(beyond.err.find(file + ": --camera-index 7: the scene has 2 cameras (0 to 1"),
+            std::string::npos)
+      << beyond.err;
+}
+
+TEST(CliSceneInfo, AGltf1FileIsOneLineNamingItsVersionAndExit2) {
+  std::string file = ::testing::TempDir() + "cli-gltf1.gltf";
+  std::ofstream(file) << R"({"asset": {"version": "1.0"}, "meshes": {"box": {"primitives": []}}})";
+  RunResult r = run_rtsim("scene-info " + file);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "rtsim: error: " + file +
+                       ": asset.version: '1.0': glTF 1.0; rtsim reads glTF 2.0 (re-export the file "
+                       "as glTF 2.0)\n");
+}
+
 // Runs rtsim with RTSIM_MAX_MEMORY set (what memory planning plans against).
 RunResult run_with_memory(const std::string& bytes, const std::string& args) {
   setenv("RTSIM_MAX_MEMORY", bytes.c_str(), 1);
@@ -160,10 +255,11 @@ TEST(CliMemoryPlan, FlatteningAForestBeyondTheMemoryIsRefusedWithTheEstimate) {
   const std::string forest = "scene-info forest:100000000 --bvh";
   RunResult r = run_with_memory("1000000000", forest + " --set bvh.instancing=\"flatten\"");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err,
-            "rtsim: error: builtin:forest:100000000: flattening 100005416 instanced triangles needs "
-            "about 5.6 GB of memory, more than the 1.0 GB available; keep its instances "
-            "(bvh.instancing = \"auto\" or \"two_level\", no --flatten)\n");
+  EXPECT_EQ(
+      r.err,
+      "rtsim: error: builtin:forest:100000000: flattening 100005416 instanced triangles needs "
+      "about 5.6 GB of memory, more than the 1.0 GB available; keep its instances "
+      "(bvh.instancing = \"auto\" or \"two_level\", no --flatten)\n");
   EXPECT_EQ(run_with_memory("1000000000", forest).exit_code, 0) << "its instances fit";
 }
 

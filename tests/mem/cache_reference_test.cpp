@@ -13,7 +13,7 @@ namespace rtsim {
 namespace {
 
 class ReferenceCache {
-public:
+ public:
   ReferenceCache(const CacheConfig& c, bool lru)
       : c_(c), lru_(lru), sets_(c.size_bytes / (c.line_bytes * c.ways)), tags_(sets_) {}
   bool access(uint64_t addr) {
@@ -29,7 +29,7 @@ public:
     return false;
   }
 
-private:
+ private:
   CacheConfig c_;
   bool lru_;
   uint64_t sets_;
@@ -57,9 +57,8 @@ void compare_with_reference(const CacheConfig& config, uint64_t seed) {
     now += 100;  // far apart: every miss has completed, so none merges
     cache.read(addr, 4, now);
     bool hit = cache.stats().hits > hits_before;
-    ASSERT_EQ(hit, reference.access(addr))
-        << "access " << i << " addr " << addr << " ways " << config.ways << " "
-        << config.replacement;
+    ASSERT_EQ(hit, reference.access(addr)) << "access " << i << " addr " << addr << " ways "
+                                           << config.ways << " " << config.replacement;
   }
   EXPECT_GT(cache.stats().hits, 1000u) << "the stream should have locality";
   EXPECT_GT(cache.stats().misses, 1000u);

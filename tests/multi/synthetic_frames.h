@@ -18,9 +18,9 @@ namespace rtsim::test {
 
 struct SyntheticFrames {
   uint32_t width = 64, height = 36, frames = 8;
-  float speed = 1.5f;            // pixels per frame the blobs move
-  uint32_t blob_samples = 4;     // extra camera samples at a blob's centre
-  uint32_t extra_rays = 3;       // rays each sample in the second blob spawns
+  float speed = 1.5f;         // pixels per frame the blobs move
+  uint32_t blob_samples = 4;  // extra camera samples at a blob's centre
+  uint32_t extra_rays = 3;    // rays each sample in the second blob spawns
   glm::vec3 eye{0.0f, 2.4f, 9.0f}, look_at{0.0f, 0.9f, 0.0f};  // the pica room's camera
   float fov = 50.0f;
 };

@@ -40,6 +40,35 @@ TEST(CliTrace, WritesTheStreamWithOverridesAndASummary) {
   // Not a terminal: plain progress lines, one per pass and frame.
   EXPECT_NE(r.err.find("trace: frame 2/2: ao"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\r'), std::string::npos);
+  // 64x48 keeps GI's 250,000 rays a frame: another mix than 1080p's, and a line says so.
+  EXPECT_NE(r.err.find("trace: ray mix at 64x48 is not the 1920x1080 one the budgets are set "
+                       "for: budget rays a pixel diffuse_gi 81.4 against 0.121 (675x)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("gi.budget = 370 keeps the 1920x1080 mix\n"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("1080p budget"), std::string::npos) << r.out;
+  EXPECT_EQ(r.err.find("fitted"), std::string::npos) << "the spec places the camera: " << r.err;
+  std::remove(out.c_str());
+}
+
+// A camera fitted to the scene: one line says where it stands and why (workloads/README.md).
+TEST(CliTrace, AFittedCameraSaysWhereItStandsAndWhy) {
+  std::string out = tmp("fitted.rays");
+  auto object = run_rtsim("trace grid:512 --resolution 32x18 -o " + out);
+  ASSERT_EQ(object.exit_code, 0) << object.err;
+  size_t at = object.err.find("trace: camera fitted to the scene: at (");
+  ASSERT_NE(at, std::string::npos) << object.err;
+  EXPECT_EQ(object.err.find("trace: camera fitted", at + 1), std::string::npos) << object.err;
+  EXPECT_NE(object.err.find("an object, not an enclosure", at), std::string::npos) << object.err;
+  auto room = run_rtsim("trace cornell --resolution 32x18 -o " + out);
+  ASSERT_EQ(room.exit_code, 0) << room.err;
+  EXPECT_NE(room.err.find("trace: camera fitted to the scene: at ("), std::string::npos)
+      << room.err;
+  EXPECT_NE(room.err.find("an enclosure open on one side"), std::string::npos) << room.err;
+  auto half = run_rtsim("trace grid:512 --resolution 32x18 --camera 40,20,40 -o " + out);
+  EXPECT_NE(half.err.find("trace: camera look-at point fitted to the scene: at (40, 20, 40)"),
+            std::string::npos)
+      << half.err;
   std::remove(out.c_str());
 }
 

@@ -10,7 +10,9 @@
 #include <unistd.h>
 
 #include "traces/embree_scene.h"
+#include "traces/error.h"
 #include "workloads/pipeline/pipeline.h"
+#include "workloads/pipeline/workload.h"
 
 namespace rtsim::pipeline {
 namespace {
@@ -32,13 +34,68 @@ TEST(SceneDefaults, AnAutomaticCameraTakesTheFilesFirstCameraWhole) {
   EXPECT_EQ(*spec.camera.look_at, glm::vec3(0, 2, 5));
   EXPECT_EQ(spec.camera.up, glm::vec3(0, 0, 1));
   EXPECT_EQ(spec.camera.fov, 45.0f);
-  EXPECT_TRUE(mentions(notes, "camera 'eye' of level.gltf")) << notes.front();
+  EXPECT_TRUE(mentions(notes, "camera 0 'eye' of level.gltf: at (1, 2, 5)")) << notes.front();
 
   WorkloadSpec placed = default_spec_for_scene("grid:64");
   placed.camera.position = glm::vec3(3, 3, 3);
   adopt_scene_defaults(placed, scene);
   EXPECT_EQ(*placed.camera.position, glm::vec3(3, 3, 3)) << "the spec's own camera wins";
   EXPECT_FALSE(placed.camera.look_at.has_value()) << "its look-at point stays automatic";
+}
+
+// A scene with a perspective camera behind an orthographic one (Debian's assimp-testmodels
+// glTF2/cameras/Cameras.gltf has the two, the other way round).
+Scene two_cameras() {
+  Scene scene = load_scene("grid:64");
+  scene.source = "level.gltf";
+  SceneCamera top{"top", {0, 9, 0}, {0, -1, 0}, {0, 0, -1}, 60.0f, true, 4.0f, 3.0f};
+  scene.cameras.push_back(top);
+  scene.cameras.push_back({"eye", {1, 2, 5}, {-1, 0, 0}, {0, 1, 0}, 45.0f});
+  return scene;
+}
+
+TEST(SceneDefaults, AnOrthographicCameraIsPassedOverWithALine) {
+  WorkloadSpec spec = default_spec_for_scene("grid:64");
+  std::vector<std::string> notes = adopt_scene_defaults(spec, two_cameras());
+  EXPECT_EQ(*spec.camera.position, glm::vec3(1, 2, 5)) << "the first perspective camera";
+  EXPECT_EQ(spec.camera.fov, 45.0f);
+  EXPECT_TRUE(mentions(notes, "camera 0 'top' of level.gltf is orthographic: not adopted"));
+  EXPECT_TRUE(mentions(notes, "camera 1 'eye' of level.gltf: at (1, 2, 5)"));
+}
+
+TEST(SceneDefaults, CameraIndexPicksACameraAndFovOverridesItsAngle) {
+  WorkloadSpec spec = read_spec(std::string(RTSIM_SOURCE_DIR) + "/workloads/specs/grid.toml");
+  spec.camera.position = glm::vec3(7, 7, 7);
+  apply_overrides(spec, make_overrides({"", 0, std::nullopt, "", "", "", "", 1u, 20.0}));
+  std::vector<std::string> notes = adopt_scene_defaults(spec, two_cameras());
+  EXPECT_EQ(*spec.camera.position, glm::vec3(1, 2, 5)) << "the spec's camera gives way";
+  EXPECT_EQ(*spec.camera.look_at, glm::vec3(0, 2, 5));
+  EXPECT_EQ(spec.camera.fov, 20.0f) << "--fov, not the file camera's 45";
+  EXPECT_TRUE(mentions(notes,
+                       "camera 1 'eye' of level.gltf: at (1, 2, 5) looking along (-1, 0, "
+                       "0), 20 degrees high (--fov)"));
+}
+
+TEST(SceneDefaults, ACameraIndexTheSceneCannotTakeNamesTheSceneAndTheCameras) {
+  auto refusal = [](uint32_t index) {
+    WorkloadSpec spec = default_spec_for_scene("grid:64");
+    apply_overrides(spec, make_overrides({"", 0, std::nullopt, "", "", "", "", index}));
+    try {
+      adopt_scene_defaults(spec, two_cameras());
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refusal(2),
+            "level.gltf: --camera-index 2: the scene has 2 cameras (0 to 1; rtsim scene-info lists "
+            "them)");
+  EXPECT_EQ(refusal(0),
+            "level.gltf: --camera-index 0: camera 'top' is orthographic; rtsim's camera is a "
+            "pinhole (perspective): choose a perspective camera or give --camera and --look-at");
+  WorkloadSpec spec = default_spec_for_scene("grid:64");
+  apply_overrides(spec, make_overrides({"", 0, std::nullopt, "", "", "", "", 0u}));
+  EXPECT_THROW(adopt_scene_defaults(spec, load_scene("grid:64")), InputError) << "no cameras";
 }
 
 TEST(SceneDefaults, ASpecWithoutLightsTakesTheFilesLights) {

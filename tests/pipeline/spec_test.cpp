@@ -286,6 +286,39 @@ TEST(Spec, OverridesReplaceSpecValues) {
   EXPECT_THROW(make_overrides({"320"}), InputError);
 }
 
+TEST(Spec, FovAndCameraIndexOverridesAreCheckedWhereTheyAreRead) {
+  auto message = [](const OverrideText& t) {
+    try {
+      make_overrides(t);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  OverrideText wide;
+  wide.fov = 180.0;
+  EXPECT_EQ(message(wide), "--fov 180: expected a vertical field of view from 1 to 179 degrees");
+  wide.fov = 179.0;
+  EXPECT_EQ(message(wide), "accepted");
+  OverrideText both;
+  both.camera_index = 1;
+  both.look_at = "0,0,0";
+  EXPECT_EQ(message(both).rfind("--camera-index: cannot be combined with --camera or --look-at", 0),
+            0u)
+      << message(both);
+  WorkloadSpec s = parse_spec(
+      "scene = \"cornell\"\n[camera]\nposition = [1, 2, 3]\nfov = 50\n[[camera.key]]\n"
+      "position = [0, 0, 1]\nlook_at = [0, 0, 0]\n",
+      "w.toml");
+  OverrideText index;
+  index.camera_index = 1;
+  apply_overrides(s, make_overrides(index));
+  EXPECT_FALSE(s.camera.position.has_value()) << "the file's camera replaces the spec's";
+  EXPECT_TRUE(s.camera.keys.empty());
+  EXPECT_EQ(s.camera.file_camera, 1u);
+  EXPECT_FALSE(s.camera.fov_chosen) << "the file camera's angle unless --fov";
+}
+
 TEST(Spec, CameraOverridesReplaceTheSpecsViewAndRefuseADegenerateOne) {
   WorkloadSpec s = parse_spec(
       "scene = \"cornell\"\n[camera]\nposition = [1, 2, 3]\nlook_at = [0, 0, 0]\n", "w.toml");

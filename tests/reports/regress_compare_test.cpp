@@ -13,14 +13,19 @@ RegressSuite suite() {
   RegressSuite s;
   s.name = "unit";
   s.cases.push_back({});
-  s.tolerances = {{"cycles", 0.02, 0, ""}, {"l1_hit_rate", 0, 0.01, ""},
-                  {"rays", 0, 0, ""}, {"type.*.latency_p50", 0.1, 0, ""}};
+  s.tolerances = {{"cycles", 0.02, 0, ""},
+                  {"l1_hit_rate", 0, 0.01, ""},
+                  {"rays", 0, 0, ""},
+                  {"type.*.latency_p50", 0.1, 0, ""}};
   return s;
 }
 
 CaseOutcome outcome(double cycles, double l1, double unexplained = 0) {
   return {"a", true, 0,
-          Json{{"cycles", cycles}, {"l1_hit_rate", l1}, {"rays", 100}, {"unexplained", unexplained},
+          Json{{"cycles", cycles},
+               {"l1_hit_rate", l1},
+               {"rays", 100},
+               {"unexplained", unexplained},
                {"type.camera.latency_p50", 50}},
           1.0};
 }

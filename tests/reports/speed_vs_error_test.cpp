@@ -65,7 +65,8 @@ TEST(SpeedVsError, WindowOptionsNeedTheWindowsMethod) {
   EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
   r = test::run_rtsim("run cornell --fidelity sampled --sample-method everything -o /tmp/x");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("unknown method 'everything' (scale-model, warmed, windows)"), std::string::npos)
+  EXPECT_NE(r.err.find("unknown method 'everything' (scale-model, warmed, windows)"),
+            std::string::npos)
       << r.err;
 }
 

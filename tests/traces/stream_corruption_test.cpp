@@ -28,7 +28,7 @@ long error_offset(const std::string& path) {
 }
 
 class StreamCorruption : public ::testing::Test {
-protected:
+ protected:
   void SetUp() override {
     test::write_stream(good_, test::sample_rays(20), 8);
     bytes_ = test::read_bytes(good_);

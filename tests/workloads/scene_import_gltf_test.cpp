@@ -202,6 +202,60 @@ TEST(SceneImportGltf, CamerasAndPunctualLightsArePlacedByTheirNodes) {
   expect_near(s.lights[2].direction, {0, -1, 0});  // -z turned -90 degrees about x
 }
 
+// An orthographic camera (glTF's xmag and ymag, as Debian's assimp-testmodels
+// glTF2/cameras/Cameras.gltf has) is read as one, with its view box and no field of view.
+TEST(SceneImportGltf, AnOrthographicCameraKeepsItsViewBox) {
+  std::string doc =
+      gltf_with_view("data:application/octet-stream;base64," + base64(triangle_buffer()));
+  auto swap = [&doc](const std::string& from, const std::string& to) {
+    size_t at = doc.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    doc.replace(at, from.size(), to);
+  };
+  swap(R"("nodes": [0, 1, 2, 3, 4])", R"("nodes": [0, 1, 2, 3, 4, 5])");
+  swap(R"("extensions": {"KHR_lights_punctual": {"light": 2}}})",
+       R"("extensions": {"KHR_lights_punctual": {"light": 2}}},
+    {"name": "top", "camera": 1, "translation": [0, 9, 0]})");
+  swap(R"("znear": 0.1}}],)", R"("znear": 0.1}},
+              {"type": "orthographic",
+               "orthographic": {"xmag": 4, "ymag": 2, "znear": 0.1, "zfar": 100}}],)");
+  TempDir dir;
+  Scene s = load_scene(dir.write("ortho.gltf", doc));
+  ASSERT_EQ(s.cameras.size(), 2u);
+  EXPECT_FALSE(s.cameras[0].orthographic);
+  const SceneCamera& top = s.cameras[1];
+  EXPECT_EQ(top.name, "top");
+  EXPECT_TRUE(top.orthographic);
+  EXPECT_FLOAT_EQ(top.xmag, 4.0f);
+  EXPECT_FLOAT_EQ(top.ymag, 2.0f);
+  expect_near(top.position, {0, 9, 0});
+}
+
+// glTF 1.0 is refused by its version, or, unversioned, by its collections keyed by id; any
+// other document without a version too (assimp finds no reader for it), after its checks.
+TEST(SceneImportGltf, Gltf1IsRefusedNamingTheVersion) {
+  TempDir dir;
+  expect_input_error(dir.write("old.gltf", R"({"asset": {"version": "1.0"}, "meshes": {}})"),
+                     "asset.version: '1.0': glTF 1.0; rtsim reads glTF 2.0");
+  expect_input_error(dir.write("old2.gltf", R"({"asset": {"version": "1.0.2"}})"),
+                     "asset.version: '1.0.2': glTF 1.0; rtsim reads glTF 2.0");
+  expect_input_error(dir.write("three.gltf", R"({"asset": {"version": "3.0"}})"),
+                     "asset.version: '3.0': glTF 3.0; rtsim reads glTF 2.0");
+  expect_input_error(dir.write("keyed.gltf", R"({"nodes": {"root": {}}, "meshes": []})"),
+                     "nodes: an object keyed by id, as in glTF 1.0");
+  std::string doc =
+      gltf_with_view("data:application/octet-stream;base64," + base64(triangle_buffer()));
+  const std::string asset = R"("asset": {"version": "2.0"},)";
+  doc.replace(doc.find(asset), asset.size(), "");
+  expect_input_error(dir.write("unversioned.gltf", doc),
+                     "asset.version: missing; glTF 2.0 names its version there");
+  EXPECT_EQ(load_scene(
+                dir.write("versioned.gltf", gltf_with_view("data:application/octet-stream;base64," +
+                                                           base64(triangle_buffer()))))
+                .triangle_count(),
+            1u);
+}
+
 // A node rotated by a quaternion and one placed by a column-major matrix: each instance's
 // transform has the node's columns (images of x, y, z) and offset, and flattens to the mesh.
 TEST(SceneImportGltf, RotatedAndMatrixNodesKeepTheirColumns) {

@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "traces/instance_settings.h"
 #include "workloads/pipeline/offset.h"
 #include "workloads/pipeline/sampling.h"
@@ -103,6 +105,10 @@ bool room_view(const FlatTriangles& triangles, const EmbreeScene& embree, const 
         }
       }
   if (best <= 0.0f) return false;
+  view.why = fmt::format(
+      "probes from the centre met mostly back faces (rooms in a void): inside the roomiest room "
+      "that probes from a {0} x {0} x 2 grid found, along its longest free horizontal direction",
+      kGrid);
   float longest = -1.0f;
   for (int k = 0; k < 8; ++k) {
     float a = float(k) * kPi / 4.0f;
@@ -167,6 +173,11 @@ View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const Embre
   Probe probe = probe_from(triangles, embree, eye_level, 64);
   bool enclosed = probe.hit_fraction >= 0.7f && probe.front_fraction >= 0.5f &&
                   probe.median_t >= 0.15f * radius;
+  std::string found = fmt::format(
+      "{:.0f}% of 64 probes from the centre hit, {:.0f}% of those front faces, at a median {:.2g} "
+      "of the bounding radius",
+      100.0f * probe.hit_fraction, 100.0f * probe.front_fraction,
+      radius > 0.0f ? probe.median_t / radius : 0.0f);
   View view;
   float half_fov = 0.5f * fov * kPi / 180.0f;
   float tan_v = std::tan(half_fov), tan_h = tan_v * aspect;
@@ -190,10 +201,13 @@ View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const Embre
       float fit = std::max(other_half / tan_h, half.z / tan_v);
       view.position = c + best_dir * (best_half + fit);
       view.look_at = c;
+      view.why = "an enclosure open on one side (" + found + "): outside the opening, framing it";
       return view;
     }
     view.position = eye_level + best_dir * (0.8f * std::min(best_free, best_half));
     view.look_at = eye_level - best_dir * best_half + up * (0.1f * half.z);
+    view.why = "an enclosure (" + found +
+               "): inside, near its most open horizontal side, looking across to the other";
     return view;
   }
   if (probe.front_fraction < 0.5f && room_view(triangles, embree, c, basis, half, view))
@@ -219,6 +233,10 @@ View auto_view(const FlatTriangles& triangles, const Bounds& bounds, const Embre
       view.look_at = c;
     }
   }
+  view.why = fmt::format(
+      "an object, not an enclosure ({}): outside, 25 degrees up, at the diagonal where the scene "
+      "covers most of a probe image ({:.0f}%), far enough to fit its bounding sphere",
+      found, 100.0f * std::max(best, 0.0f));
   return view;
 }
 

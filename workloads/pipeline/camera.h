@@ -27,6 +27,7 @@ struct Camera {
 
 struct View {
   glm::vec3 position{0.0f}, look_at{0.0f};
+  std::string why;  // auto_view: what the probes found and where that put the camera
 };
 
 // A view that shows the scene: an outside three-quarter view that fits the bounding sphere,

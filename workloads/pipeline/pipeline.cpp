@@ -96,8 +96,14 @@ Pipeline::Pipeline(const WorkloadSpec& spec, const Scene& scene, const EmbreeSce
   summary_.lights = scene_.lights.size();
   summary_.camera_position = spec.camera.position.value_or(auto_fit_.position);
   summary_.camera_look_at = spec.camera.look_at.value_or(auto_fit_.look_at);
-  for (int p = 0; p < kPassCount; ++p)
+  WorkloadSpec hd = spec;  // the ray mix the budgets were set for (workloads/README.md)
+  hd.width = kMixWidth;
+  hd.height = kMixHeight;
+  for (int p = 0; p < kPassCount; ++p) {
     summary_.passes[size_t(p)].budget = pass_budget(spec, PassId(p), scene_.lights.size());
+    summary_.passes[size_t(p)].budget_per_pixel_1080p =
+        double(pass_budget(hd, PassId(p), scene_.lights.size())) / (double(kMixWidth) * kMixHeight);
+  }
 }
 
 void Pipeline::enter(uint32_t frame, PassId pass) {

@@ -37,10 +37,11 @@ struct FrameResults {
 
 struct PassSummary {
   uint64_t rays = 0;
-  uint64_t alpha_rays = 0;      // of them, those that met an alpha-tested candidate
-  uint64_t budget = 0;          // most rays the settings allow per frame
-  uint32_t frames_skipped = 0;  // frames in which it shot nothing
-  std::string reason;           // why (from the first such frame)
+  uint64_t alpha_rays = 0;            // of them, those that met an alpha-tested candidate
+  uint64_t budget = 0;                // most rays the settings allow per frame
+  double budget_per_pixel_1080p = 0;  // the same settings' budget a pixel at 1920x1080
+  uint32_t frames_skipped = 0;        // frames in which it shot nothing
+  std::string reason;                 // why (from the first such frame)
 };
 
 struct RunSummary {
@@ -55,6 +56,10 @@ struct RunSummary {
   uint64_t total_rays() const;
   uint64_t total_alpha_rays() const;
 };
+
+// The resolution the presets' budgets are set for (SEED's 1080p frame): the ray mix a pass's
+// budget per pixel is compared with (summary.h, ray_mix_note).
+constexpr uint32_t kMixWidth = 1920, kMixHeight = 1080;
 
 // The most rays a pass may shoot in one frame under these settings.
 uint64_t pass_budget(const WorkloadSpec& spec, PassId pass, size_t lights);

@@ -48,7 +48,7 @@ void read_camera(SpecReader& r, CameraSpec& c) {
   check_point(r, "look_at", c.look_at);
   c.up = r.vec3("up", c.up, "", "the up direction of the image");
   check_direction(r, "up", c.up);
-  c.fov = float(r.real("fov", c.fov, "degrees", "vertical field of view", 1.0, 179.0));
+  c.fov = float(r.real("fov", c.fov, "degrees", "vertical field of view", kMinFov, kMaxFov));
   c.jitter = r.boolean("jitter", c.jitter, "sub-pixel Halton jitter per frame, as TAA does");
   c.orbit = float(r.real("orbit", c.orbit, "degrees",
                          "angle swept about the up axis through look_at over all frames", -3600.0,

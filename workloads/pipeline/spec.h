@@ -52,6 +52,9 @@ struct CameraKey {
   glm::vec3 position{0.0f}, look_at{0.0f};
 };
 
+// A camera's vertical field of view, degrees: camera.fov and --fov.
+constexpr double kMinFov = 1.0, kMaxFov = 179.0;
+
 struct CameraSpec {
   std::optional<glm::vec3> position, look_at;  // nullopt: auto (fit to the scene bounds)
   glm::vec3 up{0.0f, 1.0f, 0.0f};
@@ -59,6 +62,8 @@ struct CameraSpec {
   bool jitter = true;           // sub-pixel Halton jitter per frame, as TAA does
   float orbit = 0.0f;           // degrees swept about the up axis through look_at over all frames
   std::vector<CameraKey> keys;  // if set, the camera moves through these over the frames
+  std::optional<uint32_t> file_camera;  // --camera-index: the scene file's camera N, whole
+  bool fov_chosen = false;              // --fov: fov stays when a file camera is adopted
 };
 
 enum class Placement { Regular, Importance };

@@ -1,5 +1,8 @@
 #include "workloads/pipeline/summary.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace rtsim::pipeline {
@@ -22,8 +25,8 @@ std::string format_summary(const RunSummary& s) {
   const glm::vec3 &p = s.camera_position, &l = s.camera_look_at;
   out += fmt::format("camera at [{:g}, {:g}, {:g}] looking at [{:g}, {:g}, {:g}] (frame 0)\n", p.x,
                      p.y, p.z, l.x, l.y, l.z);
-  out += fmt::format("  {:<17}{:>12}{:>12}{:>14}{:>20}  {}\n", "pass", "rays", "rays/pixel",
-                     "budget/pixel", "alpha-tested rays", "note");
+  out += fmt::format("  {:<17}{:>12}{:>12}{:>14}{:>13}{:>20}  {}\n", "pass", "rays", "rays/pixel",
+                     "budget/pixel", "1080p budget", "alpha-tested rays", "note");
   for (int p = 0; p < kPassCount; ++p) {
     const PassSummary& ps = s.passes[size_t(p)];
     std::string note;
@@ -32,14 +35,36 @@ std::string format_summary(const RunSummary& s) {
     else if (ps.frames_skipped > 0)
       note = fmt::format("skipped in {} of {} frames: {}", ps.frames_skipped, s.frames, ps.reason);
     double budget = double(ps.budget) * std::max(1u, s.frames) / pixels;
-    out +=
-        fmt::format("  {:<17}{:>12}{:>12.4f}{:>14.4f}{:>20}  {}\n", pass_name(PassId(p)), ps.rays,
-                    double(ps.rays) / pixels, budget, alpha_cell(ps.alpha_rays, ps.rays), note);
+    out += fmt::format("  {:<17}{:>12}{:>12.4f}{:>14.4f}{:>13.4f}{:>20}  {}\n",
+                       pass_name(PassId(p)), ps.rays, double(ps.rays) / pixels, budget,
+                       ps.budget_per_pixel_1080p, alpha_cell(ps.alpha_rays, ps.rays), note);
   }
-  out += fmt::format("  {:<17}{:>12}{:>12.4f}{:>14}{:>20}\n", "total", s.total_rays(),
-                     double(s.total_rays()) / pixels, "",
+  out += fmt::format("  {:<17}{:>12}{:>12.4f}{:>14}{:>13}{:>20}\n", "total", s.total_rays(),
+                     double(s.total_rays()) / pixels, "", "",
                      alpha_cell(s.total_alpha_rays(), s.total_rays()));
   return out;
+}
+
+std::string ray_mix_note(const RunSummary& s) {
+  const double pixels = double(s.width) * s.height;
+  std::string changed;
+  for (int p = 0; p < kPassCount; ++p) {
+    const PassSummary& ps = s.passes[size_t(p)];
+    double here = double(ps.budget) / pixels, hd = ps.budget_per_pixel_1080p;
+    if (hd <= 0.0 || std::abs(here / hd - 1.0) <= 0.05) continue;
+    changed += fmt::format("{}{} {:.3g} against {:.3g} ({:.3g}x)", changed.empty() ? "" : ", ",
+                           pass_name(PassId(p)), here, hd, here / hd);
+  }
+  if (changed.empty()) return "";
+  const PassSummary& gi = s.passes[size_t(PassId::DiffuseGI)];
+  uint64_t keeps =
+      uint64_t(std::llround(double(gi.budget) * pixels / (double(kMixWidth) * kMixHeight)));
+  return fmt::format(
+      "ray mix at {}x{} is not the {}x{} one the budgets are set for: budget rays a pixel {}; the "
+      "other passes are per pixel, as at {}x{}. Diffuse GI has a fixed budget a frame "
+      "(gi.budget = {}); gi.budget = {} keeps the {}x{} mix",
+      s.width, s.height, kMixWidth, kMixHeight, changed, kMixWidth, kMixHeight, gi.budget,
+      std::max<uint64_t>(keeps, 1), kMixWidth, kMixHeight);
 }
 
 }  // namespace rtsim::pipeline

@@ -11,6 +11,7 @@
 #include "traces/stream.h"
 #include "workloads/pipeline/instance_rules.h"
 #include "workloads/pipeline/preview.h"
+#include "workloads/pipeline/summary.h"
 #include "workloads/pipeline/scene_defaults.h"
 #include "workloads/scene.h"
 
@@ -28,6 +29,19 @@ std::string settings_note(const Scene& scene, const EmbreeScene& embree) {
   for (double t : seconds) sum += t;
   return note + fmt::format("; Embree built a top level for each of {} frames, {:.2f} ms a frame",
                             seconds.size(), 1e3 * sum / double(seconds.size()));
+}
+
+// Where the camera fitted to the scene stands, and why (workloads/README.md, "Your own scene").
+std::string fitted_camera_note(const WorkloadSpec& spec, const Pipeline& pipeline) {
+  const View& fit = pipeline.auto_fit();
+  const char* what = !spec.camera.position && !spec.camera.look_at ? "camera fitted to the scene"
+                     : !spec.camera.position ? "camera position fitted to the scene"
+                                             : "camera look-at point fitted to the scene";
+  return fmt::format(
+      "{}: at {} looking at {}: {} (camera.position and camera.look_at, or --camera and "
+      "--look-at, choose another)",
+      what, format_point(spec.camera.position.value_or(fit.position)),
+      format_point(spec.camera.look_at.value_or(fit.look_at)), fit.why);
 }
 
 // The outputs can be written, and replace neither the spec nor the scene file, nor the stream
@@ -79,6 +93,9 @@ TraceResult trace_workload(const WorkloadSpec& requested, const TraceOptions& op
   start = wall_seconds();
 
   Pipeline pipeline(spec, scene, *embree);
+  if ((!spec.camera.position || !spec.camera.look_at) && spec.camera.keys.empty())
+    notes.push_back(fitted_camera_note(spec, pipeline));
+  if (std::string mix = ray_mix_note(pipeline.summary()); !mix.empty()) notes.push_back(mix);
   std::unique_ptr<RayStreamWriter> writer;
   if (!options.output.empty()) {
     StreamHeader header;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <fmt/format.h>
 #include <glm/geometric.hpp>
 
 #include "traces/error.h"
@@ -56,7 +57,16 @@ void apply_overrides(WorkloadSpec& spec, const SpecOverrides& o) {
     spec.camera.look_at.reset();
     spec.camera.keys.clear();
   }
-  if (o.camera || o.look_at) spec.camera.keys.clear();
+  if (o.camera || o.look_at || o.camera_index) spec.camera.keys.clear();
+  if (o.camera_index) {
+    spec.camera.position.reset();
+    spec.camera.look_at.reset();
+    spec.camera.file_camera = o.camera_index;
+  }
+  if (o.fov) {
+    spec.camera.fov = *o.fov;
+    spec.camera.fov_chosen = true;
+  }
   if (o.camera) spec.camera.position = o.camera;
   if (o.look_at) spec.camera.look_at = o.look_at;
   if (o.up) spec.camera.up = *o.up;
@@ -78,6 +88,19 @@ SpecOverrides make_overrides(const OverrideText& text) {
   o.camera = parse_vector("--camera", text.camera, false);
   o.look_at = parse_vector("--look-at", text.look_at, false);
   o.up = parse_vector("--up", text.up, true);
+  if (text.camera_index && (o.camera || o.look_at))
+    throw InputError(
+        "--camera-index: cannot be combined with --camera or --look-at (a file "
+        "camera is a whole view; --fov and --up may change it)");
+  o.camera_index = text.camera_index;
+  if (text.fov) {
+    if (!(*text.fov >= kMinFov && *text.fov <= kMaxFov))
+      throw InputError(
+          fmt::format("--fov {:g}: expected a vertical field of view from {:g} to "
+                      "{:g} degrees",
+                      *text.fov, kMinFov, kMaxFov));
+    o.fov = float(*text.fov);
+  }
   return o;
 }
 

@@ -6,7 +6,9 @@ namespace rtsim::multi {
 StaticSplit::StaticSplit(uint32_t devices, uint32_t positions)
     : split_(equal_area_split(positions, devices)) {}
 
-Split StaticSplit::next_split(const FramePreview&) const { return split_; }
+Split StaticSplit::next_split(const FramePreview&) const {
+  return split_;
+}
 
 void StaticSplit::observe(const FrameFeedback&) {}
 

@@ -6,13 +6,13 @@
 namespace rtsim::multi {
 
 class StaticSplit : public SplitPolicy {
-public:
+ public:
   StaticSplit(uint32_t devices, uint32_t positions);
   using SplitPolicy::next_split;
   Split next_split(const FramePreview& next) const override;
   void observe(const FrameFeedback& frame) override;
 
-private:
+ private:
   Split split_;
 };
 

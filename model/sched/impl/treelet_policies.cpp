@@ -11,7 +11,7 @@ namespace rtsim {
 namespace {
 
 class FullestPolicy : public TreeletPolicy {
-public:
+ public:
   void changed(uint32_t treelet, uint32_t before, uint32_t after) override {
     if (before > 0) by_length_.erase({before, treelet});
     if (after > 0) by_length_.insert({after, treelet});
@@ -21,7 +21,7 @@ public:
     return by_length_.begin()->second;
   }
 
-private:
+ private:
   struct Longer {
     bool operator()(const std::pair<uint32_t, uint32_t>& a,
                     const std::pair<uint32_t, uint32_t>& b) const {
@@ -32,7 +32,7 @@ private:
 };
 
 class OldestPolicy : public TreeletPolicy {
-public:
+ public:
   explicit OldestPolicy(uint32_t treelets) : since_(treelets, 0) {}
   void changed(uint32_t treelet, uint32_t before, uint32_t after) override {
     if (before == 0 && after > 0) {
@@ -47,7 +47,7 @@ public:
     return by_age_.begin()->second;
   }
 
-private:
+ private:
   std::vector<uint64_t> since_;  // when each non-empty queue last became non-empty
   std::set<std::pair<uint64_t, uint32_t>> by_age_;
   uint64_t next_ = 0;
@@ -61,6 +61,8 @@ std::unique_ptr<TreeletPolicy> make_treelet_policy(const std::string& name, uint
   return nullptr;
 }
 
-std::vector<std::string> treelet_policy_names() { return {"fullest", "oldest"}; }
+std::vector<std::string> treelet_policy_names() {
+  return {"fullest", "oldest"};
+}
 
 }  // namespace rtsim
