@@ -6,8 +6,8 @@
 // see the interleaving of many rays in flight as the hardware does: a ray whose fetch went to
 // DRAM steps again only after the rays that hit in the L1 took the steps that fit in that time;
 // a block that misses in the L1 waits for one of its MSHRs when all are busy, as in the cycle
-// model. A warp slot takes a new warp when all its rays are done. Treelet and packet modes are run as
-// per-ray traversal here (their scheduling changes the order, which only the cycle level has).
+// model. A warp slot takes a new warp when all its rays are done. Treelet and packet modes are run
+// as per-ray traversal here (their scheduling changes the order, which only the cycle level has).
 // Any-hit calls read their texels through the L1 after the triangle test, as the cycle model's
 // RT core does. Stack spills and refills follow the on-chip depth roughly (entries beyond
 // rt.stack.entries spill; an empty on-chip stack with spilled entries refills one entry

@@ -19,14 +19,14 @@
 namespace rtsim {
 
 class RayRangeReader {
-public:
+ public:
   explicit RayRangeReader(const std::string& path);  // InputError on a bad header or layout
   const StreamHeader& header() const { return header_; }
   uint64_t rays() const { return rays_; }
   // Appends rays [begin, end) (stream positions) to out.
   void read(uint64_t begin, uint64_t end, std::vector<Ray>& out);
 
-private:
+ private:
   struct Chunk {
     uint64_t first_ray, offset, count;  // offset: of its first record
   };

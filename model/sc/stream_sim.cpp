@@ -20,7 +20,8 @@ StreamSim::StreamSim(const HwConfig& config, BvhView bvh, const TriangleMesh& me
   if (progress) listeners_.add(&progress_);
   if (verify) {
     model_ = std::make_unique<TraversalUnit>(bvh);
-    verifier_ = std::make_unique<SimVerifier>(make_verifier(*model_, mesh, instances, reader.header().instances));
+    verifier_ = std::make_unique<SimVerifier>(
+        make_verifier(*model_, mesh, instances, reader.header().instances));
     listeners_.add(verifier_.get());
   }
   const StreamHeader& header = reader.header();

@@ -74,8 +74,9 @@ TEST(MemoryConfig, ALevelsKeyIsSetByItsNameAndTheResolvedConfigReadsBack) {
 }
 
 TEST(MemoryConfig, TheShorthandIsTheTwoLevelList) {
-  HwConfig c = load_hw_config(write_toml("[rt.l1]\nsize_bytes = 8192\n[xbar]\nlatency = 3\n"
-                                         "[l2]\nslices = 2\n"));
+  HwConfig c =
+      load_hw_config(write_toml("[rt.l1]\nsize_bytes = 8192\n[xbar]\nlatency = 3\n"
+                                "[l2]\nslices = 2\n"));
   ASSERT_EQ(c.memory.size(), 2u);
   EXPECT_EQ(c.memory[0].name, "l1");
   EXPECT_EQ(c.memory[0].cache.size_bytes, 8192u);
