@@ -3,6 +3,7 @@
 // the sum of the configured latencies (model/VALIDATION.md).
 #include <cmath>
 #include <optional>
+#include <set>
 
 #include <fmt/core.h>
 
@@ -36,11 +37,26 @@ double hit_cycles(const std::vector<MemoryLevelConfig>& levels, uint32_t k) {
   return cycles;
 }
 
+// Distinct lines of `line_bytes` that the ray's two reads (the root node, the leaf's record)
+// touch.
+uint32_t lines_read(const BvhImage& image, uint32_t line_bytes) {
+  std::set<uint64_t> lines;
+  for (auto [addr, bytes] : {std::pair<uint64_t, uint64_t>{image.node_address(0), image.node_size},
+                             {image.triangle_address(0), image.triangle_stride}})
+    for (uint64_t line = addr / line_bytes; line <= (addr + bytes - 1) / line_bytes; ++line)
+      lines.insert(line);
+  return uint32_t(lines.size());
+}
+
 // The two-unit machine on which the second ray's reads hit level k (k >= 1): every level above
 // it private to a unit (a group level becomes one per unit: only latencies count here), level k
-// and below shared by both; for a victim level the level above holds one line, so that the
-// first ray's reads push each other into it. Empty, with why, when no machine does that.
-std::optional<HwConfig> rung_machine(const HwConfig& one_unit, uint32_t k, std::string& why) {
+// and below shared by both. For a victim level, the level above is one set of one way fewer
+// than the lines the ray reads: each line the first ray reads pushes out the one read longest
+// ago, whose data is in by then (a line evicted while its fetch is in flight never reaches the
+// victim level), and each of the second ray's misses there pushes out the line it reads next.
+// Empty, with why, when no machine does that.
+std::optional<HwConfig> rung_machine(const HwConfig& one_unit, const BvhImage& image, uint32_t k,
+                                     std::string& why) {
   HwConfig c = one_unit;
   c.rt_units = 2;
   c.dispatch.rays_per_cycle = 1.0 / 4096;
@@ -64,8 +80,13 @@ std::optional<HwConfig> rung_machine(const HwConfig& one_unit, uint32_t k, std::
   }
   if (victim) {
     CacheConfig& above = levels[k - 1].cache;
-    above.ways = 1;
-    above.size_bytes = above.line_bytes;
+    uint32_t lines = lines_read(image, above.line_bytes);
+    if (lines < 2) {
+      why = "the ray's reads touch one line: nothing leaves the level above for the victim level";
+      return std::nullopt;
+    }
+    above.ways = lines - 1;
+    above.size_bytes = uint64_t(above.line_bytes) * above.ways;
     levels[k - 1].slices = 1;
   }
   return c;
@@ -110,7 +131,7 @@ std::vector<Check> ray_ladder(const Target& target) {
                        : "the miss path: UnitMemory, Crossbar, SharedLevelsModule (model/sc, "
                          "model/mem)";
     std::string why;
-    std::optional<HwConfig> machine = k == 0 ? one : rung_machine(one, k, why);
+    std::optional<HwConfig> machine = k == 0 ? one : rung_machine(one, scene.image, k, why);
     if (!machine) {
       c.skipped = why;
     } else {
@@ -120,7 +141,8 @@ std::vector<Check> ray_ladder(const Target& target) {
                         : "2 units, 1 ray slot each, one ray dispatched every 4096 cycles: the "
                           "second ray runs on the other unit after the first left its lines "
                           "below (group levels taken per unit above this level, shared from it "
-                          "on; a victim level's upper level holding one line)";
+                          "on; a victim level's upper level one set of a way fewer than the lines "
+                          "read)";
       jobs.push_back({*machine, &scene.image, &scene.rays});
     }
     out.push_back(c);

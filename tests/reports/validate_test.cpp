@@ -46,6 +46,20 @@ TEST(Validate, QuickSuitePassesOnEveryPreset) {
   }
 }
 
+// A rung per cache level of a four-level machine (a group level, a sliced one and a victim last
+// level), each exact; a level whose latency the model gets wrong fails its own rung only.
+TEST(Validate, EachLevelOfAFourLevelHierarchyHasAnExactRung) {
+  HwConfig four = load_hw_config(RTSIM_SOURCE_DIR "/configs/examples/four-levels.toml");
+  std::map<std::string, Check> c = by_id(run_suite({four, {}}, true, [](const std::string&) {}));
+  for (const char* rung : {"ladder.l0_hit", "ladder.l1_hit", "ladder.l2_hit", "ladder.ic_hit"})
+    EXPECT_TRUE(c[rung].passed()) << rung << ": " << c[rung].measured << " against "
+                                  << c[rung].expected;
+  auto slower_ic = [](HwConfig& h) { h.memory[3].cache.hit_latency += 5; };
+  c = by_id(run_suite({four, slower_ic}, true, [](const std::string&) {}));
+  EXPECT_TRUE(c["ladder.l2_hit"].passed());
+  EXPECT_EQ(c["ladder.ic_hit"].measured, c["ladder.ic_hit"].expected + 2 * 5);
+}
+
 TEST(Validate, ALatencyOtherThanTheConfiguredOneFailsItsRung) {
   SuiteResult r = quick([](HwConfig& c) { last_level(c).cache.hit_latency += 3; });
   std::map<std::string, Check> c = by_id(r);

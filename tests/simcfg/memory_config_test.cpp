@@ -89,7 +89,7 @@ TEST(MemoryConfig, TheShorthandIsTheTwoLevelList) {
 TEST(MemoryConfig, TheShorthandBesideALevelListIsOneErrorNamingIt) {
   std::string path = write_toml(std::string(kThreeLevels) + "\n[l2]\nsize_bytes = 65536\n");
   std::string e = error_of(path);
-  EXPECT_NE(e.find(path + ": line 21: [l2] is the shorthand"), std::string::npos) << e;
+  EXPECT_NE(e.find(path + ": line 20: [l2] is the shorthand"), std::string::npos) << e;
   e = error_of(write_toml(kThreeLevels), {"l2.size_bytes=65536"});
   EXPECT_NE(e.find("--set l2.size_bytes=65536: [l2] is the shorthand"), std::string::npos) << e;
 }

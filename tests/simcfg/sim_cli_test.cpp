@@ -226,8 +226,9 @@ TEST(SimCli, SortingOrReorderingWhereTheModeCannotIsExitCode2) {
 TEST(SimCli, ListKeysPrintsEveryKey) {
   test::RunResult r = test::run_rtsim("sim --list-keys");
   ASSERT_EQ(r.exit_code, 0);
-  for (const char* key : {"rt.l1.size_bytes", "treelet_queues.policy", "dram.bytes_per_cycle",
-                          "rt.box.issue_width", "bvh.node_format", "sim.stall_cycles"})
+  for (const char* key :
+       {"memory.l1.size_bytes", "memory.levels", "treelet_queues.policy", "dram.bytes_per_cycle",
+        "rt.box.issue_width", "bvh.node_format", "sim.stall_cycles"})
     EXPECT_NE(r.out.find(key), std::string::npos) << key;
 }
 
