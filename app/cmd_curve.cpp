@@ -161,7 +161,8 @@ void write_curve(const std::string& dir, const nlohmann::ordered_json& doc, cons
 
 int run_curve(const CurveOptions& o) {
   HwConfig config = load_hw_config(o.config, o.sets);
-  std::string problem = curve_config_problem(config);
+  std::string problem = two_level_problem(config, "rtsim curve");
+  if (problem.empty()) problem = curve_config_problem(config);
   if (!problem.empty())
     throw InputError(fmt::format("curve: {}: {}",
                                  config_culprit(o.config, o.sets, curve_config_problem), problem));

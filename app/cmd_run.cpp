@@ -70,10 +70,19 @@ void print_summary(const nlohmann::ordered_json& r) {
   if (r["time"].contains("shader") && r["time"]["shader"].is_object())
     fmt::print("{}\n", shader_summary_line(r["time"]["shader"]));
   const auto& b = r["bandwidth"];
-  fmt::print("memory     L1 {}  L2 {}  DRAM {} B/ray\n",
-             reports::show(b["l1_hit_rate"], Style::Percent),
-             reports::show(b["l2_hit_rate"], Style::Percent),
-             reports::show(b["dram_bytes_per_ray"], Style::Real));
+  if (b.contains("levels") && b["levels"].size() != 2) {  // hit rates of every level
+    std::string levels;
+    for (const auto& l : b["levels"])
+      levels += fmt::format("{} {}  ", l["name"].get<std::string>(),
+                            reports::show(l["hit_rate"], Style::Percent));
+    fmt::print("memory     hit: {}DRAM {} B/ray\n", levels,
+               reports::show(b["dram_bytes_per_ray"], Style::Real));
+  } else {
+    fmt::print("memory     L1 {}  L2 {}  DRAM {} B/ray\n",
+               reports::show(b["l1_hit_rate"], Style::Percent),
+               reports::show(b["l2_hit_rate"], Style::Percent),
+               reports::show(b["dram_bytes_per_ray"], Style::Real));
+  }
   if (r["energy"].is_object()) fmt::print("{}\n", energy_summary_line(r["energy"]));
   const auto& v = r["verification"];
   if (v["skipped"].get<bool>())

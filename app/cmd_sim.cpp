@@ -89,11 +89,23 @@ void print_summary(const nlohmann::ordered_json& doc) {
   auto percent = [](const nlohmann::ordered_json& v) {
     return v.is_null() ? std::string("n/a") : fmt::format("{:.1f}%", 100 * v.get<double>());
   };
-  fmt::print(
-      "memory     L1 hit {} served {} compulsory {}  L2 hit {} served {} compulsory {}  "
-      "(served: hits and merges into misses in flight; compulsory: share of misses)\n",
-      percent(m["l1_hit_rate"]), percent(m["l1_served_rate"]), percent(m["l1_compulsory_share"]),
-      percent(m["l2_hit_rate"]), percent(m["l2_served_rate"]), percent(m["l2_compulsory_share"]));
+  if (m["levels"].size() != 2) {  // every level
+    std::string levels;
+    for (const auto& l : m["levels"])
+      levels += fmt::format("{} hit {} served {} compulsory {}  ", l["name"].get<std::string>(),
+                            percent(l["hit_rate"]), percent(l["served_rate"]),
+                            percent(l["compulsory_share"]));
+    fmt::print(
+        "memory     {}(served: hits and merges into misses in flight; compulsory: share "
+        "of misses)\n",
+        levels);
+  } else {
+    fmt::print(
+        "memory     L1 hit {} served {} compulsory {}  L2 hit {} served {} compulsory {}  "
+        "(served: hits and merges into misses in flight; compulsory: share of misses)\n",
+        percent(m["l1_hit_rate"]), percent(m["l1_served_rate"]), percent(m["l1_compulsory_share"]),
+        percent(m["l2_hit_rate"]), percent(m["l2_served_rate"]), percent(m["l2_compulsory_share"]));
+  }
   const auto& u = doc["utilisation"]["mean"];
   fmt::print(
       "busy       box {:.1f}%  triangle {:.1f}%  control {:.1f}%  ray slots {:.1f}%  "

@@ -126,6 +126,7 @@ Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& 
     for (const char* key :
          {"l1_served_rate", "l2_served_rate", "l1_compulsory_share", "l2_compulsory_share"})
       b[key] = stats["memory"][key];
+    if (stats["memory"].contains("levels")) b["levels"] = stats["memory"]["levels"];
     for (auto& [name, entry] : by_type.items()) {
       double n = counters["type." + name + ".rays"].get<double>();
       entry["l1_bytes_per_ray"] =

@@ -24,7 +24,7 @@ FidelityResult cycle_level_result(const RtSimulator& sim) {
   FidelityResult result;
   result.level = FidelityLevel::Cycle;
   result.clock_ghz = sim.config().clock_ghz;
-  set_exact_estimates(result, by_type, true, true);
+  set_exact_estimates(result, by_type, true, true, uint32_t(sim.config().memory.size() - 1));
   result.simulated_rays = result.rays;
   result.cycles = Estimate::exact(double(sim.cycles()));
   result.time_model = "cycle-approximate model";

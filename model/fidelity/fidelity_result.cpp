@@ -57,7 +57,7 @@ double FidelityResult::mrays_per_second() const {
 
 void set_exact_estimates(FidelityResult& result,
                          const std::array<CostTotals, kRayTypeCount>& by_type, bool cached,
-                         bool timed) {
+                         bool timed, uint32_t last_level) {
   CostTotals all;
   for (int t = 0; t < kRayTypeCount; ++t) {
     const CostTotals& c = by_type[t];
@@ -70,7 +70,8 @@ void set_exact_estimates(FidelityResult& result,
     e.triangles_per_ray = Estimate::exact(c.triangles / n);
     if (cached) {
       e.l1_hit_rate = Estimate::exact(ratio(c.reads.hits[0], c.reads.accesses[0]));
-      e.l2_hit_rate = Estimate::exact(ratio(c.reads.hits[1], c.reads.accesses[1]));
+      e.l2_hit_rate =
+          Estimate::exact(ratio(c.reads.hits[last_level], c.reads.accesses[last_level]));
       e.dram_bytes_per_ray = Estimate::exact(c.reads.dram_bytes / n);
     }
     if (timed) e.latency_mean = Estimate::exact(c.latency / n);
@@ -81,7 +82,8 @@ void set_exact_estimates(FidelityResult& result,
   result.triangles_per_ray = Estimate::exact(all.triangles / n);
   if (cached) {
     result.l1_hit_rate = Estimate::exact(ratio(all.reads.hits[0], all.reads.accesses[0]));
-    result.l2_hit_rate = Estimate::exact(ratio(all.reads.hits[1], all.reads.accesses[1]));
+    result.l2_hit_rate =
+        Estimate::exact(ratio(all.reads.hits[last_level], all.reads.accesses[last_level]));
     result.dram_bytes = Estimate::exact(double(all.reads.dram_bytes));
   }
 }

@@ -79,9 +79,10 @@ class HostTimer {
 };
 
 // Fills the ray-count-derived estimates of a result from exact totals per ray type.
-// timed: latency sums are meaningful; cached: cache and DRAM counters are meaningful.
+// timed: latency sums are meaningful; cached: cache and DRAM counters are meaningful;
+// last_level: the level above DRAM, whose hit rate is l2_hit_rate (l1_hit_rate: level 0).
 void set_exact_estimates(FidelityResult& result,
                          const std::array<CostTotals, kRayTypeCount>& by_type, bool cached,
-                         bool timed);
+                         bool timed, uint32_t last_level = 1);
 
 }  // namespace rtsim
