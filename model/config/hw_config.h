@@ -105,7 +105,7 @@ uint32_t ray_slots(const HwConfig& config);
 // (traces/memory_plan.h).
 struct SimHostMemory {
   uint64_t bytes = 0;
-  std::string largest;  // e.g. "l2.size_bytes"
+  std::string largest;  // e.g. "memory.l2.size_bytes"
 };
 SimHostMemory sim_host_memory(const HwConfig& config);
 

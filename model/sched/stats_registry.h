@@ -1,4 +1,4 @@
-// The statistics of one run under dotted per-instance names ("rt0.l1.hits"): plain counters
+// The statistics of one run under dotted per-instance names ("mem.l1.rt0.hits"): plain counters
 // that the modules report at the end, and derived statistics declared once as formulas
 // (numerator / denominator * scale) that are computed only when written, as in gem5.
 #pragma once
@@ -30,7 +30,7 @@ class StatsRegistry {
 
   bool has(const std::string& name) const;
   double value(const std::string& name) const;  // a counter, a real or a ratio; 0 if absent
-  // The sum over RT units 0 .. units - 1 of "rtI" + suffix (suffix: ".l1.accesses", say).
+  // The sum over RT units 0 .. units - 1 of "rtI" + suffix (suffix: ".box.tests", say).
   double units_sum(uint32_t units, const std::string& suffix) const;
   // Every name: counters, reals and gauges, then ratios, each in the order added.
   std::vector<std::string> names() const;
