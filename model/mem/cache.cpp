@@ -213,14 +213,9 @@ void Cache::prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
 void Cache::fill(uint64_t addr, uint32_t bytes, Cycle at) {
   for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
     Cycle start = admits_ ? admit(line, stop - begin, at) : at;
-    uint32_t set = set_of(line);
-    uint32_t way = find(set, tag_of(line));
-    if (way == kNone)
-      way = allocate(set, tag_of(line), start);
-    else
-      policy_.touch(set, way);
+    Place p = place(line, start);
     for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block) {
-      Block& b = block_at(set, way, block);
+      Block& b = block_at(p.set, p.way, block);
       if (b.valid) continue;
       b = Block{start, kNone, 0, true, false, false};
       stats_.victim_fills++;
@@ -232,15 +227,10 @@ void Cache::fill(uint64_t addr, uint32_t bytes, Cycle at) {
 uint32_t Cache::warm(uint64_t addr, uint32_t bytes, Cycle at, bool write) {
   uint32_t fetched = 0;
   for_each_line(addr, bytes, [&](uint64_t line, uint64_t begin, uint64_t stop) {
-    uint32_t set = set_of(line);
-    uint32_t way = find(set, tag_of(line));
-    if (way == kNone)
-      way = allocate(set, tag_of(line), at);
-    else
-      policy_.touch(set, way);
+    Place p = place(line, at);
     bool dirty = write && config_.write_back;
     for (uint64_t block = begin >> block_shift_; block <= (stop - 1) >> block_shift_; ++block) {
-      Block& b = block_at(set, way, block);
+      Block& b = block_at(p.set, p.way, block);
       b.dirty = b.dirty || dirty;
       if (b.valid) continue;
       b = Block{0, kNone, 0, true, dirty, false};
@@ -279,6 +269,15 @@ uint32_t Cache::merge(Block& b) {
   }
   b.merges++;
   return 0;
+}
+
+Cache::Place Cache::place(uint64_t line, Cycle at) {
+  Place p{set_of(line), find(set_of(line), tag_of(line))};
+  if (p.way == kNone)
+    p.way = allocate(p.set, tag_of(line), at);
+  else
+    policy_.touch(p.set, p.way);
+  return p;
 }
 
 inline Cache::Place Cache::look_up(uint64_t line) {

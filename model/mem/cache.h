@@ -244,6 +244,9 @@ class Cache : public MemoryTarget, private ReadClient {
   // Where `line` is; if present, touched once for all of a read's blocks in it (LRU compares
   // only the order of lines' last uses).
   Place look_up(uint64_t line);
+  // Where `line` is, given a way if absent (a victim evicted at `at`), else touched: a line that
+  // arrives without a fetch (warm, fill).
+  Place place(uint64_t line, Cycle at);
   // A block's ready cycle, or kPending once the caller waits for it; an absent line is given a
   // way (p.way).
   Cycle read_block(uint64_t block, Place& p, Cycle at, Caller& caller, ReadCharge& charge);

@@ -20,6 +20,12 @@ uint32_t level_instances(const MemoryLevelConfig& level, uint32_t units) {
   return (std::max(units, 1u) + per - 1) / per;
 }
 
+uint32_t own_levels(const std::vector<MemoryLevelConfig>& levels) {
+  uint32_t own = 0;
+  while (own < levels.size() && !queued_level(levels[own])) ++own;
+  return own;
+}
+
 std::string scope_name(const MemoryLevelConfig& level) {
   switch (level.scope) {
     case LevelScope::Unit: return "unit";

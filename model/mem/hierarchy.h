@@ -39,6 +39,8 @@ uint32_t level_instances(const MemoryLevelConfig& level, uint32_t units);
 inline bool queued_level(const MemoryLevelConfig& level) {
   return level.scope != LevelScope::Unit;
 }
+// How many levels, from the first, are each unit's own (the rest are group or shared levels).
+uint32_t own_levels(const std::vector<MemoryLevelConfig>& levels);
 // "unit", "group:4", "shared".
 std::string scope_name(const MemoryLevelConfig& level);
 // Parses a scope name into level; false if it is not one.

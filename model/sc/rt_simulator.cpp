@@ -29,8 +29,7 @@ RtSimulator::RtSimulator(const HwConfig& config, BvhView bvh, RaySource& source,
   std::vector<MemoryLevelConfig> levels = levels_as_built(config);
   // A unit's last own level sends misses and writes after its tag check: the shared levels may
   // serve that far ahead.
-  uint32_t own = 0;
-  while (own < levels.size() && !queued_level(levels[own])) ++own;
+  uint32_t own = own_levels(levels);
   shared_ = std::make_unique<SharedLevelsModule>(
       "mem", levels, config.rt_units, clock_, levels[own - 1].cache.hit_latency,
       [this](std::exception_ptr e) { control_.fail(e); });

@@ -68,14 +68,10 @@ SharedLevelsModule::SharedLevelsModule(sc_core::sc_module_name name,
       in("in"),
       out("out"),
       levels_(levels),
+      units_(units),
       clock_(clock),
       on_error_(std::move(on_error)) {
-  first_queued_ = uint32_t(levels_.size());
-  for (uint32_t i = 0; i < levels_.size(); ++i)
-    if (queued_level(levels_[i])) {
-      first_queued_ = i;
-      break;
-    }
+  first_queued_ = own_levels(levels_);
   uint32_t link = first_queued_ > 0 ? levels_[first_queued_ - 1].link.latency : 0;
   lookahead_ = window_ = std::max<uint32_t>(lookahead + link, 1);
   add_instances(units);
@@ -165,7 +161,7 @@ void SharedLevelsModule::start_of_simulation() {
 
 uint32_t SharedLevelsModule::entry(uint32_t unit) const {
   if (first_queued_ == levels_.size()) return 0;
-  return unit / units_per_instance(levels_[first_queued_], UINT32_MAX);
+  return unit / units_per_instance(levels_[first_queued_], units_);
 }
 
 uint32_t SharedLevelsModule::connect(uint32_t unit, std::function<void()> on_response) {

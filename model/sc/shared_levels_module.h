@@ -239,6 +239,7 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   };
 
   std::vector<MemoryLevelConfig> levels_;
+  uint32_t units_;             // RT units the module serves
   uint32_t first_queued_ = 0;  // the index in levels_ of the first level this module holds
   std::vector<Instance> instances_;
   Clock clock_;

@@ -24,8 +24,7 @@ std::vector<MemoryLevelConfig> one_level(const CacheConfig& config) {
 UnitMemory::UnitMemory(sc_core::sc_module_name name, const std::vector<MemoryLevelConfig>& levels,
                        std::function<void()> on_response)
     : sc_module(name), on_response_(std::move(on_response)) {
-  uint32_t own = 0;
-  while (own < levels.size() && !queued_level(levels[own])) ++own;
+  uint32_t own = own_levels(levels);
   caches_.resize(own);
   for (uint32_t i = own; i-- > 0;) {
     MemoryTarget* below = i + 1 < own ? caches_[i + 1].get() : static_cast<MemoryTarget*>(this);

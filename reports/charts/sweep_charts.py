@@ -105,7 +105,12 @@ def bars(doc, chart, points, others):
                                 hatch=HATCHES[g % len(HATCHES)], label=label(members[0], others)))
     ax.set_xticks(range(len(categories)))
     ax.set_xticklabels(categories)
-    ax.set_xlabel(x_key)
+    return finish(fig, ax, chart, x_key, legend)
+
+
+def finish(fig, ax, chart, x_label, legend):
+    """Axis labels, title and the legend (series, then the groups' entries) of a sweep chart."""
+    ax.set_xlabel(x_label)
     ax.set_ylabel(chart["y"].replace("type.*.", ""))
     ax.set_title(chart["title"])
     handles, _ = ax.get_legend_handles_labels()
@@ -145,12 +150,7 @@ def curve(doc, chart):
         if ys[0][1] is not None:
             legend.append(Line2D([], [], color="black", ls=style, label=label(members[0], others)))
     log2_if_spread(ax, [x_of(p) for p in points])
-    ax.set_xlabel(x_label)
-    ax.set_ylabel(chart["y"].replace("type.*.", ""))
-    ax.set_title(chart["title"])
-    handles, _ = ax.get_legend_handles_labels()
-    ax.legend(handles=handles + legend, fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1))
-    return fig
+    return finish(fig, ax, chart, x_label, legend)
 
 
 def log2_if_spread(ax, xs):

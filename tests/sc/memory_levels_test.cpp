@@ -55,9 +55,7 @@ struct Reader : sc_core::sc_module, ReadClient {
 
 // What the shared levels may rely on: the unit's last own level sends after its tag check.
 uint32_t last_own_hit_latency(const std::vector<MemoryLevelConfig>& levels) {
-  uint32_t own = 0;
-  while (own < levels.size() && !queued_level(levels[own])) ++own;
-  return levels[own - 1].cache.hit_latency;
+  return levels[own_levels(levels) - 1].cache.hit_latency;
 }
 
 // The machine: one reader (unit 0) on the levels, a simple DRAM below.

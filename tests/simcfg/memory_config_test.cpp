@@ -5,27 +5,15 @@
 #include <fstream>
 
 #include "model/config/hw_config.h"
+#include "tests/simcfg/config_files.h"
 #include "tests/temp_dir.h"
 #include "traces/error.h"
 
 namespace rtsim {
 namespace {
 
-std::string write_toml(const std::string& text) {
-  static int n = 0;
-  std::string path = test::scratch_path("levels" + std::to_string(n++) + ".toml");
-  std::ofstream(path) << text;
-  return path;
-}
-
-std::string error_of(const std::string& path, const std::vector<std::string>& sets = {}) {
-  try {
-    load_hw_config(path, sets);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+using test::error_of;
+using test::write_toml;
 
 const char* kThreeLevels = R"(
 [[memory.level]]
