@@ -9,6 +9,7 @@ rename compare with those after: a figure that exists on both sides must be equa
 only the new build reports is new.
 """
 import json
+import os
 import re
 import sys
 
@@ -57,7 +58,9 @@ def line(name, path):
 def compare(before_path, now_path):
     def read(text):
         run = json.loads(text)
-        run["figures"] = {new_name(k): v for k, v in run["figures"].items()}
+        # A scene path through a worktree's "../shared" names the same file from any worktree.
+        run["figures"] = {new_name(k): os.path.normpath(v) if k == "input.scene" else v
+                          for k, v in run["figures"].items()}
         return run
 
     now = {}
