@@ -22,6 +22,10 @@ const char* refill_name(Refill refill) {
   return refill == Refill::Slot ? "slot" : "warp";
 }
 
+const char* test_issue_name(TestIssue issue) {
+  return issue == TestIssue::Shared ? "shared" : "separate";
+}
+
 const char* packet_policy_name(PacketPolicy policy) {
   return policy == PacketPolicy::NodeFirst ? "node_first" : "majority";
 }
@@ -38,6 +42,8 @@ std::string rt_core_config_problem(const RtCoreConfig& c) {
   if (!problem.empty()) return "box: " + problem;
   problem = test_unit_config_problem(c.triangle);
   if (!problem.empty()) return "triangle: " + problem;
+  if (c.test_issue == TestIssue::Shared && c.triangle.count != c.box.count)
+    return "test_issue = \"shared\": triangle.count must equal box.count (one pool of units)";
   problem = test_unit_config_problem(c.transform);
   if (!problem.empty()) return "transform: " + problem;
   problem = test_unit_config_problem(c.anyhit.shader);

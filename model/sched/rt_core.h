@@ -45,8 +45,15 @@ enum class PacketPolicy : uint8_t { NodeFirst, Majority };
 // ray retires (slot). Treelet mode always refills slots, packet mode always warps.
 enum class Refill : uint8_t { Warp, Slot };
 
+// Who takes the ray-box and ray-triangle issues: separate pools (rt.box and rt.triangle units,
+// as NVIDIA's RT cores and Intel's RT units have them), or shared: rt.box.count units each
+// start one issue a cycle, of either rt.box.issue_width boxes or rt.triangle.issue_width
+// triangles (AMD's ray accelerator: 4 box or 1 triangle test a clock, RDNA4 8 or 2).
+enum class TestIssue : uint8_t { Separate, Shared };
+
 const char* traversal_mode_name(TraversalMode mode);  // depth_first, treelet, packet
 const char* refill_name(Refill refill);               // warp, slot
+const char* test_issue_name(TestIssue issue);         // separate, shared
 const char* packet_policy_name(PacketPolicy policy);  // node_first, majority
 
 // Packet mode: packet reordering after Boulos et al., "Adaptive ray packet reordering" (IEEE
@@ -83,8 +90,9 @@ struct RtCoreConfig {
   uint32_t setup_latency = 4;    // cycles: ray setup, from arrival to the first step
   uint32_t control_latency = 1;  // cycles: stack pop, sort and push after the tests
   StackConfig stack;
-  TestUnitConfig box{1, 8, 8};        // ray-box units: a BVH8 node per issue
-  TestUnitConfig triangle{1, 1, 12};  // ray-triangle units
+  TestUnitConfig box{1, 8, 8};                 // ray-box units: a BVH8 node per issue
+  TestUnitConfig triangle{1, 1, 12};           // ray-triangle units
+  TestIssue test_issue = TestIssue::Separate;  // shared: triangle.count must equal box.count
   // Instance transform units (two levels): a ray per issue; assumed as deep as the box test
   // (three chained multiply-adds a component, no published figure).
   TestUnitConfig transform{1, 1, 8};

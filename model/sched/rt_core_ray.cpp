@@ -85,13 +85,17 @@ Cycle RtCore::test_step(uint32_t item, Cycle data) {
   TestUnitPool& unit = kind == StepKind::Leaf   ? triangle_
                        : kind == StepKind::Node ? box_
                                                 : transform_;
+  // Shared issue slots: triangle tests take the box units' issues.
+  TestUnitPool& issuer =
+      kind == StepKind::Leaf && config_.test_issue == TestIssue::Shared ? box_ : unit;
   bool packet = config_.mode == TraversalMode::Packet;
   uint32_t first = packet ? item * packet_unit_ : item;
   uint32_t count = packet ? packet_width_[item] : 1;
   Cycle done = data;
   for (uint32_t slot = first; slot < first + count; ++slot) {
     if (slot_state_[slot].tests == kNoTests) continue;
-    done = std::max(done, call_anyhit(slot, unit.reserve(data, slot_state_[slot].tests)));
+    done =
+        std::max(done, call_anyhit(slot, issuer.reserve_as(unit, data, slot_state_[slot].tests)));
     slot_state_[slot].tests = kNoTests;
   }
   Cycle next = done + config_.control_latency;

@@ -52,27 +52,28 @@ TestUnitPool::Slot* TestUnitPool::find_free(Cycle& cycle) {
   return slot;
 }
 
-Cycle TestUnitPool::reserve(Cycle arrival, uint32_t tests) {
-  uint32_t width = config_.issue_width;
+Cycle TestUnitPool::reserve_as(TestUnitPool& kind, Cycle arrival, uint32_t tests) {
+  uint32_t width = kind.config_.issue_width, latency = kind.config_.latency;
   uint32_t issues = tests <= width ? 1 : (tests + width - 1) / width;  // most steps: one issue
-  stats_.requests++;
-  stats_.tests += tests;
-  stats_.issues += issues;
+  TestUnitStats& stats = kind.stats_;
+  stats.requests++;
+  stats.tests += tests;
+  stats.issues += issues;
   if (issues == 1) {              // the common case: a unit free at the arrival cycle, no search
     Slot* slot = entry(arrival);  // a conflict is counted once, by the search below
     if (slot && slot->used < config_.count) {
       slot->used++;
-      return arrival + config_.latency;
+      return arrival + latency;
     }
   }
   Cycle cycle = arrival;
   Slot* slot = find_free(cycle);
-  stats_.stall_cycles += cycle - arrival;
+  stats.stall_cycles += cycle - arrival;
   for (;;) {
     uint32_t take = std::min<uint32_t>(config_.count - slot->used, issues);
     slot->used = uint16_t(slot->used + take);
     issues -= take;
-    if (issues == 0) return cycle + config_.latency;
+    if (issues == 0) return cycle + latency;
     slot = find_free(++cycle);
   }
 }

@@ -11,6 +11,9 @@
 // (conservative; counted as calendar_conflicts, zero in practice). Booked cycles keep skip
 // hints with path compression (as in union-find), so a busy pool finds its next free cycle
 // in near-constant time.
+// Shared issue slots (reserve_as): one pool's units may take the issues of another kind of
+// test, each issue either kind's width and latency, as AMD's ray accelerator does 4 box tests
+// or 1 triangle test a clock (RDNA2/3; RDNA4: 8 or 2). Tests a clock = count x issue_width.
 // Follows the fixed-function box/triangle units of Aila & Karras (HPG 2010) and RT cores.
 #pragma once
 
@@ -47,7 +50,11 @@ class TestUnitPool {
 
   // Reserves the issues for `tests` tests arriving at cycle `arrival`; returns the cycle their
   // results are ready. tests = 0 is treated as 1 (a step always passes through the unit).
-  Cycle reserve(Cycle arrival, uint32_t tests);
+  Cycle reserve(Cycle arrival, uint32_t tests) { return reserve_as(*this, arrival, tests); }
+  // Reserves tests of `kind` (its issue width and latency, counted in its stats) in this pool's
+  // issue slots: the units serve either kind, one issue each per cycle. Conflicts of the
+  // calendar count in this pool's stats.
+  Cycle reserve_as(TestUnitPool& kind, Cycle arrival, uint32_t tests);
   const TestUnitStats& stats() const { return stats_; }
   const TestUnitConfig& config() const { return config_; }
 

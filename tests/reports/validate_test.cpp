@@ -7,6 +7,7 @@
 #include <map>
 #include <regex>
 
+#include "reports/validate/checks.h"
 #include "reports/validate/suite.h"
 #include "tests/cli/run_rtsim.h"
 #include "tests/temp_dir.h"
@@ -73,6 +74,43 @@ TEST(Validate, ARateOtherThanTheConfiguredOneFailsItsCeiling) {
   c = by_id(r);
   EXPECT_FALSE(c["roofline.dram"].passed());
   EXPECT_LT(c["roofline.dram"].measured, 0.51 * c["roofline.dram"].expected);
+}
+
+// The box and triangle ceilings count tests, not issues: count x issue_width as vendors publish
+// them, so a pool that ignored issue_width fails them.
+std::map<std::string, Check> ceilings(const HwConfig& config, bool ignore_width) {
+  std::function<void(HwConfig&)> tamper;
+  if (ignore_width)
+    tamper = [](HwConfig& c) { c.rt.box.issue_width = c.rt.triangle.issue_width = 1; };
+  std::map<std::string, Check> out;
+  for (const Check& c : throughput_ceilings({config, tamper})) out[c.id] = c;
+  return out;
+}
+
+TEST(Validate, CeilingsCountTestsSoAnIgnoredIssueWidthFails) {
+  HwConfig xe_hpg;  // 12 box and 1 triangle tests a clock: 2 pipelines of a 6-wide node
+  xe_hpg.rt.box = {2, 6, 8};
+  xe_hpg.rt.triangle = {1, 1, 12};
+  std::map<std::string, Check> c = ceilings(xe_hpg, false);
+  EXPECT_TRUE(c["ceiling.box_tests"].passed()) << c["ceiling.box_tests"].measured;
+  EXPECT_EQ(c["ceiling.box_tests"].expected, 12);
+  EXPECT_TRUE(c["ceiling.triangle_tests"].passed()) << c["ceiling.triangle_tests"].measured;
+  c = ceilings(xe_hpg, true);
+  EXPECT_FALSE(c["ceiling.box_tests"].passed());
+  EXPECT_NEAR(c["ceiling.box_tests"].measured, 2.0, 0.04) << "two issues of one box a cycle";
+
+  HwConfig rdna4;  // one issue a clock: 8 box or 2 triangle tests
+  rdna4.rt.test_issue = TestIssue::Shared;
+  rdna4.rt.box = {1, 8, 8};
+  rdna4.rt.triangle = {1, 2, 12};
+  c = ceilings(rdna4, false);
+  EXPECT_TRUE(c["ceiling.box_tests"].passed()) << c["ceiling.box_tests"].measured;
+  EXPECT_TRUE(c["ceiling.triangle_tests"].passed()) << c["ceiling.triangle_tests"].measured;
+  EXPECT_EQ(c["ceiling.triangle_tests"].expected, 2);
+  c = ceilings(rdna4, true);
+  EXPECT_FALSE(c["ceiling.box_tests"].passed());
+  EXPECT_FALSE(c["ceiling.triangle_tests"].passed());
+  EXPECT_NEAR(c["ceiling.triangle_tests"].measured, 1.0, 0.02) << "one triangle an issue";
 }
 
 TEST(Validate, PagesShowFailuresSkipsAndReportedFigures) {

@@ -63,6 +63,29 @@ TEST(TestUnitPool, NeverExceedsIssueCapacity) {
   EXPECT_GE(cycles_used * 2, double(pool.stats().issues)) << "issues per cycle <= unit count";
 }
 
+TEST(TestUnitPool, SharedSlotsTakeEitherKindOneIssueACycle) {
+  // AMD RDNA2's ray accelerator: 4 box tests or 1 triangle test a clock, one issue shared.
+  TestUnitPool box({1, 4, 8}), triangle({1, 1, 12});
+  EXPECT_EQ(box.reserve(0, 8), 1u + 8) << "8 boxes: issues at cycles 0 and 1";
+  EXPECT_EQ(box.reserve_as(triangle, 0, 1), 2u + 12) << "the triangle waits for cycle 2";
+  EXPECT_EQ(box.reserve(0, 4), 3u + 8) << "and the next box issue for cycle 3";
+  EXPECT_EQ(box.reserve_as(triangle, 0, 2), 5u + 12) << "2 triangles: cycles 4 and 5";
+  EXPECT_EQ(triangle.reserve(0, 1), 12u) << "the triangle pool's own slots stay free";
+  EXPECT_EQ(box.stats().issues, 3u);
+  EXPECT_EQ(triangle.stats().issues, 1u + 2 + 1) << "each kind counts its own issues";
+  EXPECT_EQ(triangle.stats().tests, 1u + 2 + 1);
+  EXPECT_EQ(triangle.stats().stall_cycles, 2u + 4) << "waits in the shared slots";
+}
+
+TEST(TestUnitPool, TestsACycleAreCountTimesWidth) {
+  // Intel Xe-HPG: 2 traversal pipelines a 6-wide node a clock each = 12 box tests a clock.
+  TestUnitPool pool({2, 6, 8});
+  Cycle last = 0;
+  for (int i = 0; i < 600; ++i) last = std::max(last, pool.reserve(0, 6));
+  EXPECT_EQ(last, 299u + 8) << "600 nodes of 6 boxes: 3600 tests in 300 cycles";
+  EXPECT_DOUBLE_EQ(double(pool.stats().tests) / (last - 8 + 1), 12.0);
+}
+
 TEST(TestUnitPool, RejectsImpossibleConfigs) {
   EXPECT_THROW(TestUnitPool({0, 1, 1}), std::invalid_argument);
   EXPECT_THROW(TestUnitPool({1, 0, 1}), std::invalid_argument);
