@@ -178,13 +178,13 @@ void add_bvh_options(CLI::App& cmd, BvhConfig& bvh) {
   cmd.add_option_function<std::string>(
          "--format", [&bvh](const std::string& v) { bvh.node_format = *node_format_from_name(v); },
          "Node format")
-      ->check(CLI::IsMember({"aabb32", "cwbvh8"}))
+      ->check(CLI::IsMember({"aabb32", "cwbvh8", "xe6"}))
       ->default_str(node_format_name(bvh.node_format));
   cmd.add_option_function<std::string>(
          "--triangles",
          [&bvh](const std::string& v) { bvh.triangle_format = *triangle_format_from_name(v); },
          "Triangle layout")
-      ->check(CLI::IsMember({"raw", "woop"}))
+      ->check(CLI::IsMember({"raw", "woop", "xe_quad"}))
       ->default_str(triangle_format_name(bvh.triangle_format));
   cmd.add_option_function<std::string>(
          "--layout", [&bvh](const std::string& v) { bvh.node_layout = *node_layout_from_name(v); },

@@ -12,6 +12,18 @@ std::string validate(const BvhConfig& c) {
   if (c.node_format == NodeFormat::Cwbvh8 && c.max_leaf_size > 3)
     return fmt::format("max_leaf_size is {}: cwbvh8 leaves hold at most 3 triangles",
                        c.max_leaf_size);
+  bool xe_node = c.node_format == NodeFormat::Xe6,
+       xe_leaf = c.triangle_format == TriangleFormat::XeQuad;
+  if (xe_node != xe_leaf)
+    return "node_format xe6 and triangle_format xe_quad go together: Intel's leaves are quads "
+           "interleaved with its nodes";
+  if (xe_node && c.width > 6)
+    return fmt::format("width is {}: xe6 nodes hold at most 6 children", c.width);
+  if (xe_node && c.max_leaf_size > 2)
+    return fmt::format(
+        "max_leaf_size is {}: xe6 leaves hold at most 2 triangles (one quad, or "
+        "two)",
+        c.max_leaf_size);
   if (!(c.sah_node_cost >= 0.0f && c.sah_node_cost < 1e6f))
     return "sah_node_cost must be a finite value >= 0";
   if (c.width < 2 || c.width > 8) return fmt::format("width is {}: it must be in 2..8", c.width);
@@ -30,11 +42,19 @@ std::string validate(const BvhConfig& c) {
 }
 
 const char* node_format_name(NodeFormat format) {
-  return format == NodeFormat::Cwbvh8 ? "cwbvh8" : "aabb32";
+  switch (format) {
+    case NodeFormat::Cwbvh8: return "cwbvh8";
+    case NodeFormat::Xe6: return "xe6";
+    default: return "aabb32";
+  }
 }
 
 const char* triangle_format_name(TriangleFormat format) {
-  return format == TriangleFormat::Woop ? "woop" : "raw";
+  switch (format) {
+    case TriangleFormat::Woop: return "woop";
+    case TriangleFormat::XeQuad: return "xe_quad";
+    default: return "raw";
+  }
 }
 
 const char* node_layout_name(NodeLayout layout) {
@@ -52,12 +72,14 @@ const char* treelet_budget_name(TreeletBudget budget) {
 std::optional<NodeFormat> node_format_from_name(const std::string& name) {
   if (name == "aabb32") return NodeFormat::Aabb32;
   if (name == "cwbvh8") return NodeFormat::Cwbvh8;
+  if (name == "xe6") return NodeFormat::Xe6;
   return std::nullopt;
 }
 
 std::optional<TriangleFormat> triangle_format_from_name(const std::string& name) {
   if (name == "raw") return TriangleFormat::Raw;
   if (name == "woop") return TriangleFormat::Woop;
+  if (name == "xe_quad") return TriangleFormat::XeQuad;
   return std::nullopt;
 }
 

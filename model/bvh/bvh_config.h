@@ -12,11 +12,15 @@ namespace rtsim {
 enum class NodeFormat : uint8_t {
   Aabb32,  // uncompressed fp32 child boxes, 64-byte aligned node of 2..8 children
   Cwbvh8,  // Ylitie et al. 2017 compressed 8-wide node: 80 bytes, 8-bit quantized child boxes
+  Xe6,     // Intel Xe (Mesa anv_internal_node): 64 bytes, 6 children, nodes and leaves in
+           // one region of 64-byte blocks (model/bvh/intel_nodes.h)
 };
 
 enum class TriangleFormat : uint8_t {
-  Raw,   // three fp32 vertices + primitive id: 40 bytes; watertight test (Woop et al. 2013)
-  Woop,  // precomputed affine unit-triangle transform + primitive id: 52 bytes (Woop 2004)
+  Raw,     // three fp32 vertices + primitive id: 40 bytes; watertight test (Woop et al. 2013)
+  Woop,    // precomputed affine unit-triangle transform + primitive id: 52 bytes (Woop 2004)
+  XeQuad,  // Intel Xe quad leaf (Mesa anv_quad_leaf_node): 64 bytes, two triangles sharing four
+           // vertices; with xe6 only
 };
 
 enum class NodeLayout : uint8_t {

@@ -1,5 +1,7 @@
 #include "model/bvh/node_format.h"
 
+#include "model/bvh/intel_nodes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -7,7 +9,9 @@
 namespace rtsim {
 namespace {
 
-void put32(uint8_t* out, uint32_t v) { std::memcpy(out, &v, 4); }
+void put32(uint8_t* out, uint32_t v) {
+  std::memcpy(out, &v, 4);
+}
 
 // Smallest exponent byte whose 255 steps from lo reach hi once rounded to fp32.
 uint8_t grid_exponent(float lo, float hi) {
@@ -16,22 +20,6 @@ uint8_t grid_exponent(float lo, float hi) {
   if (steps > 0.0) e = std::clamp(std::ilogb(steps) + 127, 1, 254);
   while (e < 254 && cwbvh_plane(lo, cwbvh_scale(uint8_t(e)), 255) < hi) ++e;
   return uint8_t(e);
-}
-
-// Largest q whose decoded plane is <= value: the box grows outward, never inward.
-uint8_t quantize_down(float origin, float scale, float value) {
-  double q = std::floor((double(value) - double(origin)) / double(scale));
-  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
-  while (qi > 0 && cwbvh_plane(origin, scale, uint8_t(qi)) > value) --qi;
-  return uint8_t(qi);
-}
-
-// Smallest q whose decoded plane is >= value.
-uint8_t quantize_up(float origin, float scale, float value) {
-  double q = std::ceil((double(value) - double(origin)) / double(scale));
-  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
-  while (qi < 255 && cwbvh_plane(origin, scale, uint8_t(qi)) < value) ++qi;
-  return uint8_t(qi);
 }
 
 void encode_aabb32(int width, const WideNode& node, const ChildPlacement& placement, uint8_t* out) {
@@ -93,13 +81,31 @@ void encode_cwbvh8(const WideNode& node, const ChildPlacement& placement, uint8_
 
 }  // namespace
 
+uint8_t quantize_down(float origin, float scale, float value) {
+  double q = std::floor((double(value) - double(origin)) / double(scale));
+  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
+  while (qi > 0 && cwbvh_plane(origin, scale, uint8_t(qi)) > value) --qi;
+  return uint8_t(qi);
+}
+
+// Smallest q whose decoded plane is >= value.
+uint8_t quantize_up(float origin, float scale, float value) {
+  double q = std::ceil((double(value) - double(origin)) / double(scale));
+  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
+  while (qi < 255 && cwbvh_plane(origin, scale, uint8_t(qi)) < value) ++qi;
+  return uint8_t(qi);
+}
+
 uint32_t node_stride(NodeFormat format, int width) {
   if (format == NodeFormat::Cwbvh8) return kCwbvhNodeBytes;
+  if (format == NodeFormat::Xe6) return kXeNodeBytes;
   return (29u * width + 63u) / 64u * 64u;
 }
 
 void encode_node(NodeFormat format, int width, const WideNode& node,
                  const ChildPlacement& placement, uint8_t* out) {
+  if (format == NodeFormat::Xe6)
+    throw std::logic_error("xe6 nodes are placed with their leaves (place_xe_blocks)");
   if (format == NodeFormat::Cwbvh8)
     encode_cwbvh8(node, placement, out);
   else

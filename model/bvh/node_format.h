@@ -5,6 +5,8 @@
 //    Traversal on GPUs Through Compressed Wide BVHs" (HPG 2017): 80 bytes, 8 slots, child boxes
 //    quantized to 8 bits per plane on a per-node power-of-two grid, rounded outward so the
 //    decoded fp32 box always contains the exact one.
+//  - xe6: Intel's 64-byte 6-wide node (model/bvh/intel_nodes.h), children in 64-byte blocks
+//    relative to the node's own position.
 // decode_node() is what the hardware's node decoder computes; it feeds the ray-box unit.
 #pragma once
 
@@ -54,6 +56,15 @@ inline uint32_t count_bits(uint32_t mask) {
   mask = (mask & 0x33u) + ((mask >> 2) & 0x33u);
   return (mask + (mask >> 4)) & 0x0fu;
 }
+
+// Largest q whose decoded plane (origin + q * scale) is <= value, and smallest whose is >= value:
+// the box grows outward, never inward (cwbvh8 and xe6).
+uint8_t quantize_down(float origin, float scale, float value);
+uint8_t quantize_up(float origin, float scale, float value);
+
+// Decodes an xe6 node at block position `self` (model/bvh/intel_nodes.cpp): count[s] is a leaf
+// child's quads (1 for an instance leaf), index[s] its first block.
+void decode_xe6(const uint8_t* bytes, uint32_t self, NodeView& view);
 
 // Quantized-box arithmetic of cwbvh8, shared by the encoder and the decoder so the outward
 // rounding holds for the decoded value exactly as the hardware computes it.
@@ -123,9 +134,13 @@ inline void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
   }
 }
 
-inline void decode_node(NodeFormat format, int width, const uint8_t* bytes, NodeView& view) {
+// position: the node's own position (xe6 children are relative to it).
+inline void decode_node(NodeFormat format, int width, const uint8_t* bytes, NodeView& view,
+                        uint32_t position) {
   if (format == NodeFormat::Cwbvh8)
     decode_cwbvh8(bytes, view);
+  else if (format == NodeFormat::Xe6)
+    decode_xe6(bytes, position, view);
   else
     decode_aabb32(bytes, width, view);
 }

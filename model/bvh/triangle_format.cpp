@@ -1,5 +1,7 @@
 #include "model/bvh/triangle_format.h"
 
+#include "model/bvh/intel_nodes.h"
+
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -30,11 +32,19 @@ void woop_rows(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, fl
 }  // namespace
 
 uint32_t triangle_stride(TriangleFormat format) {
-  return format == TriangleFormat::Woop ? kWoopTriangleBytes : kRawTriangleBytes;
+  switch (format) {
+    case TriangleFormat::Woop: return kWoopTriangleBytes;
+    case TriangleFormat::XeQuad: return kXeQuadBytes;
+    default: return kRawTriangleBytes;
+  }
 }
 
 void encode_triangle(TriangleFormat format, const TriangleMesh& mesh, uint32_t prim, uint8_t* out) {
   glm::vec3 v[3] = {mesh.vertex(prim, 0), mesh.vertex(prim, 1), mesh.vertex(prim, 2)};
+  if (format == TriangleFormat::XeQuad) {
+    encode_xe_quad(mesh, prim, nullptr, out);
+    return;
+  }
   if (format == TriangleFormat::Raw) {
     std::memcpy(out, v, 36);
     std::memcpy(out + 36, &prim, 4);

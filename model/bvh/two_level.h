@@ -4,6 +4,8 @@
 // configured node format, with treelets; one address space holds them in this order: TLAS
 // nodes, instance records, then each BLAS's nodes and triangles (each region aligned to
 // region_align). Unique geometry is held once, however many instances place it.
+// With xe6 the records are Intel's 128-byte instance leaves (model/bvh/intel_nodes.h), of which
+// traversal reads the first 64 bytes, like this record.
 // Instance record (kInstanceRecordBytes): the world-to-object transform as 3x4 fp32 (the
 // linear part's columns, then the offset: 48 bytes), the BLAS index, the instance id, the
 // visibility mask (one byte), padding.
@@ -27,6 +29,7 @@ constexpr uint32_t kInstanceRecordBytes = 64;
 
 struct InstanceRecord {
   Transform to_object;
+  Transform to_world;  // xe6's instance leaf keeps both directions (model/bvh/intel_nodes.h)
   uint32_t blas = 0, instance = 0;
   uint8_t mask = kAllInstances;
 };

@@ -430,12 +430,14 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.bvh.width =
       int(bvh.integer("width", uint64_t(c.bvh.width), "children", "most children of a node", 2, 8));
   std::string format = bvh.text("node_format", node_format_name(c.bvh.node_format),
-                                "node encoding: fp32 boxes, or compressed 8-wide (Ylitie 2017)",
-                                {"aabb32", "cwbvh8"});
+                                "node encoding: fp32 boxes, compressed 8-wide (Ylitie 2017), or "
+                                "Intel Xe's 6-wide (with triangle_format xe_quad)",
+                                {"aabb32", "cwbvh8", "xe6"});
   c.bvh.node_format = *node_format_from_name(format);
   std::string triangles =
       bvh.text("triangle_format", triangle_format_name(c.bvh.triangle_format),
-               "triangle encoding: raw vertices or Woop transform", {"raw", "woop"});
+               "triangle encoding: raw vertices, Woop transform, or Intel Xe's quad (xe6)",
+               {"raw", "woop", "xe_quad"});
   c.bvh.triangle_format = *triangle_format_from_name(triangles);
   std::string layout =
       bvh.text("layout", node_layout_name(c.bvh.node_layout), "node order in memory",
