@@ -230,7 +230,8 @@ Json treelet_sizes_json(const TreeletStats& t) {
 }
 
 // One level: its figures. Two: the sums over the levels (triangles: the unique ones), and each
-// level's nodes, bytes and treelets.
+// level's nodes, bytes and treelets. node_bytes and leaf_bytes: one internal node and one leaf
+// block (a triangle record; xe6: a 64-byte quad) of the triangles' level.
 Json bvh_json(const BvhView& bvh) {
   const BvhImage& top = *bvh.top;
   if (!bvh.two_level())
@@ -241,6 +242,8 @@ Json bvh_json(const BvhView& bvh) {
             {"treelets", top.treelets.count},
             {"treelet_sizes", treelet_sizes_json(top.treelets)},
             {"bytes", top.total_bytes()},
+            {"node_bytes", top.node_size},
+            {"leaf_bytes", top.triangle_stride},
             {"node_padding_bytes", top.node_padding_bytes()}};
   // The top levels: frame 0's, and with moving instances each later frame's, which a builder
   // writes anew every frame.
@@ -272,6 +275,8 @@ Json bvh_json(const BvhView& bvh) {
           {"instances", top.triangle_count},
           {"treelets", bvh.treelet_count()},
           {"bytes", bytes + top_bytes},
+          {"node_bytes", bvh.bottom->front().node_size},
+          {"leaf_bytes", bvh.bottom->front().triangle_stride},
           {"node_padding_bytes", padding + top_padding},
           {"top", top_json},
           {"bottom",
