@@ -276,11 +276,6 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                                   "one spilled stack entry", 1, 64));
   read_test_units(rt.section("box"), c.rt.box, "child boxes");
   read_test_units(rt.section("triangle"), c.rt.triangle, "triangles");
-  std::string issue = rt.text("test_issue", test_issue_name(c.rt.test_issue),
-                              "separate: box and triangle units issue apart; shared: each of "
-                              "box.count units starts a box or a triangle issue a cycle (AMD)",
-                              {"separate", "shared"});
-  c.rt.test_issue = issue == "shared" ? TestIssue::Shared : TestIssue::Separate;
   read_test_units(rt.section("transform"), c.rt.transform,
                   "rays (instance transforms: two levels)");
   ConfigReader packet = rt.section("packet");

@@ -40,7 +40,6 @@ TriangleMesh stacked_triangles(uint32_t copies) {
   return mesh;
 }
 
-// The largest multiple of `width` at most `most` (at least `width` when most < width).
 // The most children a node of the format holds, and the most triangles its leaf holds
 // (model/bvh/bvh_config.cpp validate: cwbvh8 3, xe6 a quad's 2, amd formats one triangle node).
 uint32_t node_slots(NodeFormat format) {
@@ -58,6 +57,7 @@ uint32_t leaf_triangles(NodeFormat format) {
   }
 }
 
+// The largest multiple of `width` at most `most` (at least `width` when most < width).
 uint32_t whole_issues(uint32_t width, uint32_t most) {
   return std::max(width, most / width * width);
 }
