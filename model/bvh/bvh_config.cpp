@@ -24,6 +24,22 @@ std::string amd_problem(const BvhConfig& c) {
   return {};
 }
 
+// Intel's quads are interleaved with its nodes (Mesa anv_bvh.h): either both or neither.
+std::string xe_problem(const BvhConfig& c) {
+  bool xe_node = c.node_format == NodeFormat::Xe6,
+       xe_leaf = c.triangle_format == TriangleFormat::XeQuad;
+  if (xe_node != xe_leaf)
+    return "node_format xe6 and triangle_format xe_quad go together: Intel's leaves are quads "
+           "interleaved with its nodes";
+  if (xe_node && c.width > 6)
+    return fmt::format("width is {}: xe6 nodes hold at most 6 children", c.width);
+  if (xe_node && c.max_leaf_size > 2)
+    return fmt::format(
+        "max_leaf_size is {}: xe6 leaves hold at most 2 triangles (one quad, or two)",
+        c.max_leaf_size);
+  return {};
+}
+
 }  // namespace
 
 std::string validate(const BvhConfig& c) {
@@ -38,6 +54,8 @@ std::string validate(const BvhConfig& c) {
     std::string problem = amd_problem(c);
     if (!problem.empty()) return problem;
   }
+  std::string problem = xe_problem(c);
+  if (!problem.empty()) return problem;
   if (!(c.sah_node_cost >= 0.0f && c.sah_node_cost < 1e6f))
     return "sah_node_cost must be a finite value >= 0";
   if (c.width < 2 || c.width > 8) return fmt::format("width is {}: it must be in 2..8", c.width);
@@ -60,6 +78,7 @@ const char* node_format_name(NodeFormat format) {
     case NodeFormat::Cwbvh8: return "cwbvh8";
     case NodeFormat::AmdBox32: return "amd_box32";
     case NodeFormat::AmdBox16: return "amd_box16";
+    case NodeFormat::Xe6: return "xe6";
     default: return "aabb32";
   }
 }
@@ -68,16 +87,17 @@ const char* triangle_format_name(TriangleFormat format) {
   switch (format) {
     case TriangleFormat::Woop: return "woop";
     case TriangleFormat::AmdTriangle: return "amd_tri";
+    case TriangleFormat::XeQuad: return "xe_quad";
     default: return "raw";
   }
 }
 
 std::vector<std::string> node_format_names() {
-  return {"aabb32", "cwbvh8", "amd_box32", "amd_box16"};
+  return {"aabb32", "cwbvh8", "amd_box32", "amd_box16", "xe6"};
 }
 
 std::vector<std::string> triangle_format_names() {
-  return {"raw", "woop", "amd_tri"};
+  return {"raw", "woop", "amd_tri", "xe_quad"};
 }
 
 const char* node_layout_name(NodeLayout layout) {
@@ -93,14 +113,15 @@ const char* treelet_budget_name(TreeletBudget budget) {
 }
 
 std::optional<NodeFormat> node_format_from_name(const std::string& name) {
-  for (NodeFormat f :
-       {NodeFormat::Aabb32, NodeFormat::Cwbvh8, NodeFormat::AmdBox32, NodeFormat::AmdBox16})
+  for (NodeFormat f : {NodeFormat::Aabb32, NodeFormat::Cwbvh8, NodeFormat::AmdBox32,
+                       NodeFormat::AmdBox16, NodeFormat::Xe6})
     if (name == node_format_name(f)) return f;
   return std::nullopt;
 }
 
 std::optional<TriangleFormat> triangle_format_from_name(const std::string& name) {
-  for (TriangleFormat f : {TriangleFormat::Raw, TriangleFormat::Woop, TriangleFormat::AmdTriangle})
+  for (TriangleFormat f : {TriangleFormat::Raw, TriangleFormat::Woop, TriangleFormat::AmdTriangle,
+                           TriangleFormat::XeQuad})
     if (name == triangle_format_name(f)) return f;
   return std::nullopt;
 }

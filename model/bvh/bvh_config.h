@@ -13,11 +13,13 @@ namespace rtsim {
 enum class NodeFormat : uint8_t {
   Aabb32,  // uncompressed fp32 child boxes, 64-byte aligned node of 2..8 children
   Cwbvh8,  // Ylitie et al. 2017 compressed 8-wide node: 80 bytes, 8-bit quantized child boxes
-
   // AMD RDNA2/3 (radv_bvh_box32_node): 128 bytes, 4 children, fp32 boxes
   AmdBox32,
   // AMD RDNA2/3 (radv_bvh_box16_node): 64 bytes, 4 children, fp16 boxes rounded outward
   AmdBox16,
+  // Intel Xe (Mesa anv_internal_node): 64 bytes, 6 children, nodes and leaves in one region of
+  // 64-byte blocks (model/bvh/intel_nodes.h)
+  Xe6,
 };
 
 enum class TriangleFormat : uint8_t {
@@ -26,6 +28,9 @@ enum class TriangleFormat : uint8_t {
 
   // AMD RDNA2/3 triangle node (radv_bvh_triangle_node): 64 bytes, watertight test
   AmdTriangle,
+  // Intel Xe quad leaf (Mesa anv_quad_leaf_node): 64 bytes, two triangles sharing four vertices;
+  // with xe6 only
+  XeQuad,
 };
 
 // The AMD RDNA2/3 node formats (amd_nodes.h): 4 children, one triangle node per leaf.

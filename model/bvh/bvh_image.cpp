@@ -10,6 +10,8 @@
 
 #include "model/bvh/amd_nodes.h"
 #include "model/bvh/binned_sah.h"
+#include "model/bvh/intel_layout.h"
+#include "model/bvh/intel_nodes.h"
 #include "model/bvh/node_format.h"
 #include "model/bvh/node_layout.h"
 #include "model/bvh/triangle_format.h"
@@ -42,6 +44,9 @@ uint32_t padded_stride(uint32_t size, uint32_t align) {
   return stride;
 }
 
+void place_regions(const WideBvh& wide, const std::vector<uint32_t>& order, size_t prims,
+                   const LeafRecords& leaves, BvhImage& image);
+
 }  // namespace
 
 void set_scene_bounds(const Bounds& bounds, BvhImage& image) {
@@ -65,6 +70,10 @@ BvhImage build_bvh_image(const TriangleMesh& mesh, const BvhConfig& config,
   LeafRecords triangles{triangle_stride(config.triangle_format), [&](uint32_t prim, uint8_t* out) {
                           encode_triangle(config.triangle_format, mesh, prim, out);
                         }};
+  if (config.triangle_format == TriangleFormat::XeQuad)
+    triangles.encode_pair = [&](uint32_t a, uint32_t b, uint8_t* out) {
+      return encode_xe_quad(mesh, a, &b, out);
+    };
   BvhImage image = encode_bvh_image(bvh2, config, triangles, on_step);
   set_scene_bounds(mesh_bounds(mesh), image);
   image.alpha = mesh.alpha;
@@ -79,7 +88,7 @@ BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafR
     if (on_step) on_step(name, now - step_start);
     step_start = now;
   };
-  bool groups = config.node_format == NodeFormat::Cwbvh8;
+  bool groups = config.node_format == NodeFormat::Cwbvh8 || config.node_format == NodeFormat::Xe6;
 
   BvhImage image;
   image.config = config;
@@ -95,12 +104,37 @@ BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafR
   Treelets treelets = form_treelets(wide, rule);
   std::vector<uint32_t> order = order_nodes(wide, treelets, config.node_layout, groups);
   step("treelets and node order");
+  image.node_base = config.node_base;
+  if (config.node_format == NodeFormat::Xe6) {
+    place_xe_blocks(wide, order, leaves, image);
+    image.triangle_base = image.node_base;
+  } else {
+    place_regions(wide, order, bvh2.prim_order.size(), leaves, image);
+  }
+  step("encode");
+  image.treelets = treelets.stats;
+  image.stats.bvh2_nodes = static_cast<uint32_t>(bvh2.nodes.size());
+  image.stats.bvh2_depth = bvh2.depth;
+  image.stats.max_depth = deepest_level(wide);
+  for (const WideNode& node : wide.nodes) {
+    image.stats.child_slots_used += node.child_count;
+    for (int c = 0; c < node.child_count; ++c) image.stats.leaves += node.child[c].leaf();
+  }
+  return image;
+}
+
+namespace {
+
+// Two regions: nodes in `order`, then the leaf records, a node's leaves in slot order.
+void place_regions(const WideBvh& wide, const std::vector<uint32_t>& order, size_t prims,
+                   const LeafRecords& leaves, BvhImage& image) {
+  const BvhConfig& config = image.config;
   std::vector<uint32_t> position(wide.nodes.size());
   for (uint32_t i = 0; i < order.size(); ++i) position[order[i]] = i;
 
   // Triangles follow the node order: a node's leaf children, in slot order.
   std::vector<uint32_t> tri_order;
-  tri_order.reserve(bvh2.prim_order.size());
+  tri_order.reserve(prims);
   std::vector<ChildPlacement> placement(wide.nodes.size());
   for (uint32_t n : order) {
     const WideNode& node = wide.nodes[n];
@@ -120,7 +154,6 @@ BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafR
   image.node_count = static_cast<uint32_t>(order.size());
   image.triangle_count = static_cast<uint32_t>(tri_order.size());
   image.nodes.assign(size_t(image.node_count) * image.node_stride, 0);
-  image.node_base = config.node_base;
   uint64_t nodes_end = image.node_base + image.nodes.size();
   image.triangle_base = (nodes_end + config.region_align - 1) & ~(config.region_align - 1);
   RecordRegions regions = image.regions();
@@ -136,17 +169,8 @@ BvhImage encode_bvh_image(const Bvh2& bvh2, const BvhConfig& config, const LeafR
   for (uint32_t i = 0; i < image.triangle_count; ++i)
     leaves.encode(tri_order[i], image.triangles.data() + size_t(i) * image.triangle_stride);
   set_amd_box_flags(image);
-
-  step("encode");
-  image.treelets = treelets.stats;
-  image.stats.bvh2_nodes = static_cast<uint32_t>(bvh2.nodes.size());
-  image.stats.bvh2_depth = bvh2.depth;
-  image.stats.max_depth = deepest_level(wide);
-  for (const WideNode& node : wide.nodes) {
-    image.stats.child_slots_used += node.child_count;
-    for (int c = 0; c < node.child_count; ++c) image.stats.leaves += node.child[c].leaf();
-  }
-  return image;
 }
+
+}  // namespace
 
 }  // namespace rtsim

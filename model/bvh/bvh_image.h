@@ -4,6 +4,8 @@
 // triangle region starts at the next multiple of config.region_align after the last node.
 // With config.node_align, node_stride is the record's size padded so that no node spans more
 // aligned blocks than it fills (the next power of two up to the block, else a multiple of it).
+// Interleaved formats (xe6, model/bvh/intel_layout.h): one region of 64-byte blocks holds nodes
+// and leaf records; a position is a block, triangle_base = node_base.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +36,10 @@ struct BvhImage {
   uint64_t node_base = 0, triangle_base = 0;  // addresses of the two regions
   std::vector<uint8_t> nodes, triangles;      // the bytes of the two regions
   std::vector<uint32_t> node_treelet;         // treelet id of the node at each position
+  bool interleaved = false;                   // xe6: leaf records are blocks of `nodes`
+  std::vector<bool> leaf_blocks;              // interleaved: position holds a leaf record
+  // Two levels' top with xe6: each BLAS's root address (instance leaves point at it).
+  std::vector<uint64_t> blas_roots;
   uint32_t treelet_base = 0;  // two levels: added to node_treelet to number treelets across levels
   TreeletStats treelets;
   BvhBuildStats stats;
@@ -53,7 +59,14 @@ struct BvhImage {
     return nodes.data() + size_t(position) * node_stride;
   }
   const uint8_t* triangle_bytes(uint32_t position) const {
-    return triangles.data() + size_t(position) * triangle_stride;
+    return (interleaved ? nodes : triangles).data() + size_t(position) * triangle_stride;
+  }
+  // Positions of the node region (nodes; interleaved: blocks) and whether one holds a node.
+  uint32_t positions() const { return uint32_t(nodes.size() / node_stride); }
+  bool holds_node(uint32_t position) const { return !interleaved || !leaf_blocks[position]; }
+  // The first byte after the image's regions.
+  uint64_t end_address() const {
+    return interleaved ? node_base + nodes.size() : triangle_base + triangles.size();
   }
   // Where the records lie, for formats whose children are byte offsets (amd_nodes.h).
   RecordRegions regions() const {
@@ -77,6 +90,8 @@ struct LeafRecords {
   uint32_t stride = 0;                                      // bytes per record
   std::function<void(uint32_t prim, uint8_t* out)> encode;  // writes record `prim`
   bool instances = false;  // instance records (a top level), else triangles
+  // xe_quad: writes triangles a and b as one record if they can share it (else false).
+  std::function<bool(uint32_t a, uint32_t b, uint8_t* out)> encode_pair;
 };
 
 // Collapses a binary BVH, forms treelets, orders and encodes its nodes and leaf records (the

@@ -1,6 +1,7 @@
 #include "model/bvh/node_format.h"
 
 #include "model/bvh/amd_nodes.h"
+#include "model/bvh/intel_nodes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -20,22 +21,6 @@ uint8_t grid_exponent(float lo, float hi) {
   if (steps > 0.0) e = std::clamp(std::ilogb(steps) + 127, 1, 254);
   while (e < 254 && cwbvh_plane(lo, cwbvh_scale(uint8_t(e)), 255) < hi) ++e;
   return uint8_t(e);
-}
-
-// Largest q whose decoded plane is <= value: the box grows outward, never inward.
-uint8_t quantize_down(float origin, float scale, float value) {
-  double q = std::floor((double(value) - double(origin)) / double(scale));
-  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
-  while (qi > 0 && cwbvh_plane(origin, scale, uint8_t(qi)) > value) --qi;
-  return uint8_t(qi);
-}
-
-// Smallest q whose decoded plane is >= value.
-uint8_t quantize_up(float origin, float scale, float value) {
-  double q = std::ceil((double(value) - double(origin)) / double(scale));
-  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
-  while (qi < 255 && cwbvh_plane(origin, scale, uint8_t(qi)) < value) ++qi;
-  return uint8_t(qi);
 }
 
 void encode_aabb32(int width, const WideNode& node, const ChildPlacement& placement, uint8_t* out) {
@@ -97,17 +82,35 @@ void encode_cwbvh8(const WideNode& node, const ChildPlacement& placement, uint8_
 
 }  // namespace
 
+uint8_t quantize_down(float origin, float scale, float value) {
+  double q = std::floor((double(value) - double(origin)) / double(scale));
+  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
+  while (qi > 0 && cwbvh_plane(origin, scale, uint8_t(qi)) > value) --qi;
+  return uint8_t(qi);
+}
+
+// Smallest q whose decoded plane is >= value.
+uint8_t quantize_up(float origin, float scale, float value) {
+  double q = std::ceil((double(value) - double(origin)) / double(scale));
+  int qi = static_cast<int>(std::clamp(q, 0.0, 255.0));
+  while (qi < 255 && cwbvh_plane(origin, scale, uint8_t(qi)) < value) ++qi;
+  return uint8_t(qi);
+}
+
 uint32_t node_stride(NodeFormat format, int width) {
   switch (format) {
     case NodeFormat::Cwbvh8: return kCwbvhNodeBytes;
     case NodeFormat::AmdBox32: return kAmdBox32Bytes;
     case NodeFormat::AmdBox16: return kAmdBox16Bytes;
+    case NodeFormat::Xe6: return kXeNodeBytes;
     default: return (29u * width + 63u) / 64u * 64u;
   }
 }
 
 void encode_node(NodeFormat format, int width, const WideNode& node,
                  const ChildPlacement& placement, uint8_t* out, const RecordRegions& regions) {
+  if (format == NodeFormat::Xe6)
+    throw std::logic_error("xe6 nodes are placed with their leaves (place_xe_blocks)");
   if (format == NodeFormat::Cwbvh8)
     encode_cwbvh8(node, placement, out);
   else if (format == NodeFormat::Aabb32)

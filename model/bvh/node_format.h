@@ -6,6 +6,8 @@
 //    quantized to 8 bits per plane on a per-node power-of-two grid, rounded outward so the
 //    decoded fp32 box always contains the exact one.
 //  - amd_box32, amd_box16: AMD RDNA2/3's 4-wide nodes as Mesa's radv writes them (amd_nodes.h).
+//  - xe6: Intel's 64-byte 6-wide node (model/bvh/intel_nodes.h), children in 64-byte blocks
+//    relative to the node's own position.
 // decode_node() is what the hardware's node decoder computes; it feeds the ray-box unit.
 #pragma once
 
@@ -64,6 +66,15 @@ inline uint32_t count_bits(uint32_t mask) {
   mask = (mask & 0x33u) + ((mask >> 2) & 0x33u);
   return (mask + (mask >> 4)) & 0x0fu;
 }
+
+// Largest q whose decoded plane (origin + q * scale) is <= value, and smallest whose is >= value:
+// the box grows outward, never inward (cwbvh8 and xe6).
+uint8_t quantize_down(float origin, float scale, float value);
+uint8_t quantize_up(float origin, float scale, float value);
+
+// Decodes an xe6 node at block position `self` (model/bvh/intel_nodes.cpp): count[s] is a leaf
+// child's quads (1 for an instance leaf), index[s] its first block.
+void decode_xe6(const uint8_t* bytes, uint32_t self, NodeView& view);
 
 // Quantized-box arithmetic of cwbvh8, shared by the encoder and the decoder so the outward
 // rounding holds for the decoded value exactly as the hardware computes it.
@@ -136,10 +147,14 @@ inline void decode_cwbvh8(const uint8_t* bytes, NodeView& view) {
 // amd_box32 and amd_box16 (amd_nodes.cpp): child ids back to positions through `regions`.
 void decode_amd_box(bool fp16, const uint8_t* bytes, const RecordRegions& regions, NodeView& view);
 
+// position: the node's own position (xe6 children are relative to it); regions: where the
+// records lie (amd formats' children are byte offsets).
 inline void decode_node(NodeFormat format, int width, const uint8_t* bytes, NodeView& view,
-                        const RecordRegions& regions = {}) {
+                        uint32_t position, const RecordRegions& regions = {}) {
   if (format == NodeFormat::Cwbvh8)
     decode_cwbvh8(bytes, view);
+  else if (format == NodeFormat::Xe6)
+    decode_xe6(bytes, position, view);
   else if (format == NodeFormat::Aabb32)
     decode_aabb32(bytes, width, view);
   else

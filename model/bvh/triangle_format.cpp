@@ -1,6 +1,7 @@
 #include "model/bvh/triangle_format.h"
 
 #include "model/bvh/amd_nodes.h"
+#include "model/bvh/intel_nodes.h"
 #include "traces/alpha.h"
 
 #include <cmath>
@@ -36,6 +37,7 @@ uint32_t triangle_stride(TriangleFormat format) {
   switch (format) {
     case TriangleFormat::Woop: return kWoopTriangleBytes;
     case TriangleFormat::AmdTriangle: return kAmdTriangleBytes;
+    case TriangleFormat::XeQuad: return kXeQuadBytes;
     default: return kRawTriangleBytes;
   }
 }
@@ -45,6 +47,10 @@ void encode_triangle(TriangleFormat format, const TriangleMesh& mesh, uint32_t p
   if (format == TriangleFormat::AmdTriangle) {
     bool opaque = !mesh.alpha || !mesh.alpha->tested(prim);
     encode_amd_triangle(&v[0].x, prim, opaque, out);
+    return;
+  }
+  if (format == TriangleFormat::XeQuad) {
+    encode_xe_quad(mesh, prim, nullptr, out);
     return;
   }
   if (format == TriangleFormat::Raw) {

@@ -8,6 +8,7 @@
 #include "model/bvh/amd_instances.h"
 #include "model/bvh/amd_nodes.h"
 #include "model/bvh/binned_sah.h"
+#include "model/bvh/intel_nodes.h"
 #include "traces/error.h"
 #include "traces/host_clock.h"
 
@@ -20,7 +21,7 @@ uint64_t align_up(uint64_t address, uint64_t align) {
 
 // The first free address after an image, aligned for the next region.
 uint64_t image_end(const BvhImage& image) {
-  return align_up(image.triangle_base + image.triangles.size(), image.config.region_align);
+  return align_up(image.end_address(), image.config.region_align);
 }
 
 void encode_instance_record(const InstanceRecord& r, uint8_t* out) {
@@ -70,12 +71,12 @@ std::vector<uint32_t> BvhView::root_treelets() const {
 
 uint64_t BvhView::end_address() const {
   const BvhImage& last = bottom ? bottom->back() : *top;
-  return last.triangle_base + last.triangles.size();
+  return last.end_address();
 }
 
 uint64_t BvhView::top_end_address() const {
   const BvhImage& last_top = frame_tops ? frame_tops->back() : *top;
-  return bottom ? last_top.triangle_base + last_top.triangles.size() : top->node_base;
+  return bottom ? last_top.end_address() : top->node_base;
 }
 
 uint64_t TwoLevelBvh::total_bytes() const {
@@ -100,6 +101,7 @@ uint64_t TwoLevelBvh::triangle_count() const {
 }
 
 uint32_t instance_record_bytes(NodeFormat format) {
+  if (format == NodeFormat::Xe6) return kXeInstanceLeafBytes;
   return is_amd_format(format) ? kAmdInstanceBytes : kInstanceRecordBytes;
 }
 
@@ -113,6 +115,13 @@ InstanceRecord read_instance_record(const BvhImage& top, uint32_t position,
   if (is_amd_format(top.config.node_format)) {
     if (!bottom) throw std::logic_error("read_instance_record: amd nodes need the bottom levels");
     return read_amd_instance(in, *bottom);
+  }
+  if (top.config.node_format == NodeFormat::Xe6) {  // the BLAS whose root the leaf points at
+    uint64_t root;
+    InstanceRecord r = decode_xe_instance(in, root);
+    auto at = std::lower_bound(top.blas_roots.begin(), top.blas_roots.end(), root);
+    r.blas = uint32_t(at - top.blas_roots.begin());
+    return r;
   }
   float xfm[12];
   std::memcpy(xfm, in, sizeof xfm);
@@ -158,6 +167,24 @@ TwoLevelBvh build_scene_levels(const TriangleMesh& flat, InstancedMesh& instance
 
 namespace {
 
+// xe6: each top level's instance leaves get their BLAS's root address in place of its index.
+void point_at_roots(TwoLevelBvh& bvh) {
+  std::vector<uint64_t> roots;
+  for (const BvhImage& b : bvh.bottom) roots.push_back(b.node_base);
+  std::vector<BvhImage*> tops{&bvh.top};
+  for (BvhImage& t : bvh.frame_tops) tops.push_back(&t);
+  for (BvhImage* top : tops) {
+    top->blas_roots = roots;
+    // Leaf blocks come in whole instance leaves of two blocks.
+    for (uint32_t p = 0; p < top->positions(); ++p) {
+      if (top->holds_node(p)) continue;
+      uint8_t* leaf = top->nodes.data() + size_t(p) * kXeBlockBytes;
+      set_xe_instance_root(leaf, roots.at(xe_instance_root(leaf)));
+      ++p;
+    }
+  }
+}
+
 // One frame's top level at `base`: one instance per leaf, so that each leaf is one transform.
 BvhImage build_top_level(const std::vector<Instance>& instances,
                          const std::vector<Bounds>& mesh_boxes, BvhConfig config, uint64_t base,
@@ -173,11 +200,14 @@ BvhImage build_top_level(const std::vector<Instance>& instances,
     records.push_back({inverse(inst.to_world), inst.mesh, uint32_t(i), inst.mask, inst.to_world});
   }
   Bvh2 top2 = build_binned_sah(boxes, config);
-  bool amd = is_amd_format(config.node_format);
-  LeafRecords instance_records{instance_record_bytes(config.node_format),
+  NodeFormat format = config.node_format;
+  // xe6: the BLAS index stands in for its root address until point_at_roots.
+  LeafRecords instance_records{instance_record_bytes(format),
                                [&](uint32_t prim, uint8_t* out) {
-                                 if (amd)
+                                 if (is_amd_format(format))
                                    encode_amd_instance(records[prim], out);
+                                 else if (format == NodeFormat::Xe6)
+                                   encode_xe_instance(records[prim], records[prim].blas, out);
                                  else
                                    encode_instance_record(records[prim], out);
                                },
@@ -229,6 +259,7 @@ TwoLevelBvh build_two_level_bvh(const InstancedMesh& geometry, const BvhConfig& 
     link_amd_instances(out.top, out.bottom);
     for (BvhImage& top : out.frame_tops) link_amd_instances(top, out.bottom);
   }
+  if (config.node_format == NodeFormat::Xe6) point_at_roots(out);
   return out;
 }
 

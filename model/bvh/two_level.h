@@ -5,7 +5,8 @@
 // nodes, instance records, then each BLAS's nodes and triangles (each region aligned to
 // region_align). Unique geometry is held once, however many instances place it.
 // Instance record (kInstanceRecordBytes; amd formats: radv's 128-byte instance node,
-// amd_instances.h): the world-to-object transform as 3x4 fp32 (the
+// amd_instances.h; xe6: Intel's 128-byte instance leaf, intel_nodes.h, of which traversal reads
+// the first 64 bytes): the world-to-object transform as 3x4 fp32 (the
 // linear part's columns, then the offset: 48 bytes), the BLAS index, the instance id, the
 // visibility mask (one byte), padding.
 // Animated instances (traces/instance_settings.h): each frame has its own top level over the
@@ -30,7 +31,7 @@ struct InstanceRecord {
   Transform to_object;
   uint32_t blas = 0, instance = 0;
   uint8_t mask = kAllInstances;
-  Transform to_world;  // kept by amd instance nodes only (amd_instances.h)
+  Transform to_world;  // kept by amd instance nodes and xe6 instance leaves
 };
 
 // Bytes of one instance record of a top level in this node format (amd: radv's instance node),

@@ -382,14 +382,15 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.bvh.width =
       int(bvh.integer("width", uint64_t(c.bvh.width), "children", "most children of a node", 2, 8));
   std::string format = bvh.text("node_format", node_format_name(c.bvh.node_format),
-                                "node encoding: fp32 boxes, compressed 8-wide (Ylitie 2017), or "
-                                "AMD RDNA2/3's 4-wide fp32 or fp16 nodes (Mesa radv)",
+                                "node encoding: fp32 boxes, compressed 8-wide (Ylitie 2017), "
+                                "AMD RDNA2/3's 4-wide fp32 or fp16 nodes (Mesa radv), or Intel "
+                                "Xe's 6-wide (Mesa anv; with triangle_format xe_quad)",
                                 node_format_names());
   c.bvh.node_format = *node_format_from_name(format);
-  std::string triangles =
-      bvh.text("triangle_format", triangle_format_name(c.bvh.triangle_format),
-               "triangle encoding: raw vertices, Woop transform, or AMD's triangle node",
-               triangle_format_names());
+  std::string triangles = bvh.text("triangle_format", triangle_format_name(c.bvh.triangle_format),
+                                   "triangle encoding: raw vertices, Woop transform, AMD's "
+                                   "triangle node, or Intel Xe's quad (with xe6)",
+                                   triangle_format_names());
   c.bvh.triangle_format = *triangle_format_from_name(triangles);
   std::string layout =
       bvh.text("layout", node_layout_name(c.bvh.node_layout), "node order in memory",

@@ -252,7 +252,8 @@ Json treelet_sizes_json(const TreeletStats& t) {
 }
 
 // One level: its figures. Two: the sums over the levels (triangles: the unique ones), and each
-// level's nodes, bytes and treelets.
+// level's nodes, bytes and treelets. node_bytes and leaf_bytes: one internal node and one leaf
+// block (a triangle record; xe6: a 64-byte quad) of the triangles' level.
 Json bvh_json(const BvhView& bvh) {
   const BvhImage& top = *bvh.top;
   if (!bvh.two_level())

@@ -31,11 +31,12 @@ TreeletFootprints treelet_footprints(BvhView bvh) {
   NodeView view;
   for (const BvhImage* level : bvh.levels()) {
     const BvhImage& image = *level;
-    for (uint32_t position = 0; position < image.node_count; ++position) {
+    for (uint32_t position = 0; position < image.positions(); ++position) {
+      if (!image.holds_node(position)) continue;  // xe6: a leaf block
       uint32_t t = node_treelet(image, position);
       add_range(nodes[t], image.node_address(position), image.node_size);
       decode_node(image.config.node_format, image.config.width, image.node_bytes(position), view,
-                  image.regions());
+                  position, image.regions());
       for (int s = 0; s < view.slots; ++s)
         if ((view.valid >> s & 1) && view.count[s] > 0)
           add_range(triangles[t], image.triangle_address(view.index[s]),

@@ -17,6 +17,7 @@
 #include <cstring>
 
 #include "model/bvh/bvh_config.h"
+#include "model/bvh/intel_nodes.h"
 #include "model/units/prepared_ray.h"
 
 namespace rtsim {
@@ -91,9 +92,17 @@ inline bool intersect_woop(const PreparedRay& ray, const float rows[12], float t
   return true;
 }
 
+// Tests triangle `part` of a record (0; an xe_quad's second triangle: 1).
 inline bool intersect_triangle(TriangleFormat format, const PreparedRay& ray, const uint8_t* bytes,
-                               float tmin, float tmax, TriangleHit& hit, uint32_t& prim) {
+                               uint32_t part, float tmin, float tmax, TriangleHit& hit,
+                               uint32_t& prim) {
   float values[12];
+  if (format == TriangleFormat::XeQuad) {  // the watertight test on the quad's corners
+    uint32_t id = xe_quad_corners(bytes, part, values);
+    bool found = intersect_watertight(ray, values, tmin, tmax, hit);
+    if (found) prim = id;
+    return found;
+  }
   bool woop = format == TriangleFormat::Woop;
   std::memcpy(values, bytes, woop ? 48 : 36);
   bool found = woop ? intersect_woop(ray, values, tmin, tmax, hit)

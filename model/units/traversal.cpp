@@ -95,7 +95,7 @@ StepResult TraversalUnit::visit_node(TraversalState& s, const StackEntry& entry)
   }
   NodeView node;
   decode_node(level.config.node_format, level.config.width, level.node_bytes(entry.index), node,
-              level.regions());
+              entry.index, level.regions());
   // Test every child box.
   float tnear[kMaxWidth];
   uint32_t hits = intersect_children(s.ray, node, s.t_hit, tnear);
@@ -130,43 +130,53 @@ StepResult TraversalUnit::visit_leaf(TraversalState& s, const StackEntry& entry)
   StepResult out{StepKind::Leaf, static_cast<uint32_t>(s.accesses.size()), 0, 0, 0};
   s.counters.trav_leaves++;
   out.fetch_address = level.triangle_address(entry.index);
-  for (uint32_t i = 0; i < entry.count; ++i) {
+  TriangleFormat format = level.config.triangle_format;
+  uint32_t records = 0;
+  bool answered = false;
+  for (uint32_t i = 0; i < entry.count && !answered; ++i) {
+    // Fetch the record (a triangle; an xe_quad: one or two) and test its triangles against the
+    // range still open.
     uint32_t position = entry.index + i;
-    // Fetch the triangle and test it against the range still open.
-    s.counters.trav_prims++;
-    out.tests++;
+    const uint8_t* bytes = level.triangle_bytes(position);
+    records++;
     if (config_.record_accesses) {
       record(s, level.triangle_address(position), level.triangle_stride, AccessKind::Triangle);
       out.access_count++;
     }
-    TriangleHit hit;
-    uint32_t prim;
-    if (!intersect_triangle(level.config.triangle_format, s.ray, level.triangle_bytes(position),
-                            s.ray.tmin, std::min(s.t_hit, s.ray.t_limit), hit, prim))
-      continue;
-    if (level.alpha && !s.force_opaque && level.alpha->tested(prim)) {
-      s.counters.trav_alpha_tests++;
-      out.anyhit_calls++;
-      TriangleAlpha::Lookup texel = level.alpha->look_up(prim, hit.u, hit.v);
-      s.texels.push_back(kTextureBase + texel.texel_offset);
-      if (!texel.opaque) continue;
-    }
-    // Keep the hit; the range now ends there.
-    s.counters.trav_prim_hits++;
-    out.hits++;
-    s.t_hit = hit.t;
-    s.prim = prim;
-    s.hit_instance = s.instance;
-    s.u = hit.u;
-    s.v = hit.v;
-    // An any-hit query is answered by its first hit (and ends in world space).
-    if (s.query == Query::AnyHit) {
-      if (s.instance != kNoHit) leave_instance(s);
-      s.stack.clear();
-      break;
+    uint32_t parts = format == TriangleFormat::XeQuad ? xe_quad_triangles(bytes) : 1;
+    for (uint32_t part = 0; part < parts; ++part) {
+      s.counters.trav_prims++;
+      out.tests++;
+      TriangleHit hit;
+      uint32_t prim;
+      if (!intersect_triangle(format, s.ray, bytes, part, s.ray.tmin,
+                              std::min(s.t_hit, s.ray.t_limit), hit, prim))
+        continue;
+      if (level.alpha && !s.force_opaque && level.alpha->tested(prim)) {
+        s.counters.trav_alpha_tests++;
+        out.anyhit_calls++;
+        TriangleAlpha::Lookup texel = level.alpha->look_up(prim, hit.u, hit.v);
+        s.texels.push_back(kTextureBase + texel.texel_offset);
+        if (!texel.opaque) continue;
+      }
+      // Keep the hit; the range now ends there.
+      s.counters.trav_prim_hits++;
+      out.hits++;
+      s.t_hit = hit.t;
+      s.prim = prim;
+      s.hit_instance = s.instance;
+      s.u = hit.u;
+      s.v = hit.v;
+      // An any-hit query is answered by its first hit (and ends in world space).
+      if (s.query == Query::AnyHit) {
+        if (s.instance != kNoHit) leave_instance(s);
+        s.stack.clear();
+        answered = true;
+        break;
+      }
     }
   }
-  out.fetch_bytes = out.tests * level.triangle_stride;  // the triangles tested, in order
+  out.fetch_bytes = records * level.triangle_stride;  // the records tested, in order
   return out;
 }
 

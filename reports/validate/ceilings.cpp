@@ -8,6 +8,7 @@
 
 #include "model/verify/ray_samples.h"
 #include "reports/validate/checks.h"
+#include "model/bvh/intel_nodes.h"
 #include "model/bvh/wide_bvh.h"
 #include "reports/validate/saturation.h"
 #include "workloads/scene.h"
@@ -37,6 +38,23 @@ TriangleMesh stacked_triangles(uint32_t copies) {
   mesh.positions = {{0.0f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, {0.0f, 1.0f, 0.0f}};
   mesh.triangles.assign(copies, {0u, 1u, 2u});
   return mesh;
+}
+
+// The most children a node of the format holds, and the most triangles its leaf holds
+// (model/bvh/bvh_config.cpp validate: cwbvh8 3, xe6 a quad's 2, amd formats one triangle node).
+uint32_t node_slots(NodeFormat format) {
+  if (format == NodeFormat::Xe6) return kXeNodeSlots;
+  return is_amd_format(format) ? 4 : kMaxWidth;
+}
+
+uint32_t leaf_triangles(NodeFormat format) {
+  switch (format) {
+    case NodeFormat::Cwbvh8: return 3;
+    case NodeFormat::Xe6: return 2;
+    case NodeFormat::AmdBox32:
+    case NodeFormat::AmdBox16: return 1;
+    default: return 254;
+  }
 }
 
 // The largest multiple of `width` at most `most` (at least `width` when most < width).
@@ -71,17 +89,18 @@ std::vector<Check> throughput_ceilings(const Target& target) {
     }
   // Box tests: the root's box test fills whole issues when the node is a multiple of the
   // width wide (a BVH6 for 6 boxes an issue); wider issues than a node test a node each.
-  uint32_t box_width = std::min<uint32_t>(rt.box.issue_width, kMaxWidth);
+  uint32_t widest = node_slots(preset.bvh.node_format);
+  uint32_t box_width = std::min(rt.box.issue_width, widest);
   HwConfig box = ceiling_machine(preset, rt.box.count);
   box.rt.triangle.count = shared ? rt.box.count : kUnlimited;
   box.rt.issue_per_cycle = kUnlimited;
   box.dispatch.rays_per_cycle = 4 * kUnlimited;
-  box.bvh.width = int(whole_issues(box_width, kMaxWidth));
-  // Triangle tests: a leaf of whole issues of triangles (cwbvh8 leaves hold 3 at most). Ray
-  // slots for the rate the leaf allows (2 steps a ray), so that bookings stay within the
+  box.bvh.width = int(whole_issues(box_width, widest));
+  // Triangle tests: a leaf of whole issues of triangles (as many as the format's leaf holds).
+  // Ray slots for the rate the leaf allows (2 steps a ray), so that bookings stay within the
   // units' calendar.
   uint32_t width = rt.triangle.issue_width;
-  uint32_t most_leaf = preset.bvh.node_format == NodeFormat::Cwbvh8 ? 3 : 4 * width;
+  uint32_t most_leaf = std::min(leaf_triangles(preset.bvh.node_format), 4 * width);
   uint32_t leaf = std::min(whole_issues(width, most_leaf), most_leaf);
   double issues_per_ray = std::ceil(double(leaf) / width) + (shared ? 1 : 0);
   HwConfig triangle = ceiling_machine(preset, 2.0 * rt.triangle.count / issues_per_ray);
@@ -110,11 +129,12 @@ std::vector<Check> throughput_ceilings(const Target& target) {
   out.push_back(ceiling(
       "ceiling.box_tests", "box tests a cycle, the box units saturated", rt.box.count * box_width,
       steady_rate(runs[0], runs[1], per_unit("box.tests")),
-      fmt::format("formula: rt.box.count {} pipelined units x rt.box.issue_width {} boxes an "
-                  "issue{}, one issue a cycle each{}",
-                  rt.box.count, rt.box.issue_width,
-                  box_width < rt.box.issue_width ? " (at most a node's 8)" : "",
-                  shared ? ", shared with the triangle tests" : ""),
+      fmt::format(
+          "formula: rt.box.count {} pipelined units x rt.box.issue_width {} boxes an "
+          "issue{}, one issue a cycle each{}",
+          rt.box.count, rt.box.issue_width,
+          box_width < rt.box.issue_width ? fmt::format(" (at most a node's {})", widest) : "",
+          shared ? ", shared with the triangle tests" : ""),
       "TestUnitPool::reserve_as (model/sched/test_unit_pool.cpp)"));
   out.back().detail = fmt::format(
       "2 units, {} and {} rays that leave grid:4096 after the root's box test, on a BVH{} "
@@ -123,11 +143,12 @@ std::vector<Check> throughput_ceilings(const Target& target) {
       kRays, 2 * kRays, box.bvh.width, kUnlimited);
   out.push_back(ceiling(
       "ceiling.triangle_tests", "triangle tests a cycle, the triangle units saturated",
-      rt.triangle.count * rt.triangle.issue_width,
+      rt.triangle.count * std::min(width, leaf),
       steady_rate(runs[2], runs[3], triangle_tests) / (1.0 - box_issue_cycles),
       fmt::format("formula: rt.triangle.count {} pipelined units x rt.triangle.issue_width {} "
-                  "triangles an issue, one issue a cycle each{}",
-                  rt.triangle.count, rt.triangle.issue_width,
+                  "triangles an issue{}, one issue a cycle each{}",
+                  rt.triangle.count, width,
+                  leaf < width ? fmt::format(" (at most a leaf's {})", leaf) : "",
                   shared ? " (shared: over the cycles the root's box issues leave)" : ""),
       "TestUnitPool::reserve_as (model/sched/test_unit_pool.cpp)"));
   out.back().detail = fmt::format(

@@ -101,7 +101,7 @@ TEST(AmdNodes, Box32BytesAreRadvBox32Node) {
         << "flags come with the leaf records (set_amd_box_flags); reserved stays 0";
   // The decoder gets the positions back.
   NodeView view;
-  decode_node(NodeFormat::AmdBox32, 4, bytes, view, regions);
+  decode_node(NodeFormat::AmdBox32, 4, bytes, view, 0, regions);
   EXPECT_EQ(view.valid, 0x7u);
   EXPECT_EQ(view.index[0], 2u);
   EXPECT_EQ(view.count[0], 0u);
@@ -120,7 +120,7 @@ TEST(AmdNodes, Box32FlagsMarkEachTriangleChildsOpacity) {
   for (uint32_t n = 0; n < image.node_count; ++n) {
     const uint8_t* node = image.node_bytes(n);
     NodeView view;
-    decode_node(NodeFormat::AmdBox32, 4, node, view, image.regions());
+    decode_node(NodeFormat::AmdBox32, 4, node, view, n, image.regions());
     uint32_t expected = 0;
     for (int c = 0; c < 4; ++c) {
       if (!(view.valid & (1u << c)) || view.count[c] == 0) continue;
@@ -156,7 +156,7 @@ TEST(AmdNodes, Box16BytesAreRadvBox16NodeRoundedOutward) {
   EXPECT_EQ(half_to_float(u16_at(bytes, 28 + 4)), -std::numeric_limits<float>::infinity());
   EXPECT_EQ(half_to_float(u16_at(bytes, 28 + 10)), std::numeric_limits<float>::infinity());
   NodeView view;
-  decode_node(NodeFormat::AmdBox16, 4, bytes, view, regions);
+  decode_node(NodeFormat::AmdBox16, 4, bytes, view, 0, regions);
   EXPECT_EQ(view.valid, 0x7u);
   EXPECT_EQ(view.index[1], 3u);
   for (int c = 0; c < 3; ++c)

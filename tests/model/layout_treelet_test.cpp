@@ -19,7 +19,7 @@ std::vector<int64_t> parents(const BvhImage& image) {
     uint32_t n = stack.back();
     stack.pop_back();
     NodeView view;
-    decode_node(image.config.node_format, image.config.width, image.node_bytes(n), view,
+    decode_node(image.config.node_format, image.config.width, image.node_bytes(n), view, n,
                 image.regions());
     for (int s = 0; s < view.slots; ++s) {
       if (!(view.valid & (1u << s)) || view.count[s] != 0) continue;
@@ -155,7 +155,7 @@ std::vector<uint64_t> bytes_with_triangles(const BvhImage& image) {
   std::vector<uint64_t> bytes(image.treelets.count, 0);
   for (uint32_t n = 0; n < image.node_count; ++n) {
     NodeView view;
-    decode_node(image.config.node_format, image.config.width, image.node_bytes(n), view,
+    decode_node(image.config.node_format, image.config.width, image.node_bytes(n), view, n,
                 image.regions());
     uint64_t& b = bytes[image.node_treelet[n]];
     b += image.node_stride;

@@ -45,7 +45,7 @@ TEST(NodeFormat, DecodedLeafBoxesContainTheirTriangles) {
       size_t checked = 0;
       for (uint32_t n = 0; n < image.node_count; ++n) {
         NodeView view;
-        decode_node(c.node_format, c.width, image.node_bytes(n), view, image.regions());
+        decode_node(c.node_format, c.width, image.node_bytes(n), view, n, image.regions());
         for (int s = 0; s < view.slots; ++s) {
           if (!(view.valid & (1u << s)) || view.count[s] == 0) continue;
           for (uint32_t t = 0; t < view.count[s]; ++t) {

@@ -1,5 +1,6 @@
 // Golden test on the shared research scenes: diffuse and camera rays, model against Embree,
-// every node format and width, nothing unexplained. Skips where ../shared is absent.
+// every node format and width (Intel's xe6 too), nothing unexplained. Skips where ../shared is
+// absent.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -18,7 +19,10 @@ void verify_scene(const std::string& relative, size_t rays) {
   EmbreeScene embree(scene.mesh);
   std::vector<Ray> all = sample_diffuse_rays(scene.mesh, rays, 7);
   for (const Ray& r : sample_camera_rays(scene.mesh, 64, 48)) all.push_back(r);
-  for (const BvhConfig& c : test::all_configs()) {
+  std::vector<BvhConfig> configs = test::all_configs();
+  configs.push_back(test::config(NodeFormat::Xe6, 6, 2));  // Intel Xe: quantised nodes, quads
+  configs.back().triangle_format = TriangleFormat::XeQuad;
+  for (const BvhConfig& c : configs) {
     BvhImage image = build_bvh_image(scene.mesh, c);
     TraversalUnit unit(image);
     Verifier verifier(scene.mesh, unit, embree);

@@ -103,6 +103,27 @@ TEST(SimInstancing, FlattenedAndInstancedWorldsGiveTheSameHits) {
   EXPECT_EQ(single["bvh"]["levels"], 1);
 }
 
+// Intel's records (xe6 nodes, xe_quad leaves, 128-byte instance leaves read 64 bytes at a time)
+// through the timing model: every ray as Embree answers it, and the bvh section names one node
+// and one leaf block of each format.
+TEST(SimInstancing, IntelXeRecordsGiveEmbreesAnswersOnTwoLevels) {
+  Scene scene = instanced_scene(test::instanced_world());
+  std::vector<Ray> rays = world_rays(2000, 9);
+  HwConfig xe = machine("depth_first", "two_level");
+  xe.bvh.node_format = NodeFormat::Xe6;
+  xe.bvh.triangle_format = TriangleFormat::XeQuad;
+  xe.bvh.width = 6;
+  xe.bvh.max_leaf_size = 2;
+  nlohmann::json doc = test::simulate(xe, scene, rays, true);
+  EXPECT_EQ(doc["verify"]["rays"], rays.size());
+  EXPECT_EQ(doc["verify"]["unexplained"], 0) << doc["verify"].dump();
+  EXPECT_EQ(doc["bvh"]["node_bytes"], 64);
+  EXPECT_EQ(doc["bvh"]["leaf_bytes"], 64);
+  nlohmann::json flat = test::simulate(machine("depth_first", "flatten"), scene, rays);
+  EXPECT_EQ(flat["bvh"]["node_bytes"], 256) << "aabb32 BVH8";
+  EXPECT_EQ(flat["bvh"]["leaf_bytes"], 40) << "a raw triangle";
+}
+
 // The built-in forest gets two levels by itself (auto: its meshes are placed many times).
 TEST(SimInstancing, TheForestRunsOnTwoLevelsInTreeletMode) {
   test::SimScene s("forest:200000");
