@@ -26,7 +26,13 @@ const VendorFigure kFigures[] = {
      10e9, 1545, 68},
     {"rtx3080", "NVIDIA publishes no rays/s for Ampere (only \"2x Turing's ray-triangle rate\")", 0,
      0, 0},
-    {"arc-a770", "Intel publishes box and triangle tests per clock for Xe-HPG, no rays/s", 0, 0, 0},
+    {"rtx4090", "NVIDIA publishes no rays/s for Ada (only \"2x Ampere's ray-triangle rate\")", 0, 0,
+     0},
+    {"rdna2", "AMD publishes box and triangle tests per clock for RDNA 2, no rays/s", 0, 0, 0},
+    {"rdna3", "AMD publishes box and triangle tests per clock for RDNA 3, no rays/s", 0, 0, 0},
+    {"rdna4", "AMD publishes box and triangle tests per clock for RDNA 4, no rays/s", 0, 0, 0},
+    {"xe-hpg", "Intel publishes box and triangle tests per clock for Xe-HPG, no rays/s", 0, 0, 0},
+    {"xe2", "Intel publishes box and triangle tests per clock for Xe2, no rays/s", 0, 0, 0},
 };
 
 // What the RT units of the model leave out, which a vendor's rate includes or hides.

@@ -40,6 +40,8 @@ TEST(Validate, QuickSuitePassesOnTheDefaults) {
 TEST(Validate, QuickSuitePassesOnEveryPreset) {
   for (const auto& entry : std::filesystem::directory_iterator(RTSIM_SOURCE_DIR "/configs")) {
     if (entry.path().extension() != ".toml") continue;
+    // xe-hpg's old name, the same machine (HwConfig.ArcA770IsAnAliasOfXeHpg): checked once.
+    if (entry.path().stem() == "arc-a770") continue;
     HwConfig config = load_hw_config(entry.path().string());
     SuiteResult r = run_suite({config, {}}, true, [](const std::string&) {});
     EXPECT_EQ(r.failed(), 0u) << entry.path() << "\n" << terminal_table(r);

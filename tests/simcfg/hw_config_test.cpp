@@ -44,6 +44,43 @@ TEST(HwConfig, PresetsDifferWhereTheyShould) {
   EXPECT_EQ(resolved_json(tq)["memory"], resolved_json(desktop)["memory"]) << "same caches";
 }
 
+// configs/arc-a770.toml is xe-hpg.toml under its old name: the config format has no include,
+// so the file is a copy, and every key but the name and description must stay equal.
+TEST(HwConfig, ArcA770IsAnAliasOfXeHpg) {
+  HwConfig alias = load_hw_config(RTSIM_SOURCE_DIR "/configs/arc-a770.toml");
+  HwConfig xe = load_hw_config(RTSIM_SOURCE_DIR "/configs/xe-hpg.toml");
+  EXPECT_EQ(alias.name, "arc-a770");
+  alias.name = xe.name;
+  alias.description = xe.description;
+  EXPECT_EQ(resolved_toml(alias), resolved_toml(xe)) << "edit xe-hpg.toml, then copy it here";
+}
+
+// The vendor presets' test units do the tests a clock their vendors publish (configs/SOURCES.md;
+// `rtsim validate --quick` measures them as ceiling.box_tests and ceiling.triangle_tests).
+// NVIDIA publishes ratios only: Ampere twice Turing's triangle rate, Ada twice Ampere's.
+TEST(HwConfig, VendorPresetsTestAtTheirPublishedRates) {
+  struct Rate {
+    const char* preset;
+    uint32_t box, triangle;
+    bool shared;
+  };
+  for (const Rate& r :
+       {Rate{"rdna2", 4, 1, true}, Rate{"rdna3", 4, 1, true}, Rate{"rdna4", 8, 2, true},
+        Rate{"xe-hpg", 12, 1, false}, Rate{"xe2", 18, 2, false}}) {
+    HwConfig c = load_hw_config(std::string(RTSIM_SOURCE_DIR "/configs/") + r.preset + ".toml");
+    EXPECT_EQ(c.rt.box.count * c.rt.box.issue_width, r.box) << r.preset;
+    EXPECT_EQ(c.rt.triangle.count * c.rt.triangle.issue_width, r.triangle) << r.preset;
+    EXPECT_EQ(c.rt.test_issue == TestIssue::Shared, r.shared) << r.preset;
+  }
+  auto triangles = [](const char* preset) {
+    HwConfig c = load_hw_config(std::string(RTSIM_SOURCE_DIR "/configs/") + preset + ".toml");
+    EXPECT_EQ(c.bvh.node_format, NodeFormat::Cwbvh8) << preset << ": the stand-in format";
+    return c.rt.triangle.count * c.rt.triangle.issue_width;
+  };
+  EXPECT_EQ(triangles("rtx3080"), 2 * triangles("rtx2080ti"));
+  EXPECT_EQ(triangles("rtx4090"), 2 * triangles("rtx3080"));
+}
+
 TEST(HwConfig, EveryKeyIsDocumented) {
   std::ifstream in(RTSIM_SOURCE_DIR "/model/SIM-REFERENCE.md");
   std::stringstream doc;
