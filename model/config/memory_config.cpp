@@ -18,12 +18,11 @@ std::string line_of(const toml::node& node) {
 
 void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
   c.size_bytes =
-      r.integer("size_bytes", c.size_bytes, "bytes",
-                fmt::format("data capacity of {}", which).c_str(), kMinCacheBytes, kMaxCacheBytes);
-  c.line_bytes = uint32_t(
-      r.integer("line_bytes", c.line_bytes, "bytes", "line size, a power of two", 4, 4096));
-  c.sector_bytes = uint32_t(r.integer(
-      "sector_bytes", c.sector_bytes, "bytes",
+      r.size("size_bytes", c.size_bytes, fmt::format("data capacity of {}", which).c_str(),
+             kMinCacheBytes, kMaxCacheBytes);
+  c.line_bytes = uint32_t(r.size("line_bytes", c.line_bytes, "line size, a power of two", 4, 4096));
+  c.sector_bytes = uint32_t(r.size(
+      "sector_bytes", c.sector_bytes,
       "fetch unit of a miss, a power of two dividing the line; 0 = the whole line", 0, 4096));
   c.ways = uint32_t(r.integer("ways", c.ways, "lines", "associativity: lines per set", 1, 1024));
   c.replacement =
