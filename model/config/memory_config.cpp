@@ -88,8 +88,8 @@ Place shorthand_place(const toml::node& section, const std::string& key,
 void name_memory_levels(toml::table& root, ConfigReadContext& ctx) {
   toml::table* memory = root["memory"].as_table();
   if (!memory || !memory->contains("level")) return;
-  const toml::node& list = *memory->get("level");
-  const toml::array* levels = list.as_array();
+  toml::node& list = *memory->get("level");
+  toml::array* levels = list.as_array();
   if (!levels || !levels->is_array_of_tables())
     throw_input_error(ctx.file, line_of(list),
                       "memory.level must be a list of [[memory.level]] tables");
@@ -98,14 +98,15 @@ void name_memory_levels(toml::table& root, ConfigReadContext& ctx) {
                       "give the levels as [[memory.level]] tables or as memory.levels, not both");
   toml::array names;
   toml::table named;
-  for (const toml::node& node : *levels) {
-    toml::table level = *node.as_table();
+  for (toml::node& node : *levels) {
+    // Moved, not copied: a copied toml++ node loses its source lines, which errors name.
+    toml::table level = std::move(*node.as_table());
     auto name = level["name"].value_exact<std::string>();
     if (!name)
-      throw_input_error(ctx.file, line_of(node),
+      throw_input_error(ctx.file, line_of(level),
                         "a [[memory.level]] needs name = \"...\" (its stats are mem.NAME.*)");
     if (named.contains(*name) || memory->contains(*name))
-      throw_input_error(ctx.file, line_of(node),
+      throw_input_error(ctx.file, line_of(level),
                         fmt::format("two [[memory.level]] tables are named '{}'", *name));
     level.erase("name");
     names.push_back(*name);
@@ -113,7 +114,7 @@ void name_memory_levels(toml::table& root, ConfigReadContext& ctx) {
   }
   memory->erase("level");
   memory->insert("levels", std::move(names));
-  for (auto&& [name, level] : named) memory->insert(name, level);
+  for (auto&& [name, level] : named) memory->insert(name, std::move(level));
 }
 
 // A memory.NAME section of a level memory.levels does not list (a misspelt name, say).
@@ -158,20 +159,21 @@ void expand_cache_shorthand(toml::table& root, ConfigReadContext& ctx) {
                                   "listed level's key)",
                                   first->second));
   }
+  // Moved, not copied: a copied toml++ node loses its source lines, which errors name.
   toml::table memory, own, shared;
   if (l1 && l1->is_table()) {
-    own = *l1->as_table();
+    own = std::move(*l1->as_table());
     rt->erase("l1");
   }
   if (l2 && l2->is_table()) {
-    shared = *l2->as_table();
+    shared = std::move(*l2->as_table());
     root.erase("l2");
   }
   if (xbar && xbar->is_table()) {
     toml::table& links = *xbar->as_table();
     for (const char* key : {"latency", "bytes_per_cycle"})
       if (toml::node* value = links.get(key)) {
-        own.insert(std::string("link_") + key, *value);
+        own.insert(std::string("link_") + key, std::move(*value));
         links.erase(key);
       }
     if (links.empty()) root.erase("xbar");

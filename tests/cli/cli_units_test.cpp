@@ -28,11 +28,14 @@ TEST(CliUnits, APresetByNameAndASizeWithASuffix) {
   RunResult r =
       run_rtsim("sim " + stream() + " -o " + out + " --set l2.size_bytes=4M --config desktop");
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // desktop's L2 is 4M already: another size shows that the --set took.
+  r = run_rtsim("sim " + stream() + " -o " + out + " --set l2.size_bytes=2M --config desktop");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
   std::string config = slurp(out + "/config.toml");
   EXPECT_NE(config.find("name = \"desktop\""), std::string::npos) << config;
   size_t l2 = config.find("[memory.l2]\n");
   ASSERT_NE(l2, std::string::npos) << config;
-  EXPECT_NE(config.find("\nsize_bytes = 4194304  #", l2), std::string::npos) << config;
+  EXPECT_NE(config.find("\nsize_bytes = 2097152  #", l2), std::string::npos) << config;
   EXPECT_NE(r.out.find("L1 hit rate "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("L2 hit rate "), std::string::npos) << r.out;
   std::filesystem::remove_all(out);

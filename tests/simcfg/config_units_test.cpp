@@ -10,6 +10,7 @@
 #include "tests/simcfg/config_files.h"
 #include "traces/byte_size.h"
 #include "traces/error.h"
+#include "traces/text_table.h"
 
 namespace rtsim {
 namespace {
@@ -71,6 +72,18 @@ TEST(ByteSize, TextIsTheLargestUnitThatDivides) {
   EXPECT_EQ(byte_size_text(1536), "1536");
   EXPECT_EQ(byte_size_text(64), "64");
   EXPECT_EQ(byte_size_text(0), "0");
+}
+
+TEST(WholeNumber, DigitsGroupFromTenThousandUp) {
+  EXPECT_EQ(whole_number(uint64_t(0)), "0");
+  EXPECT_EQ(whole_number(uint64_t(9999)), "9999");
+  EXPECT_EQ(whole_number(uint64_t(10000)), "10,000");
+  EXPECT_EQ(whole_number(uint64_t(1234567)), "1,234,567");
+  EXPECT_EQ(whole_number(UINT64_MAX), "18,446,744,073,709,551,615");
+  EXPECT_EQ(whole_number(11603.5), "11,604") << "a real is rounded";
+  EXPECT_EQ(whole_number(-1234567.0), "-1,234,567");
+  EXPECT_EQ(whole_number(-0.2), "0");
+  EXPECT_EQ(whole_number(1e30), "1e+30");
 }
 
 TEST(ConfigSizes, FilesAndSetTakeSuffixesOrBytes) {
