@@ -151,8 +151,10 @@ void expand_cache_shorthand(toml::table& root, ConfigReadContext& ctx) {
   auto first = std::find_if(std::begin(given), std::end(given),
                             [](const auto& g) { return g.first && g.first->is_table(); });
   if (first == std::end(given)) return;
-  if (root.contains("memory")) {
+  if (const toml::node* listed = root.get("memory")) {
     Place p = shorthand_place(*first->first, first->second, ctx);
+    // A [memory] that only overrides made (it has no line) is theirs to blame.
+    if (!listed->source().begin && p.where == ctx.file) p = shorthand_place(*listed, "memory", ctx);
     throw_input_error(p.where, p.line,
                       fmt::format("[{}] is the shorthand of a two-level hierarchy, and [memory] "
                                   "lists the levels: give one of them (memory.NAME.KEY sets a "

@@ -80,7 +80,7 @@ TEST(WholeNumber, DigitsGroupFromTenThousandUp) {
   EXPECT_EQ(whole_number(uint64_t(10000)), "10,000");
   EXPECT_EQ(whole_number(uint64_t(1234567)), "1,234,567");
   EXPECT_EQ(whole_number(UINT64_MAX), "18,446,744,073,709,551,615");
-  EXPECT_EQ(whole_number(11603.5), "11,604") << "a real is rounded";
+  EXPECT_EQ(whole_number(11603.6), "11,604") << "a real is rounded";
   EXPECT_EQ(whole_number(-1234567.0), "-1,234,567");
   EXPECT_EQ(whole_number(-0.2), "0");
   EXPECT_EQ(whole_number(1e30), "1e+30");
@@ -121,6 +121,28 @@ TEST(ConfigSizes, BadSizesNameTheKeyAndPlace) {
                       "or \"4M\"), got a boolean"),
             std::string::npos);
   EXPECT_EQ(error_of("", {"rt.l1.sector_bytes=0"}), "(no error)") << "0: the whole line";
+}
+
+TEST(ConfigSizes, ListedLevelsKeepTheirLines) {
+  std::string path = write_toml(
+      "[[memory.level]]\nname = \"near\"\nscope = \"unit\"\n\n[[memory.level]]\nname = "
+      "\"far\"\nscope = \"shared\"\nsize_bytes = \"2Q\"\n");
+  EXPECT_NE(error_of(path).find(path + ": line 8: key 'memory.far.size_bytes': '2Q': unknown "
+                                       "suffix 'Q'"),
+            std::string::npos)
+      << error_of(path);
+}
+
+TEST(ConfigSet, AnOverrideThatMakesTheClashIsNamed) {
+  // desktop writes the shorthand [rt.l1] and [l2]; the override lists levels under [memory].
+  EXPECT_EQ(error_of(RTSIM_SOURCE_DIR "/configs/desktop.toml", {"memory.l2.size_bytes=4M"})
+                .rfind("--set memory.l2.size_bytes=4M: [rt.l1] is the shorthand", 0),
+            0u)
+      << error_of(RTSIM_SOURCE_DIR "/configs/desktop.toml", {"memory.l2.size_bytes=4M"});
+  std::string both = write_toml("[l2]\nways = 8\n[memory]\nlevels = [\"a\"]\n");
+  EXPECT_EQ(error_of(both, {"memory.a.ways=4"}).rfind(both + ": line 1: [l2] is the shorthand", 0),
+            0u)
+      << "the file clashes by itself: " << error_of(both, {"memory.a.ways=4"});
 }
 
 TEST(ConfigSizes, SizeKeysAreListedAsSizesAndRatesAsNumbers) {
