@@ -17,6 +17,7 @@
 
 #include "app/commands.h"
 #include "reports/cli_options.h"
+#include "model/config/config_presets.h"
 #include "model/config/hw_config.h"
 #include "model/sc/fork_run.h"
 #include "model/sc/rt_simulator.h"
@@ -132,7 +133,7 @@ int run_bench_sim(const BenchSimOptions& o) {
   }
   if (o.stream.empty()) reports::require_generated_ray_memory(o.rays, "--rays");
   refuse_overwriting({{"--stream", o.stream},
-                      {"--config", o.config},
+                      {"--config", hw_config_path(o.config)},
                       {"--scene", is_builtin_scene(o.scene) ? "" : o.scene}},
                      {{"--write-stream", o.write_stream}});
   HwConfig config = load_hw_config(o.config, o.sets);
@@ -212,7 +213,7 @@ void add_bench_sim_command(CLI::App& app, int& exit_code) {
       ->check(reports::non_negative())
       ->capture_default_str();
   cmd->add_option("--stream", o->stream, "Simulate this stream instead (constant memory)");
-  cmd->add_option("--config", o->config, "Hardware config (.toml)");
+  cmd->add_option("--config", o->config, "Hardware config: " + kConfigForms);
   cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
   cmd->add_option("--repeat", o->repeat, "Runs per side; the fastest (CPU time) counts")
       ->check(CLI::Range(1, 100))

@@ -1,11 +1,10 @@
-// rtsim curve STREAM --config HW.toml --l2 256K..64M: the L2's miss ratio and DRAM bytes per ray
+// rtsim curve STREAM --config HW.toml --l2 256K..64M: the L2's miss rate and DRAM bytes per ray
 // at every capacity (and associativity) from one functional pass over the stream
 // (model/fidelity/CURVE.md), its knee, and with --simulate the full model's cycles at a few
 // capacities, the others interpolated. With -o DIR it writes curve.{json,csv,md}, the chart
 // curve.png and config.toml. With --l1 A,B,C: one pass and curve per L1 size (the L2's
 // references depend on the L1s), each in DIR/l1-SIZE/, and the family in curve-l1.{md,png}.
 #include <algorithm>
-#include <cctype>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +19,7 @@
 #include "reports/charts.h"
 #include "reports/curve_report.h"
 #include "reports/phase_progress.h"
+#include "traces/byte_size.h"
 #include "traces/error.h"
 #include "traces/memory_plan.h"
 #include "traces/output_file.h"
@@ -37,28 +37,14 @@ struct CurveOptions {
   bool no_charts = false;
 };
 
-// "256K", "4M", "1G" or a number of bytes, within the limits of the cache's size_bytes (`key`).
+// A size (traces/byte_size.h) within the limits of the cache's size_bytes (`key`).
 uint64_t parse_size(const std::string& text, const std::string& option, const char* key) {
-  size_t used = 0;
-  uint64_t value = 0;
-  try {
-    value = std::stoull(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  std::string unit = text.substr(used);
-  uint64_t scale = unit.empty()  ? 1
-                   : unit == "K" ? 1 << 10
-                   : unit == "M" ? 1 << 20
-                   : unit == "G" ? 1 << 30
-                                 : 0;
-  if (used == 0 || scale == 0 || value == 0)
-    throw InputError(
-        fmt::format("curve: {}: '{}' is not a size (256K, 4M, 1G or bytes)", option, text));
-  if (value > kMaxCacheBytes / scale || value * scale < kMinCacheBytes)
+  uint64_t value = parse_byte_size(text, "curve: " + option);
+  if (value < kMinCacheBytes || value > kMaxCacheBytes)
     throw InputError(fmt::format("curve: {}: '{}' is out of range [{}, {}] (the limits of {})",
-                                 option, text, kMinCacheBytes, kMaxCacheBytes, key));
-  return value * scale;
+                                 option, text, byte_size_text(kMinCacheBytes),
+                                 byte_size_text(kMaxCacheBytes), key));
+  return value;
 }
 
 // "A..B": A, 2A, 4A, ... up to B; or "A,B,C".
@@ -144,19 +130,19 @@ nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& requ
   return reports::curve_json(curve, context);
 }
 
-// curve_chart.py OUTDIR CURVE.json...: one curve's chart, or the family's.
-void draw(const std::vector<std::string>& args) {
-  reports::ChartRun chart = reports::run_chart_script("curve_chart.py", args);
-  if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
+// curve_chart.py OUTDIR CURVE.json...: one curve's chart, or the family's; the exit code.
+int draw(const std::vector<std::string>& args) {
+  return reports::chart_exit_code(reports::run_chart_script("curve_chart.py", args));
 }
 
-void write_curve(const std::string& dir, const nlohmann::ordered_json& doc, const HwConfig& config,
-                 bool charts) {
+// The exit code of its chart.
+int write_curve(const std::string& dir, const nlohmann::ordered_json& doc, const HwConfig& config,
+                bool charts) {
   write_file_atomic(dir + "/curve.json", doc.dump(2) + "\n");
   write_file_atomic(dir + "/curve.csv", reports::curve_csv(doc));
   write_file_atomic(dir + "/curve.md", reports::curve_markdown(doc));
   write_file_atomic(dir + "/config.toml", resolved_toml(config));
-  if (charts) draw({dir, dir + "/curve.json"});
+  return charts ? draw({dir, dir + "/curve.json"}) : 0;
 }
 
 int run_curve(const CurveOptions& o) {
@@ -206,6 +192,7 @@ int run_curve(const CurveOptions& o) {
 
   std::vector<nlohmann::ordered_json> docs;
   std::vector<std::string> files;  // their curve.json
+  int exit_code = 0;
   for (const HwConfig& c : configs) {
     nlohmann::ordered_json& doc = docs.emplace_back(curve_on(c, request, in));
     if (family) fmt::print("L1 {}:\n", reports::size_text(first_level(c).cache.size_bytes, true));
@@ -216,7 +203,7 @@ int run_curve(const CurveOptions& o) {
         family ? o.output + "/l1-" + reports::size_text(first_level(c).cache.size_bytes, true)
                : o.output;
     if (family) create_output_folder(dir);
-    write_curve(dir, doc, c, !o.no_charts);
+    exit_code = std::max(exit_code, write_curve(dir, doc, c, !o.no_charts));
     files.push_back(dir + "/curve.json");
   }
   if (o.output.empty()) return 0;
@@ -225,21 +212,21 @@ int run_curve(const CurveOptions& o) {
     write_file_atomic(o.output + "/config.toml", resolved_toml(config));
     if (!o.no_charts) {
       files.insert(files.begin(), o.output);
-      draw(files);
+      exit_code = std::max(exit_code, draw(files));
     }
   }
   fmt::print("\nresults in {}\n", o.output);
-  return 0;
+  return exit_code;
 }
 
 }  // namespace
 
 void add_curve_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
-      "curve", "L2 miss ratio and DRAM bytes per ray at every capacity from one functional pass");
+      "curve", "L2 miss rate and DRAM bytes per ray at every capacity from one functional pass");
   auto o = std::make_shared<CurveOptions>();
   cmd->add_option("stream", o->stream, "Ray stream (.rays)")->required();
-  cmd->add_option("--config", o->config, "Hardware config (.toml; see configs/)");
+  cmd->add_option("--config", o->config, "Hardware config: " + kConfigForms);
   cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
   cmd->add_option("--scene", o->scene, "Scene file or built-in (default: stream header)");
   cmd->add_option("--l2", o->l2, "L2 capacities: A..B (A, 2A, 4A, ... B) or A,B,C (K, M, G)")

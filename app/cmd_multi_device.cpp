@@ -171,8 +171,7 @@ int run_multi(const MultiOptions& o) {
     fmt::print("{}", multi::format_multi_summary(in));
     fmt::print("host       {:.1f} s; results in {}\n", in.host_seconds, o.output);
   }
-  if (!chart.ok) fmt::print(stderr, "rtsim: warning: no chart: {}\n", chart.message);
-  return 0;
+  return reports::chart_exit_code(chart);
 }
 
 }  // namespace
@@ -184,11 +183,11 @@ void add_multi_device_command(CLI::App& app, int& exit_code) {
   cmd->add_option("input", o->input, "Ray stream (.rays), or a workload spec or scene to trace");
   cmd->add_option("-o,--output", o->output, "Folder for the report, CSV files and chart");
   cmd->add_option("--devices-file", o->devices_file, "Device set (.toml; see configs/multi/)");
-  cmd->add_option("--config", o->config, "Hardware config of every device (.toml; configs/)");
+  cmd->add_option("--config", o->config, "Hardware config of every device: " + kConfigForms);
   cmd->add_option("--devices", o->devices, "Number of devices with --config (default 4)")
       ->check(CLI::Range(1, 1024));
   cmd->add_option("--device-config", o->device_configs,
-                  "Hardware config of one device; repeat once per device")
+                  "Hardware config of one device (as --config); repeat once per device")
       ->allow_extra_args(false);
   cmd->add_option("--split", o->split, "Strategies to compare: static,balanced,cost,current")
       ->delimiter(',')

@@ -18,6 +18,7 @@
 #include "reports/run_job.h"
 #include "traces/error.h"
 #include "traces/output_file.h"
+#include "traces/text_table.h"
 
 namespace rtsim::app {
 namespace {
@@ -56,7 +57,7 @@ void print_summary(const nlohmann::ordered_json& r) {
   const auto& t = r["timing"];
   fmt::print("run        {} on '{}', {} fidelity: {} rays\n",
              r["workload"]["name"].get<std::string>(), r["hardware"]["name"].get<std::string>(),
-             t["level"].get<std::string>(), t["rays"].get<uint64_t>());
+             t["level"].get<std::string>(), whole_number(t["rays"].get<uint64_t>()));
   if (!t["cycles"].is_null())
     fmt::print("timing     {} cycles{}, {:.1f} MRays/s at {} GHz\n",
                reports::show(t["cycles"], Style::Integer),
@@ -70,27 +71,27 @@ void print_summary(const nlohmann::ordered_json& r) {
   if (r["time"].contains("shader") && r["time"]["shader"].is_object())
     fmt::print("{}\n", shader_summary_line(r["time"]["shader"]));
   const auto& b = r["bandwidth"];
+  std::string levels;
   if (b.contains("levels") && b["levels"].size() != 2) {  // hit rates of every level
-    std::string levels;
     for (const auto& l : b["levels"])
-      levels += fmt::format("{} {}  ", l["name"].get<std::string>(),
+      levels += fmt::format("{} hit rate {}  ", l["name"].get<std::string>(),
                             reports::show(l["hit_rate"], Style::Percent));
-    fmt::print("memory     hit: {}DRAM {} B/ray\n", levels,
-               reports::show(b["dram_bytes_per_ray"], Style::Real));
   } else {
-    fmt::print("memory     L1 {}  L2 {}  DRAM {} B/ray\n",
-               reports::show(b["l1_hit_rate"], Style::Percent),
-               reports::show(b["l2_hit_rate"], Style::Percent),
-               reports::show(b["dram_bytes_per_ray"], Style::Real));
+    levels = fmt::format("L1 hit rate {}  L2 hit rate {}  ",
+                         reports::show(b["l1_hit_rate"], Style::Percent),
+                         reports::show(b["l2_hit_rate"], Style::Percent));
   }
+  fmt::print("memory     {}DRAM {} B/ray\n", levels,
+             reports::show(b["dram_bytes_per_ray"], Style::Real));
   if (r["energy"].is_object()) fmt::print("{}\n", energy_summary_line(r["energy"]));
   const auto& v = r["verification"];
   if (v["skipped"].get<bool>())
     fmt::print("verify     skipped: {}\n", v["reason"].get<std::string>());
   else
     fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n",
-               v["rays"].get<uint64_t>(), v["mismatches"].get<uint64_t>(),
-               v["unexplained"].get<uint64_t>());
+               whole_number(v["rays"].get<uint64_t>()),
+               whole_number(v["mismatches"].get<uint64_t>()),
+               whole_number(v["unexplained"].get<uint64_t>()));
 }
 
 int run(const RunOptions& o) {
@@ -144,7 +145,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   reports::add_workload_options(*cmd, o->workload);
   cmd->add_option("--from-trace", o->from_trace,
                   "Reuse a trace folder (DIR/trace of a run) or a ray stream (.rays)");
-  cmd->add_option("--config", o->config, "Hardware config (.toml; see configs/)");
+  cmd->add_option("--config", o->config, "Hardware config: " + kConfigForms);
   reports::add_config_overrides(*cmd, o->sets);
   cmd->add_option("-o,--output", o->output, "Run folder (report, results, trace)");
   cmd->add_option("--fidelity", o->fidelity, "functional, cache, cycle or sampled")

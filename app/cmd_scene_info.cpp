@@ -92,7 +92,7 @@ void add_scene_info_command(CLI::App& app, int& exit_code) {
                   "Scene file (OBJ, glTF, GLB, PLY, OFF, STL) or built-in: " + builtins)
       ->required();
   cmd->add_flag("--bvh", o->bvh, "Also build the BVH the hardware config simulates; its bytes");
-  cmd->add_option("--config", o->config, "Hardware config for --bvh (.toml; configs/)");
+  cmd->add_option("--config", o->config, "Hardware config for --bvh: " + kConfigForms);
   cmd->add_option("--set", o->sets, "Override a config key for --bvh: --set bvh.instancing=flatten")
       ->allow_extra_args(false);
   cmd->callback([o, &exit_code] {

@@ -19,11 +19,13 @@
 #include "reports/report_writer.h"
 #include "reports/run_job.h"
 #include "reports/sim_folder.h"
+#include "model/config/config_presets.h"
 #include "model/config/hw_config.h"
 #include "model/sc/sim_report.h"
 #include "model/sc/stream_sim.h"
 #include "traces/error.h"
 #include "traces/output_file.h"
+#include "traces/text_table.h"
 #include "workloads/scene.h"
 
 namespace rtsim::app {
@@ -57,18 +59,18 @@ void print_keys() {
 void print_summary(const nlohmann::ordered_json& doc) {
   const auto& s = doc["summary"];
   fmt::print("cycles     {}  ({:.3f} rays/cycle, {:.1f} MRays/s at {} GHz)\n",
-             s["cycles"].get<uint64_t>(), s["rays_per_cycle"].get<double>(),
+             whole_number(s["cycles"].get<uint64_t>()), s["rays_per_cycle"].get<double>(),
              s["mrays_per_second"].get<double>(), s["clock_ghz"].get<double>());
   if (s["warmup_rays"] != 0 || s["warmup_frames"] != 0)
     fmt::print("warm-up    {} rays, {} frames: stats from cycle {} on\n",
-               s["warmup_rays"].get<uint64_t>(), s["warmup_frames"].get<uint64_t>(),
-               s["measured_from_cycle"].get<uint64_t>());
+               whole_number(s["warmup_rays"].get<uint64_t>()), s["warmup_frames"].get<uint64_t>(),
+               whole_number(s["measured_from_cycle"].get<uint64_t>()));
   for (const auto& f : doc["frames"])
     fmt::print(
-        "frame {:<4} {:>9} rays  {:>10} cycles  L2 hit {:.1f}%  compulsory {:.1f}%  DRAM "
+        "frame {:<4} {:>9} rays  {:>10} cycles  L2 hit rate {:.1f}%  compulsory {:.1f}%  DRAM "
         "{:.0f} B/ray\n",
-        f["frame"].get<uint64_t>(), f["rays"].get<double>(), f["cycles"].get<double>(),
-        100 * f["memory"]["l2_hit_rate"].get<double>(),
+        f["frame"].get<uint64_t>(), whole_number(f["rays"].get<double>()),
+        whole_number(f["cycles"].get<double>()), 100 * f["memory"]["l2_hit_rate"].get<double>(),
         100 * f["memory"]["l2_compulsory_share"].get<double>(),
         f["memory"]["dram_bytes_per_ray"].get<double>());
   for (const auto& [type, t] : doc["ray_types"].items()) {
@@ -76,8 +78,8 @@ void print_summary(const nlohmann::ordered_json& doc) {
     std::string warp_p99 = warps["warps"] == 0 ? "-" : warps["p99"].dump();
     fmt::print(
         "{:<12} {:>9} rays  latency p50/p95/p99 {}/{}/{}  warp p99 {}  nodes {:.1f}  tris {:.1f}  "
-        "L1 {:.1f}%  L2 {:.1f}%  DRAM {:.0f} B/ray\n",
-        type, t["rays"].get<uint64_t>(), t["latency_cycles"]["p50"].get<uint64_t>(),
+        "L1 hit rate {:.1f}%  L2 hit rate {:.1f}%  DRAM {:.0f} B/ray\n",
+        type, whole_number(t["rays"].get<uint64_t>()), t["latency_cycles"]["p50"].get<uint64_t>(),
         t["latency_cycles"]["p95"].get<uint64_t>(), t["latency_cycles"]["p99"].get<uint64_t>(),
         warp_p99, t["nodes_per_ray"].get<double>(), t["triangles_per_ray"].get<double>(),
         100 * t["l1_hit_rate"].get<double>(), 100 * t["l2_hit_rate"].get<double>(),
@@ -92,16 +94,17 @@ void print_summary(const nlohmann::ordered_json& doc) {
   if (m["levels"].size() != 2) {  // every level
     std::string levels;
     for (const auto& l : m["levels"])
-      levels += fmt::format("{} hit {} served {} compulsory {}  ", l["name"].get<std::string>(),
-                            percent(l["hit_rate"]), percent(l["served_rate"]),
-                            percent(l["compulsory_share"]));
+      levels += fmt::format("{} hit rate {} served {} compulsory {}  ",
+                            l["name"].get<std::string>(), percent(l["hit_rate"]),
+                            percent(l["served_rate"]), percent(l["compulsory_share"]));
     fmt::print(
         "memory     {}(served: hits and merges into misses in flight; compulsory: share "
         "of misses)\n",
         levels);
   } else {
     fmt::print(
-        "memory     L1 hit {} served {} compulsory {}  L2 hit {} served {} compulsory {}  "
+        "memory     L1 hit rate {} served {} compulsory {}  L2 hit rate {} served {} compulsory {} "
+        " "
         "(served: hits and merges into misses in flight; compulsory: share of misses)\n",
         percent(m["l1_hit_rate"]), percent(m["l1_served_rate"]), percent(m["l1_compulsory_share"]),
         percent(m["l2_hit_rate"]), percent(m["l2_served_rate"]), percent(m["l2_compulsory_share"]));
@@ -180,7 +183,7 @@ int run_sim(const SimOptions& o) {
   for (const char* name : {"fidelity.json", "sim.json"})
     outputs.push_back({"-o", o.output + "/" + name});
   refuse_overwriting({{"the stream", o.stream},
-                      {"--config", o.config},
+                      {"--config", hw_config_path(o.config)},
                       {"--scene", is_builtin_scene(o.scene) ? "" : o.scene}},
                      outputs);
   reports::RunJob job;
@@ -198,7 +201,7 @@ int run_sim(const SimOptions& o) {
   if (!o.quiet) {
     fmt::print(
         "sim        {} rays{} of {} on '{}' ({}, {} RT units, {})\n",
-        rays_of(reader.header(), types),
+        whole_number(uint64_t(rays_of(reader.header(), types))),
         o.ray_types.empty() ? "" : " (" + fmt::format("{}", fmt::join(o.ray_types, ", ")) + ")",
         o.stream, config.name, traversal_mode_name(config.rt.mode), config.rt_units,
         describe(config.bvh));
@@ -219,17 +222,18 @@ int run_sim(const SimOptions& o) {
   if (!o.quiet) {
     print_summary(doc);
     fmt::print(
-        "host       {:.2f} s, {:.0f} rays/s; results in {} (rtsim report {} writes its "
+        "host       {:.2f} s, {} rays/s; results in {} (rtsim report {} writes its "
         "report)\n",
-        doc["host"]["seconds"].get<double>(), doc["host"]["rays_per_second"].get<double>(),
-        o.output, o.output);
+        doc["host"]["seconds"].get<double>(),
+        whole_number(doc["host"]["rays_per_second"].get<double>()), o.output, o.output);
   }
   const auto& v = doc["verify"];
   if (v.contains("skipped")) return 0;
   uint64_t unexplained = v["unexplained"].get<uint64_t>();
   if (!o.quiet || unexplained)
     fmt::print("verify     {} rays against Embree: {} mismatches, {} unexplained\n",
-               v["rays"].get<uint64_t>(), v["mismatches"].get<uint64_t>(), unexplained);
+               whole_number(v["rays"].get<uint64_t>()),
+               whole_number(v["mismatches"].get<uint64_t>()), whole_number(unexplained));
   for (const Mismatch& m : result.unexplained)
     fmt::print("unexplained ray {} ({}): Embree triangle {} t={}, model triangle {} t={}\n",
                m.index, ray_type_name(m.ray.type), m.embree.prim, m.embree.t, m.model_prim,
@@ -243,7 +247,7 @@ void add_sim_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("sim", "Run the cycle-approximate hardware model on a stream");
   auto options = std::make_shared<SimOptions>();
   cmd->add_option("stream", options->stream, "Ray stream (.rays)");
-  cmd->add_option("--config", options->config, "Hardware config (.toml; see configs/)");
+  cmd->add_option("--config", options->config, "Hardware config: " + kConfigForms);
   reports::add_config_overrides(*cmd, options->sets);
   cmd->add_option("-o,--output", options->output, "Folder for stats.json, config.toml, pixels");
   cmd->add_option("--scene", options->scene, "Scene file or built-in (default: stream header)");

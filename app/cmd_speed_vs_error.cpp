@@ -20,6 +20,7 @@
 #include "reports/speed_error.h"
 #include "traces/output_file.h"
 #include "traces/error.h"
+#include "traces/text_table.h"
 #include "workloads/scene.h"
 
 namespace rtsim::app {
@@ -103,7 +104,8 @@ int run_speed_error(const SpeedErrorOptions& o) {
   Scene scene = load_stream_scene(trace.stream, RayStreamReader(trace.stream).header());
   TwoLevelBvh bvh = reports::build_scene_bvh(scene, config.bvh, false);
   BvhView image(bvh);
-  fmt::print("reference  full cycle-approximate model, {} rays, '{}'\n", rays, config.name);
+  fmt::print("reference  full cycle-approximate model, {} rays, '{}'\n",
+             whole_number(uint64_t(rays)), config.name);
   reports::LevelRun reference{
       "cycle", best_of(o, {FidelityLevel::Cycle, {}}, config, image, trace.stream), {}};
   std::vector<reports::LevelRun> results;
@@ -139,13 +141,12 @@ int run_speed_error(const SpeedErrorOptions& o) {
   write_file_atomic(o.output + "/speed_vs_error.json", doc.dump(2) + "\n");
   write_file_atomic(o.output + "/speed_vs_error.csv", reports::speed_error_csv(doc));
   write_file_atomic(o.output + "/speed_vs_error.md", reports::speed_error_markdown(doc));
-  if (!o.no_charts) {
-    reports::ChartRun chart = reports::run_chart_script(
-        "speed_error_chart.py", {o.output + "/speed_vs_error.json", o.output});
-    if (!chart.ok) fmt::print(stderr, "rtsim: charts skipped: {}\n", chart.message);
-  }
+  int exit_code = 0;
+  if (!o.no_charts)
+    exit_code = reports::chart_exit_code(reports::run_chart_script(
+        "speed_error_chart.py", {o.output + "/speed_vs_error.json", o.output}));
   fmt::print("\nresults in {}\n", o.output);
-  return 0;
+  return exit_code;
 }
 
 }  // namespace
@@ -157,7 +158,7 @@ void add_speed_vs_error_command(CLI::App& app, int& exit_code) {
   cmd->add_option("workload", o->workload.workload, "Workload spec (.toml) or built-in scene");
   reports::add_workload_options(*cmd, o->workload);
   cmd->add_option("--from-trace", o->from_trace, "Use this trace folder (of rtsim run)");
-  cmd->add_option("--config", o->config, "Hardware config (.toml; see configs/)");
+  cmd->add_option("--config", o->config, "Hardware config: " + kConfigForms);
   cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
   cmd->add_option("--rates", o->rates, "Sample rates: 1 in N rays")
       ->delimiter(',')

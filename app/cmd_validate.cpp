@@ -49,7 +49,8 @@ void add_validate_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
       "validate", "Check the timing model against closed-form answers and published results");
   auto o = std::make_shared<ValidateOptions>();
-  cmd->add_option("--config", o->config, "Hardware config (.toml) under test (default: defaults)");
+  cmd->add_option("--config", o->config,
+                  "Hardware config under test (default: defaults): " + kConfigForms);
   cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
   cmd->add_option("-o,--output", o->output, "Folder for validate.html, .md, .json and junit.xml");
   cmd->add_flag("--quick", o->quick, "The closed-form checks only (under 2 minutes)");

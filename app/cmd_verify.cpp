@@ -215,7 +215,7 @@ void add_verify_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--t-tolerance", options->t_tolerance, "Relative t difference that agrees")
       ->capture_default_str();
   cmd->add_option("--config", options->config,
-                  "Verify the BVH this hardware config simulates (.toml; configs/)");
+                  "Verify the BVH this hardware config simulates: " + kConfigForms);
   cmd->add_option("--set", options->sets, "Override a config key: --set bvh.width=4")
       ->allow_extra_args(false);
   cmd->add_flag("--instances", options->instances,

@@ -31,6 +31,9 @@ void add_compare_command(CLI::App& app, int& exit_code);
 void add_sweep_command(CLI::App& app, int& exit_code);
 void add_regress_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);
+// What every --config option takes, for its help (model/config/config_presets.h).
+inline const std::string kConfigForms =
+    "a .toml file, or a preset's name (desktop: configs/desktop.toml)";
 // BVH build options shared by verify and bench (defined in cmd_verify.cpp).
 void add_bvh_options(CLI::App& cmd, BvhConfig& config);
 // The console line of a shader model's figures (the stats JSON's `shader`), shared by sim and

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include <fmt/core.h>
+
 #include "traces/child_process.h"
 
 namespace rtsim::reports {
@@ -62,6 +64,12 @@ ChartRun run_chart_script(const std::string& script, const std::vector<std::stri
   waitpid(pid, &status, 0);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return {true, ""};
   return {false, script + ": " + last_line(output)};
+}
+
+int chart_exit_code(const ChartRun& run) {
+  if (run.ok) return 0;
+  fmt::print(stderr, "rtsim: charts failed: {}\n", run.message);
+  return 1;
 }
 
 }  // namespace rtsim::reports

@@ -20,4 +20,8 @@ std::string charts_dir();
 // Runs one script of charts_dir() with args; waits for it.
 ChartRun run_chart_script(const std::string& script, const std::vector<std::string>& args);
 
+// A command's exit code for the charts it asked for: 0 if drawn; else 1, after one stderr line
+// with the reason, `rtsim: charts failed: WHY` (the command's other outputs are written).
+int chart_exit_code(const ChartRun& run);
+
 }  // namespace rtsim::reports

@@ -6,6 +6,9 @@
 
 #include <fmt/core.h>
 
+#include "traces/byte_size.h"
+#include "traces/text_table.h"
+
 namespace rtsim::reports {
 
 namespace {
@@ -49,11 +52,10 @@ std::string percent(const nlohmann::json& v, double scale, const char* format) {
 }  // namespace
 
 std::string size_text(uint64_t bytes, bool compact) {
-  const char* mib = compact ? "M" : " MiB";
-  const char* kib = compact ? "K" : " KiB";
-  if (bytes % (1 << 20) == 0) return fmt::format("{}{}", bytes >> 20, mib);
-  if (bytes % (1 << 10) == 0) return fmt::format("{}{}", bytes >> 10, kib);
-  return compact ? std::to_string(bytes) : fmt::format("{} B", bytes);
+  if (compact) return byte_size_text(bytes);
+  if (bytes % (1 << 20) == 0) return fmt::format("{} MiB", bytes >> 20);
+  if (bytes % (1 << 10) == 0) return fmt::format("{} KiB", bytes >> 10);
+  return fmt::format("{} B", bytes);
 }
 
 nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::ordered_json& context) {
@@ -105,8 +107,8 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
 
 std::string curve_table(const nlohmann::ordered_json& doc, bool markdown) {
   std::vector<std::vector<std::string>> rows = {
-      {"L2", "ways", "miss ratio", "DRAM B/ray", "knee", "cycles", "cycles from",
-       "full model: miss ratio", "DRAM B/ray", "curve error: miss", "DRAM", "interpolation"}};
+      {"L2", "ways", "miss rate", "DRAM B/ray", "knee", "cycles", "cycles from",
+       "full model: miss rate", "DRAM B/ray", "curve error: miss rate", "DRAM", "interpolation"}};
   bool sampled = doc["sample_rate"].get<uint32_t>() > 1;
   for (const auto& p : doc["points"]) {
     std::string miss = fmt::format("{:.2f}%", 100 * p["miss_ratio"].get<double>());
@@ -120,7 +122,7 @@ std::string curve_table(const nlohmann::ordered_json& doc, bool markdown) {
     rows.push_back({size_text(p["capacity_bytes"].get<uint64_t>()),
                     std::to_string(p["ways"].get<uint32_t>()), miss, dram,
                     p["knee"].get<bool>() ? "knee" : "",
-                    p["cycles"].is_null() ? "-" : fmt::format("{:.0f}", p["cycles"].get<double>()),
+                    p["cycles"].is_null() ? "-" : whole_number(p["cycles"].get<double>()),
                     p["cycles_from"].get<std::string>(),
                     ran ? percent(run["miss_ratio"], 100, "{:.2f}%") : "-",
                     ran ? percent(run["dram_bytes_per_ray"], 1, "{:.1f}") : "-",
@@ -175,8 +177,8 @@ std::string curve_markdown(const nlohmann::ordered_json& doc) {
       "# L2 curve: {} on {}\n\n{} rays; {} L2 block reads and {} writes of {} bytes from one "
       "functional pass ({:.2f} s CPU); method: {}.\n\n",
       ctx["stream"].get<std::string>(), ctx["config"].get<std::string>(),
-      pass["rays"].get<uint64_t>(), pass["l2_reads"].get<uint64_t>(),
-      pass["l2_writes"].get<uint64_t>(), pass["block_bytes"].get<uint32_t>(),
+      whole_number(pass["rays"].get<uint64_t>()), whole_number(pass["l2_reads"].get<uint64_t>()),
+      whole_number(pass["l2_writes"].get<uint64_t>()), pass["block_bytes"].get<uint32_t>(),
       pass["cpu_seconds"].get<double>(), doc["method"].get<std::string>());
   out += curve_table(doc, true);
   out += "\n![curve](curve.png)\n\nColumns: model/fidelity/CURVE.md.\n";
@@ -188,21 +190,21 @@ std::string curve_family_markdown(const std::vector<nlohmann::ordered_json>& doc
   std::string out = fmt::format(
       "# L2 curves by L1 size: {} on {}\n\n{} rays; one functional pass per L1 size (the L2's "
       "references depend on the L1s); each size's full table in l1-SIZE/curve.md.\n\n"
-      "| L1 | L2 | ways | miss ratio | DRAM B/ray | knee | cycles | cycles from |\n"
+      "| L1 | L2 | ways | miss rate | DRAM B/ray | knee | cycles | cycles from |\n"
       "|---|---|---|---|---|---|---|---|\n",
       ctx["stream"].get<std::string>(), ctx["config"].get<std::string>(),
-      ctx["rays"].get<uint64_t>());
+      whole_number(ctx["rays"].get<uint64_t>()));
   for (const auto& doc : docs) {
     uint32_t ways = doc["points"][0]["ways"].get<uint32_t>();
     for (const auto& p : doc["points"]) {
       if (p["ways"].get<uint32_t>() != ways) continue;
-      out += fmt::format(
-          "| {} | {} | {} | {:.2f}% | {:.1f} | {} | {} | {} |\n",
-          size_text(doc["context"]["l1_bytes"].get<uint64_t>()),
-          size_text(p["capacity_bytes"].get<uint64_t>()), ways, 100 * p["miss_ratio"].get<double>(),
-          p["dram_bytes_per_ray"].get<double>(), p["knee"].get<bool>() ? "knee" : "",
-          p["cycles"].is_null() ? "-" : fmt::format("{:.0f}", p["cycles"].get<double>()),
-          p["cycles_from"].get<std::string>());
+      out += fmt::format("| {} | {} | {} | {:.2f}% | {:.1f} | {} | {} | {} |\n",
+                         size_text(doc["context"]["l1_bytes"].get<uint64_t>()),
+                         size_text(p["capacity_bytes"].get<uint64_t>()), ways,
+                         100 * p["miss_ratio"].get<double>(), p["dram_bytes_per_ray"].get<double>(),
+                         p["knee"].get<bool>() ? "knee" : "",
+                         p["cycles"].is_null() ? "-" : whole_number(p["cycles"].get<double>()),
+                         p["cycles_from"].get<std::string>());
     }
   }
   out += "\n![curves](curve-l1.png)\n\nColumns: model/fidelity/CURVE.md.\n";

@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include "traces/error.h"
+#include "traces/text_table.h"
 
 namespace rtsim::reports {
 
@@ -179,14 +180,11 @@ std::string show(const Json& v, Style style) {
   if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
   if (!v.is_number()) return v.dump();  // an object or array where a number belongs
   if (style == Style::Percent) return fmt::format("{:.2f}%", 100 * v.get<double>());
-  if (v.is_number_integer() || v.is_number_unsigned()) return v.dump();
-  if (style == Style::Integer) return fmt::format("{:.0f}", v.get<double>());
+  if (v.is_number_unsigned()) return whole_number(v.get<uint64_t>());
   double x = v.get<double>();
-  if (std::isfinite(x) && std::abs(x) >= 1000) {  // plain, in thousands: 11,603 not 1.16e+04
-    std::string digits = fmt::format("{:.0f}", std::abs(x));
-    for (size_t i = digits.size(); i > 3; i -= 3) digits.insert(i - 3, ",");
-    return (x < 0 ? "-" : "") + digits;
-  }
+  // Whole from 1,000 on: 11,603 not 1.16e+04.
+  if (v.is_number_integer() || style == Style::Integer || (std::isfinite(x) && std::abs(x) >= 1000))
+    return whole_number(x);
   return fmt::format("{:.4g}", x);
 }
 

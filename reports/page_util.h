@@ -42,8 +42,9 @@ const nlohmann::ordered_json& at_key(const nlohmann::ordered_json& doc, const st
 const nlohmann::ordered_json& swept_value(const nlohmann::ordered_json& values,
                                           const std::string& key);
 
-// How a value is shown: integers whole, reals to 4 significant digits, rates as percentages
-// with 2 decimals, null as "n/a".
+// How a value is shown: integers, and reals from 1,000 on, whole with the one thousands rule
+// (whole_number, traces/text_table.h: 9999, 10,000); smaller reals to 4 significant digits;
+// rates (fractions in the JSON) as percentages with 2 decimals; null as "n/a".
 std::string show(const nlohmann::ordered_json& value, Style style);
 
 // <td data-key=KEY data-value=RAW>SHOWN</td> for the value at key in doc.

@@ -3,6 +3,7 @@
 
 #include "reports/page_util.h"
 #include "reports/report_pages.h"
+#include "traces/text_table.h"
 
 namespace rtsim::reports {
 namespace {
@@ -29,9 +30,9 @@ std::string verification(const Json& r) {
   return fmt::format(
       "**{}**: {} rays checked against Embree, {} agree, {} mismatches, "
       "{} unexplained.\n",
-      v["passed"].get<bool>() ? "PASSED" : "FAILED", v["rays"].get<uint64_t>(),
-      v["agree"].get<uint64_t>(), v["mismatches"].get<uint64_t>(),
-      v["unexplained"].get<uint64_t>());
+      v["passed"].get<bool>() ? "PASSED" : "FAILED", whole_number(v["rays"].get<uint64_t>()),
+      whole_number(v["agree"].get<uint64_t>()), whole_number(v["mismatches"].get<uint64_t>()),
+      whole_number(v["unexplained"].get<uint64_t>()));
 }
 
 std::string images(const Json& r) {

@@ -154,8 +154,7 @@ int charts_exit_code(const ReportOutcome& outcome, const ReportOptions& options,
     if (!quiet) fmt::print("charts     skipped (--no-charts)\n");
     return 0;
   }
-  fmt::print(stderr, "rtsim: charts failed: {}\n", outcome.message);
-  return 1;
+  return chart_exit_code({false, outcome.message});
 }
 
 void clear_sim_folder_report(const std::string& sim_dir) {

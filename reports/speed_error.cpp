@@ -158,10 +158,11 @@ std::string speed_error_markdown(const Json& doc) {
       "DRAM bytes) or in percentage points (hit rates); "
       "± is the sampled level's 95% confidence interval. Goal: cycle error <= {:.0f}% at a "
       "speed-up >= {:.0f}x.\n\n",
-      c["workload"].get<std::string>(), c["config"].get<std::string>(), c["rays"].get<uint64_t>(),
-      c["width"].get<uint32_t>(), c["height"].get<uint32_t>(), c["scene"].get<std::string>(),
-      c["triangles"].get<uint64_t>(), 100 * doc["goal"]["max_cycle_error"].get<double>(),
-      doc["goal"]["min_speedup"].get<double>());
+      c["workload"].get<std::string>(), c["config"].get<std::string>(),
+      whole_number(c["rays"].get<uint64_t>()), c["width"].get<uint32_t>(),
+      c["height"].get<uint32_t>(), c["scene"].get<std::string>(),
+      whole_number(c["triangles"].get<uint64_t>()),
+      100 * doc["goal"]["max_cycle_error"].get<double>(), doc["goal"]["min_speedup"].get<double>());
   return out + speed_error_table(doc, true) + "\n![speed against error](speed_vs_error.png)\n";
 }
 

@@ -14,6 +14,7 @@
 #include "model/fidelity/fidelity_result.h"
 #include "reports/metrics.h"
 #include "reports/spec_reader.h"
+#include "traces/byte_size.h"
 #include "traces/error.h"
 #include "workloads/pipeline/spec.h"
 #include "workloads/scene.h"
@@ -24,12 +25,19 @@ using Json = nlohmann::ordered_json;
 
 namespace {
 
-// A TOML value as the text of --set KEY=VALUE, and as JSON.
-std::pair<std::string, Json> scalar(const SpecReader& r, const toml::node& n) {
+// A TOML value of key as the text of --set KEY=VALUE, and as JSON. A size ("4M" for a key in
+// bytes, traces/byte_size.h) is its bytes, so that points, tables and chart axes order it.
+std::pair<std::string, Json> scalar(const SpecReader& r, const std::string& key,
+                                    const toml::node& n) {
   if (auto v = n.value_exact<int64_t>()) return {std::to_string(*v), *v};
   if (auto v = n.value_exact<double>()) return {fmt::format("{}", *v), *v};
   if (auto v = n.value_exact<bool>()) return {*v ? "true" : "false", *v};
-  if (auto v = n.value_exact<std::string>()) return {"\"" + *v + "\"", *v};
+  if (auto v = n.value_exact<std::string>()) {
+    bool in_bytes = key.size() > 6 && key.compare(key.size() - 6, 6, "_bytes") == 0;
+    uint64_t bytes = 0;
+    if (in_bytes && byte_size_problem(*v, &bytes).empty()) return {std::to_string(bytes), bytes};
+    return {"\"" + *v + "\"", *v};
+  }
   r.fail(n, "a config value must be an integer, number, boolean or string");
 }
 
@@ -99,14 +107,14 @@ void add_grid(const SpecReader& r, const toml::table& grid, uint64_t max_points,
     spec.keys.push_back(key);
     std::set<std::string> listed;
     for (const toml::node& v : *values)
-      if (!listed.insert(scalar(r, v).first).second)
+      if (!listed.insert(scalar(r, key, v).first).second)
         r.fail(v, fmt::format("grid key '{}' lists {} twice (its points would run twice)", key,
-                              scalar(r, v).first));
+                              scalar(r, key, v).first));
     std::vector<SweepPoint> next;
     for (const SweepPoint& p : spec.points)
       for (const toml::node& v : *values) {
         SweepPoint q = p;
-        auto [set, json] = scalar(r, v);
+        auto [set, json] = scalar(r, key, v);
         q.values[key] = json;
         q.sets.push_back(key + "=" + set);
         q.lines.push_back(v.source().begin.line);
@@ -128,7 +136,7 @@ void add_points(const SpecReader& r, const toml::array& list, uint64_t max_point
     if (!n.is_table()) r.fail(n, "[[point]] must be a table");
     SweepPoint p{Json::object(), {}, {}};
     for (const auto& [key, node] : flatten(r, *n.as_table())) {
-      auto [set, json] = scalar(r, *node);
+      auto [set, json] = scalar(r, key, *node);
       p.values[key] = json;
       p.sets.push_back(key + "=" + set);
       p.lines.push_back(node->source().begin.line);

@@ -12,6 +12,7 @@
 #include "traces/error.h"
 #include "traces/hash.h"
 #include "traces/stream.h"
+#include "traces/text_table.h"
 #include "workloads/pipeline/summary.h"
 #include "workloads/pipeline/trace.h"
 
@@ -143,7 +144,8 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   if (trace_is_current(request, dir)) {
     TraceOutcome old = read_trace_dir(dir);
     if (!quiet)
-      fmt::print("trace      reusing {} ({} rays)\n", dir, old.summary["rays"].get<uint64_t>());
+      fmt::print("trace      reusing {} ({} rays)\n", dir,
+                 whole_number(old.summary["rays"].get<uint64_t>()));
     return old;
   }
   create_output_folder(dir);
@@ -178,8 +180,9 @@ TraceOutcome trace_into(const TraceRequest& request, const std::string& dir, boo
   write_file_atomic(dir + "/trace.json", summary.dump(2) + "\n");
   if (!quiet)
     fmt::print(
-        "trace      {} rays of {} on {} ({} triangles) in {:.1f} s\n", result.summary.total_rays(),
-        request.workload, result.summary.scene_source, result.summary.triangles,
+        "trace      {} rays of {} on {} ({} triangles) in {:.1f} s\n",
+        whole_number(uint64_t(result.summary.total_rays())), request.workload,
+        result.summary.scene_source, whole_number(uint64_t(result.summary.triangles)),
         result.summary.load_seconds + result.summary.build_seconds + result.summary.trace_seconds);
   std::fflush(stdout);
   TraceOutcome out{dir, options.output, options.preview, summary};

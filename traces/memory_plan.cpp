@@ -11,6 +11,7 @@
 
 #include <fmt/core.h>
 
+#include "traces/byte_size.h"
 #include "traces/error.h"
 
 namespace rtsim {
@@ -52,12 +53,8 @@ uint64_t address_space_left_bytes() {
 uint64_t available_memory_bytes() {
   // The address-space limit is hard: an allocation beyond it fails whatever else is planned.
   uint64_t address_space = address_space_left_bytes();
-  if (const char* text = std::getenv("RTSIM_MAX_MEMORY")) {
-    char* end = nullptr;
-    unsigned long long value = std::strtoull(text, &end, 10);
-    if (end != text && *end == '\0') return std::min<uint64_t>(value, address_space);
-    throw InputError(fmt::format("RTSIM_MAX_MEMORY: expected a number of bytes, got '{}'", text));
-  }
+  if (const char* text = std::getenv("RTSIM_MAX_MEMORY"))
+    return std::min(parse_byte_size(text, "RTSIM_MAX_MEMORY"), address_space);
   uint64_t available = meminfo_bytes("MemAvailable");
   if (available == 0) available = std::numeric_limits<uint64_t>::max();  // unknown: do not refuse
   return std::min({available, cgroup_limit_bytes(), address_space});

@@ -11,8 +11,9 @@
 namespace rtsim {
 
 // Bytes this process can plan for: the address space left under `ulimit -v` (RLIMIT_AS less
-// what the process maps already), or less: the environment's RTSIM_MAX_MEMORY (bytes) if set,
-// else the smaller of /proc/meminfo's MemAvailable and the cgroup's memory.max.
+// what the process maps already), or less: the environment's RTSIM_MAX_MEMORY (a size:
+// traces/byte_size.h, 4G) if set, else the smaller of /proc/meminfo's MemAvailable and the
+// cgroup's memory.max.
 uint64_t available_memory_bytes();
 
 // Throws InputError naming source if `bytes` exceeds available_memory_bytes():

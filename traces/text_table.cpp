@@ -1,10 +1,31 @@
 #include "traces/text_table.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <fmt/format.h>
 
 namespace rtsim {
+
+namespace {
+
+std::string grouped(std::string digits) {
+  if (digits.size() > 4)
+    for (size_t i = digits.size(); i > 3; i -= 3) digits.insert(i - 3, ",");
+  return digits;
+}
+
+}  // namespace
+
+std::string whole_number(uint64_t value) {
+  return grouped(std::to_string(value));
+}
+
+std::string whole_number(double value) {
+  if (!std::isfinite(value) || std::abs(value) >= 1e21) return fmt::format("{:.4g}", value);
+  std::string digits = fmt::format("{:.0f}", std::abs(value));  // rounded as printf rounds
+  return (value < 0 && digits != "0" ? "-" : "") + grouped(digits);
+}
 
 std::string text_table(const std::vector<std::vector<std::string>>& rows, bool markdown,
                        const std::vector<bool>& right_aligned) {

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "traces/byte_size.h"
 #include "traces/error.h"
 #include "traces/toml_text.h"
 
@@ -88,6 +90,34 @@ uint64_t ConfigReader::integer(const std::string& key, uint64_t def, const char*
     if (*v < 0 || uint64_t(*v) < lo || uint64_t(*v) > hi)
       fail(key, fmt::format("{} is out of range [{}, {}]", *v, lo, hi));
     value = uint64_t(*v);
+  }
+  record(key, value);
+  return value;
+}
+
+uint64_t ConfigReader::size(const std::string& key, uint64_t def, const char* desc, uint64_t lo,
+                            uint64_t hi) {
+  const toml::node* node = take(key, "size", std::to_string(def), "bytes", desc);
+  uint64_t value = def;
+  if (node) {
+    std::string shown;
+    bool negative = false;
+    if (auto text = node->value_exact<std::string>()) {
+      std::string problem = byte_size_problem(*text, &value);
+      if (!problem.empty()) fail(key, problem);
+      shown = fmt::format("'{}' ({} bytes)", *text, value);
+    } else if (auto v = node->value_exact<int64_t>()) {
+      negative = *v < 0;
+      value = uint64_t(*v);
+      shown = std::to_string(*v);
+    } else {
+      fail(key, fmt::format("expected a size (bytes, or a string such as \"64K\" or \"4M\"), "
+                            "got {}",
+                            type_of(*node)));
+    }
+    if (negative || value < lo || value > hi)
+      fail(key, fmt::format("{} is out of range [{}, {}]", shown, byte_size_text(lo),
+                            byte_size_text(hi)));
   }
   record(key, value);
   return value;

@@ -25,7 +25,7 @@ constexpr double kMaxBytesPerCycle = 1e6;
 
 struct ConfigKeyDoc {
   std::string key;            // dotted: "rt.l1.size_bytes"
-  std::string type;           // integer, number, boolean, string
+  std::string type;           // integer, size, number, boolean, string
   std::string default_value;  // as TOML writes it
   std::string unit;
   std::string description;
@@ -61,6 +61,9 @@ class ConfigReader {
   ConfigReader section(const std::string& name);
   uint64_t integer(const std::string& key, uint64_t def, const char* unit, const char* desc,
                    uint64_t lo, uint64_t hi);
+  // A capacity in bytes, of type "size": an integer, or a string with a binary suffix ("64K",
+  // "4M", "1GiB"; traces/byte_size.h). Bandwidths are rates, not sizes.
+  uint64_t size(const std::string& key, uint64_t def, const char* desc, uint64_t lo, uint64_t hi);
   double real(const std::string& key, double def, const char* unit, const char* desc, double lo,
               double hi);
   // A rate (a bandwidth): lo to hi, or 0 for no limit where zero is Zero::NoLimit. Its floor is

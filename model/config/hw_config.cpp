@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "model/config/config_presets.h"
 #include "model/config/config_reader.h"
 #include "model/config/memory_config.h"
 #include "model/energy/dram_energy.h"
@@ -71,7 +72,10 @@ void read_banked_dram(ConfigReader dram, BankedDramConfig& c) {
   count("bank_groups", c.bank_groups, "groups", "banked: bank groups per rank", 1, 64);
   count("banks_per_group", c.banks_per_group, "banks", "banked: banks per bank group", 1, 64);
   count("rows", c.rows, "rows", "banked: rows per bank", 1, 1u << 24);
-  count("row_bytes", c.row_bytes, "bytes", "banked: a row (page) of one channel", 8, 1 << 20);
+  auto size = [&](const char* key, uint32_t& value, const char* desc, uint64_t lo, uint64_t hi) {
+    value = uint32_t(dram.size(key, value, desc, lo, hi));
+  };
+  size("row_bytes", c.row_bytes, "banked: a row (page) of one channel", 8, 1 << 20);
   count("bus_bits", c.bus_bits, "bits", "banked: data bus width of a channel", 8, 1024);
   count("burst_length", c.burst_length, "beats", "banked: transfers of one RD or WR", 1, 64);
   count("beats_per_clock", c.beats_per_clock, "beats",
@@ -79,8 +83,8 @@ void read_banked_dram(ConfigReader dram, BankedDramConfig& c) {
   c.mapping = dram.text("mapping", c.mapping,
                         "banked: address mapping: row_bank_column_channel, interleave, xor, or "
                         "a field order such as row:rank:bank:bankgroup:column:channel");
-  count("interleave_bytes", c.interleave_bytes, "bytes",
-        "banked: bytes of a row one channel takes before the next (interleave, xor)", 1, 1 << 20);
+  size("interleave_bytes", c.interleave_bytes,
+       "banked: bytes of a row one channel takes before the next (interleave, xor)", 1, 1 << 20);
   std::string page =
       dram.text("page_policy", c.page_policy == DramPagePolicy::Closed ? "closed" : "open",
                 "banked: open keeps a row open until a conflict; closed "
@@ -160,9 +164,9 @@ void read_ray_buffer(ConfigReader& tq, RayBufferConfig& b) {
                               "through the L1, L2 and DRAM",
                               {"sram", "memory"});
   b.place = place == "memory" ? RayBufferPlace::Memory : RayBufferPlace::Sram;
-  b.bytes = tq.integer("buffer_bytes", b.bytes, "bytes",
-                       "SRAM ray buffer; 0: room for max_rays states (model/sched/ray_buffer.h)", 0,
-                       uint64_t(1) << 40);
+  b.bytes = tq.size("buffer_bytes", b.bytes,
+                    "SRAM ray buffer; 0: room for max_rays states (model/sched/ray_buffer.h)", 0,
+                    uint64_t(1) << 40);
   std::string overflow =
       tq.text("overflow", ray_buffer_overflow_name(b.overflow),
               "full SRAM: hold fresh rays back and let postponed rays go on (hold), or put "
@@ -272,8 +276,8 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.rt.stack.entries =
       uint32_t(stack.integer("entries", c.rt.stack.entries, "entries",
                              "on-chip stack depth per ray; deeper entries spill", 1, 4096));
-  c.rt.stack.entry_bytes = uint32_t(stack.integer("entry_bytes", c.rt.stack.entry_bytes, "bytes",
-                                                  "one spilled stack entry", 1, 64));
+  c.rt.stack.entry_bytes =
+      uint32_t(stack.size("entry_bytes", c.rt.stack.entry_bytes, "one spilled stack entry", 1, 64));
   read_test_units(rt.section("box"), c.rt.box, "child boxes");
   read_test_units(rt.section("triangle"), c.rt.triangle, "triangles");
   read_test_units(rt.section("transform"), c.rt.transform,
@@ -313,10 +317,10 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
                                         "first_visit: the unit's last prefetched treelets, "
                                         "which it does not prefetch again",
                                         1, 4096));
-  pf.max_bytes = uint32_t(prefetch.integer("max_bytes", pf.max_bytes, "bytes",
-                                           "most bytes one prefetch fetches, nodes first; 0 = "
-                                           "the whole treelet",
-                                           0, kMaxU32));
+  pf.max_bytes = uint32_t(prefetch.size("max_bytes", pf.max_bytes,
+                                        "most bytes one prefetch fetches, nodes first; 0 = "
+                                        "the whole treelet",
+                                        0, kMaxU32));
 
   ConfigReader shader = r.section("shader");
   AnyHitConfig& anyhit = c.rt.anyhit;
@@ -328,8 +332,8 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   anyhit.shader.count = uint32_t(
       shader.integer("anyhit_per_cycle", anyhit.shader.count, "calls",
                      "any-hit calls the shader core starts per cycle for one RT unit", 1, 64));
-  anyhit.read_bytes = uint32_t(shader.integer("anyhit_read_bytes", anyhit.read_bytes, "bytes",
-                                              "texture bytes one any-hit call reads", 1, 4096));
+  anyhit.read_bytes = uint32_t(shader.size("anyhit_read_bytes", anyhit.read_bytes,
+                                           "texture bytes one any-hit call reads", 1, 4096));
   read_shader(shader, c.shader);
 
   ConfigReader tq = r.section("treelet_queues");
@@ -369,8 +373,8 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
   c.dram.queue_depth =
       uint32_t(dram.integer("queue_depth", c.dram.queue_depth, "requests",
                             "simple: requests that may wait for the bus", 1, 1 << 20));
-  c.dram.burst_bytes = uint32_t(dram.integer("burst_bytes", c.dram.burst_bytes, "bytes",
-                                             "simple: smallest transfer, a power of two", 1, 4096));
+  c.dram.burst_bytes = uint32_t(dram.size("burst_bytes", c.dram.burst_bytes,
+                                          "simple: smallest transfer, a power of two", 1, 4096));
   std::string preset =
       dram.text("preset", c.banked_dram.preset,
                 "banked: the device and timing preset (configs/dram/); the keys below override it",
@@ -396,8 +400,8 @@ void read_hw_config(ConfigReader& r, HwConfig& c) {
       bvh.text("layout", node_layout_name(c.bvh.node_layout), "node order in memory",
                {"depth-first", "breadth-first", "treelet"});
   c.bvh.node_layout = *node_layout_from_name(layout);
-  c.bvh.treelet_bytes = uint32_t(bvh.integer("treelet_bytes", c.bvh.treelet_bytes, "bytes",
-                                             "budget of one treelet", 512, 65536));
+  c.bvh.treelet_bytes =
+      uint32_t(bvh.size("treelet_bytes", c.bvh.treelet_bytes, "budget of one treelet", 512, 65536));
   std::string budget = bvh.text("treelet_budget", treelet_budget_name(c.bvh.treelet_budget),
                                 "what the treelet budget counts: its nodes, or its nodes and the "
                                 "triangles of their leaves",
@@ -458,8 +462,9 @@ ConfigReadContext resolve(const HwConfig& config) {
 // The file's keys with the overrides applied, each checked on its own (type, range, unknown).
 HwConfig read_keys(const std::string& path, const std::vector<std::string>& overrides,
                    ConfigReadContext& ctx) {
-  toml::table root = parse_config_file(path, "hardware config");
-  ctx.file = path.empty() ? "(defaults)" : path;
+  std::string file = hw_config_path(path);
+  toml::table root = parse_config_file(file, "hardware config");
+  ctx.file = file.empty() ? "(defaults)" : file;
   name_memory_levels(root, ctx);
   for (const std::string& assignment : overrides) apply_override(root, assignment, ctx);
   expand_cache_shorthand(root, ctx);

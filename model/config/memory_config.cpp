@@ -18,12 +18,11 @@ std::string line_of(const toml::node& node) {
 
 void read_cache(ConfigReader r, CacheConfig& c, const char* which) {
   c.size_bytes =
-      r.integer("size_bytes", c.size_bytes, "bytes",
-                fmt::format("data capacity of {}", which).c_str(), kMinCacheBytes, kMaxCacheBytes);
-  c.line_bytes = uint32_t(
-      r.integer("line_bytes", c.line_bytes, "bytes", "line size, a power of two", 4, 4096));
-  c.sector_bytes = uint32_t(r.integer(
-      "sector_bytes", c.sector_bytes, "bytes",
+      r.size("size_bytes", c.size_bytes, fmt::format("data capacity of {}", which).c_str(),
+             kMinCacheBytes, kMaxCacheBytes);
+  c.line_bytes = uint32_t(r.size("line_bytes", c.line_bytes, "line size, a power of two", 4, 4096));
+  c.sector_bytes = uint32_t(r.size(
+      "sector_bytes", c.sector_bytes,
       "fetch unit of a miss, a power of two dividing the line; 0 = the whole line", 0, 4096));
   c.ways = uint32_t(r.integer("ways", c.ways, "lines", "associativity: lines per set", 1, 1024));
   c.replacement =
@@ -89,8 +88,8 @@ Place shorthand_place(const toml::node& section, const std::string& key,
 void name_memory_levels(toml::table& root, ConfigReadContext& ctx) {
   toml::table* memory = root["memory"].as_table();
   if (!memory || !memory->contains("level")) return;
-  const toml::node& list = *memory->get("level");
-  const toml::array* levels = list.as_array();
+  toml::node& list = *memory->get("level");
+  toml::array* levels = list.as_array();
   if (!levels || !levels->is_array_of_tables())
     throw_input_error(ctx.file, line_of(list),
                       "memory.level must be a list of [[memory.level]] tables");
@@ -99,14 +98,15 @@ void name_memory_levels(toml::table& root, ConfigReadContext& ctx) {
                       "give the levels as [[memory.level]] tables or as memory.levels, not both");
   toml::array names;
   toml::table named;
-  for (const toml::node& node : *levels) {
-    toml::table level = *node.as_table();
+  for (toml::node& node : *levels) {
+    // Moved, not copied: a copied toml++ node loses its source lines, which errors name.
+    toml::table level = std::move(*node.as_table());
     auto name = level["name"].value_exact<std::string>();
     if (!name)
-      throw_input_error(ctx.file, line_of(node),
+      throw_input_error(ctx.file, line_of(level),
                         "a [[memory.level]] needs name = \"...\" (its stats are mem.NAME.*)");
     if (named.contains(*name) || memory->contains(*name))
-      throw_input_error(ctx.file, line_of(node),
+      throw_input_error(ctx.file, line_of(level),
                         fmt::format("two [[memory.level]] tables are named '{}'", *name));
     level.erase("name");
     names.push_back(*name);
@@ -114,7 +114,7 @@ void name_memory_levels(toml::table& root, ConfigReadContext& ctx) {
   }
   memory->erase("level");
   memory->insert("levels", std::move(names));
-  for (auto&& [name, level] : named) memory->insert(name, level);
+  for (auto&& [name, level] : named) memory->insert(name, std::move(level));
 }
 
 // A memory.NAME section of a level memory.levels does not list (a misspelt name, say).
@@ -151,28 +151,31 @@ void expand_cache_shorthand(toml::table& root, ConfigReadContext& ctx) {
   auto first = std::find_if(std::begin(given), std::end(given),
                             [](const auto& g) { return g.first && g.first->is_table(); });
   if (first == std::end(given)) return;
-  if (root.contains("memory")) {
+  if (const toml::node* listed = root.get("memory")) {
     Place p = shorthand_place(*first->first, first->second, ctx);
+    // A [memory] that only overrides made (it has no line) is theirs to blame.
+    if (!listed->source().begin && p.where == ctx.file) p = shorthand_place(*listed, "memory", ctx);
     throw_input_error(p.where, p.line,
                       fmt::format("[{}] is the shorthand of a two-level hierarchy, and [memory] "
                                   "lists the levels: give one of them (memory.NAME.KEY sets a "
                                   "listed level's key)",
                                   first->second));
   }
+  // Moved, not copied: a copied toml++ node loses its source lines, which errors name.
   toml::table memory, own, shared;
   if (l1 && l1->is_table()) {
-    own = *l1->as_table();
+    own = std::move(*l1->as_table());
     rt->erase("l1");
   }
   if (l2 && l2->is_table()) {
-    shared = *l2->as_table();
+    shared = std::move(*l2->as_table());
     root.erase("l2");
   }
   if (xbar && xbar->is_table()) {
     toml::table& links = *xbar->as_table();
     for (const char* key : {"latency", "bytes_per_cycle"})
       if (toml::node* value = links.get(key)) {
-        own.insert(std::string("link_") + key, *value);
+        own.insert(std::string("link_") + key, std::move(*value));
         links.erase(key);
       }
     if (links.empty()) root.erase("xbar");

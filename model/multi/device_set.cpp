@@ -30,9 +30,15 @@ void check_element_keys(const toml::table& element, const std::string& prefix,
   }
 }
 
+// A config path beside file; a preset's name that is no file there stays a name
+// (model/config/config_presets.h).
 std::string relative_to(const std::string& file, const std::string& path) {
   if (path.empty() || file.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(file).parent_path() / path).lexically_normal().string();
+  std::filesystem::path beside = std::filesystem::path(file).parent_path() / path;
+  if (path.find('/') == std::string::npos && beside.extension() != ".toml" &&
+      !std::filesystem::exists(beside))
+    return path;
+  return beside.lexically_normal().string();
 }
 
 DeviceHardware read_hardware(ConfigReader& r, const std::string& file, const char* config_desc,
@@ -55,7 +61,8 @@ void read_devices(const toml::table& root, DeviceSet& s, ConfigReadContext& ctx)
     ConfigReader r(table, prefix, ctx);
     DeviceHardware h = read_hardware(
         r, ctx.file,
-        "hardware config of these devices, relative to this file (empty: built-in defaults)",
+        "hardware config of these devices, relative to this file, or a preset's name (empty: "
+        "built-in defaults)",
         "hardware key=value overrides, as rtsim sim --set takes them");
     auto count =
         uint32_t(r.integer("count", 1, "devices", "identical devices of this hardware", 1, 1024));

@@ -73,8 +73,9 @@ std::string format_multi_summary(const ReportInput& in) {
       fmt::format("devices    {} ({}); device 0 is the primary\n", r.devices, hardware_text(in));
   if (!in.set->changes.empty()) out += fmt::format("changes    {}\n", changes_text(in));
   out += fmt::format("frames     {} of {}, {}x{}, {} rays; regions along {}; samples: {}\n", frames,
-                     in.header.workload, r.layout.width, r.layout.height, r.rays,
-                     scan_order_name(r.layout.order), samples_text(*in.set));
+                     in.header.workload, r.layout.width, r.layout.height,
+                     whole_number(uint64_t(r.rays)), scan_order_name(r.layout.order),
+                     samples_text(*in.set));
   out += summary_table(in, false);
   out += fmt::format(
       "max deviation: of the devices' tracing times from their mean, "

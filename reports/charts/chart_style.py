@@ -52,6 +52,30 @@ def save(fig, path):
 signal.signal(signal.SIGTERM, lambda number, frame: sys.exit(128 + number))
 
 
+def size_text(n):
+    """Bytes as rtsim writes sizes (traces/byte_size.h): 256K, 1M, 4M; 1.5M between units."""
+    for shift, unit in ((40, "T"), (30, "G"), (20, "M"), (10, "K")):
+        if n >= 1 << shift:
+            return "%g%s" % (round(n / (1 << shift), 2), unit)
+    return "%g" % n
+
+
+def size_axis(ax, axis="x"):
+    """Labels an axis that counts bytes as sizes: 256K, 1M, 4M."""
+    from matplotlib.ticker import FuncFormatter, NullFormatter
+    a = getattr(ax, axis + "axis")
+    a.set_major_formatter(FuncFormatter(lambda v, _: size_text(v)))
+    a.set_minor_formatter(NullFormatter())
+
+
+def percent_scale(metric_name):
+    """(factor, axis label suffix) of a metric: rates (hit, miss, utilisation fractions in the
+    JSON) are drawn in percent."""
+    if metric_name.endswith(("_rate", "utilisation", "_share")):
+        return 100, " (%)"
+    return 1, ""
+
+
 def new(width=7.0, height=3.6, **kwargs):
     """A figure whose constrained layout keeps titles, labels and legends from overlapping."""
     setup()

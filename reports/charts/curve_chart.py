@@ -22,34 +22,35 @@ def main(path, outdir):
     ways = sorted({p["ways"] for p in doc["points"]})
     for w in ways:
         pts = sorted((p for p in doc["points"] if p["ways"] == w), key=lambda p: p["capacity_bytes"])
-        x = [p["capacity_bytes"] / 1024 for p in pts]
+        x = [p["capacity_bytes"] for p in pts]
         y = [p["dram_bytes_per_ray"] for p in pts]
         ci = [p["dram_bytes_per_ray_ci95"] for p in pts]
         line = left.errorbar(x, y, yerr=ci if any(ci) else None, marker="o", ms=4, capsize=3,
                              label="curve, %d ways" % w)
         for p in pts:
             if p["knee"]:
-                left.annotate("knee", (p["capacity_bytes"] / 1024, p["dram_bytes_per_ray"]),
+                left.annotate("knee", (p["capacity_bytes"], p["dram_bytes_per_ray"]),
                               textcoords="offset points", xytext=(6, 8), fontsize=8,
                               arrowprops={"arrowstyle": "->", "lw": 0.8})
         runs = [p for p in pts if p["cycle_run"]]
         if runs:
-            left.plot([p["capacity_bytes"] / 1024 for p in runs],
+            left.plot([p["capacity_bytes"] for p in runs],
                       [p["cycle_run"]["dram_bytes_per_ray"] for p in runs], "x", ms=8,
                       color=line[0].get_color(), label="full model, %d ways" % w)
         known = [p for p in pts if p["cycles"] is not None]
         for kind, style in (("simulated", "o"), ("interpolated", "o"), ("extrapolated", "s")):
             sel = [p for p in known if p["cycles_from"] == kind]
             if sel:
-                right.plot([p["capacity_bytes"] / 1024 for p in sel], [p["cycles"] for p in sel],
+                right.plot([p["capacity_bytes"] for p in sel], [p["cycles"] for p in sel],
                            style, ms=6, label="%s, %d ways" % (kind, w),
                            fillstyle="full" if kind == "simulated" else "none")
         if known:
-            right.plot([p["capacity_bytes"] / 1024 for p in known], [p["cycles"] for p in known],
+            right.plot([p["capacity_bytes"] for p in known], [p["cycles"] for p in known],
                        "-", lw=0.8, color="#777777")
     for ax in (left, right):
         ax.set_xscale("log", base=2)
-        ax.set_xlabel("L2 capacity (KiB)")
+        chart_style.size_axis(ax)
+        ax.set_xlabel("L2 capacity (bytes)")
     left.set_ylabel("DRAM bytes per ray")
     left.set_title("DRAM bytes per ray (%s)" % doc["method"])
     left.legend(fontsize=7)
@@ -70,20 +71,21 @@ def family(outdir, paths):
         first = doc["points"][0]["ways"]
         pts = sorted((p for p in doc["points"] if p["ways"] == first),
                      key=lambda p: p["capacity_bytes"])
-        label = "L1 %d KiB" % (doc["context"]["l1_bytes"] // 1024)
-        x = [p["capacity_bytes"] / 1024 for p in pts]
+        label = "L1 " + chart_style.size_text(doc["context"]["l1_bytes"])
+        x = [p["capacity_bytes"] for p in pts]
         line = left.plot(x, [p["dram_bytes_per_ray"] for p in pts], "o-", ms=4, label=label)
         for p in pts:
             if p["knee"]:
-                left.plot(p["capacity_bytes"] / 1024, p["dram_bytes_per_ray"], "*", ms=12,
+                left.plot(p["capacity_bytes"], p["dram_bytes_per_ray"], "*", ms=12,
                           color=line[0].get_color())
         known = [p for p in pts if p["cycles"] is not None]
         if known:
-            right.plot([p["capacity_bytes"] / 1024 for p in known], [p["cycles"] for p in known],
+            right.plot([p["capacity_bytes"] for p in known], [p["cycles"] for p in known],
                        "o-", ms=4, color=line[0].get_color(), label=label)
     for ax in (left, right):
         ax.set_xscale("log", base=2)
-        ax.set_xlabel("L2 capacity (KiB)")
+        chart_style.size_axis(ax)
+        ax.set_xlabel("L2 capacity (bytes)")
     left.set_ylabel("DRAM bytes per ray")
     left.set_title("DRAM bytes per ray by L1 size (stars: knees)")
     left.legend(fontsize=7)

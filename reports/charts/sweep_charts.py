@@ -32,9 +32,14 @@ def metric(point, name):
     return (point.get("metrics") or {}).get(name)
 
 
+def shown(key, value):
+    """A swept value as a legend shows it: sizes as 256K, 1M, 4M."""
+    return chart_style.size_text(value) if is_size(key) and is_number(value) else value
+
+
 def label(point, keys):
     """key=value for each key the point sets (a [[point]] may leave some at the config's)."""
-    return ", ".join("%s=%s" % (k, value_of(point, k)) for k in keys
+    return ", ".join("%s=%s" % (k, shown(k, value_of(point, k))) for k in keys
                      if value_of(point, k) is not None)
 
 
@@ -52,14 +57,15 @@ def groups(points, keys):
     return out
 
 
-def byte_unit(key, values):
-    """(divisor, label) for an x axis: a key in bytes reads in KB or MB, others as they are."""
-    numbers = [v for v in values if isinstance(v, (int, float))]
-    if not key.endswith("bytes") or not numbers:
-        return 1, key
-    if max(numbers) >= 2**20:
-        return 2**20, key + " (MB)"
-    return (2**10, key + " (KB)") if max(numbers) >= 2**10 else (1, key)
+def is_size(key):
+    """A swept key in bytes (size_bytes, line_bytes, ...): its axis reads 256K, 1M, 4M."""
+    return key.endswith("bytes")
+
+
+def y_values(members, y):
+    """A metric of each point as drawn: rates in percent (chart_style.percent_scale)."""
+    factor = chart_style.percent_scale(y)[0]
+    return [None if metric(p, y) is None else metric(p, y) * factor for p in members]
 
 
 def is_number(value):
@@ -91,7 +97,7 @@ def bars(doc, chart, points, others):
     width = 0.8 / max(len(bars_drawn), 1)
     legend = []
     for i, (g, members, y, ray_type) in enumerate(bars_drawn):
-        by_category = {str(value_of(p, x_key)): metric(p, y) for p in members}
+        by_category = dict(zip([str(value_of(p, x_key)) for p in members], y_values(members, y)))
         heights = [by_category.get(c) for c in categories]
         xs = [c + (i - (len(bars_drawn) - 1) / 2) * width for c in range(len(categories))]
         heights = [float("nan") if h is None else h for h in heights]
@@ -104,14 +110,15 @@ def bars(doc, chart, points, others):
             legend.append(Patch(facecolor="white", edgecolor="black",
                                 hatch=HATCHES[g % len(HATCHES)], label=label(members[0], others)))
     ax.set_xticks(range(len(categories)))
-    ax.set_xticklabels(categories)
+    ax.set_xticklabels([shown(x_key, float(c)) if is_size(x_key) and order(c)[0] == 0 else c
+                        for c in categories])
     return finish(fig, ax, chart, x_key, legend)
 
 
 def finish(fig, ax, chart, x_label, legend):
     """Axis labels, title and the legend (series, then the groups' entries) of a sweep chart."""
     ax.set_xlabel(x_label)
-    ax.set_ylabel(chart["y"].replace("type.*.", ""))
+    ax.set_ylabel(chart["y"].replace("type.*.", "") + chart_style.percent_scale(chart["y"])[1])
     ax.set_title(chart["title"])
     handles, _ = ax.get_legend_handles_labels()
     ax.legend(handles=handles + legend, fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1))
@@ -125,21 +132,16 @@ def curve(doc, chart):
     others = [series] + [k for k in doc["spec"]["keys"] if k not in (x_key, series)]
     if not all(is_number(value_of(p, x_key)) for p in points):
         return bars(doc, chart, points, others)
-    unit, x_label = byte_unit(x_key, [value_of(p, x_key) for p in points])
-
-    def x_of(p):
-        return value_of(p, x_key) / unit if unit != 1 else value_of(p, x_key)
-
     ys = y_lines(chart, points)
     fig, ax = chart_style.new(9.5, 4.2)
     legend = []
     grouped = sorted(groups(points, others).items(), key=lambda kv: [order(v) for v in kv[0]])
     for g, (key, members) in enumerate(grouped):
         members.sort(key=lambda p: value_of(p, x_key))
-        xs = [x_of(p) for p in members]
+        xs = [value_of(p, x_key) for p in members]
         style = LINESTYLES[g % len(LINESTYLES)]
         for y, ray_type in ys:
-            values = [metric(p, y) for p in members]
+            values = y_values(members, y)
             if all(v is None for v in values):
                 continue
             if ray_type is None:
@@ -149,8 +151,10 @@ def curve(doc, chart):
                     label=ray_type if g == 0 else None)
         if ys[0][1] is not None:
             legend.append(Line2D([], [], color="black", ls=style, label=label(members[0], others)))
-    log2_if_spread(ax, [x_of(p) for p in points])
-    return finish(fig, ax, chart, x_label, legend)
+    log2_if_spread(ax, [value_of(p, x_key) for p in points])
+    if is_size(x_key):
+        chart_style.size_axis(ax)
+    return finish(fig, ax, chart, x_key, legend)
 
 
 def log2_if_spread(ax, xs):
@@ -162,8 +166,8 @@ def log2_if_spread(ax, xs):
 
 # Each cost a Pareto chart puts on x: its axis label and the scale from the metric's unit.
 PARETO_X = {
-    "on_chip_bytes": ("on-chip memory (MB: L1s, L2, ray stacks, treelet ray buffer, sorting "
-                      "buffer)", 1 / 2**20),
+    "on_chip_bytes": ("on-chip memory (bytes: L1s, L2, ray stacks, treelet ray buffer, sorting "
+                      "buffer)", 1),
     "area_mm2": ("area on chip (mm²: test units, registers, SRAM; model/energy)", 1),
     "energy_nj_per_ray": ("energy per ray (nJ, dynamic and static; model/energy)", 1),
 }
@@ -192,6 +196,8 @@ def pareto(doc, chart):
             ax.annotate(label(p, doc["spec"]["keys"]), (cost(p), metric(p, "cycles")),
                         fontsize=5, xytext=(3, 3), textcoords="offset points")
     log2_if_spread(ax, [cost(p) for p in points])
+    if chart["x"] == "on_chip_bytes":
+        chart_style.size_axis(ax)
     ax.set_xlabel(x_label)
     ax.set_ylabel("cycles")
     ax.set_title(chart["title"])

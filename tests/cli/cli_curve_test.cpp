@@ -26,7 +26,7 @@ TEST(CliCurve, WritesTheCurveAndRefusesBadSizes) {
   r = run_rtsim("curve " + stream + " --l2 12Q");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("--l2: '12Q' is not a size"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--l2: '12Q': unknown suffix 'Q'"), std::string::npos) << r.err;
   r = run_rtsim("curve " + stream + " --l2 4K --set rt.mode=treelet");  // not what the pass runs
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(count_lines(r.err), 1) << r.err;

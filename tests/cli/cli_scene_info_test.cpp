@@ -266,7 +266,13 @@ TEST(CliMemoryPlan, FlatteningAForestBeyondTheMemoryIsRefusedWithTheEstimate) {
 TEST(CliMemoryPlan, ABadLimitIsOneLine) {
   RunResult r = run_with_memory("lots", "scene-info grid:1000");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err, "rtsim: error: RTSIM_MAX_MEMORY: expected a number of bytes, got 'lots'\n");
+  EXPECT_EQ(r.err,
+            "rtsim: error: RTSIM_MAX_MEMORY: 'lots' is not a size (bytes, or a number "
+            "with K, M, G or T (KiB, MiB, GiB, TiB): 64K, 4M)\n");
+  r = run_with_memory("1G", "scene-info grid:1000");
+  EXPECT_EQ(r.exit_code, 0) << "a size with a suffix: " << r.err;
+  r = run_with_memory("1K", "scene-info grid:1000000");
+  EXPECT_EQ(r.exit_code, 2) << "1K is 1,024 bytes: " << r.err;
 }
 
 }  // namespace

@@ -69,6 +69,17 @@ TEST(CliMultiDevice, ChartFromTheCsvFiles) {
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/chart.png")) << r.err;
   EXPECT_NE(test::slurp(dir + "/report.md").find("chart.png"), std::string::npos);
+
+  // A chart that cannot be drawn: the report all the same, the reason, exit 1.
+  std::filesystem::remove_all(dir);
+  r = test::run_program(
+      "RTSIM_PYTHON=/nonexistent/python3 " RTSIM_EXE,
+      "multi-device " + dir + ".rays --config mobile --devices 2 -j 2 -q -o " + dir);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("rtsim: charts failed: /nonexistent/python3 not found"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/report.md"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/chart.png"));
   std::filesystem::remove_all(dir);
   std::filesystem::remove(dir + ".rays");
 }

@@ -32,8 +32,15 @@ TEST(Pages, DottedKeysReachObjectsAndArrays) {
 }
 
 TEST(Pages, ShowsNumbersByStyle) {
-  EXPECT_EQ(show(Json(975104), Style::Integer), "975104");
-  EXPECT_EQ(show(Json(975104.0), Style::Integer), "975104");
+  // One thousands rule for integers and reals alike: grouped from 10,000 up.
+  EXPECT_EQ(show(Json(975104), Style::Integer), "975,104");
+  EXPECT_EQ(show(Json(975104.0), Style::Integer), "975,104");
+  EXPECT_EQ(show(Json(uint64_t(975104)), Style::Real), "975,104");
+  EXPECT_EQ(show(Json(18446744073709551615u), Style::Integer), "18,446,744,073,709,551,615");
+  EXPECT_EQ(show(Json(9999), Style::Integer), "9999");
+  EXPECT_EQ(show(Json(10000), Style::Integer), "10,000");
+  EXPECT_EQ(show(Json(1234.4), Style::Real), "1234") << "whole from 1,000 on";
+  EXPECT_EQ(show(Json(-12), Style::Integer), "-12");
   EXPECT_EQ(show(Json(209.70255), Style::Real), "209.7");
   EXPECT_EQ(show(Json(11603.4), Style::Real), "11,603") << "plain, not 1.16e+04";
   EXPECT_EQ(show(Json(-1234567.0), Style::Real), "-1,234,567");

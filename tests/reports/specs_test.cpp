@@ -50,6 +50,35 @@ l2.size_bytes = [65536, 131072]
   EXPECT_TRUE(quoted) << "strings are passed in TOML syntax";
 }
 
+TEST(SweepSpec, SizesTakeSuffixesAndAConfigMayBeAPreset) {
+  SweepSpec s = read_sweep_spec(write("s.toml", R"(config = "mobile"
+[[workload]]
+workload = "cornell"
+[grid]
+"l2.size_bytes" = ["256K", "1M", 2097152]
+"rt.mode" = ["treelet"]
+)"));
+  EXPECT_EQ(s.config, "mobile") << "no file of that name: the preset, read by load_hw_config";
+  ASSERT_EQ(s.points.size(), 3u);
+  EXPECT_EQ(s.points[0].values["l2.size_bytes"], 262144) << "a size is its bytes";
+  EXPECT_EQ(s.points[1].values["l2.size_bytes"], 1048576);
+  EXPECT_EQ(s.points[0].sets[0], "l2.size_bytes=262144");
+  EXPECT_EQ(s.points[0].sets[1], "rt.mode=\"treelet\"") << "other strings stay strings";
+  std::string e = error_of([&] {
+    read_sweep_spec(write("s.toml",
+                          "[[workload]]\nworkload = \"cornell\"\n[grid]\n"
+                          "\"l2.size_bytes\" = [\"1M\", \"1MiB\"]\n"));
+  });
+  EXPECT_NE(e.find("lists 1048576 twice"), std::string::npos) << "1M is 1MiB: " << e;
+  e = error_of([&] {
+    read_sweep_spec(write(
+        "s.toml", "[[workload]]\nworkload = \"cornell\"\n[grid]\n\"l2.size_bytes\" = [\"4x\"]\n"));
+  });
+  EXPECT_NE(e.find("line 4: l2.size_bytes=\"4x\": key 'l2.size_bytes': '4x': unknown suffix 'x'"),
+            std::string::npos)
+      << e;
+}
+
 TEST(SweepSpec, AListGivesItsPoints) {
   SweepSpec s = read_sweep_spec(write("s.toml", R"([[workload]]
 workload = "pica"

@@ -57,6 +57,20 @@ TEST(SpeedVsError, AStreamTooShortForTheRateIsBadInput) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(SpeedVsError, AChartThatFailsIsExitOneWithTheReason) {
+  std::string dir = test::fresh_dir("speed-nochart");
+  test::RunResult r = test::run_program("RTSIM_PYTHON=/nonexistent/python3 " RTSIM_EXE,
+                                        "speed-vs-error cornell --resolution 16x9 --config mobile "
+                                        "--rates 2 -o " +
+                                            dir);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("rtsim: charts failed: /nonexistent/python3 not found"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/speed_vs_error.md")) << "the rest is written";
+  EXPECT_FALSE(std::filesystem::exists(dir + "/speed_vs_error.png"));
+  std::filesystem::remove_all(dir);
+}
+
 TEST(SpeedVsError, WindowOptionsNeedTheWindowsMethod) {
   test::RunResult r = test::run_rtsim("speed-vs-error cornell --window 2048 --no-charts");
   EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
