@@ -29,6 +29,12 @@
 // rate with the other counts. Without it those reads hit and the L2 hit rate read high by most
 // of the full machine's merges on first fetches (pica, desktop: its interval held on no seed).
 //
+// Any hierarchy of cache levels: a unit level stays per unit; a group or shared level keeps its
+// size, and where one of its scaled instances serves fewer units than a full instance (a shared
+// level; a group larger than the scaled machine) its MSHRs scale with its units and its first
+// references are shared with the absent units, each level with its own share; the scale-up
+// counts each first reference once per full-machine instance (model/fidelity/README.md).
+//
 // Intervals (systematic.h): the sampling error of choosing warps, from the successive
 // differences of neighbouring sampled warps; cycles take the relative interval of the warps'
 // traversal steps (nodes + triangles), their work. They do not cover the scale model's own bias.
@@ -48,6 +54,14 @@ namespace rtsim {
 struct ScaleModel {
   HwConfig config;           // the scaled machine
   double machine_share = 1;  // its RT units over the full machine's
+  // Per cache level: the units an instance serves over a full-machine instance's (below 1: its
+  // first references are shared with absent units, Cache::share_first_references), and the
+  // full machine's instances per scaled instance (m: how often the full machine fetches what a
+  // scaled instance fetches once).
+  std::vector<double> level_share, instances;
+  // The level whose first references are DRAM's first reads: the first shared level (every level
+  // below it is shared too), else the last.
+  uint32_t dram_level = 0;
 };
 
 ScaleModel scale_model(const HwConfig& config, uint32_t rate);
