@@ -226,6 +226,7 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   HwConfig& c = m.config;
   c.rt_units = scaled_units(config.rt_units, rate);
   m.machine_share = double(c.rt_units) / double(config.rt_units);
+  c.dispatch.rays_per_cycle = config.dispatch.rays_per_cycle * m.machine_share;
   m.dram_level = uint32_t(config.memory.size() - 1);
   for (uint32_t i = 0; i < config.memory.size(); ++i) {
     const MemoryLevelConfig& full = config.memory[i];

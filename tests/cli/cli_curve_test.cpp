@@ -59,13 +59,15 @@ TEST(CliCurve, WritesTheCurveAndRefusesBadSizes) {
   std::filesystem::remove(stream);
 }
 
-// Any level of a listed hierarchy: the victim-filled last level of the four-level example at
+// Any level of a listed hierarchy: the victim-filled last level of the four-level example (its l2
+// cut to 32 KB, so that a pica frame's BVH overflows it and its evictions fill the ic) at
 // capacities its 6 slices do not divide (rounded down to whole sets, and said so), and a group
 // level; bad --level and --l2 uses are one line, exit 2.
 TEST(CliCurve, CurvesAnyLevelOfFourLevels) {
   std::string stream = temp_path("curve4.rays"), out = temp_path("curve4-out");
-  std::string spec = std::string(RTSIM_SOURCE_DIR) + "/workloads/specs/cornell.toml";
-  std::string config = std::string(RTSIM_SOURCE_DIR) + "/configs/examples/four-levels.toml";
+  std::string spec = std::string(RTSIM_SOURCE_DIR) + "/workloads/specs/pica.toml";
+  std::string config = std::string(RTSIM_SOURCE_DIR) +
+                       "/configs/examples/four-levels.toml --set memory.l2.size_bytes=32768";
   ASSERT_EQ(run_rtsim("trace " + spec + " -o " + stream + " --resolution 64x36").exit_code, 0);
   RunResult r = run_rtsim("curve " + stream + " --config " + config +
                           " --level ic --size 16M..128M --no-charts -o " + out);
