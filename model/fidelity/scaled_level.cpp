@@ -126,37 +126,39 @@ Metrics make_metrics(size_t levels) {
   return m;
 }
 
-// First references to one level's blocks in one scope (a ray type, or all rays): those the
-// scaled machine fetched (cold misses) and those an absent unit of the full machine had fetched.
+// First references to the first shared level's blocks in one scope (a ray type, or all rays):
+// those the scaled machine fetched (cold misses) and those an absent unit of the full machine had
+// fetched.
 struct FirstReferences {
   double fetched = 0, absent = 0;
 };
 
-// What to add to k x the scaled machine's DRAM bytes: the first references of the level that
-// pays them (paid_by: its instances in the full machine per instance in the scaled one, m) are
-// paid m times, not k times, and the absent units' ones m times too.
-double dram_offset(double k, double m, const FirstReferences& first, double block) {
-  return (m * first.absent - (k - m) * first.fetched) * block;
+// What to add to k x the scaled machine's DRAM bytes: its fetched first references are paid
+// once, not k times, and the absent units' ones once too.
+double dram_offset(double k, const FirstReferences& first, double block) {
+  return (first.absent - (k - 1) * first.fetched) * block;
 }
 
-// The estimates of one scope; k: the scale-up; first[i]: level i's first references, and
-// scale.instances[i] its m. The full machine fetches each first-referenced block once per
-// instance: its hits at level i = k h + (k - m) fetched - m absent; DRAM bytes as dram_offset,
-// with the first references of the level that pays DRAM's (ScaleModel::dram_level).
+// The estimates of one scope; k: the scale-up; first: the first references of the first shared
+// level S (scale.first_shared; none: no level is shared and every count scales by k). The full
+// machine fetches each first-referenced block once: its hits at S = k h + (k - 1) fetched -
+// absent, and the levels below S see S's first fetches once, not k times: their accesses are
+// k a - (k - 1) fetched + absent. DRAM bytes as dram_offset. Levels above S scale by k.
 TypeEstimate scope_estimates(const Metrics& metrics, int scope, double k, const ScaleModel& scale,
-                             const std::vector<FirstReferences>& first,
-                             const std::vector<std::string>& names, double block) {
+                             const FirstReferences& first, const std::vector<std::string>& names,
+                             double block) {
   TypeEstimate e;
   e.nodes_per_ray = metrics.series(scope, kNodesPerRay).ratio(k);
   e.triangles_per_ray = metrics.series(scope, kTrianglesPerRay).ratio(k);
-  for (size_t i = 0; i < names.size(); ++i) {
-    double m = scale.instances[i];
-    e.levels.push_back({names[i], metrics.series(scope, kLevelRates + i)
-                                      .ratio(k, (k - m) * first[i].fetched - m * first[i].absent)});
+  uint32_t s = scale.first_shared;
+  for (uint32_t i = 0; i < names.size(); ++i) {
+    const SystematicSeries& rate = metrics.series(scope, kLevelRates + i);
+    e.levels.push_back({names[i], i < s ? rate.ratio(k)
+                                  : i == s
+                                      ? rate.ratio(k, (k - 1) * first.fetched - first.absent)
+                                      : rate.ratio(k, 0, first.absent - (k - 1) * first.fetched)});
   }
-  uint32_t d = scale.dram_level;
-  e.dram_bytes_per_ray = metrics.series(scope, kDramPerRay)
-                             .ratio(k, dram_offset(k, scale.instances[d], first[d], block));
+  e.dram_bytes_per_ray = metrics.series(scope, kDramPerRay).ratio(k, dram_offset(k, first, block));
   e.latency_mean = metrics.series(scope, kLatencyPerRay).ratio(k);
   return e;
 }
@@ -169,8 +171,8 @@ uint32_t scaled_units(uint32_t units, uint32_t rate) {
 // Why the plain scale model's cache and DRAM figures may read low, or nothing. In expectation
 // the whole stream reads at most k times the distinct blocks the sampled warps read (a block
 // only one warp reads is drawn with odds 1 in k), so if that fits the largest level from the
-// one that pays DRAM's first references down, the full machine has no capacity misses that lines
-// outside the sample would cause; otherwise it may (model/fidelity/README.md).
+// first shared one down, the full machine has no capacity misses that lines outside the sample
+// would cause; otherwise it may (model/fidelity/README.md).
 std::string capacity_caveat(double k, const CacheStats& paying, const HwConfig& config,
                             uint32_t from) {
   const MemoryLevelConfig* largest = &config.memory[from];
@@ -188,7 +190,7 @@ std::string capacity_caveat(double k, const CacheStats& paying, const HwConfig& 
       sampled / 1048576, k, k * sampled / 1048576, size / 1048576, largest->name);
 }
 
-// A block's fetch from level `level` with no other load: the tag checks from there down, the
+// A block's fetch at level `level` with no other load: the tag checks from there down, the
 // links between them each way, the DRAM's unloaded latency and the block's transfer. The absent
 // units' first fetches are taken to last that long until the level has measured fetches of its
 // own.
@@ -227,22 +229,19 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   c.rt_units = scaled_units(config.rt_units, rate);
   m.machine_share = double(c.rt_units) / double(config.rt_units);
   c.dispatch.rays_per_cycle = config.dispatch.rays_per_cycle * m.machine_share;
-  m.dram_level = uint32_t(config.memory.size() - 1);
+  m.first_shared = uint32_t(config.memory.size());
   for (uint32_t i = 0; i < config.memory.size(); ++i) {
     const MemoryLevelConfig& full = config.memory[i];
     MemoryLevelConfig& level = c.memory[i];
-    // An instance of the scaled machine serves fewer units than the full machine's only where
-    // the scaled machine has fewer units than one full instance: a shared level, or a group
-    // level larger than the scaled machine. It keeps its size, and its MSHRs scale with its units.
+    // An instance of the scaled machine serves fewer units than the full machine's where the
+    // scaled machine has fewer units than one full instance: a shared level, or a group level
+    // larger than the scaled machine. It keeps its size; its MSHRs scale with its units.
     double share = double(units_per_instance(level, c.rt_units)) /
                    double(units_per_instance(full, config.rt_units));
     m.level_share.push_back(share);
-    m.instances.push_back(double(level_instances(full, config.rt_units)) /
-                          double(level_instances(level, c.rt_units)));
     if (share < 1) level.cache.mshrs = scaled_count(full.cache.mshrs, share);
-    if (level.scope == LevelScope::Shared && m.dram_level + 1 == config.memory.size() &&
-        (i == 0 || config.memory[i - 1].scope != LevelScope::Shared))
-      m.dram_level = i;
+    if (level.scope == LevelScope::Shared && m.first_shared == config.memory.size())
+      m.first_shared = i;
   }
   c.dram.bytes_per_cycle = config.dram.bytes_per_cycle * m.machine_share;
   c.dram.queue_depth = scaled_count(config.dram.queue_depth, m.machine_share);
@@ -276,10 +275,9 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   RtSimulator sim(model.config, image, source, 0, 0, &collector);
   if (warmed)
     source.warm(sim);
-  else
-    for (uint32_t i = 0; i < names.size(); ++i)
-      if (model.level_share[i] < 1)
-        sim.share_first_references(i, model.level_share[i], unloaded_fetch_cycles(config, i));
+  else if (model.first_shared < names.size())
+    sim.share_first_references(model.first_shared, model.machine_share,
+                               unloaded_fetch_cycles(config, model.first_shared));
   sim.run();
 
   FidelityResult r;
@@ -297,45 +295,36 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
       (warmed ? ", the other units' reads warming memory." + last_level(config).name : "");
   double k = double(total) / double(rays.size());
 
-  // First references per level, shared out over the ray types: the fetched ones by the type's
-  // misses there, the absent units' ones by its accesses. Warmed (a unit level and one shared
-  // level), every fetch of the shared level is counted where it was made: the scaled units'
-  // (their DRAM bytes over the block) once, the absent units' by their rays' types.
+  // The first shared level's first references, shared out over the ray types: the fetched
+  // ones by the type's misses there, the absent units' ones by its accesses. Warmed (a unit level
+  // and one shared level), every fetch of the shared level is counted where it was made: the
+  // scaled units' (their DRAM bytes over the block) once, the absent units' by their rays' types.
   const auto& totals = collector.totals();
-  std::vector<CacheStats> stats;
-  std::vector<double> misses(names.size()), accesses(names.size());
-  for (uint32_t i = 0; i < names.size(); ++i) {
-    stats.push_back(sim.level_stats(i));
-    for (const CostTotals& c : totals) {
-      misses[i] += double(c.reads.misses(i));
-      accesses[i] += double(c.reads.accesses[i]);
+  uint32_t shared = model.first_shared;
+  bool sharing = shared < names.size() && model.level_share[shared] < 1;
+  CacheStats first_stats = sharing ? sim.level_stats(shared) : CacheStats{};
+  double block = double(block_bytes(config.memory[sharing ? shared : names.size() - 1].cache));
+  if (!warmed && sharing) r.caveat = capacity_caveat(k, first_stats, config, shared);
+  double misses = 0, accesses = 0;
+  for (const CostTotals& c : totals)
+    if (sharing) {
+      misses += double(c.reads.misses(shared));
+      accesses += double(c.reads.accesses[shared]);
     }
-  }
-  uint32_t d = model.dram_level;
-  double block = double(block_bytes(config.memory[d].cache));
-  if (!warmed) r.caveat = capacity_caveat(k, stats[d], config, d);
   auto first_of = [&](int t) {
     const CostTotals& c = totals[t];
-    std::vector<FirstReferences> first(names.size());
-    for (uint32_t i = 0; i < names.size(); ++i) {
-      if (model.level_share[i] >= 1) continue;
-      if (warmed) {
-        first[i] = {double(c.reads.dram_bytes) / block, source.fetched()[t]};
-        continue;
-      }
-      first[i] = {
-          misses[i] > 0 ? double(stats[i].cold_misses) * double(c.reads.misses(i)) / misses[i] : 0,
-          accesses[i] > 0
-              ? double(stats[i].absent_fills) * double(c.reads.accesses[i]) / accesses[i]
-              : 0};
-    }
-    return first;
+    if (!sharing) return FirstReferences{};
+    if (warmed) return FirstReferences{double(c.reads.dram_bytes) / block, source.fetched()[t]};
+    return FirstReferences{
+        misses > 0 ? double(first_stats.cold_misses) * double(c.reads.misses(shared)) / misses : 0,
+        accesses > 0
+            ? double(first_stats.absent_fills) * double(c.reads.accesses[shared]) / accesses
+            : 0};
   };
-  std::vector<FirstReferences> first_all(names.size());
+  FirstReferences first_all;
   for (int t = 0; t < kRayTypeCount; ++t) {
-    std::vector<FirstReferences> f = first_of(t);
-    for (size_t i = 0; i < f.size(); ++i)
-      first_all[i] = {first_all[i].fetched + f[i].fetched, first_all[i].absent + f[i].absent};
+    FirstReferences f = first_of(t);
+    first_all = {first_all.fetched + f.fetched, first_all.absent + f.absent};
   }
   for (int t = 0; t < kRayTypeCount; ++t) {
     if (totals[t].rays > 0)
@@ -346,8 +335,8 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   r.nodes_per_ray = all.nodes_per_ray;
   r.triangles_per_ray = all.triangles_per_ray;
   r.levels = all.levels;
-  r.dram_bytes = metrics.all[metrics.dram_total()].series.total(
-      k, dram_offset(k, model.instances[d], first_all[d], block));
+  r.dram_bytes =
+      metrics.all[metrics.dram_total()].series.total(k, dram_offset(k, first_all, block));
 
   double latency = all.latency_mean.value;
   // Full-machine time over the scaled machine's: the stream's share of the work it did (k x

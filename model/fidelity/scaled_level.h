@@ -31,9 +31,9 @@
 //
 // Any hierarchy of cache levels: a unit level stays per unit; a group or shared level keeps its
 // size, and where one of its scaled instances serves fewer units than a full instance (a shared
-// level; a group larger than the scaled machine) its MSHRs scale with its units and its first
-// references are shared with the absent units, each level with its own share; the scale-up
-// counts each first reference once per full-machine instance (model/fidelity/README.md).
+// level; a group larger than the scaled machine) its MSHRs scale with its units. The first
+// shared level's first references are shared with the absent units and paid once; the levels
+// below it see them once, not k times (model/fidelity/README.md).
 //
 // Intervals (systematic.h): the sampling error of choosing warps, from the successive
 // differences of neighbouring sampled warps; cycles take the relative interval of the warps'
@@ -54,14 +54,12 @@ namespace rtsim {
 struct ScaleModel {
   HwConfig config;           // the scaled machine
   double machine_share = 1;  // its RT units over the full machine's
-  // Per cache level: the units an instance serves over a full-machine instance's (below 1: its
-  // first references are shared with absent units, Cache::share_first_references), and the
-  // full machine's instances per scaled instance (m: how often the full machine fetches what a
-  // scaled instance fetches once).
-  std::vector<double> level_share, instances;
-  // The level whose first references are DRAM's first reads: the first shared level (every level
-  // below it is shared too), else the last.
-  uint32_t dram_level = 0;
+  // Per cache level: the units a scaled instance serves over a full-machine instance's.
+  std::vector<double> level_share;
+  // The first shared level (every level below it is shared too), whose first references are
+  // shared with the absent units (Cache::share_first_references) and paid once; the number of
+  // levels if none is shared.
+  uint32_t first_shared = 0;
 };
 
 ScaleModel scale_model(const HwConfig& config, uint32_t rate);

@@ -223,8 +223,7 @@ TEST(ScaleModelLevels, ScalesEachLevelByTheUnitsAnInstanceServes) {
   ScaleModel m = scale_model(full, 4);
   ASSERT_EQ(m.config.rt_units, 2u);
   EXPECT_EQ(m.level_share, (std::vector<double>{1.0, 0.5, 0.25, 0.25}));
-  EXPECT_EQ(m.instances, (std::vector<double>{4.0, 2.0, 1.0, 1.0}));
-  EXPECT_EQ(m.dram_level, 2u) << "the first shared level pays DRAM's first reads";
+  EXPECT_EQ(m.first_shared, 2u) << "the first shared level pays DRAM's first reads";
   EXPECT_EQ(m.config.memory[1].cache.mshrs, full.memory[1].cache.mshrs / 2);
   EXPECT_EQ(m.config.memory[2].cache.mshrs, full.memory[2].cache.mshrs / 4);
   EXPECT_EQ(m.config.memory[0].cache.mshrs, full.memory[0].cache.mshrs);
@@ -233,6 +232,32 @@ TEST(ScaleModelLevels, ScalesEachLevelByTheUnitsAnInstanceServes) {
   ScaleModel half = scale_model(full, 2);  // 4 units: one full group, as the full machine's
   EXPECT_EQ(half.level_share[1], 1.0);
   EXPECT_EQ(half.config.memory[1].cache.mshrs, full.memory[1].cache.mshrs);
+}
+
+// The scale model of the four-level example at 1/2 and 1/4 (4 and 2 of 8 units: the group level
+// full, then half) against the full model: l0, l1 and ic hit rates, DRAM bytes (measured: exact)
+// and cycles (-3.2%, -0.7%). The levels below the first shared one see its first fetches once:
+// without that the ic's hit rate, all cold misses in the full model, read 77% at 1/4 on a Sponza
+// frame. Not checked: the l2's hit rate, which reads high here (52% at 1/2, 77% at 1/4, against
+// 24%; model/fidelity/README.md, known limitations).
+TEST_F(HierarchyLevels, ScaleModelOfFourLevelsLandsNearTheFullModel) {
+  std::string stream = test::small_stream("grid:2000", 40000, 17);
+  HwConfig config = load_hw_config(kFourLevels);
+  FidelityResult full = run_level_in_child({FidelityLevel::Cycle, {}}, config, *image_, stream);
+  for (uint32_t rate : {2u, 4u}) {
+    SCOPED_TRACE("rate " + std::to_string(rate));
+    LevelRequest scaled{FidelityLevel::Sampled, {}};
+    scaled.sampling.rate = rate;
+    FidelityResult s = run_level_in_child(scaled, config, *image_, stream);
+    ASSERT_EQ(s.levels.size(), 4u);
+    for (size_t i : {0, 1, 3})
+      EXPECT_NEAR(s.levels[i].hit_rate.value, full.levels[i].hit_rate.value, 0.05)
+          << config.memory[i].name << ": " << s.levels[i].hit_rate.value << " against "
+          << full.levels[i].hit_rate.value;
+    EXPECT_NEAR(s.dram_bytes.value / full.dram_bytes.value, 1.0, 0.05);
+    EXPECT_NEAR(s.cycles.value / full.cycles.value, 1.0, 0.05);
+  }
+  std::filesystem::remove(stream);
 }
 
 TEST_F(HierarchyLevels, WarmedRefusesOtherThanTwoLevelsInOneLine) {
