@@ -1,11 +1,14 @@
-// rtsim curve STREAM --config HW.toml --l2 256K..64M: the L2's miss rate and DRAM bytes per ray
-// at every capacity (and associativity) from one functional pass over the stream
-// (model/fidelity/CURVE.md), its knee, and with --simulate the full model's cycles at a few
-// capacities, the others interpolated. With -o DIR it writes curve.{json,csv,md}, the chart
-// curve.png and config.toml. With --l1 A,B,C: one pass and curve per L1 size (the L2's
-// references depend on the L1s), each in DIR/l1-SIZE/, and the family in curve-l1.{md,png}.
+// rtsim curve STREAM --config HW.toml [--level NAME] --size 256K..64M: a cache level's (by
+// default the level above DRAM's) miss rate and the bytes it sends below (DRAM bytes for the
+// last level) per ray at every capacity (and associativity) from one functional pass over the
+// stream (model/fidelity/CURVE.md), its knee, and with --simulate the full model's cycles at a few
+// capacities, the others interpolated. --l2 A..B is --size for the level above DRAM. With -o DIR
+// it writes curve.{json,csv,md}, the chart curve.png and config.toml. With --l1 A,B,C: one pass
+// and curve per size of the first level (the curved level's references depend on it), each in
+// DIR/l1-SIZE/, and the family in curve-l1.{md,png}.
 #include <algorithm>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -29,8 +32,10 @@
 namespace rtsim::app {
 namespace {
 
+constexpr const char* kDefaultSizes = "256K..64M";
+
 struct CurveOptions {
-  std::string stream, config, output, scene, l2 = "256K..64M", simulate, l1;
+  std::string stream, config, output, scene, level, size, l2, simulate, l1;
   std::vector<std::string> sets;
   std::vector<uint32_t> ways;
   uint32_t sample_rate = 1;
@@ -67,9 +72,15 @@ std::vector<uint64_t> parse_sizes(const std::string& text, const std::string& op
   return out;
 }
 
+// The capacities asked for: --size, or its alias --l2, or the default.
+std::string sizes_option(const CurveOptions& o) {
+  if (!o.l2.empty()) return "--l2 " + o.l2;
+  return "--size " + (o.size.empty() ? std::string(kDefaultSizes) : o.size);
+}
+
 // The options that make the request, as its errors name them.
 std::string request_options(const CurveOptions& o) {
-  std::string text = "--l2 " + o.l2;
+  std::string text = (o.level.empty() ? "" : "--level " + o.level + " ") + sizes_option(o);
   if (!o.ways.empty()) text += fmt::format(" --ways {}", fmt::join(o.ways, ","));
   if (!o.simulate.empty()) text += " --simulate " + o.simulate;
   if (o.sample_rate > 1) text += fmt::format(" --sample-rate {}", o.sample_rate);
@@ -88,13 +99,22 @@ struct CurveInputs {
 nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& request,
                                 const CurveInputs& in) {
   const CurveOptions& o = in.options;
-  fmt::print(stderr, "curve: one pass, L1 {} bytes: {} capacities x {} associativities ({})\n",
-             first_level(config).cache.size_bytes, request.capacities.size(), request.ways.size(),
-             o.sample_rate > 1 ? fmt::format("miniature caches, 1 line in {}", o.sample_rate)
-                               : std::string("LRU stacks per set"));
+  uint32_t index = curve_level(config, request);
+  const MemoryLevelConfig& level = config.memory[index];
+  fmt::print(stderr,
+             "curve: one pass, memory.{} {} bytes: memory.{} at {} capacities x {} "
+             "associativities ({})\n",
+             first_level(config).name, first_level(config).cache.size_bytes, level.name,
+             request.capacities.size(), request.ways.size(),
+             o.sample_rate > 1
+                 ? fmt::format("miniature caches, 1 line in {}", o.sample_rate)
+                 : std::string(level.fill == LevelFill::Victim ? "a cache per point: a victim level"
+                                                               : "LRU stacks per set"));
   CacheCurve curve = run_cache_curve(config, in.image, o.stream, request);
-  fmt::print(stderr, "curve: pass over {} rays done in {:.2f} s CPU ({} L2 reads, {} writes)\n",
-             curve.rays, curve.cpu_seconds, curve.l2_reads, curve.l2_writes);
+  fmt::print(stderr,
+             "curve: pass over {} rays done in {:.2f} s CPU ({} reads, {} writes, {} victim "
+             "fills at memory.{})\n",
+             curve.rays, curve.cpu_seconds, curve.reads, curve.writes, curve.fills, level.name);
 
   std::vector<size_t> first;  // the points of the first associativity: the ones simulated
   for (size_t i = 0; i < curve.points.size(); ++i)
@@ -113,7 +133,7 @@ nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& requ
     CurvePoint& p = curve.points[runs[n]];
     fmt::print(stderr, "curve: full model at {} bytes, {} ways ({} of {})\n", p.capacity, p.ways,
                n + 1, runs.size());
-    p.cycle_run = run_cycle_point(config, in.image, o.stream, p.capacity, p.ways);
+    p.cycle_run = run_cycle_point(config, in.image, o.stream, index, p.capacity, p.ways);
     p.has_cycle_run = true;
   }
   fill_cycles(curve, first);
@@ -124,9 +144,15 @@ nlohmann::ordered_json curve_on(const HwConfig& config, const CurveRequest& requ
                                     {"config", config.name},
                                     {"config_file", o.config},
                                     {"sets", o.sets},
-                                    {"l1_bytes", first_level(config).cache.size_bytes},
-                                    {"l2_slices", last_level(config).slices},
-                                    {"l2_line_bytes", last_level(config).cache.line_bytes}};
+                                    {"level", level.name},
+                                    {"scope", scope_name(level)},
+                                    {"fill", level.fill == LevelFill::Victim ? "victim" : "miss"},
+                                    {"above_dram", index + 1 == config.memory.size()},
+                                    {"instances", curve.instances},
+                                    {"slices", level.slices},
+                                    {"line_bytes", level.cache.line_bytes},
+                                    {"first_level", first_level(config).name},
+                                    {"first_level_bytes", first_level(config).cache.size_bytes}};
   return reports::curve_json(curve, context);
 }
 
@@ -147,18 +173,44 @@ int write_curve(const std::string& dir, const nlohmann::ordered_json& doc, const
 
 int run_curve(const CurveOptions& o) {
   HwConfig config = load_hw_config(o.config, o.sets);
-  std::string problem = two_level_problem(config, "rtsim curve");
-  if (problem.empty()) problem = curve_config_problem(config);
+  std::string problem = curve_config_problem(config);
   if (!problem.empty())
     throw InputError(fmt::format("curve: {}: {}",
                                  config_culprit(o.config, o.sets, curve_config_problem), problem));
+  if (!o.l2.empty() && !o.size.empty())
+    throw InputError("curve: --l2 and --size: give one (--l2 is --size for the level above DRAM)");
   CurveRequest request;
-  request.capacities = parse_sizes(o.l2, "--l2", "l2.size_bytes");
-  request.ways = o.ways.empty() ? std::vector<uint32_t>{last_level(config).cache.ways} : o.ways;
+  request.level = o.level;
+  uint32_t index = curve_level(config, request);
+  const MemoryLevelConfig& level = config.memory[index];
+  if (!o.l2.empty() && index + 1 != config.memory.size())
+    throw InputError(fmt::format(
+        "curve: --l2 sizes the level above DRAM (memory.{}); give --level {}'s sizes with --size",
+        last_level(config).name, level.name));
+  if (!o.l1.empty() && index == 0)
+    throw InputError(fmt::format(
+        "curve: --l1 sizes memory.{}, the level the curve is of: use --size", level.name));
+  std::string key = "memory." + level.name + ".size_bytes";
+  std::string sizes = sizes_option(o);
+  size_t space = sizes.find(' ');
+  request.capacities = parse_sizes(sizes.substr(space + 1), sizes.substr(0, space), key.c_str());
+  request.ways = o.ways.empty() ? std::vector<uint32_t>{level.cache.ways} : o.ways;
   request.sample_rate = o.sample_rate;
   std::vector<uint64_t> simulate;
   if (!o.simulate.empty() && o.simulate != "knee")
-    simulate = parse_sizes(o.simulate, "--simulate", "l2.size_bytes");
+    simulate = parse_sizes(o.simulate, "--simulate", key.c_str());
+  // Whole sets in every slice at every associativity: a multiple of line x slices x each way
+  // count (with 6 slices, 16M is not), rounded down, and said so.
+  uint64_t whole = uint64_t(level.cache.line_bytes) * level.slices;
+  for (uint32_t w : request.ways)
+    whole = std::lcm(whole, uint64_t(level.cache.line_bytes) * level.slices * w);
+  for (auto* list : {&request.capacities, &simulate})
+    for (uint64_t& c : *list) {
+      if (c % whole == 0 || c < whole) continue;
+      fmt::print(stderr, "curve: {} bytes is {} bytes in whole sets of memory.{}'s {} slices\n", c,
+                 c / whole * whole, level.name, level.slices);
+      c = c / whole * whole;
+    }
   for (uint64_t c : simulate) request.capacities.push_back(c);  // simulated points are points
   std::sort(request.capacities.begin(), request.capacities.end());
   request.capacities.erase(std::unique(request.capacities.begin(), request.capacities.end()),
@@ -166,8 +218,9 @@ int run_curve(const CurveOptions& o) {
   problem = curve_request_problem(config, request);
   if (!problem.empty()) throw InputError(fmt::format("curve: {}: {}", request_options(o), problem));
   std::vector<HwConfig> configs;  // one per L1 size
+  std::string first_key = "memory." + first_level(config).name + ".size_bytes";
   for (uint64_t size : o.l1.empty() ? std::vector<uint64_t>{first_level(config).cache.size_bytes}
-                                    : parse_sizes(o.l1, "--l1", "rt.l1.size_bytes")) {
+                                    : parse_sizes(o.l1, "--l1", first_key.c_str())) {
     HwConfig c = config;
     first_level(c).cache.size_bytes = size;
     problem = cache_config_problem(first_level(c).cache);
@@ -223,18 +276,25 @@ int run_curve(const CurveOptions& o) {
 
 void add_curve_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand(
-      "curve", "L2 miss rate and DRAM bytes per ray at every capacity from one functional pass");
+      "curve",
+      "A cache level's miss rate and DRAM bytes (bytes below) per ray at every capacity from "
+      "one functional pass");
   auto o = std::make_shared<CurveOptions>();
   cmd->add_option("stream", o->stream, "Ray stream (.rays)")->required();
   cmd->add_option("--config", o->config, "Hardware config: " + kConfigForms);
   cmd->add_option("--set", o->sets, "Override a config key")->allow_extra_args(false);
   cmd->add_option("--scene", o->scene, "Scene file or built-in (default: stream header)");
-  cmd->add_option("--l2", o->l2, "L2 capacities: A..B (A, 2A, 4A, ... B) or A,B,C (K, M, G)")
-      ->capture_default_str();
+  cmd->add_option("--level", o->level,
+                  "The cache level to curve, by name (default: the level above DRAM)");
+  cmd->add_option("--size", o->size,
+                  "Its capacities: A..B (A, 2A, 4A, ... B) or A,B,C (K, M, G; default " +
+                      std::string(kDefaultSizes) + ")");
+  cmd->add_option("--l2", o->l2, "--size for the level above DRAM (the L2 of two levels)");
   cmd->add_option("--l1", o->l1,
-                  "L1 sizes per RT unit (A..B or A,B,C): one pass and curve each, in "
-                  "DIR/l1-SIZE/, the family in curve-l1.md and .png (default: the config's L1)");
-  cmd->add_option("--ways", o->ways, "L2 associativities (default: the config's)")
+                  "Sizes of the first level (per RT unit; A..B or A,B,C): one pass and curve "
+                  "each, in DIR/l1-SIZE/, the family in curve-l1.md and .png (default: the "
+                  "config's)");
+  cmd->add_option("--ways", o->ways, "The level's associativities (default: the config's)")
       ->delimiter(',')
       ->check(CLI::Range(1, 254));
   cmd->add_option("--sample-rate", o->sample_rate,

@@ -26,12 +26,12 @@ const char* cycles_from_name(CurvePoint::Cycles from) {
 // The full model's run at a point, and the curve's error against it.
 nlohmann::ordered_json cycle_run_json(const CurvePoint& p, double rays) {
   const CyclePoint& c = p.cycle_run;
-  double miss_ratio = c.l2_accesses ? double(c.l2_misses) / double(c.l2_accesses) : 0;
+  double miss_ratio = c.accesses ? double(c.misses) / double(c.accesses) : 0;
   double dram = double(c.read_bytes + c.writeback_bytes) / rays;
   nlohmann::ordered_json j = {{"cycles", c.cycles},
-                              {"l2_accesses", c.l2_accesses},
-                              {"l2_misses", c.l2_misses},
-                              {"l2_mshr_merges", c.l2_merges},
+                              {"accesses", c.accesses},
+                              {"misses", c.misses},
+                              {"mshr_merges", c.merges},
                               {"miss_ratio", miss_ratio},
                               {"dram_bytes_per_ray", dram},
                               {"read_bytes", c.read_bytes},
@@ -75,7 +75,7 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
     nlohmann::ordered_json j = {{"capacity_bytes", p.capacity},
                                 {"ways", p.ways},
                                 {"sets_per_slice", p.sets_per_slice},
-                                {"l2_reads", p.reads},
+                                {"reads", p.reads},
                                 {"misses", p.misses},
                                 {"writebacks", p.writebacks},
                                 {"miss_ratio", p.miss_ratio},
@@ -89,16 +89,19 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
     j["cycle_run"] = p.has_cycle_run ? cycle_run_json(p, rays) : nlohmann::ordered_json();
     points.push_back(j);
   }
-  return {{"schema", "rtsim.curve/1"},
+  return {{"schema", "rtsim.curve/2"},
           {"context", context},
           {"method", curve.sample_rate > 1
                          ? fmt::format("miniature caches, 1 line in {}", curve.sample_rate)
                          : std::string("exact LRU stack distances per set")},
           {"sample_rate", curve.sample_rate},
           {"pass",
-           {{"rays", curve.rays},
-            {"l2_reads", curve.l2_reads},
-            {"l2_writes", curve.l2_writes},
+           {{"level", curve.level},
+            {"instances", curve.instances},
+            {"rays", curve.rays},
+            {"reads", curve.reads},
+            {"writes", curve.writes},
+            {"fills", curve.fills},
             {"block_bytes", curve.block_bytes},
             {"cpu_seconds", curve.cpu_seconds}}},
           {"knees", knees},
@@ -107,8 +110,9 @@ nlohmann::ordered_json curve_json(const CacheCurve& curve, const nlohmann::order
 
 std::string curve_table(const nlohmann::ordered_json& doc, bool markdown) {
   std::vector<std::vector<std::string>> rows = {
-      {"L2", "ways", "miss rate", "DRAM B/ray", "knee", "cycles", "cycles from",
-       "full model: miss rate", "DRAM B/ray", "curve error: miss rate", "DRAM", "interpolation"}};
+      {doc["pass"]["level"].get<std::string>(), "ways", "miss rate", "below B/ray", "knee",
+       "cycles", "cycles from", "full model: miss rate", "DRAM B/ray", "curve error: miss rate",
+       "DRAM", "interpolation"}};
   bool sampled = doc["sample_rate"].get<uint32_t>() > 1;
   for (const auto& p : doc["points"]) {
     std::string miss = fmt::format("{:.2f}%", 100 * p["miss_ratio"].get<double>());
@@ -148,7 +152,7 @@ std::string curve_table(const nlohmann::ordered_json& doc, bool markdown) {
 
 std::string curve_csv(const nlohmann::ordered_json& doc) {
   std::string out =
-      "capacity_bytes,ways,sets_per_slice,l2_reads,misses,writebacks,miss_ratio,miss_ratio_ci95,"
+      "capacity_bytes,ways,sets_per_slice,reads,misses,writebacks,miss_ratio,miss_ratio_ci95,"
       "dram_bytes_per_ray,dram_bytes_per_ray_ci95,knee,cycles,cycles_from,full_miss_ratio,"
       "full_dram_bytes_per_ray,miss_ratio_error_pp,dram_bytes_error,interpolation_error\n";
   auto number = [](const nlohmann::json& v) {
@@ -160,7 +164,7 @@ std::string curve_csv(const nlohmann::ordered_json& doc) {
     out += fmt::format(
         "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
         p["capacity_bytes"].get<uint64_t>(), p["ways"].get<uint32_t>(),
-        p["sets_per_slice"].get<uint64_t>(), p["l2_reads"].get<uint64_t>(), number(p["misses"]),
+        p["sets_per_slice"].get<uint64_t>(), p["reads"].get<uint64_t>(), number(p["misses"]),
         number(p["writebacks"]), number(p["miss_ratio"]), number(p["miss_ratio_ci95"]),
         number(p["dram_bytes_per_ray"]), number(p["dram_bytes_per_ray_ci95"]),
         p["knee"].get<bool>() ? 1 : 0, number(p["cycles"]), p["cycles_from"].get<std::string>(),
@@ -174,12 +178,15 @@ std::string curve_markdown(const nlohmann::ordered_json& doc) {
   const auto& ctx = doc["context"];
   const auto& pass = doc["pass"];
   std::string out = fmt::format(
-      "# L2 curve: {} on {}\n\n{} rays; {} L2 block reads and {} writes of {} bytes from one "
-      "functional pass ({:.2f} s CPU); method: {}.\n\n",
-      ctx["stream"].get<std::string>(), ctx["config"].get<std::string>(),
-      whole_number(pass["rays"].get<uint64_t>()), whole_number(pass["l2_reads"].get<uint64_t>()),
-      whole_number(pass["l2_writes"].get<uint64_t>()), pass["block_bytes"].get<uint32_t>(),
-      pass["cpu_seconds"].get<double>(), doc["method"].get<std::string>());
+      "# {} curve: {} on {}\n\n{} rays; {} block reads, {} writes and {} victim fills of {} "
+      "bytes arriving at memory.{} from one functional pass ({:.2f} s CPU); method: {}. "
+      "Bytes below: what it sends to the level below (DRAM for the last level).\n\n",
+      pass["level"].get<std::string>(), ctx["stream"].get<std::string>(),
+      ctx["config"].get<std::string>(), whole_number(pass["rays"].get<uint64_t>()),
+      whole_number(pass["reads"].get<uint64_t>()), whole_number(pass["writes"].get<uint64_t>()),
+      whole_number(pass["fills"].get<uint64_t>()), pass["block_bytes"].get<uint32_t>(),
+      pass["level"].get<std::string>(), pass["cpu_seconds"].get<double>(),
+      doc["method"].get<std::string>());
   out += curve_table(doc, true);
   out += "\n![curve](curve.png)\n\nColumns: model/fidelity/CURVE.md.\n";
   return out;
@@ -188,10 +195,11 @@ std::string curve_markdown(const nlohmann::ordered_json& doc) {
 std::string curve_family_markdown(const std::vector<nlohmann::ordered_json>& docs) {
   const auto& ctx = docs.front()["context"];
   std::string out = fmt::format(
-      "# L2 curves by L1 size: {} on {}\n\n{} rays; one functional pass per L1 size (the L2's "
-      "references depend on the L1s); each size's full table in l1-SIZE/curve.md.\n\n"
-      "| L1 | L2 | ways | miss rate | DRAM B/ray | knee | cycles | cycles from |\n"
+      "# {1} curves by {0} size: {2} on {3}\n\n{4} rays; one functional pass per {0} size (the "
+      "{1}'s references depend on the {0}s); each size's full table in l1-SIZE/curve.md.\n\n"
+      "| {0} | {1} | ways | miss rate | below B/ray | knee | cycles | cycles from |\n"
       "|---|---|---|---|---|---|---|---|\n",
+      ctx["first_level"].get<std::string>(), ctx["level"].get<std::string>(),
       ctx["stream"].get<std::string>(), ctx["config"].get<std::string>(),
       whole_number(ctx["rays"].get<uint64_t>()));
   for (const auto& doc : docs) {
@@ -199,7 +207,7 @@ std::string curve_family_markdown(const std::vector<nlohmann::ordered_json>& doc
     for (const auto& p : doc["points"]) {
       if (p["ways"].get<uint32_t>() != ways) continue;
       out += fmt::format("| {} | {} | {} | {:.2f}% | {:.1f} | {} | {} | {} |\n",
-                         size_text(doc["context"]["l1_bytes"].get<uint64_t>()),
+                         size_text(doc["context"]["first_level_bytes"].get<uint64_t>()),
                          size_text(p["capacity_bytes"].get<uint64_t>()), ways,
                          100 * p["miss_ratio"].get<double>(), p["dram_bytes_per_ray"].get<double>(),
                          p["knee"].get<bool>() ? "knee" : "",

@@ -97,8 +97,8 @@ Json timing_json(const FidelityResult& f, const Json& stats) {
 
 Json bandwidth_json(const FidelityResult& f, const Json& stats, const HwConfig& c) {
   double rays = double(std::max<uint64_t>(f.rays, 1));
-  Json b = {{"l1_hit_rate", estimate_value(f.l1_hit_rate)},
-            {"l2_hit_rate", estimate_value(f.l2_hit_rate)},
+  Json b = {{"l1_hit_rate", estimate_value(f.first_level_hit_rate())},
+            {"l2_hit_rate", estimate_value(f.last_level_hit_rate())},
             {"dram_bytes", estimate_value(f.dram_bytes)},
             {"dram_bytes_per_ray", f.dram_bytes.known ? Json(f.dram_bytes.value / rays) : Json()},
             {"l1_bytes_per_ray", Json()},
@@ -225,11 +225,13 @@ Json hit_rates_json(const FidelityResult& f) {
   Json h = Json::object();
   for (int t = 0; t < kRayTypeCount; ++t) {
     const TypeEstimate& e = f.types[t];
-    if (!e.rays || !e.l1_hit_rate.known) continue;
-    h[ray_type_name(RayType(t))] = {{"l1", e.l1_hit_rate.value}, {"l2", e.l2_hit_rate.value}};
+    if (!e.rays || !e.first_level_hit_rate().known) continue;
+    h[ray_type_name(RayType(t))] = {{"l1", e.first_level_hit_rate().value},
+                                    {"l2", e.last_level_hit_rate().value}};
   }
-  return {
-      {"l1", estimate_value(f.l1_hit_rate)}, {"l2", estimate_value(f.l2_hit_rate)}, {"by_type", h}};
+  return {{"l1", estimate_value(f.first_level_hit_rate())},
+          {"l2", estimate_value(f.last_level_hit_rate())},
+          {"by_type", h}};
 }
 
 Json time_json(const FidelityResult& f, const Json& stats, const Json& collected) {

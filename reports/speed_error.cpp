@@ -30,10 +30,10 @@ Json over_seeds(const LevelRun& run, const FidelityResult& f) {
   std::vector<const FidelityResult*> all{&run.result};
   for (const FidelityResult& r : run.other_seeds) all.push_back(&r);
   Json out = {{"seeds", all.size()}};
-  auto rms = [&](const char* name, Estimate FidelityResult::*m, bool rate) {
+  auto rms = [&](const char* name, Estimate (*m)(const FidelityResult&), bool rate) {
     double squares = 0, covered = 0;
     for (const FidelityResult* r : all) {
-      Json x = metric(r->*m, f.*m, rate);
+      Json x = metric(m(*r), m(f), rate);
       if (x.is_null()) return;
       squares += x["error"].get<double>() * x["error"].get<double>();
       covered += x["reference_in_ci"].get<bool>();
@@ -41,10 +41,14 @@ Json over_seeds(const LevelRun& run, const FidelityResult& f) {
     out[name] = {{"rms_error", std::sqrt(squares / double(all.size()))},
                  {"ci_coverage", covered / double(all.size())}};
   };
-  rms("cycles", &FidelityResult::cycles, false);
-  rms("dram_bytes", &FidelityResult::dram_bytes, false);
-  rms("l1_hit_rate", &FidelityResult::l1_hit_rate, true);
-  rms("l2_hit_rate", &FidelityResult::l2_hit_rate, true);
+  rms(
+      "cycles", [](const FidelityResult& r) { return r.cycles; }, false);
+  rms(
+      "dram_bytes", [](const FidelityResult& r) { return r.dram_bytes; }, false);
+  rms(
+      "l1_hit_rate", [](const FidelityResult& r) { return r.first_level_hit_rate(); }, true);
+  rms(
+      "l2_hit_rate", [](const FidelityResult& r) { return r.last_level_hit_rate(); }, true);
   double cpu = 0;
   for (const FidelityResult* r : all) cpu += r->cpu_seconds / double(all.size());
   out["mean_cpu_seconds"] = cpu;
@@ -66,8 +70,8 @@ Json row(const LevelRun& run, const LevelRun& ref) {
       {"speedup", speedup},
       {"cycles", metric(r.cycles, f.cycles, false)},
       {"dram_bytes", metric(r.dram_bytes, f.dram_bytes, false)},
-      {"l1_hit_rate", metric(r.l1_hit_rate, f.l1_hit_rate, true)},
-      {"l2_hit_rate", metric(r.l2_hit_rate, f.l2_hit_rate, true)}};
+      {"l1_hit_rate", metric(r.first_level_hit_rate(), f.first_level_hit_rate(), true)},
+      {"l2_hit_rate", metric(r.last_level_hit_rate(), f.last_level_hit_rate(), true)}};
   bool meets = r.cycles.known &&
                std::abs(out["cycles"]["error"].get<double>()) <= kGoalCycleError &&
                speedup >= kGoalSpeedup;

@@ -1,14 +1,17 @@
-// The L2's miss-ratio curve from one functional pass (model/fidelity/CURVE.md): the cache
-// level's walk (cache_level.h: the traversal, the RT units' L1s as configured, stack spills and
-// refills) sends its L2 references to one LRU stack per set count (model/mem/stack_distance.h,
-// Mattson's algorithm per set: every associativity at that set count at once), or, sampled, to
-// a miniature cache per point (model/mem/mini_cache.h, SHARDS). Each point is an L2 of the
-// config's line, sectors, slices and policy at one capacity and associativity: its block reads,
-// misses, write-backs and DRAM bytes, as the cycle model's L2 counts them with no timing (an
-// MSHR merge is a hit here). The knee is the point farthest below the chord from the first point
-// to the last on log2(capacity) against DRAM bytes per ray (Satopaa et al., "Finding a
-// 'Kneedle' in a Haystack", ICDCS workshops 2011). Cycles come from the full model at a few
-// points (run_cycle_points) and are interpolated between them (fill_cycles).
+// A cache level's miss-ratio curve from one functional pass (model/fidelity/CURVE.md): the cache
+// level's walk (cache_level.h: the traversal, every level as configured, stack spills and
+// refills) sends the references arriving at the curved level (by default the level above DRAM)
+// to one LRU stack per set count and instance (model/mem/stack_distance.h, Mattson's algorithm
+// per set: every associativity at that set count at once), or, sampled, to a miniature cache per
+// point (model/mem/mini_cache.h, SHARDS); a victim-filled level, whose read misses take no line
+// (so no one recency order serves every capacity), to a real cache per point and instance. Each
+// point is the level at one capacity and associativity with the config's line, sectors, slices
+// and policy: its block reads, misses, write-backs and the bytes it sends below, as the cycle
+// model's caches count them with no timing (an MSHR merge is a hit here). The knee is the point
+// farthest below the chord from the first point to the last on log2(capacity) against DRAM bytes
+// per ray (Satopaa et al., "Finding a 'Kneedle' in a Haystack", ICDCS workshops 2011). Cycles come
+// from the full model at a few points (run_cycle_points) and are interpolated between them
+// (fill_cycles).
 #pragma once
 
 #include <cstdint>
@@ -21,15 +24,21 @@
 namespace rtsim {
 
 struct CurveRequest {
-  std::vector<uint64_t> capacities;  // bytes: the whole L2, all slices
+  std::vector<uint64_t> capacities;  // bytes: one instance of the level, all its slices
   std::vector<uint32_t> ways;        // associativities (default: the config's)
   uint32_t sample_rate = 1;          // 1: exact stacks; R > 1: miniature caches of 1 line in R
+  std::string level;                 // the curved level's name (empty: the level above DRAM)
 };
 
-// The full model at one capacity, for the points simulated both ways.
+// The index in config.memory of the request's level; throws InputError naming --level if there
+// is no such level.
+uint32_t curve_level(const HwConfig& config, const CurveRequest& request);
+
+// The full model at one capacity of the curved level, for the points simulated both ways:
+// that level's counters over its instances.
 struct CyclePoint {
   double cycles = 0;
-  uint64_t l2_accesses = 0, l2_misses = 0, l2_merges = 0, read_bytes = 0, writeback_bytes = 0;
+  uint64_t accesses = 0, misses = 0, merges = 0, read_bytes = 0, writeback_bytes = 0;
   double cpu_seconds = 0;
 };
 
@@ -37,11 +46,13 @@ struct CurvePoint {
   uint64_t capacity = 0;  // bytes
   uint32_t ways = 0;
   uint64_t sets_per_slice = 0;
-  uint64_t reads = 0;     // L2 block reads (exact: every reference is counted)
+  uint64_t reads = 0;     // block reads arriving at the level (exact: every one is counted)
   double misses = 0;      // block reads that miss (sampled: estimated)
-  double writebacks = 0;  // dirty blocks written to DRAM
+  double writebacks = 0;  // dirty blocks written below
   double miss_ratio = 0, miss_ratio_ci95 = 0;
-  double dram_bytes = 0, dram_bytes_ci95 = 0;  // fetched plus written back
+  // Bytes the level sends below (DRAM for the last level): fetched (a victim level: read through)
+  // plus written back; clean evictions to a victim level below are not counted.
+  double dram_bytes = 0, dram_bytes_ci95 = 0;
   // Cycles: simulated by the full model here, interpolated from the nearest simulated points,
   // or extrapolated past them; unknown without simulated points.
   enum class Cycles : uint8_t { Unknown, Simulated, Interpolated, Extrapolated } cycles_from{};
@@ -55,7 +66,9 @@ struct CurvePoint {
 };
 
 struct CacheCurve {
-  uint64_t rays = 0, l2_reads = 0, l2_writes = 0;
+  std::string level;  // its name
+  uint32_t instances = 1;
+  uint64_t rays = 0, reads = 0, writes = 0, fills = 0;  // the references arriving at the level
   uint32_t block_bytes = 0, sample_rate = 1;
   std::vector<CurvePoint> points;  // by ways, then capacity
   double cpu_seconds = 0;          // of the pass
@@ -67,7 +80,8 @@ std::string curve_config_problem(const HwConfig& config);
 
 // Why the request cannot be answered for this config (empty if it can): capacities that give no
 // whole number of sets per slice, associativities out of range, a rate the sets do not divide
-// by.
+// by, a rate for a level of several instances or filled by victims (miniatures are one cache,
+// filled by their misses).
 std::string curve_request_problem(const HwConfig& config, const CurveRequest& request);
 
 // Host bytes the request's caches take at the most (for a request curve_request_problem
@@ -82,9 +96,10 @@ CacheCurve run_cache_curve(const HwConfig& config, BvhView image, const std::str
 // Index of the knee among the points of one associativity (indices into curve.points).
 size_t curve_knee(const CacheCurve& curve, const std::vector<size_t>& points);
 
-// The full model with the L2 at this capacity and associativity, in a forked child.
+// The full model with level `level` (an index into config.memory) at this capacity and
+// associativity, in a forked child.
 CyclePoint run_cycle_point(const HwConfig& config, BvhView image, const std::string& stream,
-                           uint64_t capacity, uint32_t ways);
+                           uint32_t level, uint64_t capacity, uint32_t ways);
 
 // Cycles of every point from those with a cycle run, linear in the curve's DRAM bytes: between
 // the two simulated points around it (in capacity), or past the outermost two; each point's

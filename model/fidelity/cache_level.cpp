@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <memory>
 #include <queue>
+#include <stdexcept>
 #include <tuple>
 
 #include "model/mem/cache.h"
@@ -28,28 +29,24 @@ struct Lane {
   CostTotals cost;
 };
 
-// Between the L1s and the L2: tells the sink each block the L1s send, then passes it on.
-class L2Tap : public MemoryTarget {
+// DRAM as the walk sees it: the one-bus DRAM, every byte read or written counted.
+class CountedDram : public MemoryTarget {
  public:
-  L2Tap(Cache& l2, L2ReferenceSink* sink) : l2_(l2), sink_(sink) {}
+  explicit CountedDram(const DramConfig& config) : dram_(config), target_(dram_) {}
   Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
              ReadCharge& charge) override {
-    tell(addr, bytes, false);
-    return l2_.read(addr, bytes, at, client, token, charge);
+    this->bytes += bytes;
+    return target_.read(addr, bytes, at, client, token, charge);
   }
   void write(uint64_t addr, uint32_t bytes, Cycle at) override {
-    tell(addr, bytes, true);
-    l2_.write(addr, bytes, at);
+    this->bytes += bytes;
+    target_.write(addr, bytes, at);
   }
+  uint64_t bytes = 0;
 
  private:
-  void tell(uint64_t addr, uint32_t bytes, bool write) {
-    uint64_t block = l2_.block_bytes();
-    for (uint64_t b = addr / block; b <= (addr + std::max<uint32_t>(bytes, 1) - 1) / block; ++b)
-      sink_->reference(b * block, write);
-  }
-  Cache& l2_;
-  L2ReferenceSink* sink_;
+  Dram dram_;
+  DramTarget target_;
 };
 
 struct Warp {
@@ -71,18 +68,21 @@ struct Turn {
 
 class CacheWalk {
  public:
-  CacheWalk(const HwConfig& config, BvhView image, L2ReferenceSink* sink)
+  CacheWalk(const HwConfig& config, BvhView image, LevelReferenceSink* sink, uint32_t tapped)
       : c_(config),
         traversal_(image, without_fetch_list()),
         dram_(config.dram),
-        dram_target_(dram_),
-        l2_(last_level(config).cache, &dram_target_, cache_place(config.memory, 1)),
-        tap_(l2_, sink) {
+        caches_(levels_as_built(config), config.rt_units, dram_, sink, tapped),
+        dram_read_(unloaded_dram_read(config.dram, block_bytes(last_level(config).cache))) {
+    // A read that reaches level d passes each level's tag check down to d and the links between
+    // them, each way.
+    double sum = 0;
+    for (size_t i = 0; i < c_.memory.size(); ++i) {
+      if (i > 0) sum += 2.0 * c_.memory[i - 1].link.latency;
+      sum += c_.memory[i].cache.hit_latency;
+      reach_.push_back(sum);
+    }
     for (uint32_t u = 0; u < c_.rt_units; ++u) {
-      // The tap only when a sink listens: an L1 miss otherwise goes straight to the L2.
-      MemoryTarget* below = sink ? static_cast<MemoryTarget*>(&tap_) : &l2_;
-      l1_.push_back(
-          std::make_unique<Cache>(levels_as_built(c_)[0].cache, below, cache_place(c_.memory, 0)));
       units_.emplace_back(c_.rt.warps);
       for (Warp& w : units_.back()) w.lanes.resize(c_.rt.warp_size);
     }
@@ -120,7 +120,12 @@ class CacheWalk {
 
   const std::array<CostTotals, kRayTypeCount>& by_type() const { return by_type_; }
   const std::vector<UnitWork>& work() const { return work_; }
-  uint64_t dram_bytes() const { return dram_bytes_; }
+  uint64_t dram_bytes() const { return dram_.bytes; }
+  std::vector<CacheStats> level_stats() const {
+    std::vector<CacheStats> out;
+    for (uint32_t i = 0; i < caches_.levels(); ++i) out.push_back(caches_.stats(i));
+    return out;
+  }
 
  private:
   // Fills warp w of the unit with new rays and schedules their first steps.
@@ -144,29 +149,24 @@ class CacheWalk {
     }
   }
 
-  // One read through the unit's L1; charges `cost` and returns the latency of the data.
+  // One read through the unit's first level; charges `cost` and returns the latency of the data.
   double read(uint32_t unit, CostTotals& cost, uint64_t addr, uint32_t bytes) {
-    Cache& l1 = *l1_[unit];
-    CacheStats a1 = l1.stats(), a2 = l2_.stats();
+    ReadCharge charge;
     now_ += kReadGap;
-    l1.read(addr, bytes, now_);
-    const CacheStats& b1 = l1.stats();
-    const CacheStats& b2 = l2_.stats();
-    cost.reads.add(0, b1.accesses - a1.accesses, b1.hits - a1.hits);
-    cost.reads.add(1, b2.accesses - a2.accesses, b2.hits - a2.hits);
-    uint64_t below = b2.bytes_below - a2.bytes_below;
-    cost.reads.dram_bytes += below;
-    dram_bytes_ += below + b2.writeback_bytes - a2.writeback_bytes;
-    uint64_t missed = b1.misses - a1.misses;
-    if (missed == 0) return first_level(c_).cache.hit_latency;
-    double below_latency = last_level(c_).cache.hit_latency;
-    if (b2.misses > a2.misses) below_latency += unloaded_dram_read(c_.dram, l2_.block_bytes());
-    // Each missed block takes one of the unit's L1 MSHRs after the tag check, waiting for the
-    // first to free if all are busy, and holds it until its data is back.
+    if (caches_.unit(unit).read(addr, bytes, now_, nullptr, 0, charge) == kPending)
+      throw std::logic_error("cache level: a cache level did not answer at once");
+    cost.reads += charge;
+    uint64_t missed = charge.misses(0);
+    double first = c_.memory[0].cache.hit_latency;
+    if (missed == 0) return first;
+    double below_latency = reach_[charge.depth - 1] - first;
+    if (charge.dram_bytes > 0) below_latency += dram_read_;
+    // Each missed block takes one of the unit's first-level MSHRs after the tag check, waiting
+    // for the first to free if all are busy, and holds it until its data is back.
     auto& mshrs = mshr_free_[unit];
     double done = 0;
     for (uint64_t i = 0; i < missed; ++i) {
-      double start = std::max(clock_ + first_level(c_).cache.hit_latency, mshrs.top());
+      double start = std::max(clock_ + first, mshrs.top());
       mshrs.pop();
       mshrs.push(start + below_latency);
       done = std::max(done, start + below_latency);
@@ -174,12 +174,10 @@ class CacheWalk {
     return done - clock_;
   }
 
-  // A spill through the unit's L1; the DRAM bytes of write-backs count with the run only.
+  // A spill through the unit's first level (posted: nobody waits for it).
   void write(uint32_t unit, uint64_t addr, uint32_t bytes) {
-    uint64_t before = l2_.stats().writeback_bytes;
     now_ += kReadGap;
-    l1_[unit]->write(addr, bytes, now_);
-    dram_bytes_ += l2_.stats().writeback_bytes - before;
+    caches_.unit(unit).write(addr, bytes, now_);
   }
 
   void step(uint32_t unit, Warp& warp, Lane& lane, uint32_t slot) {
@@ -240,16 +238,14 @@ class CacheWalk {
 
   HwConfig c_;
   TraversalUnit traversal_;
-  Dram dram_;
-  DramTarget dram_target_;
-  Cache l2_;
-  L2Tap tap_;
-  std::vector<std::unique_ptr<Cache>> l1_;
+  CountedDram dram_;
+  CacheHierarchy caches_;
+  double dram_read_;           // DRAM's unloaded read of the last level's block
+  std::vector<double> reach_;  // per level: the latency of a read that reaches it
   std::vector<std::vector<Warp>> units_;
   std::vector<UnitWork> work_;
   std::array<CostTotals, kRayTypeCount> by_type_{};
   std::priority_queue<Turn, std::vector<Turn>, std::greater<Turn>> turns_;
-  uint64_t dram_bytes_ = 0;
   // Per unit: the clocks its L1 MSHRs are free from, earliest first.
   std::vector<std::priority_queue<double, std::vector<double>, std::greater<double>>> mshr_free_;
   double clock_ = 0;  // the clock of the step being taken
@@ -259,17 +255,17 @@ class CacheWalk {
 }  // namespace
 
 FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std::string& stream,
-                               AnalyticTime* bounds, L2ReferenceSink* sink) {
+                               const CacheLevelTaps& taps) {
   HostTimer timer;
   RayStreamReader reader(stream);
   HwConfig analysed = config;  // a banked DRAM as its bandwidth and unloaded latency
   analysed.dram = dram_for_analysis(config);
-  CacheWalk walk(analysed, image, sink);
+  CacheWalk walk(analysed, image, taps.sink, taps.tapped);
   walk.run(reader);
   FidelityResult result;
   result.level = FidelityLevel::CacheLevel;
   result.clock_ghz = config.clock_ghz;
-  set_exact_estimates(result, walk.by_type(), true, true);
+  set_exact_estimates(result, walk.by_type(), level_names(config.memory), true);
   result.simulated_rays = result.rays;
   double latency = 0;
   for (const CostTotals& t : walk.by_type()) latency += t.latency;
@@ -278,7 +274,8 @@ FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std:
   AnalyticTime time = analytic_time(analysed, inputs);
   result.cycles = Estimate::exact(time.cycles);
   result.time_model = "roofline, bound by " + time.bound;
-  if (bounds) *bounds = time;
+  if (taps.bounds) *taps.bounds = time;
+  if (taps.levels) *taps.levels = walk.level_stats();
   timer.stop(result);
   return result;
 }

@@ -12,32 +12,36 @@
 // RT core does. Stack spills and refills follow the on-chip depth roughly (entries beyond
 // rt.stack.entries spill; an empty on-chip stack with spilled entries refills one entry
 // through the L1).
-// Each ray's latency is the sum over its steps of the memory latency of its fetch (L1 hit, or
-// the wait for an L1 MSHR and the L2 hit or DRAM), the test unit latency and issues, and the
-// control latency; the cycles come from the roofline of analytic_time.h.
+// The cache levels are the config's, every instance and slice as the cycle model builds them
+// (cache_hierarchy.h): a unit's own levels, group and shared levels, victim fills.
+// Each ray's latency is the sum over its steps of the memory latency of its fetch (a hit in the
+// first level; or the wait for one of its MSHRs, then each level's hit latency and the link to
+// it, each way, down to the deepest level the read reached, and DRAM's unloaded read if it went
+// there), the test unit latency and issues, and the control latency; the cycles come from the
+// roofline of analytic_time.h.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "model/bvh/two_level.h"
 #include "model/config/hw_config.h"
 #include "model/fidelity/analytic_time.h"
+#include "model/fidelity/cache_hierarchy.h"
 #include "model/fidelity/fidelity_result.h"
 
 namespace rtsim {
 
-// Sees what the RT units' L1s send to the L2, block by block (the L2's block: its sector, or its
-// line), in the order the walk sends it: reads of the blocks the L1s missed, and writes (the
-// L1s' write-backs of stack spills, or every spill with a write-through L1).
-class L2ReferenceSink {
- public:
-  virtual ~L2ReferenceSink() = default;
-  virtual void reference(uint64_t addr, bool write) = 0;
+// What a run of the cache level can hand back besides its result (each optional).
+struct CacheLevelTaps {
+  AnalyticTime* bounds = nullptr;             // every resource's lower bound
+  LevelReferenceSink* sink = nullptr;         // the references arriving at level `tapped`
+  uint32_t tapped = 0;                        // an index into config.memory
+  std::vector<CacheStats>* levels = nullptr;  // each level's counters, over its instances
 };
 
-// bounds (optional) receives every resource's lower bound; sink (optional) the L2's references.
 FidelityResult run_cache_level(const HwConfig& config, BvhView image, const std::string& stream,
-                               AnalyticTime* bounds = nullptr, L2ReferenceSink* sink = nullptr);
+                               const CacheLevelTaps& taps = {});
 
 }  // namespace rtsim

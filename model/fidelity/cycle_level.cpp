@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include "model/fidelity/cache_hierarchy.h"
 #include "model/sched/ray_source.h"
 #include "traces/stream.h"
 
@@ -24,7 +25,7 @@ FidelityResult cycle_level_result(const RtSimulator& sim) {
   FidelityResult result;
   result.level = FidelityLevel::Cycle;
   result.clock_ghz = sim.config().clock_ghz;
-  set_exact_estimates(result, by_type, true, true, uint32_t(sim.config().memory.size() - 1));
+  set_exact_estimates(result, by_type, level_names(sim.config().memory), true);
   result.simulated_rays = result.rays;
   result.cycles = Estimate::exact(double(sim.cycles()));
   result.time_model = "cycle-approximate model";

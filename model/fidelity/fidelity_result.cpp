@@ -23,6 +23,28 @@ Estimate estimate_from(const nlohmann::json& j) {
   return {true, j.at("value").get<double>(), j.at("ci95").get<double>()};
 }
 
+Json levels_json(const LevelEstimates& levels) {
+  Json out = Json::array();
+  for (const LevelEstimate& l : levels)
+    out.push_back({{"name", l.name}, {"hit_rate", estimate_json(l.hit_rate)}});
+  return out;
+}
+
+LevelEstimates levels_from(const nlohmann::json& j) {
+  LevelEstimates out;
+  for (const auto& l : j)
+    out.push_back({l.at("name").get<std::string>(), estimate_from(l.at("hit_rate"))});
+  return out;
+}
+
+LevelEstimates exact_levels(const ReadCounts& reads, const std::vector<std::string>& names) {
+  LevelEstimates out;
+  for (size_t i = 0; i < names.size(); ++i)
+    out.push_back(
+        {names[i], Estimate::exact(ratio(double(reads.hits[i]), double(reads.accesses[i])))});
+  return out;
+}
+
 }  // namespace
 
 HostTimer::HostTimer() : wall_(wall_seconds()), cpu_(rtsim::cpu_seconds()) {}
@@ -51,13 +73,22 @@ CostTotals& CostTotals::operator+=(const CostTotals& o) {
   return *this;
 }
 
+Estimate first_level_hit_rate(const LevelEstimates& levels) {
+  return levels.empty() ? Estimate{} : levels.front().hit_rate;
+}
+
+Estimate last_level_hit_rate(const LevelEstimates& levels) {
+  return levels.empty() ? Estimate{} : levels.back().hit_rate;
+}
+
 double FidelityResult::mrays_per_second() const {
   return cycles.known ? ratio(double(rays), cycles.value) * clock_ghz * 1e3 : 0.0;
 }
 
 void set_exact_estimates(FidelityResult& result,
-                         const std::array<CostTotals, kRayTypeCount>& by_type, bool cached,
-                         bool timed, uint32_t last_level) {
+                         const std::array<CostTotals, kRayTypeCount>& by_type,
+                         const std::vector<std::string>& levels, bool timed) {
+  bool cached = !levels.empty();
   CostTotals all;
   for (int t = 0; t < kRayTypeCount; ++t) {
     const CostTotals& c = by_type[t];
@@ -69,9 +100,7 @@ void set_exact_estimates(FidelityResult& result,
     e.nodes_per_ray = Estimate::exact(c.nodes / n);
     e.triangles_per_ray = Estimate::exact(c.triangles / n);
     if (cached) {
-      e.l1_hit_rate = Estimate::exact(ratio(c.reads.hits[0], c.reads.accesses[0]));
-      e.l2_hit_rate =
-          Estimate::exact(ratio(c.reads.hits[last_level], c.reads.accesses[last_level]));
+      e.levels = exact_levels(c.reads, levels);
       e.dram_bytes_per_ray = Estimate::exact(c.reads.dram_bytes / n);
     }
     if (timed) e.latency_mean = Estimate::exact(c.latency / n);
@@ -81,9 +110,7 @@ void set_exact_estimates(FidelityResult& result,
   result.nodes_per_ray = Estimate::exact(all.nodes / n);
   result.triangles_per_ray = Estimate::exact(all.triangles / n);
   if (cached) {
-    result.l1_hit_rate = Estimate::exact(ratio(all.reads.hits[0], all.reads.accesses[0]));
-    result.l2_hit_rate =
-        Estimate::exact(ratio(all.reads.hits[last_level], all.reads.accesses[last_level]));
+    result.levels = exact_levels(all.reads, levels);
     result.dram_bytes = Estimate::exact(double(all.reads.dram_bytes));
   }
 }
@@ -97,8 +124,7 @@ Json FidelityResult::to_json() const {
         {"rays", e.rays},
         {"nodes_per_ray", estimate_json(e.nodes_per_ray)},
         {"triangles_per_ray", estimate_json(e.triangles_per_ray)},
-        {"l1_hit_rate", estimate_json(e.l1_hit_rate)},
-        {"l2_hit_rate", estimate_json(e.l2_hit_rate)},
+        {"levels", levels_json(e.levels)},
         {"dram_bytes_per_ray", estimate_json(e.dram_bytes_per_ray)},
         {"latency_mean", estimate_json(e.latency_mean)}};
   }
@@ -115,8 +141,7 @@ Json FidelityResult::to_json() const {
           {"cycles", estimate_json(cycles)},
           {"mrays_per_second", cycles.known ? Json(mrays_per_second()) : Json()},
           {"dram_bytes", estimate_json(dram_bytes)},
-          {"l1_hit_rate", estimate_json(l1_hit_rate)},
-          {"l2_hit_rate", estimate_json(l2_hit_rate)},
+          {"levels", levels_json(levels)},
           {"nodes_per_ray", estimate_json(nodes_per_ray)},
           {"triangles_per_ray", estimate_json(triangles_per_ray)},
           {"ray_types", types_json},
@@ -139,8 +164,7 @@ FidelityResult FidelityResult::from_json(const nlohmann::json& doc) {
     r.caveat = doc["caveat"].get<std::string>();
   r.cycles = estimate_from(doc.at("cycles"));
   r.dram_bytes = estimate_from(doc.at("dram_bytes"));
-  r.l1_hit_rate = estimate_from(doc.at("l1_hit_rate"));
-  r.l2_hit_rate = estimate_from(doc.at("l2_hit_rate"));
+  r.levels = levels_from(doc.at("levels"));
   r.nodes_per_ray = estimate_from(doc.at("nodes_per_ray"));
   r.triangles_per_ray = estimate_from(doc.at("triangles_per_ray"));
   for (const auto& [name, t] : doc.at("ray_types").items()) {
@@ -150,8 +174,7 @@ FidelityResult FidelityResult::from_json(const nlohmann::json& doc) {
     e.rays = t.at("rays").get<uint64_t>();
     e.nodes_per_ray = estimate_from(t.at("nodes_per_ray"));
     e.triangles_per_ray = estimate_from(t.at("triangles_per_ray"));
-    e.l1_hit_rate = estimate_from(t.at("l1_hit_rate"));
-    e.l2_hit_rate = estimate_from(t.at("l2_hit_rate"));
+    e.levels = levels_from(t.at("levels"));
     e.dram_bytes_per_ray = estimate_from(t.at("dram_bytes_per_ray"));
     e.latency_mean = estimate_from(t.at("latency_mean"));
   }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,16 +36,32 @@ struct Estimate {
 // What a set of rays cost: plain sums, ratios derived when read.
 struct CostTotals {
   uint64_t rays = 0, nodes = 0, triangles = 0;
-  ReadCounts reads;    // the fidelity levels model two cache levels: 0 (per unit) and 1 (shared)
+  ReadCounts reads;    // per cache level, from the unit's first (0) to the level above DRAM
   double latency = 0;  // sum of ray latencies, cycles (timed levels only)
 
   CostTotals& operator+=(const CostTotals& o);
 };
 
+// One cache level's hit rate ([[memory.level]] name, model/mem/hierarchy.h).
+struct LevelEstimate {
+  std::string name;
+  Estimate hit_rate;
+};
+
+// The hit rates of the cache levels from the unit outwards (empty: caches not modelled).
+using LevelEstimates = std::vector<LevelEstimate>;
+// The unit's first level's and the level above DRAM's (the same in a one-level hierarchy);
+// unknown when there are none.
+Estimate first_level_hit_rate(const LevelEstimates& levels);
+Estimate last_level_hit_rate(const LevelEstimates& levels);
+
 struct TypeEstimate {
   uint64_t rays = 0;  // rays of this type in the stream (exact)
-  Estimate nodes_per_ray, triangles_per_ray, l1_hit_rate, l2_hit_rate, dram_bytes_per_ray;
+  Estimate nodes_per_ray, triangles_per_ray, dram_bytes_per_ray;
+  LevelEstimates levels;
   Estimate latency_mean;
+  Estimate first_level_hit_rate() const { return rtsim::first_level_hit_rate(levels); }
+  Estimate last_level_hit_rate() const { return rtsim::last_level_hit_rate(levels); }
 };
 
 struct FidelityResult {
@@ -58,12 +75,15 @@ struct FidelityResult {
   double clock_ghz = 1.0;
   std::string time_model;  // how cycles were obtained (cache level: the binding bound)
   std::string caveat;      // sampled level: why estimates may be biased, if it is known (or empty)
-  Estimate cycles, dram_bytes, l1_hit_rate, l2_hit_rate, nodes_per_ray, triangles_per_ray;
+  Estimate cycles, dram_bytes, nodes_per_ray, triangles_per_ray;
+  LevelEstimates levels;  // each cache level's hit rate
   std::array<TypeEstimate, kRayTypeCount> types;
   double host_seconds = 0;  // wall time of the level's run, scene and BVH excluded
   double cpu_seconds = 0;   // CPU time of the same (steadier on a busy machine)
 
   double mrays_per_second() const;
+  Estimate first_level_hit_rate() const { return rtsim::first_level_hit_rate(levels); }
+  Estimate last_level_hit_rate() const { return rtsim::last_level_hit_rate(levels); }
   nlohmann::ordered_json to_json() const;
   static FidelityResult from_json(const nlohmann::json& doc);
 };
@@ -79,10 +99,10 @@ class HostTimer {
 };
 
 // Fills the ray-count-derived estimates of a result from exact totals per ray type.
-// timed: latency sums are meaningful; cached: cache and DRAM counters are meaningful;
-// last_level: the level above DRAM, whose hit rate is l2_hit_rate (l1_hit_rate: level 0).
+// timed: latency sums are meaningful; levels: the names of the cache levels whose counters are
+// meaningful (reads level i is levels[i]), none for a level without caches or DRAM.
 void set_exact_estimates(FidelityResult& result,
-                         const std::array<CostTotals, kRayTypeCount>& by_type, bool cached,
-                         bool timed, uint32_t last_level = 1);
+                         const std::array<CostTotals, kRayTypeCount>& by_type,
+                         const std::vector<std::string>& levels, bool timed);
 
 }  // namespace rtsim

@@ -21,7 +21,7 @@ FidelityResult run_functional_level(BvhView image, const std::string& stream) {
   }
   FidelityResult result;
   result.level = FidelityLevel::Functional;
-  set_exact_estimates(result, by_type, false, false);
+  set_exact_estimates(result, by_type, {}, false);
   result.simulated_rays = result.rays;
   result.time_model = "none";
   timer.stop(result);

@@ -52,12 +52,12 @@ WarmingSource::WarmingSource(const std::vector<Ray>& rays, const std::vector<uin
       warps_per_unit_(full.rt.warps),
       warp_size_(full.rt.warp_size),
       own_slots_(uint64_t(scaled.rt_units) * full.rt.warps * full.rt.warp_size),
-      l1_(levels_as_built(full)[0].cache),
+      filter_(levels_as_built(full)[0].cache),
       absent_units_(full.rt_units - scaled.rt_units) {}
 
 void WarmingSource::warm(RtSimulator& sim) {
   sim_ = &sim;
-  l1s_.assign(absent_units_, L1Filter(l1_));
+  l1s_.assign(absent_units_, L1Filter(filter_));
 }
 
 bool WarmingSource::next(Ray& ray) {

@@ -68,7 +68,7 @@ class WarmingSource : public RaySource {
   TraversalUnit traversal_;
   StackConfig stack_;
   uint64_t warps_per_unit_, warp_size_, own_slots_;
-  CacheConfig l1_;
+  CacheConfig filter_;  // the absent units' first level, as their filters
   uint32_t absent_units_;
   std::vector<L1Filter> l1s_;  // the absent units', from warm()
   RtSimulator* sim_ = nullptr;

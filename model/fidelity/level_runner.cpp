@@ -1,5 +1,7 @@
 #include "model/fidelity/level_runner.h"
 
+#include <fmt/format.h>
+
 #include "model/fidelity/cache_level.h"
 #include "model/fidelity/cycle_level.h"
 #include "model/fidelity/functional_level.h"
@@ -12,13 +14,14 @@ namespace rtsim {
 
 FidelityResult run_level(const LevelRequest& request, const HwConfig& config, BvhView image,
                          const std::string& stream) {
-  // The cache level and the scale model reason about a unit level and one shared level.
-  bool scaled =
-      request.level == FidelityLevel::Sampled && request.sampling.method != SampleMethod::Windows;
-  if (request.level == FidelityLevel::CacheLevel || scaled) {
-    std::string problem = two_level_problem(
-        config, scaled ? "the sampled level's scale model" : "the cache fidelity level");
-    if (!problem.empty()) throw InputError(problem);
+  // The warmed method traces the absent units through one filter level into one shared level
+  // (l2_warming.h): a unit level and one shared level.
+  if (request.level == FidelityLevel::Sampled && request.sampling.method == SampleMethod::Warmed) {
+    if (!two_level_problem(config, "").empty())
+      throw InputError(fmt::format(
+          "--sample-method warmed: it warms one shared level behind a unit level; this "
+          "machine has {} levels ({} first): use --sample-method scale-model or windows",
+          config.memory.size(), first_level(config).name));
   }
   switch (request.level) {
     case FidelityLevel::Functional: return run_functional_level(image, stream);

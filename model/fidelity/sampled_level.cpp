@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <functional>
 
+#include "model/fidelity/cache_hierarchy.h"
 #include "model/fidelity/ray_charge.h"
 #include "model/fidelity/ray_range_reader.h"
 #include "model/fidelity/stratified.h"
@@ -130,31 +131,38 @@ class Estimator {
   std::vector<double> scale_;
 };
 
-void estimate(FidelityResult& r, const SamplePlan& plan, const SampledSequence& s) {
+// Each cache level's hit rate, over the rays of `type` (-1: all).
+LevelEstimates level_estimates(const Estimator& e, const std::vector<std::string>& names,
+                               int type = -1) {
+  LevelEstimates out;
+  for (size_t i = 0; i < names.size(); ++i) {
+    Field hits = [i](const CostTotals& c) { return double(c.reads.hits[i]); };
+    Field accesses = [i](const CostTotals& c) { return double(c.reads.accesses[i]); };
+    out.push_back({names[i], e.ratio(hits, accesses, type)});
+  }
+  return out;
+}
+
+void estimate(FidelityResult& r, const SamplePlan& plan, const SampledSequence& s,
+              const std::vector<std::string>& levels) {
   Estimator e(plan, s);
   Field rays = [](const CostTotals& c) { return double(c.rays); };
   Field nodes = [](const CostTotals& c) { return double(c.nodes); };
   Field tris = [](const CostTotals& c) { return double(c.triangles); };
-  Field l1a = [](const CostTotals& c) { return double(c.reads.accesses[0]); };
-  Field l1h = [](const CostTotals& c) { return double(c.reads.hits[0]); };
-  Field l2a = [](const CostTotals& c) { return double(c.reads.accesses[1]); };
-  Field l2h = [](const CostTotals& c) { return double(c.reads.hits[1]); };
   Field dram = [](const CostTotals& c) { return double(c.reads.dram_bytes); };
   Field latency = [](const CostTotals& c) { return c.latency; };
   Scaled cycles = e.scaled(span);
   cycles.excess += e.ratio(latency, rays).value;  // filling and draining the pipeline
   r.cycles = e.total(cycles);
   r.dram_bytes = e.total(e.scaled(dram));
-  r.l1_hit_rate = e.ratio(l1h, l1a);
-  r.l2_hit_rate = e.ratio(l2h, l2a);
+  r.levels = level_estimates(e, levels);
   r.nodes_per_ray = e.ratio(nodes, rays);
   r.triangles_per_ray = e.ratio(tris, rays);
   for (int t = 0; t < kRayTypeCount; ++t) {
     TypeEstimate& te = r.types[t];
     te.nodes_per_ray = e.ratio(nodes, rays, t);
     te.triangles_per_ray = e.ratio(tris, rays, t);
-    te.l1_hit_rate = e.ratio(l1h, l1a, t);
-    te.l2_hit_rate = e.ratio(l2h, l2a, t);
+    te.levels = level_estimates(e, levels, t);
     te.dram_bytes_per_ray = e.ratio(dram, rays, t);
     te.latency_mean = e.ratio(latency, rays, t);
   }
@@ -188,7 +196,7 @@ FidelityResult run_sampled_level(const HwConfig& config, BvhView image, const st
                  std::to_string(plan.warmup_rays) + " warm-up rays" +
                  (sampling.warm_pass ? ", warm pass first" : "");
   for (int t = 0; t < kRayTypeCount; ++t) r.types[t].rays = header.counts[t];
-  estimate(r, plan, sequence);
+  estimate(r, plan, sequence, level_names(config.memory));
   timer.stop(r);
   return r;
 }

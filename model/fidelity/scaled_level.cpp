@@ -9,8 +9,9 @@
 
 #include <fmt/format.h>
 
-#include "model/fidelity/ray_charge.h"
+#include "model/fidelity/cache_hierarchy.h"
 #include "model/fidelity/l2_warming.h"
+#include "model/fidelity/ray_charge.h"
 #include "model/fidelity/ray_range_reader.h"
 #include "model/fidelity/systematic.h"
 #include "model/sc/rt_simulator.h"
@@ -88,70 +89,77 @@ const Field kRays = [](const CostTotals& c) { return double(c.rays); };
 const Field kWork = [](const CostTotals& c) { return double(c.nodes + c.triangles); };
 const Field kNodes = [](const CostTotals& c) { return double(c.nodes); };
 const Field kTriangles = [](const CostTotals& c) { return double(c.triangles); };
-const Field kL1Hits = [](const CostTotals& c) { return double(c.reads.hits[0]); };
-const Field kL1Accesses = [](const CostTotals& c) { return double(c.reads.accesses[0]); };
-const Field kL2Hits = [](const CostTotals& c) { return double(c.reads.hits[1]); };
-const Field kL2Accesses = [](const CostTotals& c) { return double(c.reads.accesses[1]); };
 const Field kDram = [](const CostTotals& c) { return double(c.reads.dram_bytes); };
 const Field kLatency = [](const CostTotals& c) { return c.latency; };
 
-// The estimates of each scope (each ray type, then all rays), in this order.
-enum MetricIndex {
-  kNodesPerRay,
-  kTrianglesPerRay,
-  kL1Rate,
-  kL2Rate,
-  kDramPerRay,
-  kLatencyPerRay,
-  kPerScope
-};
-// After every scope's estimates: the totals of all rays.
-constexpr size_t kWorkTotal = (kRayTypeCount + 1) * kPerScope, kDramTotal = kWorkTotal + 1;
+// The estimates of each scope (each ray type, then all rays), in this order, then each cache
+// level's hit rate; after every scope's: the totals of all rays (work, then DRAM bytes).
+enum MetricIndex { kNodesPerRay, kTrianglesPerRay, kDramPerRay, kLatencyPerRay, kLevelRates };
 
-std::vector<Metric> make_metrics() {
-  std::vector<Metric> metrics;
+struct Metrics {
+  size_t levels = 0;
+  std::vector<Metric> all;
+  size_t per_scope() const { return kLevelRates + levels; }
+  size_t work_total() const { return (kRayTypeCount + 1) * per_scope(); }
+  size_t dram_total() const { return work_total() + 1; }
+  const SystematicSeries& series(int scope, size_t index) const {
+    return all[size_t(scope) * per_scope() + index].series;
+  }
+};
+
+Metrics make_metrics(size_t levels) {
+  Metrics m{levels, {}};
   for (int scope = 0; scope <= kRayTypeCount; ++scope) {
     int type = scope < kRayTypeCount ? scope : -1;
-    metrics.push_back({kNodes, kRays, type, {}});
-    metrics.push_back({kTriangles, kRays, type, {}});
-    metrics.push_back({kL1Hits, kL1Accesses, type, {}});
-    metrics.push_back({kL2Hits, kL2Accesses, type, {}});
-    metrics.push_back({kDram, kRays, type, {}});
-    metrics.push_back({kLatency, kRays, type, {}});
+    m.all.push_back({kNodes, kRays, type, {}});
+    m.all.push_back({kTriangles, kRays, type, {}});
+    m.all.push_back({kDram, kRays, type, {}});
+    m.all.push_back({kLatency, kRays, type, {}});
+    for (size_t i = 0; i < levels; ++i)
+      m.all.push_back({[i](const CostTotals& c) { return double(c.reads.hits[i]); },
+                       [i](const CostTotals& c) { return double(c.reads.accesses[i]); },
+                       type,
+                       {}});
   }
-  metrics.push_back({kWork, {}, -1, {}});
-  metrics.push_back({kDram, {}, -1, {}});
-  return metrics;
+  m.all.push_back({kWork, {}, -1, {}});
+  m.all.push_back({kDram, {}, -1, {}});
+  return m;
 }
 
-// First references to L2 lines in one scope (a ray type, or all rays): those the scaled
-// machine fetched (cold misses) and those an absent unit of the full machine had fetched.
+// First references to the first shared level's blocks in one scope (a ray type, or all rays):
+// those the scaled machine fetched (cold misses) and those an absent unit of the full machine had
+// fetched.
 struct FirstReferences {
   double fetched = 0, absent = 0;
 };
 
 // What to add to k x the scaled machine's DRAM bytes: its fetched first references are paid
 // once, not k times, and the absent units' ones once too.
-double dram_offset(double k, const FirstReferences& first, double line) {
-  return (first.absent - (k - 1) * first.fetched) * line;
+double dram_offset(double k, const FirstReferences& first, double block) {
+  return (first.absent - (k - 1) * first.fetched) * block;
 }
 
-const SystematicSeries& series(const std::vector<Metric>& metrics, int scope, int index) {
-  return metrics[size_t(scope) * kPerScope + size_t(index)].series;
-}
-
-// The estimates of one scope; k: the scale-up, line: the L2's line size. The full machine
-// fetches each first-referenced line once: DRAM bytes = k (D - fetched x line) + (fetched +
-// absent) x line, and its L2 hits = k h + (k - 1) fetched - absent.
-TypeEstimate scope_estimates(const std::vector<Metric>& metrics, int scope, double k,
-                             const FirstReferences& first, double line) {
+// The estimates of one scope; k: the scale-up; first: the first references of the first shared
+// level S (scale.first_shared; none: no level is shared and every count scales by k). The full
+// machine fetches each first-referenced block once: its hits at S = k h + (k - 1) fetched -
+// absent, and the levels below S see S's first fetches once, not k times: their accesses are
+// k a - (k - 1) fetched + absent. DRAM bytes as dram_offset. Levels above S scale by k.
+TypeEstimate scope_estimates(const Metrics& metrics, int scope, double k, const ScaleModel& scale,
+                             const FirstReferences& first, const std::vector<std::string>& names,
+                             double block) {
   TypeEstimate e;
-  e.nodes_per_ray = series(metrics, scope, kNodesPerRay).ratio(k);
-  e.triangles_per_ray = series(metrics, scope, kTrianglesPerRay).ratio(k);
-  e.l1_hit_rate = series(metrics, scope, kL1Rate).ratio(k);
-  e.l2_hit_rate = series(metrics, scope, kL2Rate).ratio(k, (k - 1) * first.fetched - first.absent);
-  e.dram_bytes_per_ray = series(metrics, scope, kDramPerRay).ratio(k, dram_offset(k, first, line));
-  e.latency_mean = series(metrics, scope, kLatencyPerRay).ratio(k);
+  e.nodes_per_ray = metrics.series(scope, kNodesPerRay).ratio(k);
+  e.triangles_per_ray = metrics.series(scope, kTrianglesPerRay).ratio(k);
+  uint32_t s = scale.first_shared;
+  for (uint32_t i = 0; i < names.size(); ++i) {
+    const SystematicSeries& rate = metrics.series(scope, kLevelRates + i);
+    e.levels.push_back({names[i], i < s ? rate.ratio(k)
+                                  : i == s
+                                      ? rate.ratio(k, (k - 1) * first.fetched - first.absent)
+                                      : rate.ratio(k, 0, first.absent - (k - 1) * first.fetched)});
+  }
+  e.dram_bytes_per_ray = metrics.series(scope, kDramPerRay).ratio(k, dram_offset(k, first, block));
+  e.latency_mean = metrics.series(scope, kLatencyPerRay).ratio(k);
   return e;
 }
 
@@ -160,29 +168,40 @@ uint32_t scaled_units(uint32_t units, uint32_t rate) {
   return std::max(1u, uint32_t(std::lround(double(units) / double(std::max(rate, 1u)))));
 }
 
-// Why the plain scale model's L2 and DRAM figures may read low, or nothing. In expectation the
-// whole stream reads at most k times the distinct blocks the sampled warps read (a block only
-// one warp reads is drawn with odds 1 in k), so if that fits the L2 the full machine has no
-// capacity misses that lines outside the sample would cause; otherwise it may
-// (model/fidelity/README.md).
-std::string capacity_caveat(double k, const CacheStats& l2, const CacheConfig& config) {
-  double sampled = double(l2.cold_misses + l2.absent_fills) * double(block_bytes(config));
-  if (k * sampled <= double(config.size_bytes)) return {};
+// Why the plain scale model's cache and DRAM figures may read low, or nothing. In expectation
+// the whole stream reads at most k times the distinct blocks the sampled warps read (a block
+// only one warp reads is drawn with odds 1 in k), so if that fits the largest level from the
+// first shared one down, the full machine has no capacity misses that lines outside the sample
+// would cause; otherwise it may (model/fidelity/README.md).
+std::string capacity_caveat(double k, const CacheStats& paying, const HwConfig& config,
+                            uint32_t from) {
+  const MemoryLevelConfig* largest = &config.memory[from];
+  for (size_t i = from; i < config.memory.size(); ++i)
+    if (config.memory[i].cache.size_bytes > largest->cache.size_bytes) largest = &config.memory[i];
+  double sampled = double(paying.cold_misses + paying.absent_fills) *
+                   double(block_bytes(config.memory[from].cache));
+  double size = double(largest->cache.size_bytes);
+  if (k * sampled <= size) return {};
   return fmt::format(
-      "L2 and DRAM figures (and cycles) may read low: the sampled warps read {:.3g} MiB of "
-      "distinct blocks, the whole stream up to {:.3g} times that ({:.3g} MiB) against an L2 of "
-      "{:.3g} MiB, and its capacity misses of lines no sampled warp reads are not counted "
+      "cache and DRAM figures (and cycles) may read low: the sampled warps read {:.3g} MiB of "
+      "distinct blocks, the whole stream up to {:.3g} times that ({:.3g} MiB) against the {:.3g} "
+      "MiB of memory.{}, and its capacity misses of lines no sampled warp reads are not counted "
       "(--sample-method warmed counts them)",
-      sampled / 1048576, k, k * sampled / 1048576, double(config.size_bytes) / 1048576);
+      sampled / 1048576, k, k * sampled / 1048576, size / 1048576, largest->name);
 }
 
-// A block's fetch at the L2 with no other load: its tag check, the DRAM's unloaded latency and
-// the block's transfer. The absent units' first fetches are taken to last that long until the
-// L2 has measured fetches of its own.
-Cycle unloaded_fetch_cycles(const HwConfig& config) {
-  return last_level(config).cache.hit_latency +
-         Cycle(std::ceil(
-             unloaded_dram_read(dram_for_analysis(config), block_bytes(last_level(config).cache))));
+// A block's fetch at level `level` with no other load: the tag checks from there down, the
+// links between them each way, the DRAM's unloaded latency and the block's transfer. The absent
+// units' first fetches are taken to last that long until the level has measured fetches of its
+// own.
+Cycle unloaded_fetch_cycles(const HwConfig& config, uint32_t level) {
+  double cycles =
+      unloaded_dram_read(dram_for_analysis(config), block_bytes(last_level(config).cache));
+  for (size_t i = level; i < config.memory.size(); ++i) {
+    cycles += config.memory[i].cache.hit_latency;
+    if (i + 1 < config.memory.size()) cycles += 2.0 * config.memory[i].link.latency;
+  }
+  return Cycle(std::ceil(cycles));
 }
 
 }  // namespace
@@ -210,7 +229,20 @@ ScaleModel scale_model(const HwConfig& config, uint32_t rate) {
   c.rt_units = scaled_units(config.rt_units, rate);
   m.machine_share = double(c.rt_units) / double(config.rt_units);
   c.dispatch.rays_per_cycle = config.dispatch.rays_per_cycle * m.machine_share;
-  last_level(c).cache.mshrs = scaled_count(last_level(config).cache.mshrs, m.machine_share);
+  m.first_shared = uint32_t(config.memory.size());
+  for (uint32_t i = 0; i < config.memory.size(); ++i) {
+    const MemoryLevelConfig& full = config.memory[i];
+    MemoryLevelConfig& level = c.memory[i];
+    // An instance of the scaled machine serves fewer units than the full machine's where the
+    // scaled machine has fewer units than one full instance: a shared level, or a group level
+    // larger than the scaled machine. It keeps its size; its MSHRs scale with its units.
+    double share = double(units_per_instance(level, c.rt_units)) /
+                   double(units_per_instance(full, config.rt_units));
+    m.level_share.push_back(share);
+    if (share < 1) level.cache.mshrs = scaled_count(full.cache.mshrs, share);
+    if (level.scope == LevelScope::Shared && m.first_shared == config.memory.size())
+      m.first_shared = i;
+  }
   c.dram.bytes_per_cycle = config.dram.bytes_per_cycle * m.machine_share;
   c.dram.queue_depth = scaled_count(config.dram.queue_depth, m.machine_share);
   c.banked_dram.channels = scaled_count(config.banked_dram.channels, m.machine_share);
@@ -235,15 +267,17 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   for (uint64_t w : drawn) reader.read(w * unit, (w + 1) * unit, rays);
 
   ScaleModel model = scale_model(config, rate);
-  std::vector<Metric> metrics = make_metrics();
-  WarpCollector collector(rays.size(), unit, metrics);
+  std::vector<std::string> names = level_names(config.memory);
+  Metrics metrics = make_metrics(names.size());
+  WarpCollector collector(rays.size(), unit, metrics.all);
   bool warmed = sampling.method == SampleMethod::Warmed;
   WarmingSource source(rays, drawn, unit, reader, image, config, model.config);
   RtSimulator sim(model.config, image, source, 0, 0, &collector);
   if (warmed)
     source.warm(sim);
-  else
-    sim.share_l2_first_references(model.machine_share, unloaded_fetch_cycles(config));
+  else if (model.first_shared < names.size())
+    sim.share_first_references(model.first_shared, model.machine_share,
+                               unloaded_fetch_cycles(config, model.first_shared));
   sim.run();
 
   FidelityResult r;
@@ -252,35 +286,40 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
   r.sample_method = sample_method_name(sampling.method);
   r.rays = total;
   r.simulated_rays = r.measured_rays = rays.size();
-  r.strata = uint32_t(metrics[kWorkTotal].series.units());
+  r.strata = uint32_t(metrics.all[metrics.work_total()].series.units());
   r.clock_ghz = config.clock_ghz;
-  r.time_model = "scale model: 1 in " + std::to_string(rate) + " warps (seed " +
-                 std::to_string(sampling.seed) + ") on " + std::to_string(model.config.rt_units) +
-                 " of " + std::to_string(config.rt_units) + " RT units" +
-                 (warmed ? ", the other units' reads warming the L2" : "");
+  r.time_model =
+      "scale model: 1 in " + std::to_string(rate) + " warps (seed " +
+      std::to_string(sampling.seed) + ") on " + std::to_string(model.config.rt_units) + " of " +
+      std::to_string(config.rt_units) + " RT units" +
+      (warmed ? ", the other units' reads warming memory." + last_level(config).name : "");
   double k = double(total) / double(rays.size());
 
-  // First references, shared out over the ray types: the fetched ones by their L2 misses,
-  // the absent units' ones by their L2 accesses. Warmed, every fetch is counted where it was
-  // made: the scaled units' (their DRAM bytes over the block) once, the absent units' by their
-  // rays' types.
-  CacheStats l2 = sim.l2_stats();
-  if (!warmed) r.caveat = capacity_caveat(k, l2, last_level(config).cache);
-  double line = double(block_bytes(last_level(config).cache));
+  // The first shared level's first references, shared out over the ray types: the fetched
+  // ones by the type's misses there, the absent units' ones by its accesses. Warmed (a unit level
+  // and one shared level), every fetch of the shared level is counted where it was made: the
+  // scaled units' (their DRAM bytes over the block) once, the absent units' by their rays' types.
   const auto& totals = collector.totals();
+  uint32_t shared = model.first_shared;
+  bool sharing = shared < names.size() && model.level_share[shared] < 1;
+  CacheStats first_stats = sharing ? sim.level_stats(shared) : CacheStats{};
+  double block = double(block_bytes(config.memory[sharing ? shared : names.size() - 1].cache));
+  if (!warmed && sharing) r.caveat = capacity_caveat(k, first_stats, config, shared);
   double misses = 0, accesses = 0;
-  for (const CostTotals& c : totals) {
-    misses += double(c.reads.misses(1));
-    accesses += double(c.reads.accesses[1]);
-  }
-  // A type's first references: warmed, its own fetches and its absent units'; otherwise the
-  // run's cold misses and absent fills shared out by the type's L2 misses and accesses.
+  for (const CostTotals& c : totals)
+    if (sharing) {
+      misses += double(c.reads.misses(shared));
+      accesses += double(c.reads.accesses[shared]);
+    }
   auto first_of = [&](int t) {
     const CostTotals& c = totals[t];
-    if (warmed) return FirstReferences{double(c.reads.dram_bytes) / line, source.fetched()[t]};
+    if (!sharing) return FirstReferences{};
+    if (warmed) return FirstReferences{double(c.reads.dram_bytes) / block, source.fetched()[t]};
     return FirstReferences{
-        misses > 0 ? double(l2.cold_misses) * double(c.reads.misses(1)) / misses : 0,
-        accesses > 0 ? double(l2.absent_fills) * double(c.reads.accesses[1]) / accesses : 0};
+        misses > 0 ? double(first_stats.cold_misses) * double(c.reads.misses(shared)) / misses : 0,
+        accesses > 0
+            ? double(first_stats.absent_fills) * double(c.reads.accesses[shared]) / accesses
+            : 0};
   };
   FirstReferences first_all;
   for (int t = 0; t < kRayTypeCount; ++t) {
@@ -288,25 +327,23 @@ FidelityResult run_scaled_level(const HwConfig& config, BvhView image, const std
     first_all = {first_all.fetched + f.fetched, first_all.absent + f.absent};
   }
   for (int t = 0; t < kRayTypeCount; ++t) {
-    uint64_t rays_of_type = reader.header().counts[t];
-    const CostTotals& c = totals[t];
-    FirstReferences first = first_of(t);
-    if (c.rays > 0) r.types[t] = scope_estimates(metrics, t, k, first, line);
-    r.types[t].rays = rays_of_type;
+    if (totals[t].rays > 0)
+      r.types[t] = scope_estimates(metrics, t, k, model, first_of(t), names, block);
+    r.types[t].rays = reader.header().counts[t];
   }
-  TypeEstimate all = scope_estimates(metrics, kRayTypeCount, k, first_all, line);
+  TypeEstimate all = scope_estimates(metrics, kRayTypeCount, k, model, first_all, names, block);
   r.nodes_per_ray = all.nodes_per_ray;
   r.triangles_per_ray = all.triangles_per_ray;
-  r.l1_hit_rate = all.l1_hit_rate;
-  r.l2_hit_rate = all.l2_hit_rate;
-  r.dram_bytes = metrics[kDramTotal].series.total(k, dram_offset(k, first_all, line));
+  r.levels = all.levels;
+  r.dram_bytes =
+      metrics.all[metrics.dram_total()].series.total(k, dram_offset(k, first_all, block));
 
   double latency = all.latency_mean.value;
   // Full-machine time over the scaled machine's: the stream's share of the work it did (k x
   // the share of the machine); about 1 when rate <= rt.count, rate / rt.count above.
   double time_factor = k * model.machine_share;
   double cycles = (double(sim.cycles()) - latency) * time_factor + latency;
-  Estimate work = metrics[kWorkTotal].series.total(k);
+  Estimate work = metrics.all[metrics.work_total()].series.total(k);
   r.cycles = {true, cycles, work.value > 0 ? cycles * work.ci95 / work.value : 0.0};
   timer.stop(r);
   return r;

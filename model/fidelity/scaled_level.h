@@ -29,6 +29,12 @@
 // rate with the other counts. Without it those reads hit and the L2 hit rate read high by most
 // of the full machine's merges on first fetches (pica, desktop: its interval held on no seed).
 //
+// Any hierarchy of cache levels: a unit level stays per unit; a group or shared level keeps its
+// size, and where one of its scaled instances serves fewer units than a full instance (a shared
+// level; a group larger than the scaled machine) its MSHRs scale with its units. The first
+// shared level's first references are shared with the absent units and paid once; the levels
+// below it see them once, not k times (model/fidelity/README.md).
+//
 // Intervals (systematic.h): the sampling error of choosing warps, from the successive
 // differences of neighbouring sampled warps; cycles take the relative interval of the warps'
 // traversal steps (nodes + triangles), their work. They do not cover the scale model's own bias.
@@ -48,6 +54,12 @@ namespace rtsim {
 struct ScaleModel {
   HwConfig config;           // the scaled machine
   double machine_share = 1;  // its RT units over the full machine's
+  // Per cache level: the units a scaled instance serves over a full-machine instance's.
+  std::vector<double> level_share;
+  // The first shared level (every level below it is shared too), whose first references are
+  // shared with the absent units (Cache::share_first_references) and paid once; the number of
+  // levels if none is shared.
+  uint32_t first_shared = 0;
 };
 
 ScaleModel scale_model(const HwConfig& config, uint32_t rate);

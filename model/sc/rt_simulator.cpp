@@ -153,8 +153,16 @@ std::array<ReadCounts, kRayTypeCount> RtSimulator::shading_reads() const {
   return sum.reads;
 }
 
-void RtSimulator::share_l2_first_references(double own_share, Cycle first_fetch_cycles) {
-  shared_->share_first_references(own_share, first_fetch_cycles);
+CacheStats RtSimulator::level_stats(uint32_t level) const {
+  CacheStats sum;
+  auto [begin, end] = shared_->instances_of(level);
+  for (uint32_t i = begin; i < end; ++i) sum += shared_->instances()[i].stats();
+  return sum;
+}
+
+void RtSimulator::share_first_references(uint32_t level, double own_share,
+                                         Cycle first_fetch_cycles) {
+  shared_->share_first_references(level, own_share, first_fetch_cycles);
 }
 
 Cycle RtSimulator::cycles() const {

@@ -49,13 +49,16 @@ class RtSimulator {
   const SimStatsCollector& collected() const { return collector_; }
   const HwConfig& config() const { return config_; }
   CacheStats l2_stats() const;  // summed over the slices
+  // A group or shared level's counters (level: an index into config().memory), summed over its
+  // instances and slices; zero for a unit's own level.
+  CacheStats level_stats(uint32_t level) const;
   // A shader model: what the SMs' shading reads cost, by the hit ray's type, over the units,
   // from the first measured ray on.
   std::array<ReadCounts, kRayTypeCount> shading_reads() const;
-  // Before run(): the L2 stands in for that of a machine of which this one has own_share of the
-  // RT units, whose fetches are taken to last first_fetch_cycles until the L2 has measured its
-  // own (Cache::share_first_references).
-  void share_l2_first_references(double own_share, Cycle first_fetch_cycles);
+  // Before run(): each instance of the group or shared level `level` stands in for one of a
+  // machine whose instances have 1 / own_share as many RT units, whose fetches are taken to last
+  // first_fetch_cycles until the level has measured its own (Cache::share_first_references).
+  void share_first_references(uint32_t level, double own_share, Cycle first_fetch_cycles);
   // During run(): an access of an RT unit this machine leaves out reaches its L2 (Cache::warm);
   // returns the blocks it fetched.
   uint32_t warm_l2(uint64_t addr, uint32_t bytes, bool write = false) {

@@ -207,9 +207,12 @@ bool SharedLevelsModule::tracks_cold_misses() const {
   return !instances_[0].slices.empty() && instances_[0].slices[0]->tracks_cold_misses();
 }
 
-void SharedLevelsModule::share_first_references(double own_share, Cycle first_fetch_cycles) {
-  for (Instance& inst : instances_)
-    for (auto& slice : inst.slices) slice->share_first_references(own_share, first_fetch_cycles);
+void SharedLevelsModule::share_first_references(uint32_t level, double own_share,
+                                                Cycle first_fetch_cycles) {
+  auto [begin, end] = instances_of(level);
+  for (uint32_t i = begin; i < end; ++i)
+    for (auto& slice : instances_[i].slices)
+      slice->share_first_references(own_share, first_fetch_cycles);
 }
 
 void SharedLevelsModule::use_timed_memory(uint32_t lead) {

@@ -136,7 +136,8 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   uint32_t slice_of(const Instance& instance, uint64_t addr) const;
   void track_cold_misses(uint64_t dense_begin = 0, uint64_t dense_end = 0);  // Cache's
   bool tracks_cold_misses() const;
-  void share_first_references(double own_share, Cycle first_fetch_cycles);  // Cache's
+  // Cache's, on every slice of level `level`'s instances (an index into levels()).
+  void share_first_references(uint32_t level, double own_share, Cycle first_fetch_cycles);
   // Cache::warm on each line's slice of the first instance, now: accesses of RT units the
   // simulation does not drive.
   uint32_t warm(uint64_t addr, uint32_t bytes, bool write);

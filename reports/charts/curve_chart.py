@@ -2,18 +2,25 @@
 """Chart of `rtsim curve`.
 
 Usage: curve_chart.py OUTDIR CURVE.json  -- writes OUTDIR/curve.png.
-Left: DRAM bytes per ray against L2 capacity (log axis), one line per associativity, the 95%
+Left: DRAM bytes per ray (bytes below the level, for a level above another) against the curved
+level's capacity (log axis), one line per associativity, the 95%
 interval when sampled, the knee marked, and the full model's DRAM bytes where it ran. Right:
 cycles where known: simulated points filled, interpolated and extrapolated ones hollow.
        curve_chart.py OUTDIR CURVE.json CURVE.json...  -- the curves of several L1 sizes
-(`rtsim curve --l1`): OUTDIR/curve-l1.png, DRAM bytes per ray and cycles against L2 capacity,
-one line per L1 size (the first associativity), knees marked.
+(`rtsim curve --l1`): OUTDIR/curve-l1.png, DRAM bytes per ray and cycles against the curved
+level's capacity, one line per first-level size (the first associativity), knees marked.
 """
 import json
 import os
 import sys
 
 import chart_style
+
+
+def below_label(doc):
+    """What dram_bytes_per_ray is: DRAM's bytes for the last level, else the level below's."""
+    ctx = doc["context"]
+    return "DRAM bytes per ray" if ctx["above_dram"] else "bytes per ray below %s" % ctx["level"]
 
 
 def main(path, outdir):
@@ -47,12 +54,13 @@ def main(path, outdir):
         if known:
             right.plot([p["capacity_bytes"] for p in known], [p["cycles"] for p in known],
                        "-", lw=0.8, color="#777777")
+    level = doc["context"]["level"]
     for ax in (left, right):
         ax.set_xscale("log", base=2)
         chart_style.size_axis(ax)
-        ax.set_xlabel("L2 capacity (bytes)")
-    left.set_ylabel("DRAM bytes per ray")
-    left.set_title("DRAM bytes per ray (%s)" % doc["method"])
+        ax.set_xlabel("%s capacity (bytes)" % level)
+    left.set_ylabel(below_label(doc))
+    left.set_title("%s (%s)" % (below_label(doc), doc["method"]))
     left.legend(fontsize=7)
     right.set_ylabel("cycles")
     right.set_title("cycles: full model where simulated, else interpolated")
@@ -71,7 +79,8 @@ def family(outdir, paths):
         first = doc["points"][0]["ways"]
         pts = sorted((p for p in doc["points"] if p["ways"] == first),
                      key=lambda p: p["capacity_bytes"])
-        label = "L1 " + chart_style.size_text(doc["context"]["l1_bytes"])
+        label = "%s %s" % (doc["context"]["first_level"],
+                           chart_style.size_text(doc["context"]["first_level_bytes"]))
         x = [p["capacity_bytes"] for p in pts]
         line = left.plot(x, [p["dram_bytes_per_ray"] for p in pts], "o-", ms=4, label=label)
         for p in pts:
@@ -82,12 +91,13 @@ def family(outdir, paths):
         if known:
             right.plot([p["capacity_bytes"] for p in known], [p["cycles"] for p in known],
                        "o-", ms=4, color=line[0].get_color(), label=label)
+    ctx = docs[0]["context"]
     for ax in (left, right):
         ax.set_xscale("log", base=2)
         chart_style.size_axis(ax)
-        ax.set_xlabel("L2 capacity (bytes)")
-    left.set_ylabel("DRAM bytes per ray")
-    left.set_title("DRAM bytes per ray by L1 size (stars: knees)")
+        ax.set_xlabel("%s capacity (bytes)" % ctx["level"])
+    left.set_ylabel(below_label(docs[0]))
+    left.set_title("%s by %s size (stars: knees)" % (below_label(docs[0]), ctx["first_level"]))
     left.legend(fontsize=7)
     right.set_ylabel("cycles")
     right.set_title("cycles: simulated or interpolated")

@@ -37,16 +37,19 @@ const Workload kWorkloads[] = {
 
 struct Metric {
   const char* name;
-  Estimate FidelityResult::*field;
+  Estimate (*field)(const FidelityResult&);
   double scale;  // to the check's unit: 1 relative, 100 points
   bool relative;
   int check;  // its rms check in method_checks' order (-1: coverage only)
 };
 
-const Metric kMetrics[] = {{"cycles", &FidelityResult::cycles, 1, true, -1},
-                           {"dram_bytes", &FidelityResult::dram_bytes, 1, true, 0},
-                           {"l1_hit_rate", &FidelityResult::l1_hit_rate, 100, false, 1},
-                           {"l2_hit_rate", &FidelityResult::l2_hit_rate, 100, false, 2}};
+const Metric kMetrics[] = {
+    {"cycles", [](const FidelityResult& r) { return r.cycles; }, 1, true, -1},
+    {"dram_bytes", [](const FidelityResult& r) { return r.dram_bytes; }, 1, true, 0},
+    {"l1_hit_rate", [](const FidelityResult& r) { return r.first_level_hit_rate(); }, 100, false,
+     1},
+    {"l2_hit_rate", [](const FidelityResult& r) { return r.last_level_hit_rate(); }, 100, false,
+     2}};
 
 // A folder for the trace, removed however the checks end.
 struct TemporaryFolder {
@@ -130,10 +133,10 @@ void judge(std::vector<Check>& out, const Workload& w, const FidelityResult& ful
     double sum2 = 0;
     size_t metric_held = 0;
     for (const FidelityResult& s : sampled) {
-      const Estimate& e = s.*m.field;
-      double e_err = error(m, e, full.*m.field);
+      Estimate e = m.field(s);
+      double e_err = error(m, e, m.field(full));
       sum2 += e_err * e_err;
-      bool holds = std::abs(e.value - (full.*m.field).value) <= e.ci95;
+      bool holds = std::abs(e.value - (m.field(full)).value) <= e.ci95;
       metric_held += holds;
     }
     held += metric_held;
@@ -144,10 +147,10 @@ void judge(std::vector<Check>& out, const Workload& w, const FidelityResult& ful
     if (m.check < 0) continue;
     Check& c = out[size_t(m.check)];
     c.measured = rms;
-    const Estimate& first = sampled[0].*m.field;
+    Estimate first = m.field(sampled[0]);
     c.detail = fmt::format(
         "{} at {} ({} rays): full model {:.6g}; seed 1 {:.6g} +- {:.3g}; rms over {} seeds", w.name,
-        kResolution, full.rays, (full.*m.field).value * m.scale, first.value * m.scale,
+        kResolution, full.rays, (m.field(full)).value * m.scale, first.value * m.scale,
         first.ci95 * m.scale, sampled.size());
   }
   out[3].measured = double(held) / double(intervals);

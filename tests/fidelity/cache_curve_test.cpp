@@ -34,7 +34,7 @@ TEST(CacheCurve, PointAtTheWalksL2IsTheCacheLevelsL2) {
   ASSERT_EQ(at_config.capacity, 16384u);
   // The walk's L2 never merges (its reads are far apart), so its misses are accesses - hits.
   EXPECT_DOUBLE_EQ(at_config.misses * curve.block_bytes, level.dram_bytes.value);
-  EXPECT_NEAR(1 - at_config.miss_ratio, level.l2_hit_rate.value, 1e-12);
+  EXPECT_NEAR(1 - at_config.miss_ratio, level.last_level_hit_rate().value, 1e-12);
   EXPECT_GT(at_config.miss_ratio, 0.05) << "the stream should not fit 16 KB";
   for (size_t i = 1; i < curve.points.size(); ++i)
     EXPECT_LE(curve.points[i].dram_bytes, curve.points[i - 1].dram_bytes) << i;
@@ -42,8 +42,8 @@ TEST(CacheCurve, PointAtTheWalksL2IsTheCacheLevelsL2) {
 }
 
 // Counts the L2 references to the shading region.
-struct ShadingReferences : L2ReferenceSink {
-  void reference(uint64_t addr, bool) override {
+struct ShadingReferences : LevelReferenceSink {
+  void reference(uint32_t, uint64_t addr, LevelReference) override {
     count += addr >= kShadingBase && addr < kTextureBase;
   }
   uint64_t count = 0;
@@ -57,7 +57,10 @@ TEST(CacheCurve, HitShadingReadsJoinTheL2Stream) {
     BvhImage image = build_bvh_image(scene.mesh, config.bvh);
     EXPECT_EQ(curve_request_problem(config, {{65536}, {last_level(config).cache.ways}, 1}), "");
     ShadingReferences sink;
-    FidelityResult r = run_cache_level(config, image, stream, nullptr, &sink);
+    CacheLevelTaps taps;
+    taps.sink = &sink;
+    taps.tapped = 1;
+    FidelityResult r = run_cache_level(config, image, stream, taps);
     return std::make_pair(sink.count, r.rays);
   };
   auto [none, rays] = shading("none");

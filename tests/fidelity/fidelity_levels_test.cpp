@@ -55,14 +55,19 @@ TEST_F(FidelityLevels, FunctionalCountsAreTheTraversalCounters) {
   EXPECT_EQ(r.rays, rays);
   EXPECT_DOUBLE_EQ(r.nodes_per_ray.value, double(nodes) / double(rays));
   EXPECT_FALSE(r.cycles.known) << "the functional level has no time";
-  EXPECT_FALSE(r.l1_hit_rate.known) << "nor caches";
+  EXPECT_TRUE(r.levels.empty()) << "nor caches";
 }
 
 TEST_F(FidelityLevels, CacheLevelHasMemoryFiguresAndARooflineTime) {
   AnalyticTime bounds;
-  FidelityResult r = run_cache_level(*config_, *image_, *stream_, &bounds);
-  EXPECT_GT(r.l1_hit_rate.value, 0.0);
-  EXPECT_LE(r.l1_hit_rate.value, 1.0);
+  CacheLevelTaps taps;
+  taps.bounds = &bounds;
+  FidelityResult r = run_cache_level(*config_, *image_, *stream_, taps);
+  ASSERT_EQ(r.levels.size(), 2u);
+  EXPECT_EQ(r.levels[0].name, "l1");
+  EXPECT_EQ(r.levels[1].name, "l2");
+  EXPECT_GT(r.first_level_hit_rate().value, 0.0);
+  EXPECT_LE(r.first_level_hit_rate().value, 1.0);
   EXPECT_GT(r.dram_bytes.value, 0.0) << "cold misses at least";
   EXPECT_GT(r.cycles.value, 0.0);
   double largest = 0;
@@ -72,8 +77,10 @@ TEST_F(FidelityLevels, CacheLevelHasMemoryFiguresAndARooflineTime) {
 }
 
 // The L2's references, in the order the walk sends them.
-struct RecordedOrder : L2ReferenceSink {
-  void reference(uint64_t addr, bool write) override { order.push_back(addr * 2 + write); }
+struct RecordedOrder : LevelReferenceSink {
+  void reference(uint32_t, uint64_t addr, LevelReference kind) override {
+    order.push_back(addr * 4 + uint64_t(kind));
+  }
   std::vector<uint64_t> order;
 };
 
@@ -83,7 +90,10 @@ TEST_F(FidelityLevels, CacheLevelStepsRaysInTheOrderOfTheirClocks) {
     c.dram_model = DramModel::Simple;
     c.dram.latency = dram_latency;
     RecordedOrder sink;
-    run_cache_level(c, *image_, *stream_, nullptr, &sink);
+    CacheLevelTaps taps;
+    taps.sink = &sink;
+    taps.tapped = 1;
+    run_cache_level(c, *image_, *stream_, taps);
     return sink.order;
   };
   std::vector<uint64_t> fast = order(10), slow = order(100000);
@@ -104,7 +114,8 @@ TEST_F(FidelityLevels, WindowsLandNearTheFullModel) {
   EXPECT_LT(s.simulated_rays, full.rays * 3 / 4) << "only the windows and warm-ups are simulated";
   EXPECT_GT(s.cycles.ci95, 0.0) << "an interval from the strata";
   EXPECT_NEAR(s.cycles.value / full.cycles.value, 1.0, 0.15) << "cycles within 15%";
-  EXPECT_NEAR(s.l1_hit_rate.value, full.l1_hit_rate.value, 0.05) << "L1 hit rate within 5 pp";
+  EXPECT_NEAR(s.first_level_hit_rate().value, full.first_level_hit_rate().value, 0.05)
+      << "L1 hit rate within 5 pp";
   EXPECT_NEAR(s.nodes_per_ray.value / full.nodes_per_ray.value, 1.0, 0.1);
   EXPECT_EQ(s.sample_method, "windows");
 }
@@ -164,7 +175,8 @@ TEST_F(FidelityLevels, ScaleModelLandsNearTheFullModel) {
   EXPECT_EQ(s.strata, (s.simulated_rays + warp - 1) / warp) << "one unit per warp";
   EXPECT_GT(s.cycles.ci95, 0.0);
   EXPECT_NEAR(s.cycles.value / full.cycles.value, 1.0, 0.03) << "cycles within 3%";
-  EXPECT_NEAR(s.l1_hit_rate.value, full.l1_hit_rate.value, 0.02) << "L1 hit rate within 2 pp";
+  EXPECT_NEAR(s.first_level_hit_rate().value, full.first_level_hit_rate().value, 0.02)
+      << "L1 hit rate within 2 pp";
   EXPECT_NEAR(s.nodes_per_ray.value / full.nodes_per_ray.value, 1.0, 0.02);
   // The scene fits the L2, so nearly every DRAM byte is a cold miss, paid once however many
   // warps run; scaling them by the rate would read about 4x.
@@ -194,7 +206,7 @@ TEST_F(FidelityLevels, WarmedScaleModelCountsTheCapacityMissesOfTheWholeMachine)
   FidelityResult p = run_level_in_child(plain, small, *image_, *stream_);
   FidelityResult w = run_level_in_child(warmed, small, *image_, *stream_);
   EXPECT_EQ(w.sample_method, "warmed");
-  EXPECT_NE(w.time_model.find("warming the L2"), std::string::npos) << w.time_model;
+  EXPECT_NE(w.time_model.find("warming memory.l2"), std::string::npos) << w.time_model;
   EXPECT_EQ(w.simulated_rays, p.simulated_rays) << "the same warps simulated";
   double p_error = p.dram_bytes.value / full.dram_bytes.value - 1;
   double w_error = w.dram_bytes.value / full.dram_bytes.value - 1;
@@ -202,9 +214,10 @@ TEST_F(FidelityLevels, WarmedScaleModelCountsTheCapacityMissesOfTheWholeMachine)
   EXPECT_NE(p.caveat.find("may read low"), std::string::npos) << "and says so: " << p.caveat;
   EXPECT_EQ(w.caveat, "") << "warmed, every unit's reads reach the L2";
   EXPECT_NEAR(w_error, 0.0, 0.03) << "warmed: DRAM bytes within 3% (measured -1.0%)";
-  EXPECT_NEAR(w.l2_hit_rate.value, full.l2_hit_rate.value, 0.005) << "warmed: within 0.5 pp";
-  EXPECT_GT(std::abs(p.l2_hit_rate.value - full.l2_hit_rate.value),
-            std::abs(w.l2_hit_rate.value - full.l2_hit_rate.value));
+  double w_l2 = w.last_level_hit_rate().value, p_l2 = p.last_level_hit_rate().value;
+  double full_l2 = full.last_level_hit_rate().value;
+  EXPECT_NEAR(w_l2, full_l2, 0.005) << "warmed: within 0.5 pp";
+  EXPECT_GT(std::abs(p_l2 - full_l2), std::abs(w_l2 - full_l2));
   EXPECT_NEAR(w.cycles.value / full.cycles.value, 1.0, 0.03) << "cycles within 3%";
 }
 
