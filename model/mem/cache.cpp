@@ -501,6 +501,11 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   if (next_ready != kPending) read_done(next, next_ready, below);
 }
 
+ReadOrigin Cache::origin(uint64_t miss) const {
+  const Waiter& w = misses_[miss].first;
+  return w.client ? w.client->origin(w.token) : ReadOrigin{};
+}
+
 void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charge) {
   Request& q = requests_[request];
   q.ready = std::max(q.ready, ready);

@@ -217,6 +217,10 @@ class Cache : public MemoryTarget, private ReadClient {
     void read_done(uint64_t request, Cycle ready, const ReadCharge& charge) override {
       cache.complete_part(uint32_t(request), ready, charge);
     }
+    ReadOrigin origin(uint64_t request) const override {
+      const Request& r = cache.requests_[request];
+      return r.client->origin(r.token);
+    }
     Cache& cache;
   };
   struct Caller {  // the read being served (client null: a prefetch, nobody waits); a read of
@@ -285,6 +289,8 @@ class Cache : public MemoryTarget, private ReadClient {
   Cycle issue(uint32_t miss, Cycle at, ReadCharge& below);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void prime_done(uint64_t miss) const override { __builtin_prefetch(&misses_[miss], 0, kHostL2); }
+  // The first waiter's origin (none for a prefetch's miss).
+  ReadOrigin origin(uint64_t miss) const override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
   uint32_t find(uint32_t set, uint64_t tag) const;  // the way holding tag, or kNone
   WaySearch find_way_ = way_search();

@@ -189,7 +189,8 @@ std::string RtSimulator::dump() const {
   }
   out << "shared levels: " << shared_->queued()
       << " requests, answers and DRAM accesses queued, next at cycle " << shared_->next_job()
-      << "\n";
+      << "\n"
+      << shared_->waiting();
   if (banked_dram_)
     out << "dram: " << banked_dram_->controller().queued() << " bursts queued, next decision "
         << banked_dram_->next_event() << ", taken at cycle " << banked_dram_->next_wake() << "\n";
