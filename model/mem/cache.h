@@ -135,6 +135,17 @@ class Cache : public MemoryTarget, private ReadClient {
   // read filled outside local memory: the fetches the client would have made from below.
   uint32_t warm(uint64_t addr, uint32_t bytes, Cycle at, bool write = false);
 
+  // A read waiting here for a block in flight: where it comes from (none: a prefetch's miss,
+  // which no read has joined), the block's address, whether its miss waits for an MSHR (else for
+  // the level below), and the cycle the miss could first go below.
+  struct WaitingRead {
+    ReadOrigin origin;
+    uint64_t addr;
+    bool for_mshr;
+    Cycle since;
+  };
+  // Every read waiting here, miss by miss, for the stall dump (slow: it walks every record).
+  std::vector<WaitingRead> waiting() const;
   // Whether the block holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
   // Keeps a set of every block referenced, to count cold (compulsory) misses; without it

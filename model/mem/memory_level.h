@@ -17,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace rtsim {
 
@@ -103,6 +104,15 @@ struct ReadOrigin {
   static constexpr uint64_t kUnknown = ~uint64_t(0);
   uint64_t unit = kUnknown, slot = kUnknown, ray = kUnknown;
 };
+
+// " for rt0 slot 3 ray 17", or " for no ray" (a prefetch, a shading read).
+inline std::string origin_text(const ReadOrigin& o) {
+  if (o.unit == ReadOrigin::kUnknown) return " for no ray";
+  std::string text = " for rt" + std::to_string(o.unit);
+  if (o.slot != ReadOrigin::kUnknown) text += " slot " + std::to_string(o.slot);
+  if (o.ray != ReadOrigin::kUnknown) text += " ray " + std::to_string(o.ray);
+  return text;
+}
 
 // Who waits for a read that did not complete at once.
 class ReadClient {

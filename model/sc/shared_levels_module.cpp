@@ -267,35 +267,40 @@ void SharedLevelsModule::request(uint32_t instance, uint32_t port, RequestKind k
                                  uint32_t bytes, Cycle at, Answer answer, ReadClient* client,
                                  uint64_t token, tlm::tlm_generic_payload* transaction) {
   Instance& inst = instances_[instance];
-  MemRequest r;
+  uint32_t id = take_slot(requests_, free_requests_);
+  MemRequest& r = requests_[id];
   r.addr = addr;
   r.bytes = bytes;
   r.kind = kind;
   r.answer = answer;
+  r.to_dram = false;
   r.instance = uint16_t(instance);
   r.port = port;
   r.slice = slice_of(inst, addr);
   r.client = client;
   r.token = token;
   r.transaction = transaction;
+  r.charge = {};
   Cycle sent = std::max(at, clock_.cycles(sim_now()));
-  bool data = kind != RequestKind::Read;  // a write or a fill carries its line
-  Cycle arrives =
-      inst.crossbar.to_slice(port, r.slice, sent, data ? bytes : Crossbar::kRequestBytes);
+  // It crosses to its slice when the calendar reaches the earliest cycle it can arrive, so that
+  // requesters running ahead book nothing shared (crossed at once where the crossbar is free).
+  Cycle earliest = inst.crossbar.earliest(sent);
   // During serve() a unit may send a miss that waited for an MSHR freed by a response, and a
   // level's miss becomes a request at the next level: dated at or after the job being served,
   // it joins the calendar in order. From outside, a request dated inside the window already
   // served breaks the requesters' promise.
-  if (!serving_ && arrives < served_until_)
+  if (!serving_ && earliest < served_until_) {
+    free_request(id);
     throw std::logic_error(std::string(name()) + ": a request dated cycle " +
-                           std::to_string(arrives) + " came after cycle " +
+                           std::to_string(earliest) + " came after cycle " +
                            std::to_string(served_until_) +
                            " was served: its requester breaks the lookahead of " +
                            std::to_string(lookahead_) + " cycles");
-  r.wait = RequestWait::Slice;
-  r.since = arrives;
+  }
+  r.wait = inst.crossbar.modelled() ? RequestWait::Crossbar : RequestWait::Slice;
+  r.since = inst.crossbar.modelled() ? sent : earliest;
   if (!inst.slices.empty()) inst.slices[r.slice]->prime(addr);
-  add_job({JobKind::Serve, new_request(r)}, arrives);
+  add_job({JobKind::Serve, id}, earliest);
 }
 
 tlm::tlm_sync_enum SharedLevelsModule::nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
@@ -357,14 +362,24 @@ void SharedLevelsModule::prime_next_job() const {
 void SharedLevelsModule::run_job(const Job& job, Cycle at) {
   uint32_t id = job.request;
   if (job.kind == JobKind::Reply) {
-    MemRequest r = requests_[id];
+    const MemRequest& r = requests_[id];
+    ReadClient* client = r.client;
+    uint64_t token = r.token;
+    ReadCharge charge = r.charge;
     free_request(id);  // the answer may add requests
-    return r.client->read_done(r.token, at, r.charge);
+    return client->read_done(token, at, charge);
   }
   if (requests_[id].to_dram) return access_dram(id, at);
   MemRequest& r = requests_[id];
   uint32_t instance = r.instance;
   Instance& inst = instances_[instance];
+  if (r.wait == RequestWait::Crossbar) {  // sent at r.since; a write or a fill carries its line
+    uint32_t bytes = r.kind == RequestKind::Read ? Crossbar::kRequestBytes : r.bytes;
+    Cycle arrives = inst.crossbar.to_slice(r.port, r.slice, r.since, bytes);
+    r.wait = RequestWait::Slice;
+    r.since = arrives;
+    if (arrives > at) return add_job(job, arrives);  // its links were busy
+  }
   uint64_t addr = r.addr;
   uint32_t bytes = r.bytes, slice = r.slice;
   switch (r.kind) {
@@ -388,18 +403,20 @@ void SharedLevelsModule::run_job(const Job& job, Cycle at) {
 }
 
 void SharedLevelsModule::access_dram(uint32_t id, Cycle at) {
-  MemRequest r = requests_[id];
+  MemRequest& r = requests_[id];
   if (r.kind == RequestKind::Write) {
     free_request(id);
     return memory_->write(r.addr, r.bytes, at);
   }
-  requests_[id].wait = RequestWait::Dram;
-  requests_[id].since = at;
+  r.wait = RequestWait::Dram;
+  r.since = at;
+  ReadClient* client = r.client;
+  uint64_t token = r.token;
   ReadCharge none;
   Cycle ready = memory_->read(r.addr, r.bytes, at, &dram_answers_, id, none);
   if (ready == kPending) return;
   free_request(id);
-  r.client->read_done(r.token, ready, {});
+  client->read_done(token, ready, {});
 }
 
 void SharedLevelsModule::below_read(uint32_t instance, uint64_t addr, uint32_t bytes, Cycle at,
@@ -576,11 +593,7 @@ std::string SharedLevelsModule::waiting(size_t shown) const {
     if (r.answer == Answer::Initiator) {
       out << " for TLM initiator " << r.port - inst.ports.size();
     } else if (r.client) {
-      ReadOrigin o = r.client->origin(r.token);
-      if (o.unit != ReadOrigin::kUnknown) out << " for rt" << o.unit;
-      if (o.slot != ReadOrigin::kUnknown) out << " slot " << o.slot;
-      if (o.ray != ReadOrigin::kUnknown) out << " ray " << o.ray;
-      if (o.unit == ReadOrigin::kUnknown) out << " for no ray (a prefetch or a shading read)";
+      out << origin_text(r.client->origin(r.token));
     }
     out << " waits for " << wait_name(r.wait) << " since cycle " << r.since << "\n";
   }

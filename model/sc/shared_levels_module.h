@@ -34,10 +34,14 @@
 // most lead + 1 cycles ahead, so an answer is never dated before a job already served; one dated
 // inside the window already served is served at once, with what it starts there, in cycle order.
 // A request crosses the crossbar to its slice (slice_of: a hash of the line address; a request
-// must not span lines, as a cache's blocks and line-by-line writes never do) when it arrives,
-// and is queued for the cycle it reaches the slice; its data crosses back when its cycle is
-// known. Crossbar links accept bookings in any order of their cycles, so neither direction
-// delays a request by one dated later.
+// must not span lines, as a cache's blocks and line-by-line writes never do) when the calendar
+// reaches the earliest cycle it could arrive (its send cycle and the crossbar's latency), not
+// when it is sent: so the crossbar, like everything shared, is booked in time order, and a
+// requester running ahead of simulated time changes nothing shared but the calendar. If its
+// links have room it is at its slice then and served at once; else it is queued again for the
+// cycle it reaches the slice. Its data crosses back when its cycle is known. Crossbar links
+// accept bookings in any order of their cycles, so neither direction delays a request by one
+// dated later.
 // An instance with no slices (a memory port: a hierarchy whose levels are all the units' own)
 // holds no cache: it orders its requesters' requests and sends them to DRAM.
 // One SC_METHOD, woken only at cycles that have requests or DRAM accesses to serve. With a

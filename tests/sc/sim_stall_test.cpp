@@ -122,8 +122,9 @@ struct SilentMemory : sc_core::sc_module {
 
 // A DRAM that never answers stalls the run; the dump names each request waiting in the shared
 // levels: where it is, the unit, slot and ray it is for, what it waits for and since when
-// (oldest first). Every ray reads the root node first: the two units' first rays missed its two
-// lines in their L1s, the others merged there; rt1's misses merged into rt0's at the L2.
+// (oldest first), and each read waiting in a unit's own level. Every ray reads the root node
+// first: the two units' first rays missed its two lines in their L1s, the others merged there;
+// rt1's misses merged into rt0's at the L2.
 TEST(SimStall, TheStallDumpNamesEveryWaitingRequest) {
   test::SimScene s;
   std::vector<Ray> rays = test::mixed_rays(s.scene, 200, 1);
@@ -164,6 +165,18 @@ TEST(SimStall, TheStallDumpNamesEveryWaitingRequest) {
       << report;
   EXPECT_NE(report.find("| at most 4:\n" + first4 + "  (2 more requests)\n"), std::string::npos)
       << report;
+  // In rt0's L1, all 16 rays wait for the two lines' misses: ray 0's, which the others joined.
+  const std::string l1 = "  rt0.l1: read of 0x10000000 for rt0 slot ";
+  EXPECT_NE(report.find(l1 + "0 ray 0 waits for the level below since cycle 16\n" + l1 +
+                        "1 ray 1 waits for the level below since cycle 16\n"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("  rt0.l1: read of 0x10000000 for rt0 slot 15 ray 15 waits for the level "
+                        "below since cycle 16\n  rt0.l1: read of 0x10000040 for rt0 slot 0 ray 0 "
+                        "waits for the level below since cycle 16\n"),
+            std::string::npos)
+      << report;
+  EXPECT_NE(report.find("  (12 more reads)\nrt1: "), std::string::npos) << "20 of 32 shown";
 }
 
 // Takes the simulator's state dump when the first ray retires (rt0's), with the machine full.
