@@ -501,6 +501,34 @@ void Cache::read_done(uint64_t token, Cycle ready, const ReadCharge& charge) {
   if (next_ready != kPending) read_done(next, next_ready, below);
 }
 
+std::vector<Cache::WaitingRead> Cache::waiting() const {
+  std::vector<bool> free(misses_.size(), false), for_mshr(misses_.size(), false);
+  for (uint32_t id : free_misses_) free[id] = true;
+  for (uint32_t id = waiting_first_; id != kNone; id = misses_[id].next_waiting)
+    for_mshr[id] = true;
+  std::vector<WaitingRead> reads;
+  for (uint32_t id = 0; id < misses_.size(); ++id) {
+    if (free[id]) continue;
+    const Miss& m = misses_[id];
+    WaitingRead read{{}, m.block << block_shift_, for_mshr[id], m.send};
+    if (!m.first.client) {
+      reads.push_back(read);
+      continue;
+    }
+    for (const Waiter* w = &m.first;; w = &waiters_[w->next]) {
+      read.origin = w->client->origin(w->token);
+      reads.push_back(read);
+      if (w->next == kNone) break;
+    }
+  }
+  return reads;
+}
+
+ReadOrigin Cache::origin(uint64_t miss) const {
+  const Waiter& w = misses_[miss].first;
+  return w.client ? w.client->origin(w.token) : ReadOrigin{};
+}
+
 void Cache::complete_part(uint32_t request, Cycle ready, const ReadCharge& charge) {
   Request& q = requests_[request];
   q.ready = std::max(q.ready, ready);

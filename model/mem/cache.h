@@ -135,6 +135,17 @@ class Cache : public MemoryTarget, private ReadClient {
   // read filled outside local memory: the fetches the client would have made from below.
   uint32_t warm(uint64_t addr, uint32_t bytes, Cycle at, bool write = false);
 
+  // A read waiting here for a block in flight: where it comes from (none: a prefetch's miss,
+  // which no read has joined), the block's address, whether its miss waits for an MSHR (else for
+  // the level below), and the cycle the miss could first go below.
+  struct WaitingRead {
+    ReadOrigin origin;
+    uint64_t addr;
+    bool for_mshr;
+    Cycle since;
+  };
+  // Every read waiting here, miss by miss, for the stall dump (slow: it walks every record).
+  std::vector<WaitingRead> waiting() const;
   // Whether the block holding addr is present (in flight counts); changes nothing.
   bool contains(uint64_t addr) const;
   // Keeps a set of every block referenced, to count cold (compulsory) misses; without it
@@ -217,6 +228,10 @@ class Cache : public MemoryTarget, private ReadClient {
     void read_done(uint64_t request, Cycle ready, const ReadCharge& charge) override {
       cache.complete_part(uint32_t(request), ready, charge);
     }
+    ReadOrigin origin(uint64_t request) const override {
+      const Request& r = cache.requests_[request];
+      return r.client->origin(r.token);
+    }
     Cache& cache;
   };
   struct Caller {  // the read being served (client null: a prefetch, nobody waits); a read of
@@ -285,6 +300,8 @@ class Cache : public MemoryTarget, private ReadClient {
   Cycle issue(uint32_t miss, Cycle at, ReadCharge& below);
   void read_done(uint64_t miss, Cycle ready, const ReadCharge& charge) override;
   void prime_done(uint64_t miss) const override { __builtin_prefetch(&misses_[miss], 0, kHostL2); }
+  // The first waiter's origin (none for a prefetch's miss).
+  ReadOrigin origin(uint64_t miss) const override;
   void complete_part(uint32_t request, Cycle ready, const ReadCharge& charge);
   uint32_t find(uint32_t set, uint64_t tag) const;  // the way holding tag, or kNone
   WaySearch find_way_ = way_search();

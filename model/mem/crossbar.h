@@ -101,6 +101,8 @@ class Crossbar {
   Cycle to_slice(uint32_t unit, uint32_t slice, Cycle at, uint32_t bytes) {
     return modelled_ ? cross(unit_up_[unit], slice_in_[slice], at, bytes) : at;
   }
+  // The earliest cycle a transfer from cycle `at` can arrive (with links that have room).
+  Cycle earliest(Cycle at) const { return modelled_ ? at + config_.latency : at; }
   Cycle to_unit(uint32_t slice, uint32_t unit, Cycle at, uint32_t bytes) {
     return modelled_ ? cross(slice_out_[slice], unit_down_[unit], at, bytes) : at;
   }

@@ -39,10 +39,10 @@ struct DramStats {
   Cycle last_ready = 0;               // cycle the last transfer's data was ready
 };
 
-class Dram : public MemoryLevel {
+class Dram {
  public:
   explicit Dram(const DramConfig& config);  // throws std::invalid_argument if impossible
-  Cycle read(uint64_t addr, uint32_t bytes, Cycle now) override;
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle now);  // the data's ready cycle
   void write(uint64_t addr, uint32_t bytes, Cycle now);
   const DramStats& stats() const { return stats_; }
   const DramConfig& config() const { return config_; }

@@ -7,14 +7,17 @@
 // them in non-decreasing `at` (an RT unit in its local time; the shared L2's module in
 // simulated-time order, model/sc/shared_levels_module.h), and a request dated earlier is never
 // delayed by one dated later. Writes are posted: nobody waits for them.
-//
-// MemoryLevel is the synchronous form of the last level (DRAM): read returns the ready cycle.
-// Calls must arrive in non-decreasing `now`; the shared L2's module guarantees it.
+// It is the one interface below a cache: a unit's next own level, the shared levels' crossbar
+// (model/sc/tlm_memory.h), the next shared level's instance, and every DRAM below the last level
+// are MemoryTargets: the simple DRAM (DramTarget, model/mem/dram.h), the banked DRAM by call
+// (model/sc/banked_dram_module.h), and the TLM-2.0 `out` socket of the shared levels in its
+// loosely- or approximately-timed protocol (model/sc/shared_levels_module.h).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace rtsim {
 
@@ -95,6 +98,22 @@ using ReadCharge = LevelCounts<uint16_t, uint32_t>;  // one read
 using RayReads = LevelCounts<uint32_t, uint64_t>;    // one ray's reads
 using ReadCounts = LevelCounts<uint64_t, uint64_t>;  // sums
 
+// Where a read comes from, for the stall dump: the RT unit, its ray slot and the ray (its
+// sequence number in the stream). kUnknown where a field does not apply (a prefetch has no ray).
+struct ReadOrigin {
+  static constexpr uint64_t kUnknown = ~uint64_t(0);
+  uint64_t unit = kUnknown, slot = kUnknown, ray = kUnknown;
+};
+
+// " for rt0 slot 3 ray 17", or " for no ray" (a prefetch, a shading read).
+inline std::string origin_text(const ReadOrigin& o) {
+  if (o.unit == ReadOrigin::kUnknown) return " for no ray";
+  std::string text = " for rt" + std::to_string(o.unit);
+  if (o.slot != ReadOrigin::kUnknown) text += " slot " + std::to_string(o.slot);
+  if (o.ray != ReadOrigin::kUnknown) text += " ray " + std::to_string(o.ray);
+  return text;
+}
+
 // Who waits for a read that did not complete at once.
 class ReadClient {
  public:
@@ -105,6 +124,12 @@ class ReadClient {
   // A hint that read_done(token, ...) comes soon: the client may ask the host's memory (kHostL2)
   // for what answering it touches. Changes nothing modelled.
   virtual void prime_done(uint64_t token) const { (void)token; }
+  // Where the read made with `token` comes from (a level passes the question to its own
+  // requester). For the stall dump only: slow is fine.
+  virtual ReadOrigin origin(uint64_t token) const {
+    (void)token;
+    return {};
+  }
 };
 
 class MemoryTarget {
@@ -122,23 +147,6 @@ class MemoryTarget {
   virtual void prefetch(uint64_t addr, uint32_t bytes, Cycle at) {
     (void)addr, (void)bytes, (void)at;
   }
-};
-
-// A memory that holds a queue and answers reads later (the banked DRAM below the shared L2):
-// requests come in non-decreasing `at`; a read's data cycle is reported through
-// read_done(token, ready, {}) of the one client given to answer_to (before the first read),
-// never during the request call. Writes are posted.
-class QueuedMemory {
- public:
-  virtual ~QueuedMemory() = default;
-  virtual void answer_to(ReadClient& client) = 0;
-  virtual void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, uint64_t token) = 0;
-};
-
-class MemoryLevel {
- public:
-  virtual ~MemoryLevel() = default;
-  virtual Cycle read(uint64_t addr, uint32_t bytes, Cycle now) = 0;
 };
 
 }  // namespace rtsim

@@ -1,6 +1,8 @@
 #include "model/sc/banked_dram_module.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace rtsim {
 
@@ -34,17 +36,29 @@ tlm::tlm_sync_enum BankedDramModule::nb_transport_fw(tlm::tlm_generic_payload& t
     return tlm::TLM_COMPLETED;
   }
   Cycle at = clock_.cycles(sim_now() + delay);
-  Cycle next = controller_.enqueue(reinterpret_cast<uint64_t>(&trans), trans.get_address(),
-                                   trans.get_data_length(), write, at);
+  enqueue(reinterpret_cast<uint64_t>(&trans), trans.get_address(), trans.get_data_length(), write,
+          at);
   trans.set_response_status(tlm::TLM_OK_RESPONSE);
-  if (!deciding_) arm_at(next);
   if (write) return tlm::TLM_COMPLETED;
   phase = tlm::END_REQ;
   return tlm::TLM_UPDATED;
 }
 
-void BankedDramModule::request(uint64_t addr, uint32_t bytes, bool write, Cycle at,
-                               uint64_t token) {
+Cycle BankedDramModule::read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
+                             uint64_t token, ReadCharge&) {
+  if (client_ && client_ != client)
+    throw std::logic_error(std::string(name()) + ": reads by call from a second requester");
+  client_ = client;
+  enqueue(token, addr, bytes, false, at);
+  return kPending;
+}
+
+void BankedDramModule::write(uint64_t addr, uint32_t bytes, Cycle at) {
+  enqueue(0, addr, bytes, true, at);
+}
+
+void BankedDramModule::enqueue(uint64_t token, uint64_t addr, uint32_t bytes, bool write,
+                               Cycle at) {
   Cycle next = controller_.enqueue(token, addr, bytes, write, at);
   if (!deciding_) arm_at(next);
 }

@@ -1,9 +1,9 @@
-// The banked DRAM (model/mem/dram_controller.h) below the shared L2: connected by call
-// (QueuedMemory: the L2's fast path, SharedLevelsModule::connect_memory), or as a TLM-2.0 target
+// The banked DRAM (model/mem/dram_controller.h) below the shared levels: connected by call (a
+// MemoryTarget: the fast path, SharedLevelsModule::connect_memory), or as a TLM-2.0 target
 // speaking the approximately-timed base protocol, bound where the simple DRAM's loosely-timed
 // target binds.
-// By call, a request is queued at once and a read's data cycle reported to its client when the
-// controller has scheduled it, under the timing rules below.
+// By call, a request is queued at once; a read returns kPending and its data cycle is reported
+// to its client's read_done when the controller has scheduled it, under the timing rules below.
 // Protocol. A read or write comes as BEGIN_REQ through nb_transport_fw, dated by its delay;
 // the target queues it and answers END_REQ at once (TLM_UPDATED; its queues back-pressure
 // inside, so END_REQ is never held back). A write is then complete (posted; TLM_COMPLETED). A
@@ -31,7 +31,7 @@
 
 namespace rtsim {
 
-class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
+class BankedDramModule : public sc_core::sc_module, public MemoryTarget {
  public:
   tlm_utils::simple_target_socket_optional<BankedDramModule> in;  // unbound: used by call
 
@@ -54,9 +54,12 @@ class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
   Cycle next_wake() const {
     return armed_ == kPending ? kPending : std::max(armed_, clock_.cycles(sim_now()));
   }
-  // By call (QueuedMemory); a module takes its requests by call or through `in`, not both.
-  void answer_to(ReadClient& client) override { client_ = &client; }
-  void request(uint64_t addr, uint32_t bytes, bool write, Cycle at, uint64_t token) override;
+  // By call (MemoryTarget), in non-decreasing `at`; a module takes its requests by call or
+  // through `in`, not both, and by call from one requester: every read names the same client.
+  // Throws std::logic_error for a second client.
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client, uint64_t token,
+             ReadCharge& charge) override;
+  void write(uint64_t addr, uint32_t bytes, Cycle at) override;
 
  private:
   tlm::tlm_sync_enum nb_transport_fw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
@@ -75,6 +78,8 @@ class BankedDramModule : public sc_core::sc_module, public QueuedMemory {
   Cycle armed_ = kPending;  // the cycle wake_ is notified for
   bool deciding_ = false;   // in decide()
   std::vector<DramReadDone> done_;
+  void enqueue(uint64_t token, uint64_t addr, uint32_t bytes, bool write, Cycle at);
+
   ReadClient* client_ = nullptr;  // by call: whom reads answer (null: through `in`)
 };
 

@@ -191,13 +191,25 @@ std::string RtSimulator::dump() const {
       << " in flight, stream " << (d.exhausted() ? "exhausted" : "has rays") << "\n";
   if (treelets_) out << treelets_->dump();
   if (sorter_) out << sorter_->dump();
+  const size_t shown = 20;
   for (const auto& unit : units_) {
     out << unit->core().dump();
     if (unit->shader()) out << unit->shader()->dump();
+    const UnitMemory& memory = unit->memory;
+    for (uint32_t k = 0; k < memory.levels(); ++k) {
+      std::vector<Cache::WaitingRead> reads = memory.level(k).waiting();
+      for (size_t i = 0; i < std::min(shown, reads.size()); ++i)
+        out << "  " << unit->name() << "." << shared_->levels()[k].name << ": read of 0x"
+            << std::hex << reads[i].addr << std::dec << origin_text(reads[i].origin)
+            << " waits for " << (reads[i].for_mshr ? "an MSHR" : "the level below")
+            << " since cycle " << reads[i].since << "\n";
+      if (reads.size() > shown) out << "  (" << reads.size() - shown << " more reads)\n";
+    }
   }
   out << "shared levels: " << shared_->queued()
       << " requests, answers and DRAM accesses queued, next at cycle " << shared_->next_job()
-      << "\n";
+      << "\n"
+      << shared_->waiting(shown);
   if (banked_dram_)
     out << "dram: " << banked_dram_->controller().queued() << " bursts queued, next decision "
         << banked_dram_->next_event() << ", taken at cycle " << banked_dram_->next_wake() << "\n";

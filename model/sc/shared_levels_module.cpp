@@ -1,6 +1,7 @@
 #include "model/sc/shared_levels_module.h"
 
 #include <algorithm>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -43,15 +44,38 @@ class SharedLevelsModule::Below : public MemoryTarget {
     return kPending;
   }
   void write(uint64_t addr, uint32_t bytes, Cycle at) override {
-    module_.below_write(instance_, JobKind::Write, addr, bytes, at);
+    module_.below_write(instance_, RequestKind::Write, addr, bytes, at);
   }
   void fill(uint64_t addr, uint32_t bytes, Cycle at) override {
-    module_.below_write(instance_, JobKind::Fill, addr, bytes, at);
+    module_.below_write(instance_, RequestKind::Fill, addr, bytes, at);
   }
 
  private:
   SharedLevelsModule& module_;
   uint32_t instance_;
+};
+
+// `out` as the memory below the last level: loosely timed (b_transport: a read's data cycle at
+// once) or, after use_timed_memory, approximately timed (a read's answer comes through
+// nb_transport_bw, or at once when the target completes it in the call; either way it is queued
+// as the read's Reply job, so the module's answer never runs inside the read call).
+class SharedLevelsModule::OutPort : public MemoryTarget {
+ public:
+  explicit OutPort(SharedLevelsModule& module) : module_(module) {}
+  Cycle read(uint64_t addr, uint32_t bytes, Cycle at, ReadClient*, uint64_t request,
+             ReadCharge&) override {
+    if (!timed) return module_.send_below(tlm::TLM_READ_COMMAND, addr, bytes, at);
+    module_.send_timed(false, addr, bytes, at, request);
+    return kPending;
+  }
+  void write(uint64_t addr, uint32_t bytes, Cycle at) override {
+    if (timed) return module_.send_timed(true, addr, bytes, at, 0);
+    module_.send_below(tlm::TLM_WRITE_COMMAND, addr, bytes, at);
+  }
+  bool timed = false;
+
+ private:
+  SharedLevelsModule& module_;
 };
 
 CacheStats SharedLevelsModule::Instance::stats() const {
@@ -70,6 +94,8 @@ SharedLevelsModule::SharedLevelsModule(sc_core::sc_module_name name,
       levels_(levels),
       units_(units),
       clock_(clock),
+      out_port_(std::make_unique<OutPort>(*this)),
+      memory_(out_port_.get()),
       on_error_(std::move(on_error)) {
   first_queued_ = own_levels(levels_);
   uint32_t link = first_queued_ > 0 ? levels_[first_queued_ - 1].link.latency : 0;
@@ -88,6 +114,8 @@ SharedLevelsModule::SharedLevelsModule(sc_core::sc_module_name name, const Cache
                                        std::function<void(std::exception_ptr)> on_error)
     : SharedLevelsModule(name, one_shared_level(config, layout), 1, clock, lookahead,
                          std::move(on_error)) {}
+
+SharedLevelsModule::~SharedLevelsModule() = default;
 
 void SharedLevelsModule::add_instances(uint32_t units) {
   // The first instance of each level this module holds, in level order; a memory port alone
@@ -148,7 +176,7 @@ void SharedLevelsModule::add_instances(uint32_t units) {
 }
 
 void SharedLevelsModule::end_of_elaboration() {
-  if (!memory_ && out.size() == 0)
+  if (memory_ == out_port_.get() && out.size() == 0)
     throw std::logic_error(std::string(name()) + ": no memory below (bind out or connect one)");
 }
 
@@ -216,14 +244,13 @@ void SharedLevelsModule::share_first_references(uint32_t level, double own_share
 }
 
 void SharedLevelsModule::use_timed_memory(uint32_t lead) {
-  timed_below_ = true;
+  out_port_->timed = true;
   window_ = std::min(lead + 1, lookahead_);
 }
 
-void SharedLevelsModule::connect_memory(QueuedMemory& memory, uint32_t lead) {
+void SharedLevelsModule::connect_memory(MemoryTarget& memory, uint32_t lead) {
   memory_ = &memory;
-  memory.answer_to(dram_answers_);
-  use_timed_memory(lead);
+  window_ = std::min(lead + 1, lookahead_);
 }
 
 void SharedLevelsModule::add_job(const Job& job, Cycle at) {
@@ -233,34 +260,50 @@ void SharedLevelsModule::add_job(const Job& job, Cycle at) {
   wake_.notify(clock_.delay_to(at));
 }
 
-void SharedLevelsModule::request(uint32_t instance, uint32_t port, JobKind kind, uint64_t addr,
-                                 uint32_t bytes, Cycle at, ReadClient* client, uint64_t token) {
+uint32_t SharedLevelsModule::new_request(const MemRequest& r) {
+  uint32_t id = take_slot(requests_, free_requests_);
+  requests_[id] = r;
+  return id;
+}
+
+void SharedLevelsModule::request(uint32_t instance, uint32_t port, RequestKind kind, uint64_t addr,
+                                 uint32_t bytes, Cycle at, Answer answer, ReadClient* client,
+                                 uint64_t token, tlm::tlm_generic_payload* transaction) {
   Instance& inst = instances_[instance];
-  Job job;
-  job.kind = kind;
-  job.instance = uint16_t(instance);
-  job.port = port;
-  job.slice = slice_of(inst, addr);
-  job.addr = addr;
-  job.bytes = bytes;
-  job.client = client;
-  job.token = token;
+  uint32_t id = take_slot(requests_, free_requests_);
+  MemRequest& r = requests_[id];
+  r.addr = addr;
+  r.bytes = bytes;
+  r.kind = kind;
+  r.answer = answer;
+  r.to_dram = false;
+  r.instance = uint16_t(instance);
+  r.port = port;
+  r.slice = slice_of(inst, addr);
+  r.client = client;
+  r.token = token;
+  r.transaction = transaction;
+  r.charge = {};
   Cycle sent = std::max(at, clock_.cycles(sim_now()));
-  bool data = kind != JobKind::Read;  // a write or a fill carries its line
-  Cycle arrives =
-      inst.crossbar.to_slice(port, job.slice, sent, data ? bytes : Crossbar::kRequestBytes);
+  // It crosses to its slice when the calendar reaches the earliest cycle it can arrive, so that
+  // requesters running ahead book nothing shared (crossed at once where the crossbar is free).
+  Cycle earliest = inst.crossbar.earliest(sent);
   // During serve() a unit may send a miss that waited for an MSHR freed by a response, and a
   // level's miss becomes a request at the next level: dated at or after the job being served,
   // it joins the calendar in order. From outside, a request dated inside the window already
   // served breaks the requesters' promise.
-  if (!serving_ && arrives < served_until_)
+  if (!serving_ && earliest < served_until_) {
+    free_request(id);
     throw std::logic_error(std::string(name()) + ": a request dated cycle " +
-                           std::to_string(arrives) + " came after cycle " +
+                           std::to_string(earliest) + " came after cycle " +
                            std::to_string(served_until_) +
                            " was served: its requester breaks the lookahead of " +
                            std::to_string(lookahead_) + " cycles");
-  if (!inst.slices.empty()) inst.slices[job.slice]->prime(addr);
-  add_job(job, arrives);
+  }
+  r.wait = inst.crossbar.modelled() ? RequestWait::Crossbar : RequestWait::Slice;
+  r.since = inst.crossbar.modelled() ? sent : earliest;
+  if (!inst.slices.empty()) inst.slices[r.slice]->prime(addr);
+  add_job({JobKind::Serve, id}, earliest);
 }
 
 tlm::tlm_sync_enum SharedLevelsModule::nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
@@ -272,9 +315,10 @@ tlm::tlm_sync_enum SharedLevelsModule::nb_transport_fw(int port, tlm::tlm_generi
     trans.set_response_status(tlm::TLM_COMMAND_ERROR_RESPONSE);
     return tlm::TLM_COMPLETED;
   }
-  request(0, uint32_t(instances_[0].ports.size() + port), write ? JobKind::Write : JobKind::Read,
-          trans.get_address(), trans.get_data_length(), clock_.cycles(sim_now() + delay), nullptr,
-          reinterpret_cast<uint64_t>(&trans));
+  request(0, uint32_t(instances_[0].ports.size() + port),
+          write ? RequestKind::Write : RequestKind::Read, trans.get_address(),
+          trans.get_data_length(), clock_.cycles(sim_now() + delay), Answer::Initiator, nullptr, 0,
+          &trans);
   if (write) {
     trans.set_response_status(tlm::TLM_OK_RESPONSE);
     return tlm::TLM_COMPLETED;
@@ -313,112 +357,145 @@ void SharedLevelsModule::serve_window() {
 void SharedLevelsModule::prime_next_job() const {
   Job next;
   if (!events_.peek(next)) return;
-  bool answers = next.kind == JobKind::Read || next.kind == JobKind::DramDone;
-  if (answers && next.client) next.client->prime_done(next.token);
-  if (next.kind == JobKind::LevelDone) {
-    const BelowRead& r = below_reads_[next.token];
-    r.client->prime_done(r.token);
-  }
+  const MemRequest& r = requests_[next.request];
+  bool answers = next.kind == JobKind::Reply || (r.kind == RequestKind::Read && !r.to_dram);
+  if (answers && r.client) r.client->prime_done(r.token);
 }
 
 void SharedLevelsModule::run_job(const Job& job, Cycle at) {
-  Instance& inst = instances_[job.instance];
-  switch (job.kind) {
-    case JobKind::Read: {
-      // The slice (or the memory below a memory port) reports a miss's data later (never during
-      // the read) under the id of the record it then takes (nothing takes one during the read).
-      uint32_t id = next_slot(missed_, free_missed_);
-      ReadCharge charge;
-      if (inst.slices.empty()) {
-        missed_[take_slot(missed_, free_missed_)] = {job, charge};
-        return below_read(job.instance, job.addr, job.bytes, at, this, id);
-      }
-      Cycle ready = inst.slices[job.slice]->read(job.addr, job.bytes, at, this, id, charge);
-      if (ready != kPending) return respond(job, ready, charge);
-      missed_[take_slot(missed_, free_missed_)] = {job, charge};
-      return;
-    }
-    case JobKind::Write:
-      if (inst.slices.empty()) return below_write(job.instance, job.kind, job.addr, job.bytes, at);
-      return inst.slices[job.slice]->write(job.addr, job.bytes, at);
-    case JobKind::Fill: return inst.slices[job.slice]->fill(job.addr, job.bytes, at);
-    case JobKind::DramRead: {
-      if (memory_) {
-        uint32_t read = take_slot(below_reads_, free_below_reads_);
-        below_reads_[read] = {job.client, job.token, {}};
-        return memory_->request(job.addr, job.bytes, false, at, read);
-      }
-      if (timed_below_) return send_timed(job, at);
-      Cycle ready = send_below(tlm::TLM_READ_COMMAND, job.addr, job.bytes, at);
-      return job.client->read_done(job.token, ready, {});
-    }
-    case JobKind::DramWrite:
-      if (memory_) return memory_->request(job.addr, job.bytes, true, at, 0);
-      if (timed_below_) return send_timed(job, at);
-      send_below(tlm::TLM_WRITE_COMMAND, job.addr, job.bytes, at);
-      return;
-    case JobKind::DramDone: return job.client->read_done(job.token, at, {});
-    case JobKind::LevelDone: {
-      BelowRead r = below_reads_[job.token];
-      free_below_reads_.push_back(uint32_t(job.token));  // the answer may add jobs
-      return r.client->read_done(r.token, at, r.charge);
-    }
+  uint32_t id = job.request;
+  if (job.kind == JobKind::Reply) {
+    const MemRequest& r = requests_[id];
+    ReadClient* client = r.client;
+    uint64_t token = r.token;
+    ReadCharge charge = r.charge;
+    free_request(id);  // the answer may add requests
+    return client->read_done(token, at, charge);
   }
+  if (requests_[id].to_dram) return access_dram(id, at);
+  MemRequest& r = requests_[id];
+  uint32_t instance = r.instance;
+  Instance& inst = instances_[instance];
+  if (r.wait == RequestWait::Crossbar) {  // sent at r.since; a write or a fill carries its line
+    uint32_t bytes = r.kind == RequestKind::Read ? Crossbar::kRequestBytes : r.bytes;
+    Cycle arrives = inst.crossbar.to_slice(r.port, r.slice, r.since, bytes);
+    r.wait = RequestWait::Slice;
+    r.since = arrives;
+    if (arrives > at) return add_job(job, arrives);  // its links were busy
+  }
+  uint64_t addr = r.addr;
+  uint32_t bytes = r.bytes, slice = r.slice;
+  switch (r.kind) {
+    case RequestKind::Read: {
+      // A miss is reported later (never during the read) to read_done under the record's id.
+      r.wait = RequestWait::Below;
+      r.since = at;
+      if (inst.slices.empty()) return below_read(instance, addr, bytes, at, this, id);
+      ReadCharge charge;
+      Cycle ready = inst.slices[slice]->read(addr, bytes, at, this, id, charge);
+      if (ready != kPending) return respond(id, ready, charge);
+      requests_[id].charge = charge;  // the read may have added records: r may have moved
+      return;
+    }
+    case RequestKind::Write:
+      free_request(id);
+      if (inst.slices.empty()) return below_write(instance, RequestKind::Write, addr, bytes, at);
+      return inst.slices[slice]->write(addr, bytes, at);
+    case RequestKind::Fill: free_request(id); return inst.slices[slice]->fill(addr, bytes, at);
+  }
+}
+
+void SharedLevelsModule::access_dram(uint32_t id, Cycle at) {
+  MemRequest& r = requests_[id];
+  if (r.kind == RequestKind::Write) {
+    free_request(id);
+    return memory_->write(r.addr, r.bytes, at);
+  }
+  r.wait = RequestWait::Dram;
+  r.since = at;
+  ReadClient* client = r.client;
+  uint64_t token = r.token;
+  ReadCharge none;
+  Cycle ready = memory_->read(r.addr, r.bytes, at, &dram_answers_, id, none);
+  if (ready == kPending) return;
+  free_request(id);
+  client->read_done(token, ready, {});
 }
 
 void SharedLevelsModule::below_read(uint32_t instance, uint64_t addr, uint32_t bytes, Cycle at,
                                     ReadClient* client, uint64_t token) {
   const Instance& inst = instances_[instance];
-  if (inst.below == kNoInstance) {
-    Job job;
-    job.kind = JobKind::DramRead;
-    job.instance = uint16_t(instance);
-    job.addr = addr;
-    job.bytes = bytes;
-    job.client = client;
-    job.token = token;
-    return add_job(job, at);
-  }
-  uint32_t read = take_slot(below_reads_, free_below_reads_);
-  below_reads_[read] = {client, token, {}};
-  request(inst.below, inst.below_port, JobKind::Read, addr, bytes, at, &level_answers_, read);
+  if (inst.below != kNoInstance)
+    return request(inst.below, inst.below_port, RequestKind::Read, addr, bytes, at, Answer::Level,
+                   client, token);
+  MemRequest r;
+  r.addr = addr;
+  r.bytes = bytes;
+  r.answer = Answer::Level;
+  r.to_dram = true;
+  r.instance = uint16_t(instance);
+  r.client = client;
+  r.token = token;
+  r.wait = RequestWait::Dram;
+  r.since = at;
+  add_job({JobKind::Serve, new_request(r)}, at);
 }
 
-void SharedLevelsModule::below_write(uint32_t instance, JobKind kind, uint64_t addr, uint32_t bytes,
-                                     Cycle at) {
+void SharedLevelsModule::below_write(uint32_t instance, RequestKind kind, uint64_t addr,
+                                     uint32_t bytes, Cycle at) {
   const Instance& inst = instances_[instance];
   if (inst.below != kNoInstance)
-    return request(inst.below, inst.below_port, kind, addr, bytes, at, nullptr, 0);
-  if (kind == JobKind::Fill)
+    return request(inst.below, inst.below_port, kind, addr, bytes, at, Answer::Unit, nullptr, 0);
+  if (kind == RequestKind::Fill)
     throw std::logic_error(std::string(name()) + ": a victim fill has no level to go to");
-  Job job;
-  job.kind = JobKind::DramWrite;
-  job.instance = uint16_t(instance);
-  job.addr = addr;
-  job.bytes = bytes;
-  add_job(job, at);
+  MemRequest r;
+  r.addr = addr;
+  r.bytes = bytes;
+  r.kind = RequestKind::Write;
+  r.to_dram = true;
+  r.instance = uint16_t(instance);
+  r.wait = RequestWait::Dram;
+  r.since = at;
+  add_job({JobKind::Serve, new_request(r)}, at);
 }
 
-void SharedLevelsModule::read_done(uint64_t missed, Cycle ready, const ReadCharge& charge) {
-  MissedRead m = missed_[missed];
-  free_missed_.push_back(uint32_t(missed));  // the answer may add jobs
-  m.charge += charge;
-  respond(m.job, ready, m.charge);
+void SharedLevelsModule::read_done(uint64_t request, Cycle ready, const ReadCharge& charge) {
+  ReadCharge total = requests_[request].charge;
+  total += charge;
+  respond(uint32_t(request), ready, total);
 }
 
-inline void SharedLevelsModule::respond(const Job& job, Cycle ready, const ReadCharge& charge) {
-  Instance& inst = instances_[job.instance];
-  Cycle arrived = inst.crossbar.to_unit(job.slice, job.port, ready, job.bytes);
-  if (job.port < inst.ports.size()) {
-    job.client->read_done(job.token, arrived, charge);
-    if (inst.ports[job.port]) inst.ports[job.port]();
-    return;
+ReadOrigin SharedLevelsModule::origin(uint64_t request) const {
+  const MemRequest& r = requests_[request];
+  return r.client ? r.client->origin(r.token) : ReadOrigin{};
+}
+
+inline void SharedLevelsModule::respond(uint32_t id, Cycle ready, const ReadCharge& charge) {
+  MemRequest& r = requests_[id];
+  Instance& inst = instances_[r.instance];
+  Cycle arrived = inst.crossbar.to_unit(r.slice, r.port, ready, r.bytes);
+  switch (r.answer) {
+    case Answer::Unit: {
+      ReadClient* client = r.client;
+      uint64_t token = r.token;
+      uint32_t port = r.port;
+      free_request(id);  // the answer may add requests
+      client->read_done(token, arrived, charge);
+      inst.ports[port]();
+      return;
+    }
+    case Answer::Level: r.charge = charge; return reply_at(id, arrived);
+    case Answer::Initiator: {
+      tlm::tlm_generic_payload& trans = *r.transaction;
+      int socket = int(r.port - inst.ports.size());
+      free_request(id);
+      trans.set_response_status(tlm::TLM_OK_RESPONSE);
+      tlm::tlm_phase phase = tlm::BEGIN_RESP;
+      sc_core::sc_time delay = clock_.time(arrived) - stamp_;  // serve() runs at stamp_
+      in[socket]->nb_transport_bw(trans, phase, delay);
+      return;
+    }
   }
-  auto& trans = *reinterpret_cast<tlm::tlm_generic_payload*>(job.token);
-  trans.set_response_status(tlm::TLM_OK_RESPONSE);
-  tlm::tlm_phase phase = tlm::BEGIN_RESP;
-  sc_core::sc_time delay = clock_.time(arrived) - stamp_;  // serve() runs at stamp_
-  in[int(job.port - inst.ports.size())]->nb_transport_bw(trans, phase, delay);
 }
 
 void SharedLevelsModule::prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command,
@@ -449,17 +526,17 @@ Cycle SharedLevelsModule::send_below(tlm::tlm_command command, uint64_t addr, ui
   return clock_.cycles(stamp_ + delay);
 }
 
-void SharedLevelsModule::send_timed(const Job& job, Cycle at) {
+void SharedLevelsModule::send_timed(bool write, uint64_t addr, uint32_t bytes, Cycle at,
+                                    uint64_t request) {
   if (below_free_.empty()) {
     below_pool_.push_back(std::make_unique<BelowTransaction>());
     below_free_.push_back(below_pool_.back().get());
   }
   BelowTransaction& t = *below_free_.back();
   below_free_.pop_back();
-  bool write = job.kind == JobKind::DramWrite;
-  prepare_below(t, write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, job.addr, job.bytes);
-  t.client = write ? nullptr : job.client;
-  t.token = job.token;
+  prepare_below(t, write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, addr, bytes);
+  t.read = !write;
+  t.request = uint32_t(request);
   tlm::tlm_phase phase = tlm::BEGIN_REQ;
   sc_core::sc_time delay = clock_.time(at) - stamp_;
   tlm::tlm_sync_enum status = out->nb_transport_fw(t, phase, delay);
@@ -485,34 +562,46 @@ tlm::tlm_sync_enum SharedLevelsModule::nb_transport_bw(tlm::tlm_generic_payload&
 
 void SharedLevelsModule::below_done(BelowTransaction& t, Cycle ready) {
   below_free_.push_back(&t);
-  if (t.client) answer_below(JobKind::DramDone, t.client, t.token, ready);  // else a write's
+  if (t.read) reply_at(t.request, ready);  // else a write's
 }
 
-// A DRAM read's answer frees its record at once (the DRAM charges nothing).
-void SharedLevelsModule::DramAnswers::read_done(uint64_t read, Cycle ready, const ReadCharge&) {
-  BelowRead r = m.below_reads_[read];
-  m.free_below_reads_.push_back(uint32_t(read));
-  m.answer_below(JobKind::DramDone, r.client, r.token, ready);
-}
-
-// A level's answer keeps its record, with what the read cost there, until it is served.
-void SharedLevelsModule::LevelAnswers::read_done(uint64_t read, Cycle ready,
-                                                 const ReadCharge& charge) {
-  m.below_reads_[read].charge = charge;
-  m.answer_below(JobKind::LevelDone, nullptr, read, ready);
-}
-
-void SharedLevelsModule::answer_below(JobKind kind, ReadClient* client, uint64_t token,
-                                      Cycle ready) {
-  Job job;
-  job.kind = kind;
-  job.client = client;
-  job.token = token;
+void SharedLevelsModule::reply_at(uint32_t request, Cycle ready) {
+  requests_[request].wait = RequestWait::Data;
+  requests_[request].since = ready;
   // Outside serve(), a response dated inside the window already served (a memory that answers
   // with less lead than the window) is served now, in order with what it starts there.
   bool late = !serving_ && ready < served_until_;
-  add_job(job, ready);
+  add_job({JobKind::Reply, request}, ready);
   if (late) serve_window();
+}
+
+std::string SharedLevelsModule::waiting(size_t shown) const {
+  std::vector<uint32_t> busy;
+  for (uint32_t i = 0; i < requests_.size(); ++i)
+    if (requests_[i].wait != RequestWait::Free) busy.push_back(i);
+  std::stable_sort(busy.begin(), busy.end(),
+                   [&](uint32_t a, uint32_t b) { return requests_[a].since < requests_[b].since; });
+  std::ostringstream out;
+  static const char* const kKinds[] = {"read", "write", "fill"};
+  for (size_t k = 0; k < std::min(shown, busy.size()); ++k) {
+    const MemRequest& r = requests_[busy[k]];
+    const Instance& inst = instances_[r.instance];
+    out << "  ";
+    if (r.to_dram)
+      out << "dram below " << inst.name;
+    else
+      out << inst.name << (inst.slices.empty() ? "" : " slice " + std::to_string(r.slice));
+    out << ": " << kKinds[int(r.kind)] << " of " << r.bytes << " bytes at 0x" << std::hex << r.addr
+        << std::dec;
+    if (r.answer == Answer::Initiator) {
+      out << " for TLM initiator " << r.port - inst.ports.size();
+    } else if (r.client) {
+      out << origin_text(r.client->origin(r.token));
+    }
+    out << " waits for " << wait_name(r.wait) << " since cycle " << r.since << "\n";
+  }
+  if (busy.size() > shown) out << "  (" << busy.size() - shown << " more requests)\n";
+  return out.str();
 }
 
 }  // namespace rtsim

@@ -6,33 +6,42 @@
 // last levels (model/sc/tlm_memory.h: connect) or the instances of the level above; TLM-2.0
 // approximately-timed initiators bound to `in` are requesters of the first level's instance 0:
 // BEGIN_REQ dated by its delay, answered END_REQ at once (the request queue has no bound).
-// Every request becomes one small record (a Job) in the module's calendar, tagged with the
-// instance it is at. The answer to a read is sent as soon as the data's cycle is known (a hit:
-// when the request is served; a miss: when the level below has answered), dated by the data's
-// cycle: its client's read_done for a connected unit, a DramDone job at the instance above for
-// a level above (so that the level above sees its answers in time order too), BEGIN_RESP with
-// a delay for a TLM initiator. Writes and victim fills are posted.
+// Every request is one record (model/mem/mem_request.h) in the module's pool, from the moment
+// it is sent until it is answered or served: its instance, port and slice, whom its answer goes
+// to (typed, not an integer that changes meaning at every hop) and what it waits for since which
+// cycle; the calendar holds small jobs naming a record. A slice's miss and eviction, and a
+// memory port's request, become a record at the next level's instance or at the DRAM, whose
+// answer goes to that slice's miss. The answer to a read is sent as soon as the data's cycle is
+// known (a hit: when the request is served; a miss: when the level below has answered), dated
+// by the data's cycle: its client's read_done for a connected unit, a job at the data's cycle
+// for the level above (so that the level above sees its answers in time order too), BEGIN_RESP
+// with a delay for a TLM initiator. Writes and victim fills are posted. waiting() lists the
+// records in use, for the stall dump.
 // Why a queue: units run up to a quantum ahead of simulated time and a miss that waited for an
 // MSHR leaves later than it was made, so requests arrive out of time order. The module holds
 // them in an event calendar and serves each at its own cycle, when simulated time reaches it;
 // every cache (model/mem/cache.h) and the DRAM below therefore see their requests in
 // non-decreasing cycle order, and a request dated earlier is never delayed by one dated later.
 // A miss at one level is a request at the next, at the miss's cycle, in the same calendar.
-// The DRAM is reached at the request's own cycle, by call or through `out`. By call
-// (connect_memory): the banked DRAM (model/sc/banked_dram_module.h) as a QueuedMemory, which
-// reports each read's data cycle at least `lead` cycles before it. Through `out`, in one of two
-// protocols: by default the base protocol's blocking transport (loosely timed), so any
-// loosely-timed TLM memory can be bound there; after use_timed_memory(lead), the approximately-
-// timed one (a DRAMSys-class model): BEGIN_REQ through nb_transport_fw, and the data's cycle in
-// the delay of BEGIN_RESP, sent at least `lead` cycles before it (0: at that cycle). With a
-// lead the module serves at most lead + 1 cycles ahead, so an answer is never dated before a
-// job already served; one dated inside the window already served is served at once, with what
-// it starts there, in cycle order.
+// The DRAM is reached at the request's own cycle through one interface, a MemoryTarget
+// (model/mem/memory_level.h), of which there are three: the banked DRAM by call
+// (connect_memory; model/sc/banked_dram_module.h), which answers each read's data cycle at least
+// `lead` cycles before it; and `out`, in one of two protocols: by default the base protocol's
+// blocking transport (loosely timed: the data's cycle at once), so any loosely-timed TLM memory
+// can be bound there; after use_timed_memory(lead), the approximately-timed one (a DRAMSys-class
+// model): BEGIN_REQ through nb_transport_fw, and the data's cycle in the delay of BEGIN_RESP,
+// sent at least `lead` cycles before it (0: at that cycle). With a lead the module serves at
+// most lead + 1 cycles ahead, so an answer is never dated before a job already served; one dated
+// inside the window already served is served at once, with what it starts there, in cycle order.
 // A request crosses the crossbar to its slice (slice_of: a hash of the line address; a request
-// must not span lines, as a cache's blocks and line-by-line writes never do) when it arrives,
-// and is queued for the cycle it reaches the slice; its data crosses back when its cycle is
-// known. Crossbar links accept bookings in any order of their cycles, so neither direction
-// delays a request by one dated later.
+// must not span lines, as a cache's blocks and line-by-line writes never do) when the calendar
+// reaches the earliest cycle it could arrive (its send cycle and the crossbar's latency), not
+// when it is sent: so the crossbar, like everything shared, is booked in time order, and a
+// requester running ahead of simulated time changes nothing shared but the calendar. If its
+// links have room it is at its slice then and served at once; else it is queued again for the
+// cycle it reaches the slice. Its data crosses back when its cycle is known. Crossbar links
+// accept bookings in any order of their cycles, so neither direction delays a request by one
+// dated later.
 // An instance with no slices (a memory port: a hierarchy whose levels are all the units' own)
 // holds no cache: it orders its requesters' requests and sends them to DRAM.
 // One SC_METHOD, woken only at cycles that have requests or DRAM accesses to serve. With a
@@ -59,6 +68,7 @@
 #include "model/mem/cache.h"
 #include "model/mem/crossbar.h"
 #include "model/mem/hierarchy.h"
+#include "model/mem/mem_request.h"
 #include "model/sc/clock.h"
 #include "model/sched/event_queue.h"
 
@@ -109,6 +119,7 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   SharedLevelsModule(sc_core::sc_module_name name, const CacheConfig& config, const Clock& clock,
                      const SliceLayout& layout = {}, uint32_t lookahead = 0,
                      std::function<void(std::exception_ptr)> on_error = {});
+  ~SharedLevelsModule() override;
   // Connects unit `unit`'s last own level as a requester of the first instance that serves it
   // (before the simulation); returns its port there. After each read's answer (its client's
   // read_done) on_response runs.
@@ -120,14 +131,14 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   // call.
   void read_request(uint32_t instance, uint32_t port, uint64_t addr, uint32_t bytes, Cycle at,
                     ReadClient* client, uint64_t token) {
-    request(instance, port, JobKind::Read, addr, bytes, at, client, token);
+    request(instance, port, RequestKind::Read, addr, bytes, at, Answer::Unit, client, token);
   }
   void write_request(uint32_t instance, uint32_t port, uint64_t addr, uint32_t bytes, Cycle at) {
-    request(instance, port, JobKind::Write, addr, bytes, at, nullptr, 0);
+    request(instance, port, RequestKind::Write, addr, bytes, at, Answer::Unit, nullptr, 0);
   }
   // A clean line the requester evicted, for a victim level (Cache::fill). Posted.
   void fill_request(uint32_t instance, uint32_t port, uint64_t addr, uint32_t bytes, Cycle at) {
-    request(instance, port, JobKind::Fill, addr, bytes, at, nullptr, 0);
+    request(instance, port, RequestKind::Fill, addr, bytes, at, Answer::Unit, nullptr, 0);
   }
   const std::vector<Instance>& instances() const { return instances_; }
   const std::vector<MemoryLevelConfig>& levels() const { return levels_; }
@@ -141,69 +152,60 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   // Cache::warm on each line's slice of the first instance, now: accesses of RT units the
   // simulation does not drive.
   uint32_t warm(uint64_t addr, uint32_t bytes, bool write);
-  size_t queued() const { return events_.size(); }  // requests and DRAM reads not yet served
+  size_t queued() const { return events_.size(); }  // requests and answers not yet served
+  // A line per request record in use (at most `shown`, then a count): where it is (its
+  // instance and slice, or the DRAM below it), what it is, where it comes from (unit, slot and
+  // ray, asked of its requesters), what it waits for and since which cycle; oldest first.
+  std::string waiting(size_t shown = 20) const;
   // Before the simulation starts: the memory bound to `out` speaks the approximately-timed
   // protocol and sends BEGIN_RESP at least `lead` cycles before the data's cycle.
   void use_timed_memory(uint32_t lead);
   // Before the simulation starts: the memory below is `memory`, by call (`out` stays unbound);
-  // it answers reads at least `lead` cycles before their data's cycle.
-  void connect_memory(QueuedMemory& memory, uint32_t lead);
+  // it answers every read later (kPending), at least `lead` cycles before its data's cycle.
+  void connect_memory(MemoryTarget& memory, uint32_t lead);
   // Cycles ahead of simulated time its initiators date their requests, at the least.
   uint32_t lookahead() const { return lookahead_; }
   Cycle next_job() const { return events_.empty() ? kPending : events_.next_cycle(); }
 
  private:
-  // Read, Write, Fill: from a requester of the job's instance; DramRead, DramWrite: to the DRAM
-  // below the last level; DramDone: a DRAM read's answer (for the job's client and token);
-  // LevelDone: the answer of a read at the next level (below_reads_, with what it cost there).
-  enum class JobKind : uint8_t { Read, Write, Fill, DramRead, DramWrite, DramDone, LevelDone };
-  // A DRAM access in flight under the approximately-timed protocol (DramRead: its reader).
-  struct BelowTransaction : tlm::tlm_generic_payload {
-    ReadClient* client = nullptr;
-    uint64_t token = 0;
-  };
-  // One request record, kept in the calendar itself. Read: who waits (a connected requester's
-  // client and token; from a TLM initiator, its transaction as the token); DramRead: the
-  // slice's miss; DramDone: the below read answered.
+  // Serve: the record's request at its instance (a lookup in its slice), or its access to the
+  // DRAM; Reply: a read's answer to the level above at its data's cycle.
+  enum class JobKind : uint8_t { Serve, Reply };
   struct Job {
-    JobKind kind = JobKind::Read;
-    uint16_t instance = 0;
-    uint32_t port = 0;
-    uint32_t slice = 0;
-    uint32_t bytes = 0;
-    uint64_t addr = 0;
-    ReadClient* client = nullptr;
-    uint64_t token = 0;
+    JobKind kind = JobKind::Serve;
+    uint32_t request = 0;  // the record, in requests_
   };
-  // A read that missed in its slice, until the slice reports its data: its record, and what it
-  // has cost so far.
-  struct MissedRead {
-    Job job;
-    ReadCharge charge;
+  // A DRAM access in flight under the approximately-timed protocol: its record (a read's).
+  struct BelowTransaction : tlm::tlm_generic_payload {
+    uint32_t request = 0;
+    bool read = false;
   };
-  // A read sent below an instance until its answer is served: who waits for it (a slice's miss,
-  // or the read a memory port passes on) and what it cost below.
-  struct BelowRead {
-    ReadClient* client;
-    uint64_t token;
-    ReadCharge charge;
-  };
-  class Below;  // an instance's MemoryTarget
+  class Below;     // an instance's MemoryTarget
+  class OutPort;   // `out` as the MemoryTarget below the last level
+  friend OutPort;  // it sends through the module's socket
 
   void add_instances(uint32_t units);
   void end_of_elaboration() override;   // a module with no memory below is a wiring error
   void start_of_simulation() override;  // gives each crossbar a port per requester
-  // A request from `port` of `instance` sent at `at`: crosses to its slice and joins the
-  // calendar.
-  void request(uint32_t instance, uint32_t port, JobKind kind, uint64_t addr, uint32_t bytes,
-               Cycle at, ReadClient* client, uint64_t token);
+  // A request from `port` of `instance` sent at `at`: a record that crosses to its slice and
+  // joins the calendar.
+  void request(uint32_t instance, uint32_t port, RequestKind kind, uint64_t addr, uint32_t bytes,
+               Cycle at, Answer answer, ReadClient* client, uint64_t token,
+               tlm::tlm_generic_payload* transaction = nullptr);
+  uint32_t new_request(const MemRequest& r);
+  void free_request(uint32_t request) {
+    requests_[request].wait = RequestWait::Free;
+    free_requests_.push_back(request);
+  }
   tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
                                      tlm::tlm_phase& phase, sc_core::sc_time& delay);
   // Below an instance: a read (pending), a write or a fill at the next level or DRAM.
   void below_read(uint32_t instance, uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
                   uint64_t token);
-  void below_write(uint32_t instance, JobKind kind, uint64_t addr, uint32_t bytes, Cycle at);
-  void read_done(uint64_t missed, Cycle ready, const ReadCharge& charge) override;
+  void below_write(uint32_t instance, RequestKind kind, uint64_t addr, uint32_t bytes, Cycle at);
+  // A read that waited below its slice (or its memory port) has its data at `ready`.
+  void read_done(uint64_t request, Cycle ready, const ReadCharge& charge) override;
+  ReadOrigin origin(uint64_t request) const override;
 
   void serve();
   void serve_window();  // every job dated before served_until_, in order, at this stamp
@@ -212,7 +214,9 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   // nothing modelled.
   void prime_next_job() const;
   void run_job(const Job& job, Cycle at);
-  [[gnu::always_inline]] void respond(const Job& job, Cycle ready, const ReadCharge& charge);
+  void access_dram(uint32_t request, Cycle at);
+  // The read's answer, its data at `ready` at its slice: crosses back to its requester.
+  [[gnu::always_inline]] void respond(uint32_t request, Cycle ready, const ReadCharge& charge);
   void add_job(const Job& job, Cycle at);
   // A transaction below of `bytes` at `addr` (the data is a scratch buffer: timing only).
   void prepare_below(tlm::tlm_generic_payload& t, tlm::tlm_command command, uint64_t addr,
@@ -220,22 +224,18 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   static std::runtime_error below_error(const tlm::tlm_generic_payload& t);
   Cycle send_below(tlm::tlm_command command, uint64_t addr, uint32_t bytes, Cycle at);
   // The approximately-timed form: a read's data comes back through nb_transport_bw.
-  void send_timed(const Job& job, Cycle at);
+  void send_timed(bool write, uint64_t addr, uint32_t bytes, Cycle at, uint64_t request);
   tlm::tlm_sync_enum nb_transport_bw(tlm::tlm_generic_payload& trans, tlm::tlm_phase& phase,
                                      sc_core::sc_time& delay);
   void below_done(BelowTransaction& t, Cycle ready);  // a read's data at `ready`
-  // A read below answered: its data at `ready`, a job of `kind` for (client, token).
-  void answer_below(JobKind kind, ReadClient* client, uint64_t token, Cycle ready);
-  // What the memory below answers, for the pending read (below_reads_) its token names: a
-  // QueuedMemory DRAM, or the next level's instance (with what the read cost there).
+  // A read below answered: its data at `ready`, a Reply job for its record.
+  void reply_at(uint32_t request, Cycle ready);
+  // What the DRAM answers: the read its token names.
   struct DramAnswers : ReadClient {
     explicit DramAnswers(SharedLevelsModule& m) : m(m) {}
-    void read_done(uint64_t read, Cycle ready, const ReadCharge& charge) override;
-    SharedLevelsModule& m;
-  };
-  struct LevelAnswers : ReadClient {
-    explicit LevelAnswers(SharedLevelsModule& m) : m(m) {}
-    void read_done(uint64_t read, Cycle ready, const ReadCharge& charge) override;
+    void read_done(uint64_t request, Cycle ready, const ReadCharge&) override {
+      m.reply_at(uint32_t(request), ready);
+    }
     SharedLevelsModule& m;
   };
 
@@ -246,18 +246,15 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   Clock clock_;
   uint32_t lookahead_;  // at least 1: the initiators' promise
   uint32_t window_;     // a wake-up at cycle c serves what is dated before c + it (<= lookahead_)
-  bool timed_below_ = false;
-  QueuedMemory* memory_ = nullptr;  // the memory below, by call (else `out`)
+  std::unique_ptr<OutPort> out_port_;  // `out` as a MemoryTarget
+  MemoryTarget* memory_;               // the memory below the last level: out_port_ or by call
   DramAnswers dram_answers_{*this};
-  LevelAnswers level_answers_{*this};
-  std::vector<BelowRead> below_reads_;
-  std::vector<uint32_t> free_below_reads_;
   std::vector<std::unique_ptr<BelowTransaction>> below_pool_;
   std::vector<BelowTransaction*> below_free_;
   std::function<void(std::exception_ptr)> on_error_;
-  Calendar<Job> events_;  // the jobs at their cycles
-  std::vector<MissedRead> missed_;
-  std::vector<uint32_t> free_missed_;
+  Calendar<Job> events_;              // the jobs at their cycles
+  std::vector<MemRequest> requests_;  // the records, reused through free_requests_
+  std::vector<uint32_t> free_requests_;
   sc_core::sc_event wake_;
   Cycle armed_ = kPending;  // the cycle wake_ is notified for (kPending: none)
   Cycle served_until_ = 0;  // every job dated before it has been served

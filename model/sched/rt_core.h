@@ -211,6 +211,10 @@ class RtCore : private ReadClient {
   // state: the ray's state from memory, whose cost is also counted in stats_.state.
   Cycle read(RayContext& ray, uint64_t addr, uint32_t bytes, Cycle now, bool state = false);
   void read_done(uint64_t slot, Cycle ready, const ReadCharge& charge) override;
+  ReadOrigin origin(uint64_t slot) const override {
+    const RayContext* ray = slots_[uint32_t(slot)];
+    return {id_, uint32_t(slot), ray ? ray->sequence : ReadOrigin::kUnknown};
+  }
   // After an item's reads: wait for the pending ones (true), or go on (false).
   bool wait_reads(uint32_t item, Wait wait, Cycle known_ready);
   Cycle fetch(RayContext& ray, const StepResult& step, Cycle now);

@@ -37,7 +37,8 @@ struct FixedLatencyMemory : sc_core::sc_module {
 // script, in script order, each dated by its TLM delay; records when each one's data is ready.
 struct AtRequester : sc_core::sc_module {
   tlm_utils::simple_initiator_socket<AtRequester> out{"out"};
-  std::vector<std::pair<uint64_t, Cycle>> script;
+  std::vector<std::pair<uint64_t, Cycle>> script;  // (address, delay in cycles) of each read
+  Cycle start = 0;                                 // the cycle it sends its script at
   std::vector<Cycle> ready;
   Clock clock;
   SC_HAS_PROCESS(AtRequester);
@@ -47,6 +48,7 @@ struct AtRequester : sc_core::sc_module {
   }
   void run() {
     ready.assign(script.size(), kPending);
+    if (start > 0) wait(clock.delay_to(start));
     for (size_t i = 0; i < script.size(); ++i) {
       trans.push_back(std::make_unique<tlm::tlm_generic_payload>());
       tlm::tlm_generic_payload& t = *trans.back();
@@ -202,6 +204,31 @@ TEST(TlmMemory, TheCrossbarAddsItsLatencyBothWaysAndItsPortsBoundTheBandwidth) {
   for (uint32_t i = 0; i < 4; ++i) used += bench.l2.instances()[0].slices[i]->stats().accesses > 0;
   EXPECT_EQ(used, 4u) << "lines hash over all slices";
   EXPECT_EQ(bench.l2.instances()[0].crossbar.units(), 1u) << "one port, the bound TLM initiator's";
+}
+
+// Two initiators, each with its own crossbar port, in front of one slice, behind links of 4
+// bytes a cycle (a request's 8 bytes hold a link for 2 cycles, a line's 64 for 16). The first
+// sends a read dated cycle 110, the second a cycle later one dated 109, both L2 hits. The
+// crossbar is booked in time order, when the L2's calendar reaches each request, not in the
+// order they were sent: the read dated earlier crosses unloaded and is answered first. (Booked
+// when sent, the first read would take the slice's link first and delay the second.)
+TEST(TlmMemory, TheCrossbarIsBookedInTimeOrderNotInTheOrderRequestsAreSent) {
+  SliceLayout layout;
+  layout.crossbar = {5, 4.0};
+  L2Bench bench(8, DramConfig{64.0, 300, 64}, layout);
+  AtRequester second("second");
+  second.out.bind(bench.l2.in);
+  bench.cpu.script = {{0x0, 110}};
+  second.script = {{0x40, 108}};  // dated by its delay: sent at cycle 1, so cycle 109
+  second.start = 1;
+  bench.l2.warm(0x0, 128, false);
+  sc_core::sc_start();
+  // A transfer of n cycles has arrived in its n-th: the request 2 cycles on the up-link, 5 in
+  // the switch, 2 on the slice's link; the L2's 10-cycle hit; the line 16 cycles on the slice's
+  // link, 5 in the switch, 16 on the unit's.
+  EXPECT_EQ(second.ready[0], 109u + 1 + 5 + 1 + 10 + 15 + 5 + 15) << "unloaded";
+  EXPECT_GT(bench.cpu.ready[0], second.ready[0]) << "the read dated later, sent first, waits";
+  EXPECT_GT(bench.l2.instances()[0].crossbar.slice_in(0).stats().stall_cycles, 0u);
 }
 
 // Reads through an L1 from a thread at given cycles; records each read's ready cycle.
