@@ -62,12 +62,12 @@ std::vector<Ray> sample_diffuse_rays(const FlatTriangles& triangles, size_t coun
   return rays;
 }
 
-std::vector<Ray> sample_camera_rays(const FlatTriangles& triangles, uint32_t width,
-                                    uint32_t height) {
+std::vector<Ray> sample_camera_rays(const FlatTriangles& triangles, uint32_t width, uint32_t height,
+                                    float distance) {
   Bounds bounds = triangles.bounds();
   glm::vec3 center = bounds.center();
   float radius = 0.5f * glm::length(bounds.extent());
-  glm::vec3 eye = center + glm::vec3(0.3f, 0.4f, 1.0f) * (1.6f * radius);
+  glm::vec3 eye = center + glm::vec3(0.3f, 0.4f, 1.0f) * (distance * radius);
   glm::vec3 forward = glm::normalize(center - eye);
   glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
   glm::vec3 up = glm::cross(right, forward);

@@ -26,9 +26,11 @@ class SeededRandom {
 // triangles: a flat mesh, or a scene's instances without a flattened copy.
 std::vector<Ray> sample_diffuse_rays(const FlatTriangles& triangles, size_t count, uint64_t seed);
 
-// A width x height pinhole camera outside the triangles' bounds looking at their center.
-std::vector<Ray> sample_camera_rays(const FlatTriangles& triangles, uint32_t width,
-                                    uint32_t height);
+// A width x height pinhole camera outside the triangles' bounds looking at their center, from
+// `distance` times the bounds' half diagonal along (0.3, 0.4, 1) (nearer: the geometry fills more
+// of the frame).
+std::vector<Ray> sample_camera_rays(const FlatTriangles& triangles, uint32_t width, uint32_t height,
+                                    float distance = 1.6f);
 
 // Origins uniform in the triangles' bounds (grown by `margin` of the diagonal), directions
 // uniform.

@@ -1,5 +1,6 @@
 #include "reports/validate/suite.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/core.h>
@@ -31,32 +32,99 @@ size_t SuiteResult::reported() const {
   return checks.size() - passed() - failed() - skipped();
 }
 
+namespace {
+
+// A group of checks that run together, and the prefixes of the ids they report (what --only
+// selects them by).
+struct Group {
+  const char* name;
+  std::vector<std::string> prefixes;
+  bool quick;  // closed form: part of --quick
+  std::function<std::vector<Check>()> run;
+};
+
+bool starts_with(const std::string& s, const std::string& prefix) {
+  return s.compare(0, prefix.size(), prefix) == 0;
+}
+
+// Whether a selection (--only, empty: everything) may want a check whose id starts with
+// `prefix`: one is the other's prefix.
+bool may_select(const std::vector<std::string>& only, const std::string& prefix) {
+  if (only.empty()) return true;
+  for (const std::string& o : only)
+    if (starts_with(prefix, o) || starts_with(o, prefix)) return true;
+  return false;
+}
+
+bool selects(const std::vector<std::string>& only, const std::string& id) {
+  if (only.empty()) return true;
+  for (const std::string& o : only)
+    if (starts_with(id, o)) return true;
+  return false;
+}
+
+// The suite's groups, in the order they run.
+std::vector<Group> suite_groups(const Target& target,
+                                const std::function<void(const std::string&)>& progress) {
+  return {
+      {"latency ladder", {"ladder."}, true, [&] { return latency_ladder(target); }},
+      {"throughput ceilings", {"ceiling."}, true, [&] { return throughput_ceilings(target); }},
+      {"bandwidth rooflines",
+       {"roofline."},
+       true,
+       [&] {
+         std::vector<Check> checks = port_rooflines(target);
+         for (Check& c : dram_roofline(target)) checks.push_back(std::move(c));
+         return checks;
+       }},
+      {"DRAM latency under load",
+       {"queueing."},
+       true,
+       [&] { return std::vector<Check>{dram_loaded_latency(target)}; }},
+      {"Little's law", {"little."}, true, [&] { return std::vector<Check>{littles_law(target)}; }},
+      {"published results",
+       {"ylitie.", "aila_laine.", "vaidyanathan.", "aila_karras.", "boulos."},
+       false,
+       [&] { return published_checks(target, progress); }},
+      {"vendor rates", {"vendor."}, false, [&] { return preset_checks(target, progress); }},
+      {"sensitivity", {"sensitivity."}, false, [&] { return sensitivity_checks(target); }},
+      {"sampling", {"sampling."}, false, [&] { return sampling_checks(target, progress); }}};
+}
+
+bool group_may_select(const Group& group, const std::vector<std::string>& only) {
+  return std::any_of(group.prefixes.begin(), group.prefixes.end(),
+                     [&](const std::string& p) { return may_select(only, p); });
+}
+
+}  // namespace
+
 SuiteResult run_suite(const Target& target, bool quick,
-                      const std::function<void(const std::string&)>& progress) {
+                      const std::function<void(const std::string&)>& progress,
+                      const std::vector<std::string>& only) {
   SuiteResult result;
   result.config_name = target.config.name;
   result.quick = quick;
-  auto add = [&result](std::vector<Check> checks) {
-    for (Check& c : checks) result.checks.push_back(std::move(c));
-  };
-  progress("latency ladder");
-  add(latency_ladder(target));
-  progress("throughput ceilings");
-  add(throughput_ceilings(target));
-  progress("bandwidth rooflines");
-  add(port_rooflines(target));
-  add(dram_roofline(target));
-  progress("DRAM latency under load");
-  add({dram_loaded_latency(target)});
-  progress("Little's law");
-  add({littles_law(target)});
-  if (quick) return result;
-  add(published_checks(target, progress));
-  add(preset_checks(target, progress));
-  progress("sensitivity");
-  add(sensitivity_checks(target));
-  add(sampling_checks(target, progress));
+  for (const Group& group : suite_groups(target, progress)) {
+    if ((quick && !group.quick) || !group_may_select(group, only)) continue;
+    progress(group.name);
+    for (Check& c : group.run())
+      if (selects(only, c.id)) result.checks.push_back(std::move(c));
+  }
   return result;
+}
+
+std::string only_problem(const std::vector<std::string>& only) {
+  std::vector<Group> groups = suite_groups(Target{}, {});
+  std::string all;
+  for (const Group& g : groups)
+    for (const std::string& p : g.prefixes) all += (all.empty() ? "" : ", ") + p;
+  for (const std::string& o : only) {
+    if (o.empty()) return "--only: an empty prefix selects every check; leave --only out";
+    if (std::none_of(groups.begin(), groups.end(),
+                     [&](const Group& g) { return group_may_select(g, {o}); }))
+      return fmt::format("--only {}: no check's id starts with it (ids start with {})", o, all);
+  }
+  return {};
 }
 
 nlohmann::ordered_json json_number(double value) {

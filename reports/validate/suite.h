@@ -27,10 +27,14 @@ struct SuiteResult {
   size_t reported() const;  // info: figures without a band
 };
 
-// Runs the suite (quick: the closed-form checks only); `progress` hears each group's name as
-// it starts.
+// Runs the suite (quick: the closed-form checks only; only: the checks whose id starts with one
+// of these prefixes, every check when empty, and only the groups that report such ids run);
+// `progress` hears each group's name as it starts.
 SuiteResult run_suite(const Target& target, bool quick,
-                      const std::function<void(const std::string&)>& progress);
+                      const std::function<void(const std::string&)>& progress,
+                      const std::vector<std::string>& only = {});
+// What is wrong with an --only list (a prefix no check's id starts with), or "".
+std::string only_problem(const std::vector<std::string>& only);
 
 nlohmann::ordered_json suite_json(const SuiteResult& result);
 std::string terminal_table(const SuiteResult& result);
