@@ -193,5 +193,50 @@ TEST(ValidateCli, WritesPagesThatAgreeWithTheJsonAndRefusesBadInput) {
   EXPECT_NE(run.err.find("/nonexistent.toml"), std::string::npos) << run.err;
 }
 
+// --only runs the groups whose checks it names and keeps those checks; a prefix no check has is
+// refused, naming the ones there are.
+TEST(Validate, OnlyRunsTheChecksItNames) {
+  std::vector<std::string> heard;
+  SuiteResult r =
+      run_suite({HwConfig{}, {}}, false, [&](const std::string& g) { heard.push_back(g); },
+                {"ladder.l1", "ceiling.box"});
+  EXPECT_EQ(heard, (std::vector<std::string>{"latency ladder", "throughput ceilings"}));
+  std::vector<std::string> ids;
+  for (const Check& c : r.checks) ids.push_back(c.id);
+  EXPECT_EQ(ids, (std::vector<std::string>{"ladder.l1_hit", "ceiling.box_tests"}));
+  EXPECT_EQ(only_problem({"vendor"}), "");
+  EXPECT_EQ(only_problem({"vendor.rtx2080ti.bunny"}), "");
+  std::string problem = only_problem({"ladder", "nosuch"});
+  EXPECT_NE(problem.find("--only nosuch: no check's id starts with it"), std::string::npos)
+      << problem;
+  EXPECT_NE(problem.find("vendor."), std::string::npos) << problem;
+  test::RunResult run = test::run_rtsim("validate --only nosuch");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("--only nosuch"), std::string::npos) << run.err;
+}
+
+// The vendor check judges the config under test at its own clock: a config without a vendor
+// rate is skipped, and the RTX 2080 Ti preset as it was before it was sourced (fp32 256-byte
+// nodes; tests/fixtures/rtx2080ti-before.toml) reads below the band NVIDIA's figure supports.
+TEST(Validate, VendorCheckFailsTheOldRtx2080ti) {
+  auto vendor = [](const HwConfig& config) {
+    return by_id(run_suite({config, {}}, false, [](const std::string&) {}, {"vendor"}));
+  };
+  std::map<std::string, Check> c = vendor(HwConfig{});
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_FALSE(c.begin()->second.ran()) << c.begin()->second.id;
+  if (!std::filesystem::exists(shared_scene_path("bunny")))
+    GTEST_SKIP() << "the shared scenes are missing";
+  HwConfig before = load_hw_config(RTSIM_SOURCE_DIR "/tests/fixtures/rtx2080ti-before.toml");
+  ASSERT_EQ(before.name, "rtx2080ti");
+  c = vendor(before);
+  const Check& bunny = c["vendor.rtx2080ti.bunny"];
+  ASSERT_TRUE(bunny.ran()) << bunny.skipped;
+  EXPECT_NEAR(bunny.expected, 10e9 / (68 * before.clock_ghz * 1e9), 1e-12) << "at its own clock";
+  EXPECT_TRUE(bunny.failed()) << bunny.measured << " in " << bunny.lo << ".." << bunny.hi;
+  EXPECT_LT(bunny.measured, bunny.lo);
+  EXPECT_NE(bunny.detail.find("l1 port"), std::string::npos) << bunny.detail;
+}
+
 }  // namespace
 }  // namespace rtsim::validation
