@@ -422,22 +422,29 @@ void SharedLevelsModule::access_dram(uint32_t id, Cycle at) {
   client->read_done(token, ready, {});
 }
 
+// A request of an instance with no level below it, for the DRAM.
+MemRequest SharedLevelsModule::dram_request(uint32_t instance, uint64_t addr, uint32_t bytes,
+                                            Cycle at) {
+  MemRequest r;
+  r.addr = addr;
+  r.bytes = bytes;
+  r.to_dram = true;
+  r.instance = uint16_t(instance);
+  r.wait = RequestWait::Dram;
+  r.since = at;
+  return r;
+}
+
 void SharedLevelsModule::below_read(uint32_t instance, uint64_t addr, uint32_t bytes, Cycle at,
                                     ReadClient* client, uint64_t token) {
   const Instance& inst = instances_[instance];
   if (inst.below != kNoInstance)
     return request(inst.below, inst.below_port, RequestKind::Read, addr, bytes, at, Answer::Level,
                    client, token);
-  MemRequest r;
-  r.addr = addr;
-  r.bytes = bytes;
+  MemRequest r = dram_request(instance, addr, bytes, at);
   r.answer = Answer::Level;
-  r.to_dram = true;
-  r.instance = uint16_t(instance);
   r.client = client;
   r.token = token;
-  r.wait = RequestWait::Dram;
-  r.since = at;
   add_job({JobKind::Serve, new_request(r)}, at);
 }
 
@@ -448,14 +455,8 @@ void SharedLevelsModule::below_write(uint32_t instance, RequestKind kind, uint64
     return request(inst.below, inst.below_port, kind, addr, bytes, at, Answer::Unit, nullptr, 0);
   if (kind == RequestKind::Fill)
     throw std::logic_error(std::string(name()) + ": a victim fill has no level to go to");
-  MemRequest r;
-  r.addr = addr;
-  r.bytes = bytes;
+  MemRequest r = dram_request(instance, addr, bytes, at);
   r.kind = RequestKind::Write;
-  r.to_dram = true;
-  r.instance = uint16_t(instance);
-  r.wait = RequestWait::Dram;
-  r.since = at;
   add_job({JobKind::Serve, new_request(r)}, at);
 }
 

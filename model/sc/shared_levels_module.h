@@ -199,6 +199,7 @@ class SharedLevelsModule : public sc_core::sc_module, private ReadClient {
   }
   tlm::tlm_sync_enum nb_transport_fw(int port, tlm::tlm_generic_payload& trans,
                                      tlm::tlm_phase& phase, sc_core::sc_time& delay);
+  static MemRequest dram_request(uint32_t instance, uint64_t addr, uint32_t bytes, Cycle at);
   // Below an instance: a read (pending), a write or a fill at the next level or DRAM.
   void below_read(uint32_t instance, uint64_t addr, uint32_t bytes, Cycle at, ReadClient* client,
                   uint64_t token);
